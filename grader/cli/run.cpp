@@ -1,0 +1,54 @@
+// raygrade run: the main job over a bank, its solutions folder and sample submissions.
+#include <map>
+
+#include <fmt/format.h>
+
+#include "cli/command.h"
+#include "problems/problem.h"
+
+namespace raygrade::cli {
+namespace {
+
+struct RunOptions {
+  std::vector<std::string> problems = {"problems"};
+  std::string submissions = "submissions";
+  std::string solutions = "solutions";
+};
+
+int run_main_job(const RunOptions& o) {
+  Bank bank = load_bank(o.problems);
+  for (const auto& e : bank.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
+  std::map<std::string, int> by_kind;
+  int solved = 0, failed = 0;
+  for (const auto& p : bank.problems) {
+    try {
+      (void)p.task->answer();
+      ++solved;
+      ++by_kind[p.kind];
+    } catch (const Error& e) {
+      fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
+      ++failed;
+    }
+  }
+  std::vector<std::string> kinds;
+  for (const auto& [k, n] : by_kind) kinds.push_back(fmt::format("{} {}", n, k));
+  fmt::print("Solved {} problems from {} files ({}).\n", solved, bank.files.size(),
+             fmt::join(kinds, ", "));
+  if (!bank.errors.empty() || failed) {
+    fmt::print("{} problems could not be read or solved.\n", bank.errors.size() + failed);
+    return kExitBadInput;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Runner setup_run(CLI::App& sub) {
+  auto o = std::make_shared<RunOptions>();
+  sub.add_option("--problems", o->problems, "the bank: files or folders");
+  sub.add_option("--submissions", o->submissions, "a folder of sample submissions");
+  sub.add_option("--solutions", o->solutions, "where worked solutions are written");
+  return [o] { return run_main_job(*o); };
+}
+
+}  // namespace raygrade::cli

@@ -1,0 +1,91 @@
+// raygrade solve: the reference answer of every problem, and optionally its worked steps.
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "cli/command.h"
+#include "problems/problem.h"
+#include "reports/json_report.h"
+#include "reports/text.h"
+
+namespace raygrade::cli {
+namespace {
+
+struct SolveOptions {
+  std::vector<std::string> paths;
+  std::string format = "json";
+  std::string method;
+  int precision = -1;
+  bool steps = false;
+};
+
+// The methods to show for a problem: the chosen one, or every one with --method all.
+std::vector<std::string> methods_for(const Problem& p, const std::string& method) {
+  if (method == "all") return p.task->methods();
+  auto known = p.task->methods();
+  if (!method.empty() && std::find(known.begin(), known.end(), method) != known.end()) {
+    return {method};
+  }
+  return {p.method};
+}
+
+int run_solve(const SolveOptions& o) {
+  Bank bank = load_bank(o.paths);
+  for (const auto& e : bank.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
+  nlohmann::json solutions = nlohmann::json::array();
+  std::string text;
+  for (const auto& p : bank.problems) {
+    NumberFormat numbers = number_format_for(p, o.precision);
+    try {
+      if (o.format == "json") {
+        nlohmann::json s = {{"id", p.id}, {"kind", p.kind}, {"answer", p.task->answer()}};
+        if (o.steps) {
+          nlohmann::json all = nlohmann::json::array();
+          for (const auto& m : methods_for(p, o.method)) {
+            for (auto& part : parts_json(p.task->derive(m), numbers)) all.push_back(part);
+          }
+          s["derivations"] = all;
+        }
+        solutions.push_back(std::move(s));
+      } else {
+        for (const auto& m : methods_for(p, o.method)) {
+          text += render_text(p, p.task->derive(m), numbers) + "\n";
+        }
+      }
+    } catch (const Error& e) {
+      Diagnostic d = e.diagnostic();
+      if (d.file.empty()) d.file = p.file;
+      if (d.path.empty()) d.path = p.path;
+      fmt::print(stderr, "{}\n", format_diagnostic(d));
+      bank.errors.push_back(d);
+    }
+  }
+  if (o.format == "json") {
+    nlohmann::json out = {{"solutions", solutions}};
+    if (!bank.errors.empty()) {
+      nlohmann::json errors = nlohmann::json::array();
+      for (const auto& e : bank.errors) errors.push_back(diagnostic_json(e));
+      out["errors"] = errors;
+    }
+    std::cout << out.dump(2) << "\n";
+  } else {
+    std::cout << text;
+  }
+  return bank.errors.empty() ? kExitOk : kExitBadInput;
+}
+
+}  // namespace
+
+Runner setup_solve(CLI::App& sub) {
+  auto o = std::make_shared<SolveOptions>();
+  sub.add_option("paths", o->paths, "problem files or folders")->required();
+  sub.add_option("--format", o->format, "json (answers), txt or md (worked solutions)")
+      ->check(CLI::IsMember({"json", "txt", "md"}));
+  sub.add_option("--method", o->method, "a method name, or 'all' to show every method");
+  sub.add_option("--precision", o->precision, "decimals shown in worked solutions")
+      ->check(CLI::Range(0, 15));
+  sub.add_flag("--steps", o->steps, "with --format json: include the derivation steps");
+  return [o] { return run_solve(*o); };
+}
+
+}  // namespace raygrade::cli

@@ -1,0 +1,18 @@
+// The table of subcommands.
+#include "cli/command.h"
+
+namespace raygrade::cli {
+
+Runner setup_solve(CLI::App& sub);
+Runner setup_run(CLI::App& sub);
+
+const std::vector<Command>& command_table() {
+  static const std::vector<Command> table = {
+      {"run", "the main job: solve the bank, write worked solutions, grade submissions",
+       &setup_run},
+      {"solve", "print the reference answers (and worked solutions) of problems", &setup_solve},
+  };
+  return table;
+}
+
+}  // namespace raygrade::cli

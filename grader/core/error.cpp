@@ -1,0 +1,31 @@
+// Formatting of diagnostics.
+#include "core/error.h"
+
+namespace raygrade {
+
+const char* to_string(Severity s) {
+  switch (s) {
+    case Severity::kError: return "error";
+    case Severity::kWarning: return "warning";
+    case Severity::kNote: return "note";
+  }
+  return "error";
+}
+
+std::string format_diagnostic(const Diagnostic& d) {
+  std::string out = d.file.empty() ? "<input>" : d.file;
+  if (d.line > 0) {
+    out += fmt::format(":{}", d.line);
+    if (d.column > 0) out += fmt::format(":{}", d.column);
+  }
+  out += ": ";
+  if (!d.path.empty()) out += d.path + ": ";
+  out += to_string(d.severity);
+  out += ": ";
+  out += d.message;
+  return out;
+}
+
+Error::Error(Diagnostic d) : std::runtime_error(format_diagnostic(d)), diagnostic_(std::move(d)) {}
+
+}  // namespace raygrade

@@ -1,0 +1,81 @@
+// Recording derivation steps.
+#include "derivation/derivation.h"
+
+#include "core/error.h"
+
+namespace raygrade {
+
+const Step* Derivation::find(std::string_view name) const {
+  for (const auto& s : steps) {
+    if (s.name == name) return &s;
+  }
+  return nullptr;
+}
+
+Deriver::Deriver(std::string method, std::string title, const Overrides* overrides)
+    : overrides_(overrides) {
+  d_.method = std::move(method);
+  d_.title = std::move(title);
+}
+
+E Deriver::given(const std::string& name, const std::string& display, const Value& value,
+                 std::string note) {
+  E s = raygrade::sym(name, display);
+  symbols_[name] = s;
+  env_[name] = value;
+  d_.steps.push_back(Step{name, s, E(), value, std::move(note), true, false});
+  return s;
+}
+
+Value Deriver::step(const std::string& name, const std::string& display, const E& formula,
+                    std::string note) {
+  E f = formula;
+  if (overrides_ && overrides_->formula) {
+    if (auto replaced = overrides_->formula(name, formula)) f = *replaced;
+  }
+  Value v;
+  bool overridden = false;
+  if (overrides_) {
+    auto it = overrides_->values.find(name);
+    if (it != overrides_->values.end()) {
+      v = it->second;
+      overridden = true;
+    }
+  }
+  if (!overridden) v = evaluate(f, env_);
+  E s = raygrade::sym(name, display);
+  symbols_[name] = s;
+  env_[name] = v;
+  d_.steps.push_back(Step{name, s, f, v, std::move(note), false, overridden});
+  return v;
+}
+
+E Deriver::sym(const std::string& name) const {
+  auto it = symbols_.find(name);
+  if (it == symbols_.end()) {
+    throw Error(Diagnostic{"", "", 0, 0, Severity::kError,
+                           "derivation: no step named '" + name + "'", "internal"});
+  }
+  return it->second;
+}
+
+const Value& Deriver::value(const std::string& name) const {
+  auto it = env_.find(name);
+  if (it == env_.end()) {
+    throw Error(Diagnostic{"", "", 0, 0, Severity::kError,
+                           "derivation: no value for '" + name + "'", "internal"});
+  }
+  return it->second;
+}
+
+void Deriver::note(std::string text) {
+  if (d_.steps.empty()) return;
+  auto& n = d_.steps.back().note;
+  n = n.empty() ? std::move(text) : n + " " + text;
+}
+
+void Deriver::conclude(std::string sentence) { d_.conclusion.push_back(std::move(sentence)); }
+
+Derivation Deriver::finish() && { return std::move(d_); }
+
+}  // namespace raygrade

@@ -1,0 +1,71 @@
+// Derivation: a worked solution as data. Each step names a quantity, gives its formula and
+// its value; the same steps feed the worked solution, the grading of intermediate answers and
+// the diagnosis of mistakes.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "derivation/expr.h"
+
+namespace raygrade {
+
+struct Step {
+  std::string name;   // stable, documented, used by students in submissions ("t_ca")
+  E symbol;           // how the quantity is shown
+  E formula;          // empty for givens
+  Value value;
+  std::string note;   // a short sentence: why this step, or what its value means
+  bool given = false; // an input of the problem rather than a computed quantity
+  bool overridden = false;  // the value came from Overrides (a student's own earlier value)
+};
+
+struct Derivation {
+  std::string method;  // "geometric", "algebraic", "slab", ...
+  std::string title;   // "Sphere, geometric method"
+  std::vector<Step> steps;
+  std::vector<std::string> conclusion;  // sentences in plain words
+
+  const Step* find(std::string_view name) const;
+};
+
+// What a derivation is run with besides the problem: a student's own values for some steps
+// (error carried forward), and formula changes that model a mistake.
+struct Overrides {
+  Env values;
+  std::function<std::optional<E>(std::string_view step, const E& formula)> formula;
+};
+
+// Records steps while a primitive's derivation code runs. Formulas are evaluated here, so
+// the number shown is always the number the formula gives.
+class Deriver {
+ public:
+  Deriver(std::string method, std::string title, const Overrides* overrides = nullptr);
+
+  // An input quantity.
+  E given(const std::string& name, const std::string& display, const Value& value,
+          std::string note = "");
+  // A computed quantity: evaluates `formula` (or its override) and records the step.
+  Value step(const std::string& name, const std::string& display, const E& formula,
+             std::string note = "");
+  // The symbol of an earlier step or given.
+  E sym(const std::string& name) const;
+  const Value& value(const std::string& name) const;
+  double scalar(const std::string& name) const { return value(name).scalar; }
+  // Adds a note to the last step.
+  void note(std::string text);
+  void conclude(std::string sentence);
+
+  const Env& env() const { return env_; }
+  Derivation finish() &&;
+
+ private:
+  Derivation d_;
+  Env env_;
+  std::map<std::string, E, std::less<>> symbols_;
+  const Overrides* overrides_;
+};
+
+}  // namespace raygrade

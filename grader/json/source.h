@@ -1,0 +1,39 @@
+// SourceFile: a JSON file read with limits, and the line and column of any JSON path in it.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+
+namespace raygrade {
+
+// Limits on untrusted JSON. Each is far above what a real bank or submission needs.
+struct JsonLimits {
+  std::size_t max_bytes = 16u << 20;    // 16 MiB: a bank file of ~50,000 problems
+  int max_depth = 64;                   // problems nest 6 deep; nlohmann's parser recurses
+  std::size_t max_string = 64u << 10;   // 64 KiB: a long problem statement
+};
+
+struct SourceFile {
+  std::string name;  // as given on the command line
+  std::string text;
+  nlohmann::json root;
+};
+
+// Reads and parses a file. Throws Error naming the file (and line and column) on failure.
+std::shared_ptr<const SourceFile> load_json_file(const std::string& path,
+                                                 const JsonLimits& limits = {});
+
+// Parses text already in memory; `name` is used in diagnostics.
+std::shared_ptr<const SourceFile> parse_json_text(std::string name, std::string text,
+                                                  const JsonLimits& limits = {});
+
+// The 1-based line and column where the value at JSON pointer `path` starts; {0, 0} if the
+// path cannot be found in the text.
+std::pair<int, int> locate(std::string_view text, std::string_view path);
+
+}  // namespace raygrade

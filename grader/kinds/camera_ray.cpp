@@ -1,0 +1,78 @@
+// The camera-ray kind.
+#include "kinds/camera_ray.h"
+
+#include "derivation/number_format.h"
+
+namespace raygrade {
+
+Vec3d camera_ray_direction(const Camera& cam, double x, double y, PixelConvention convention) {
+  double shift = convention == PixelConvention::kCenter ? 0.5 : 0.0;
+  double x_diff = x + shift - cam.res_x / 2.0;
+  double y_diff = y + shift - cam.res_y / 2.0;
+  return cam.focal_length * cam.direction + x_diff * cross(cam.direction, cam.up) + y_diff * cam.up;
+}
+
+std::unique_ptr<Task> CameraRayTask::read(const Cursor& problem) {
+  Cursor c = problem.at("camera");
+  c.allow_only({"eye", "direction", "up", "focal_length", "resolution"});
+  Camera cam;
+  cam.eye = c.at("eye").vec3();
+  cam.direction = c.at("direction").nonzero_vec3();
+  cam.up = c.at("up").nonzero_vec3();
+  cam.focal_length = c.at("focal_length").positive_number();
+  auto res = c.at("resolution").items();
+  if (res.size() != 2) c.at("resolution").fail("expected [resX, resY]", "type");
+  cam.res_x = res[0].integer();
+  cam.res_y = res[1].integer();
+  if (cam.res_x <= 0 || cam.res_y <= 0) c.at("resolution").fail("the resolution must be positive", "degenerate");
+  if (length_squared(cross(cam.direction, cam.up)) == 0) {
+    c.at("up").fail("the up vector is parallel to the viewing direction", "degenerate");
+  }
+  auto pixel = problem.at("pixel").items();
+  if (pixel.size() != 2) problem.at("pixel").fail("expected [x, y]", "type");
+  double x = pixel[0].number(), y = pixel[1].number();
+  std::string conv = problem.string_or("convention", "center");
+  if (conv != "center" && conv != "corner") {
+    problem.at("convention").fail(fmt::format("unknown convention '{}' (known: center, corner)", conv), "invalid");
+  }
+  return std::make_unique<CameraRayTask>(cam, x, y, conv == "corner" ? PixelConvention::kCorner
+                                                                     : PixelConvention::kCenter);
+}
+
+nlohmann::json CameraRayTask::answer() const {
+  Vec3d d = camera_ray_direction(cam_, x_, y_, convention_);
+  return {{"ray", {{"origin", vec_json(cam_.eye)}, {"direction", vec_json(d)}}},
+          {"unit_direction", vec_json(normalized(d))}};
+}
+
+std::vector<SolutionPart> CameraRayTask::derive(std::string_view /*method*/,
+                                                const Overrides* overrides) const {
+  bool corner = convention_ == PixelConvention::kCorner;
+  Deriver d("image-plane", "Camera ray through a pixel", overrides);
+  E e = d.given("e", "e", cam_.eye, "the eye");
+  E dir = d.given("d", "d", cam_.direction, "the viewing direction");
+  E u = d.given("u", "u", cam_.up, "the up vector");
+  E f = d.given("f", "f", cam_.focal_length, "the focal length");
+  E rx = d.given("resX", "res_X", cam_.res_x);
+  E ry = d.given("resY", "res_Y", cam_.res_y);
+  E x = d.given("x", "x", x_, "the pixel's column (0 at the left)");
+  E y = d.given("y", "y", y_, "the pixel's row (0 at the bottom)");
+  d.step("v", "v", cross(dir, u), "the image plane's x direction, perpendicular to d and u");
+  if (corner) {
+    d.step("x_diff", "x_diff", x - rx / 2, "seed 004's convention: no half-pixel shift");
+    d.step("y_diff", "y_diff", y - ry / 2);
+  } else {
+    d.step("x_diff", "x_diff", x + 0.5 - rx / 2, "through the pixel's centre: half a pixel more");
+    d.step("y_diff", "y_diff", y + 0.5 - ry / 2);
+  }
+  Value dr = d.step("d_r", "d_r", f * dir + d.sym("x_diff") * d.sym("v") + d.sym("y_diff") * u,
+                    "f·d reaches the image plane's centre; then move across and up");
+  d.conclude(fmt::format("The ray through pixel ({}, {}) starts at the eye {} with direction {} "
+                         "(pixel {} convention).",
+                         format_number(x_), format_number(y_), format_vector(cam_.eye),
+                         format_vector(dr.vector), corner ? "corner" : "centre"));
+  (void)e;
+  return {SolutionPart{"", std::move(d).finish()}};
+}
+
+}  // namespace raygrade

@@ -1,0 +1,47 @@
+// Kind `camera-ray`: the primary ray a perspective camera shoots through a pixel (seed 004).
+#pragma once
+
+#include "problems/problem.h"
+
+namespace raygrade {
+
+// Where a pixel's ray passes. kCorner is seed 004's convention: offsets x − resX/2, so the
+// ray of pixel (x, y) passes through the pixel's lower-left corner. kCenter adds half a pixel
+// and passes through its centre. Pixel (0, 0) is at the lower left in both.
+enum class PixelConvention { kCenter, kCorner };
+
+struct Camera {
+  Vec3d eye;
+  Vec3d direction;  // the viewing direction d
+  Vec3d up;         // u
+  double focal_length = 1;
+  int res_x = 0, res_y = 0;
+};
+
+// d_r = f·d + x_diff·(d × u) + y_diff·u.
+Vec3d camera_ray_direction(const Camera& cam, double x, double y, PixelConvention convention);
+
+class CameraRayTask final : public Task {
+ public:
+  CameraRayTask(Camera cam, double x, double y, PixelConvention convention)
+      : cam_(cam), x_(x), y_(y), convention_(convention) {}
+  static std::unique_ptr<Task> read(const Cursor& problem);
+
+  std::string_view kind() const override { return "camera-ray"; }
+  nlohmann::json answer() const override;
+  std::vector<std::string> methods() const override { return {"image-plane"}; }
+  std::vector<SolutionPart> derive(std::string_view method,
+                                   const Overrides* overrides) const override;
+
+  const Camera& camera() const { return cam_; }
+  PixelConvention convention() const { return convention_; }
+  double pixel_x() const { return x_; }
+  double pixel_y() const { return y_; }
+
+ private:
+  Camera cam_;
+  double x_, y_;
+  PixelConvention convention_;
+};
+
+}  // namespace raygrade

@@ -1,0 +1,124 @@
+// The intersect and first-hit kinds.
+#include "kinds/intersect.h"
+
+#include <set>
+
+#include "derivation/number_format.h"
+
+namespace raygrade {
+
+std::unique_ptr<Task> IntersectTask::read(const Cursor& problem) {
+  return std::make_unique<IntersectTask>(read_ray(problem.at("ray")),
+                                         read_shape(problem.at("object")),
+                                         problem.string_or("method", ""));
+}
+
+nlohmann::json IntersectTask::answer() const { return intersection_json(object_->intersect(ray_)); }
+
+std::vector<SolutionPart> IntersectTask::derive(std::string_view method,
+                                                const Overrides* overrides) const {
+  std::string_view m = method.empty() ? std::string_view(method_) : method;
+  return {SolutionPart{"", object_->derive(ray_, m, overrides)}};
+}
+
+std::vector<NamedShape> read_named_objects(const Cursor& list) {
+  std::vector<NamedShape> out;
+  std::set<std::string> names;
+  auto items = list.items();
+  if (items.empty()) list.fail("the list of objects is empty", "invalid");
+  for (const auto& item : items) {
+    std::string name = item.at("name").string();
+    if (name.empty()) item.at("name").fail("the name must not be empty", "invalid");
+    if (!names.insert(name).second) {
+      item.at("name").fail(fmt::format("duplicate object name '{}'", name), "duplicate-name");
+    }
+    out.push_back(NamedShape{name, read_shape(item)});
+  }
+  return out;
+}
+
+std::unique_ptr<Task> FirstHitTask::read(const Cursor& problem) {
+  return std::make_unique<FirstHitTask>(read_ray(problem.at("ray")),
+                                        read_named_objects(problem.at("objects")),
+                                        problem.string_or("method", ""));
+}
+
+FirstHit first_hit(const Ray& ray, const std::vector<NamedShape>& objects) {
+  FirstHit out;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    Intersection x = objects[i].shape->intersect(ray);
+    if (x.hits.empty()) {
+      out.nearest.push_back(std::nullopt);
+      continue;
+    }
+    const Hit& h = x.hits.front();
+    out.nearest.push_back(h);
+    if (out.index < 0 || h.t < out.hit.t) {
+      out.index = static_cast<int>(i);
+      out.hit = h;
+      out.tie = false;
+    } else if (h.t == out.hit.t) {
+      out.tie = true;
+    }
+  }
+  return out;
+}
+
+nlohmann::json FirstHitTask::answer() const {
+  FirstHit f = first_hit(ray_, objects_);
+  nlohmann::json hits = nlohmann::json::array();
+  if (f.index >= 0) hits.push_back(hit_json(f.hit));
+  nlohmann::json j = {{"object", f.index >= 0 ? nlohmann::json(objects_[f.index].name) : nullptr},
+                      {"hits", hits}};
+  if (f.tie) j["tie"] = true;
+  return j;
+}
+
+std::vector<std::string> FirstHitTask::methods() const {
+  // The methods every object shares; the sphere's two methods when all are spheres.
+  std::vector<std::string> common = objects_.front().shape->methods();
+  for (const auto& o : objects_) {
+    std::vector<std::string> m = o.shape->methods(), keep;
+    for (const auto& x : common) {
+      if (std::find(m.begin(), m.end(), x) != m.end()) keep.push_back(x);
+    }
+    common = keep;
+  }
+  if (common.empty()) common.push_back("default");
+  return common;
+}
+
+std::vector<SolutionPart> FirstHitTask::derive(std::string_view method,
+                                               const Overrides* overrides) const {
+  std::string_view m = method.empty() ? std::string_view(method_) : method;
+  if (m == "default") m = "";
+  std::vector<SolutionPart> parts;
+  for (const auto& o : objects_) {
+    parts.push_back(SolutionPart{o.name, o.shape->derive(ray_, m, overrides)});
+  }
+  // The selection: every object's nearest valid t, then the smallest.
+  FirstHit f = first_hit(ray_, objects_);
+  Deriver d("nearest", "The first hit: the smallest valid t", nullptr);
+  std::vector<E> ts;
+  for (std::size_t i = 0; i < objects_.size(); ++i) {
+    if (!f.nearest[i]) continue;
+    std::string name = fmt::format("t_{}", i + 1);
+    ts.push_back(d.given(name, name, f.nearest[i]->t,
+                         fmt::format("the nearest valid hit of {}", objects_[i].name)));
+  }
+  if (ts.empty()) {
+    d.conclude("The ray hits none of the objects.");
+  } else {
+    if (ts.size() > 1) d.step("t_first", "t_first", min(ts), "the smallest of them");
+    d.conclude(fmt::format("The ray first hits {} at t = {}, at P = {}.", objects_[f.index].name,
+                           format_number(f.hit.t), format_vector(f.hit.point)));
+    for (std::size_t i = 0; i < objects_.size(); ++i) {
+      if (!f.nearest[i]) d.conclude(fmt::format("{} is not hit.", objects_[i].name));
+    }
+    if (f.tie) d.conclude("Another object is hit at the same t: the first in the list is named.");
+  }
+  parts.push_back(SolutionPart{"The first hit", std::move(d).finish()});
+  return parts;
+}
+
+}  // namespace raygrade

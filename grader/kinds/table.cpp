@@ -1,0 +1,18 @@
+// The table of problem kinds: adding one is one line here plus its own file pair.
+#include "kinds/camera_ray.h"
+#include "kinds/intersect.h"
+#include "problems/problem.h"
+
+namespace raygrade {
+
+const std::vector<KindEntry>& kind_table() {
+  static const std::vector<KindEntry> table = {
+      {"intersect", "every hit of a ray with one object", {"ray", "object"}, &IntersectTask::read},
+      {"first-hit", "the object a ray hits first", {"ray", "objects"}, &FirstHitTask::read},
+      {"camera-ray", "the ray a perspective camera shoots through a pixel",
+       {"camera", "pixel", "convention"}, &CameraRayTask::read},
+  };
+  return table;
+}
+
+}  // namespace raygrade

@@ -1,0 +1,91 @@
+// Problem: one exercise of the bank: its common keys and the kind-specific task.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "derivation/derivation.h"
+#include "json/cursor.h"
+#include "shapes/ray.h"
+
+namespace raygrade {
+
+// One part of a worked solution: a derivation, with a heading when a problem has several
+// (one per object of a first-hit problem).
+struct SolutionPart {
+  std::string heading;
+  Derivation derivation;
+};
+
+// The kind-specific part of a problem: what it asks and how to answer it.
+class Task {
+ public:
+  virtual ~Task() = default;
+  virtual std::string_view kind() const = 0;
+  // The reference answer, in the shape documented for the kind.
+  virtual nlohmann::json answer() const = 0;
+  // The methods the worked solution may use; the first is the default.
+  virtual std::vector<std::string> methods() const = 0;
+  // The worked solution by `method` (empty: the problem's or the kind's default).
+  virtual std::vector<SolutionPart> derive(std::string_view method,
+                                           const Overrides* overrides = nullptr) const = 0;
+  // Sentences that sum up the answer (the last part's conclusion, for most kinds).
+  virtual std::vector<std::string> conclusion() const;
+};
+
+struct Problem {
+  std::string id;
+  std::string kind;
+  std::string title;
+  std::string statement;
+  std::string method;  // the worked solution's method; empty for the kind's default
+  int precision = -1;  // decimals shown in worked solutions; -1 for significant digits
+  std::optional<nlohmann::json> expected;
+  nlohmann::json tolerance;  // as written; the grader reads it
+  nlohmann::json points;     // as written; the grader reads it
+  nlohmann::json tests;      // sample answers with the scores they must get
+  nlohmann::json source;     // the whole problem object as written
+  std::string file;          // where it came from
+  std::string path;          // its JSON pointer in that file ("" or "/problems/3")
+  std::shared_ptr<const SourceFile> source_file;
+  std::unique_ptr<Task> task;
+};
+
+// One row of the table of kinds.
+struct KindEntry {
+  std::string_view name;
+  std::string_view summary;
+  std::vector<std::string> keys;  // the problem keys this kind reads beside the common ones
+  std::unique_ptr<Task> (*read)(const Cursor& problem);
+};
+
+const std::vector<KindEntry>& kind_table();
+
+// The keys every problem may carry.
+const std::vector<std::string>& common_problem_keys();
+
+// Reads a ray {origin, direction, t_min, t_max}; rejects a zero direction and t_min > t_max.
+Ray read_ray(const Cursor& ray);
+
+// Reads one problem object. Throws Error naming the file and path on any fault.
+Problem read_problem(const Cursor& problem);
+
+// Every problem of a set of files and folders (folders are searched recursively for *.json,
+// in sorted order). Faulty files and problems are reported in `errors` and skipped; the rest
+// are read. Ids must be unique across the whole set.
+struct Bank {
+  std::vector<Problem> problems;
+  std::vector<Diagnostic> errors;
+  std::vector<std::string> files;
+};
+Bank load_bank(const std::vector<std::string>& paths);
+
+nlohmann::json vec_json(const Vec3d& v);
+nlohmann::json hit_json(const Hit& h);
+nlohmann::json intersection_json(const Intersection& x);
+
+}  // namespace raygrade

@@ -1,0 +1,70 @@
+// Steps as data, for tools and for the JSON worked solutions.
+#include "reports/json_report.h"
+
+namespace raygrade {
+
+nlohmann::json value_json(const Value& v) {
+  switch (v.kind) {
+    case Value::Kind::kScalar:
+      return std::isfinite(v.scalar) ? nlohmann::json(v.scalar) : nlohmann::json(nullptr);
+    case Value::Kind::kVector: return vec_json(v.vector);
+    case Value::Kind::kBool: return v.truth;
+    case Value::Kind::kNone: break;
+  }
+  return nullptr;
+}
+
+nlohmann::json derivation_json(const Derivation& d, const NumberFormat& numbers) {
+  nlohmann::json steps = nlohmann::json::array();
+  Env env;
+  for (const auto& s : d.steps) {
+    nlohmann::json j = {{"name", s.name},
+                        {"symbol", to_latex(s.symbol)},
+                        {"value", value_json(s.value)},
+                        {"shown", format_value(s.value, numbers)}};
+    if (s.given) {
+      j["given"] = true;
+    } else {
+      RenderOptions subst{&env, numbers};
+      j["formula"] = to_latex(s.formula);
+      j["substituted"] = to_latex(s.formula, subst);
+      j["formula_text"] = to_text(s.formula);
+    }
+    if (!s.note.empty()) j["note"] = s.note;
+    steps.push_back(std::move(j));
+    env[s.name] = s.value;
+  }
+  return {{"method", d.method}, {"title", d.title}, {"steps", steps},
+          {"conclusion", d.conclusion}};
+}
+
+nlohmann::json parts_json(const std::vector<SolutionPart>& parts, const NumberFormat& numbers) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& p : parts) {
+    nlohmann::json j = derivation_json(p.derivation, numbers);
+    if (!p.heading.empty()) j["heading"] = p.heading;
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
+nlohmann::json diagnostic_json(const Diagnostic& d) {
+  nlohmann::json j = {{"file", d.file},       {"path", d.path},
+                      {"severity", to_string(d.severity)}, {"message", d.message},
+                      {"code", d.code}};
+  if (d.line > 0) j["line"] = d.line;
+  if (d.column > 0) j["column"] = d.column;
+  return j;
+}
+
+NumberFormat number_format_for(const Problem& p, int decimals_override) {
+  NumberFormat f;
+  if (decimals_override >= 0) {
+    f.decimals = decimals_override;
+  } else if (p.precision >= 0) {
+    f.decimals = p.precision;
+  }
+  return f;
+}
+
+}  // namespace raygrade

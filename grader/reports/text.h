@@ -1,0 +1,14 @@
+// Plain-text rendering of worked solutions, for terminals.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "problems/problem.h"
+
+namespace raygrade {
+
+std::string render_text(const Problem& problem, const std::vector<SolutionPart>& parts,
+                        const NumberFormat& numbers);
+
+}  // namespace raygrade

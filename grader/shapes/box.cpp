@@ -1,0 +1,119 @@
+// Box: reading, reference slab intersection and seed 004's slab derivation.
+#include "shapes/box.h"
+
+#include "shapes/describe.h"
+
+namespace raygrade {
+
+std::unique_ptr<Shape> Box::read(const Cursor& object) {
+  std::vector<std::string> keys = common_object_keys();
+  keys.insert(keys.end(), {"min", "max"});
+  object.allow_only(keys);
+  Vec3d lo = object.at("min").vec3(), hi = object.at("max").vec3();
+  for (int i = 0; i < 3; ++i) {
+    if (!(lo[i] < hi[i])) {
+      object.at("max").fail(fmt::format("degenerate box: max[{}] = {} is not above min[{}] = {}",
+                                        i, hi[i], i, lo[i]), "degenerate");
+    }
+  }
+  return std::make_unique<Box>(lo, hi);
+}
+
+nlohmann::json Box::to_json() const {
+  return {{"type", "box"}, {"min", {lo_.x, lo_.y, lo_.z}}, {"max", {hi_.x, hi_.y, hi_.z}}};
+}
+
+namespace {
+
+const char* kAxis[] = {"x", "y", "z"};
+
+// The point on the face of `axis` at t, with that coordinate set exactly to the face.
+Hit face_hit(const Ray& ray, double t, int axis, bool entering, const Vec3d& lo, const Vec3d& hi) {
+  Hit h;
+  h.t = t;
+  h.point = ray.at(t);
+  double s = ray.direction[axis] > 0 ? 1 : -1;
+  if (entering) s = -s;
+  h.normal = Vec3d{};
+  h.normal[axis] = s;
+  h.point[axis] = s < 0 ? lo[axis] : hi[axis];
+  h.part = fmt::format("face {} = {}", kAxis[axis], h.point[axis]);
+  return h;
+}
+
+}  // namespace
+
+Intersection Box::intersect(const Ray& ray) const {
+  Intersection out;
+  auto s = slab_interval(ray.origin, ray.direction, lo_, hi_);
+  if (!s.hit) return out;
+  if (s.enter_axis >= 0 && ray.accepts(s.t_enter)) {
+    out.hits.push_back(face_hit(ray, s.t_enter, s.enter_axis, true, lo_, hi_));
+  }
+  if (s.exit_axis >= 0 && ray.accepts(s.t_exit) && s.t_exit != s.t_enter) {
+    out.hits.push_back(face_hit(ray, s.t_exit, s.exit_axis, false, lo_, hi_));
+  }
+  finish_hits(out.hits);
+  return out;
+}
+
+Derivation Box::derive(const Ray& ray, std::string_view /*method*/,
+                       const Overrides* overrides) const {
+  Deriver d("slab", "Box: the slab method", overrides);
+  E O = d.given("O", "o", ray.origin, "the ray's origin");
+  E D = d.given("D", "d", ray.direction, "the ray's direction");
+  d.given("min", "min", lo_, "the box's low corner");
+  d.given("max", "max", hi_, "the box's high corner");
+  std::vector<E> lows, highs;
+  bool empty = false;
+  for (int i = 0; i < 3; ++i) {
+    std::string ax = kAxis[i];
+    E o = d.given("o_" + ax, "o_" + ax, ray.origin[i]);
+    E di = d.given("d_" + ax, "d_" + ax, ray.direction[i]);
+    E mn = d.given("min_" + ax, "min_" + ax, lo_[i]);
+    E mx = d.given("max_" + ax, "max_" + ax, hi_[i]);
+    if (ray.direction[i] == 0) {
+      bool inside = ray.origin[i] >= lo_[i] && ray.origin[i] <= hi_[i];
+      d.note(fmt::format("d_{} = 0: the ray never leaves its {} slab; o_{} = {} is {} [{}, {}], so "
+                         "{}.", ax, ax, ax, format_number(ray.origin[i]),
+                         inside ? "inside" : "outside", format_number(lo_[i]),
+                         format_number(hi_[i]),
+                         inside ? "this slab allows every t" : "the ray misses the box"));
+      if (!inside) empty = true;
+      continue;
+    }
+    bool swap = ray.direction[i] < 0;
+    d.step("t_low_" + ax, "t_low_" + ax, ((swap ? mx : mn) - o) / di,
+           swap ? fmt::format("d_{} < 0, so the slab's ends swap: the low end comes from max_{}",
+                              ax, ax)
+                : "");
+    d.step("t_high_" + ax, "t_high_" + ax, ((swap ? mn : mx) - o) / di);
+    lows.push_back(d.sym("t_low_" + ax));
+    highs.push_back(d.sym("t_high_" + ax));
+  }
+  if (empty || lows.empty()) {
+    d.conclude(empty ? "The ray does not hit the box: it runs parallel to a slab it lies outside."
+                     : "The ray does not move.");
+    return std::move(d).finish();
+  }
+  double enter = d.step("t_enter", "t_enter", lows.size() == 1 ? lows[0] : max(lows),
+                        "the largest low end").scalar;
+  double exit = d.step("t_exit", "t_exit", highs.size() == 1 ? highs[0] : min(highs),
+                       "the smallest high end").scalar;
+  if (enter > exit) {
+    d.note("t_enter > t_exit: the slabs' intervals do not overlap.");
+    d.conclude("The ray does not hit the box: the slabs' intervals do not overlap.");
+    return std::move(d).finish();
+  }
+  std::vector<Candidate> candidates;
+  Value P0 = d.step("P_enter", "P_enter", O + d.sym("t_enter") * D);
+  candidates.push_back({enter, P0.vector, range_reason(ray, enter)});
+  if (exit != enter) {
+    Value P1 = d.step("P_exit", "P_exit", O + d.sym("t_exit") * D);
+    candidates.push_back({exit, P1.vector, range_reason(ray, exit)});
+  }
+  conclude_candidates(d, "box", ray, candidates, true);
+  return std::move(d).finish();
+}
+
+}  // namespace raygrade

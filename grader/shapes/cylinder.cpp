@@ -1,0 +1,170 @@
+// Cylinder: reading, reference intersection, and the quadratic derivation of seed 000.
+#include "shapes/cylinder.h"
+
+#include "shapes/describe.h"
+
+namespace raygrade {
+
+Cylinder::Cylinder(Vec3d base, Vec3d axis, double radius, std::optional<double> height,
+                   bool capped)
+    : base_(base),
+      axis_given_(axis),
+      axis_(normalized(axis)),
+      radius_(radius),
+      height_(height),
+      capped_(capped) {}
+
+std::unique_ptr<Shape> Cylinder::read(const Cursor& object) {
+  std::vector<std::string> keys = common_object_keys();
+  keys.insert(keys.end(), {"base", "axis", "radius", "height", "capped"});
+  object.allow_only(keys);
+  Vec3d axis = object.has("axis") ? object.at("axis").nonzero_vec3() : Vec3d{0, 0, 1};
+  std::optional<double> height;
+  if (object.has("height")) height = object.at("height").positive_number();
+  bool capped = object.boolean_or("capped", false);
+  if (capped && !height) object.at("capped").fail("an infinite cylinder cannot have caps: give a height", "invalid");
+  return std::make_unique<Cylinder>(object.at("base").vec3(), axis,
+                                    object.at("radius").positive_number(), height, capped);
+}
+
+nlohmann::json Cylinder::to_json() const {
+  nlohmann::json j = {{"type", "cylinder"},
+                      {"base", {base_.x, base_.y, base_.z}},
+                      {"axis", {axis_given_.x, axis_given_.y, axis_given_.z}},
+                      {"radius", radius_}};
+  if (height_) j["height"] = *height_;
+  if (capped_) j["capped"] = true;
+  return j;
+}
+
+Vec3d Cylinder::center() const { return height_ ? base_ + (*height_ / 2) * axis_ : base_; }
+
+double Cylinder::extent() const {
+  return height_ ? std::max(radius_, *height_ / 2) : 2 * radius_;
+}
+
+Intersection Cylinder::intersect(const Ray& ray) const {
+  Intersection out;
+  Roots<double> roots = cylinder_side_roots(ray.origin, ray.direction, base_, axis_, radius_);
+  double ts[2] = {roots.t0, roots.t1};
+  for (int i = 0; i < roots.count; ++i) {
+    double t = ts[i];
+    if (!ray.accepts(t)) continue;
+    Vec3d p = ray.at(t);
+    double h = dot(p - base_, axis_);
+    if (height_ && (h < 0 || h > *height_)) continue;
+    Vec3d radial = (p - base_) - h * axis_;
+    out.hits.push_back(Hit{t, p, normalized(radial), std::nullopt, "side"});
+  }
+  if (capped_) {
+    double da = dot(ray.direction, axis_);
+    if (da != 0) {
+      double fa = dot(ray.origin - base_, axis_);
+      for (int cap = 0; cap < 2; ++cap) {
+        double level = cap == 0 ? 0 : *height_;
+        double t = (level - fa) / da;
+        if (!ray.accepts(t)) continue;
+        Vec3d p = ray.at(t);
+        Vec3d radial = (p - base_) - dot(p - base_, axis_) * axis_;
+        if (length_squared(radial) > radius_ * radius_) continue;
+        out.hits.push_back(Hit{t, p, cap == 0 ? -axis_ : axis_, std::nullopt,
+                               cap == 0 ? "bottom cap" : "top cap"});
+      }
+    }
+  }
+  finish_hits(out.hits);
+  return out;
+}
+
+Derivation Cylinder::derive(const Ray& ray, std::string_view /*method*/,
+                            const Overrides* overrides) const {
+  Deriver d("quadratic", "Cylinder: the side's quadratic, then the height and the caps",
+            overrides);
+  bool vertical = axis_given_.x == 0 && axis_given_.y == 0 && axis_given_.z > 0;
+  E O = d.given("O", "O", ray.origin, "the ray's origin");
+  E D = d.given("D", "D", ray.direction, "the ray's direction");
+  E B = d.given("B", "B", base_, "the base point on the axis");
+  E r = d.given("r", "r", radius_);
+  E A;
+  if (vertical) {
+    // Seed 000: x² + y² = r² (centered at the origin) or (x − a)² + (y − b)² = r².
+    E px = d.given("px", "p_x", ray.origin.x), py = d.given("py", "p_y", ray.origin.y);
+    E vx = d.given("vx", "v_x", ray.direction.x), vy = d.given("vy", "v_y", ray.direction.y);
+    bool centered = base_.x == 0 && base_.y == 0;
+    E cx = 0, cy = 0;
+    if (!centered) {
+      cx = d.given("cx", "a", base_.x, "the axis passes through (a, b)");
+      cy = d.given("cy", "b", base_.y);
+    }
+    E ex = centered ? px : px - cx, ey = centered ? py : py - cy;
+    d.step("a", "a", square(vx) + square(vy),
+           "substituting x = p_x + t v_x, y = p_y + t v_y into the circle's equation");
+    d.step("b", "b", 2 * (ex * vx + ey * vy));
+    d.step("c", "c", square(ex) + square(ey) - square(r));
+    A = vec({0, 0, 1});
+  } else {
+    A = d.given("A", "A", axis_, "the unit axis");
+    d.step("f", "f", O - B);
+    d.step("D_perp", "D_perp", D - dot(D, A) * A, "D without its component along the axis");
+    d.step("f_perp", "f_perp", d.sym("f") - dot(d.sym("f"), A) * A);
+    d.step("a", "a", dot(d.sym("D_perp"), d.sym("D_perp")));
+    d.step("b", "b", 2 * dot(d.sym("f_perp"), d.sym("D_perp")));
+    d.step("c", "c", dot(d.sym("f_perp"), d.sym("f_perp")) - square(r));
+  }
+  double a = d.scalar("a");
+  std::vector<Candidate> candidates;
+  if (a == 0) {
+    d.note("a = 0: the ray runs parallel to the axis and never crosses the side.");
+  } else {
+    double disc = d.step("discriminant", "Delta",
+                         square(d.sym("b")) - 4 * d.sym("a") * d.sym("c")).scalar;
+    if (disc < 0) {
+      d.note("Δ < 0: the ray misses the infinite cylinder.");
+    } else {
+      double t0 = d.step("t0", "t0", (-d.sym("b") - sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
+      double t1 = d.step("t1", "t1", (-d.sym("b") + sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
+      std::vector<double> ts = {t0};
+      if (t1 != t0) ts.push_back(t1);
+      for (std::size_t k = 0; k < ts.size(); ++k) {
+        std::string p = k == 0 ? "P0" : "P1";
+        Value P = d.step(p, p, O + d.sym(k == 0 ? "t0" : "t1") * D);
+        std::string reason = range_reason(ray, ts[k]);
+        if (height_) {
+          std::string h = k == 0 ? "h0" : "h1";
+          double hv = d.step(h, h, dot(d.sym(p) - B, A),
+                             fmt::format("height along the axis: must lie in [0, {}]",
+                                         format_number(*height_))).scalar;
+          if (reason.empty() && (hv < 0 || hv > *height_)) {
+            reason = fmt::format("it lies outside the cylinder's height (h = {})", format_number(hv));
+          }
+        }
+        candidates.push_back({ts[k], P.vector, reason});
+      }
+    }
+  }
+  if (capped_) {
+    double da = d.step("D_axis", "D·A", dot(D, A)).scalar;
+    if (da != 0) {
+      for (int cap = 0; cap < 2; ++cap) {
+        std::string t = cap == 0 ? "t_bottom" : "t_top";
+        E level = cap == 0 ? E(0) : E(*height_);
+        double tv = d.step(t, t, (level - dot(O - B, A)) / d.sym("D_axis"),
+                           cap == 0 ? "the bottom cap's plane" : "the top cap's plane").scalar;
+        std::string p = cap == 0 ? "P_bottom" : "P_top";
+        Value P = d.step(p, p, O + d.sym(t) * D);
+        std::string rho = cap == 0 ? "rho2_bottom" : "rho2_top";
+        double rv = d.step(rho, rho, square(d.sym(p) - B - dot(d.sym(p) - B, A) * A),
+                           "squared distance from the axis: ≤ r² on the cap").scalar;
+        std::string reason = range_reason(ray, tv);
+        if (reason.empty() && rv > radius_ * radius_) reason = "it lies outside the cap's disc";
+        candidates.push_back({tv, P.vector, reason});
+      }
+      std::sort(candidates.begin(), candidates.end(),
+                [](const Candidate& x, const Candidate& y) { return x.t < y.t; });
+    }
+  }
+  conclude_candidates(d, "cylinder", ray, candidates, true);
+  return std::move(d).finish();
+}
+
+}  // namespace raygrade

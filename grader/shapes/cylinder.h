@@ -1,0 +1,66 @@
+// Cylinder: base, axis, radius; infinite, or finite with an optional pair of caps.
+#pragma once
+
+#include <optional>
+
+#include "shapes/sphere.h"
+
+namespace raygrade {
+
+// Roots of the side's quadratic |f⊥ + t d⊥|² = r², where ⊥ removes the component along the
+// unit axis. As for the sphere, the quarter discriminant is a·r² − ((f × d)·â)², which does
+// not cancel, and the roots come from q = −(b + sign(b)√Δ). count 0 when the ray is parallel
+// to the axis (a = 0).
+template <typename T>
+Roots<T> cylinder_side_roots(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& base,
+                             const Vec3<T>& axis, T r) {
+  using std::sqrt;
+  Vec3<T> f = o - base;
+  Vec3<T> fp = f - dot(f, axis) * axis;
+  Vec3<T> dp = d - dot(d, axis) * axis;
+  T a = dot(dp, dp);
+  Roots<T> out;
+  if (a == T(0)) return out;
+  T b = dot(fp, dp);
+  T s = dot(cross_accurate(f, d), axis);
+  T disc = a * (r * r) - s * s;
+  if (disc < T(0)) return out;
+  if (disc == T(0)) {
+    out.count = 1;
+    out.t0 = out.t1 = -b / a;
+    return out;
+  }
+  T c = sum_of_squares_minus_square(fp, Vec3<T>{}, r);
+  T q = -(b + sign_of(b) * sqrt(disc));
+  T t0 = c / q, t1 = q / a;
+  if (t1 < t0) std::swap(t0, t1);
+  out.count = 2;
+  out.t0 = t0;
+  out.t1 = t1;
+  return out;
+}
+
+class Cylinder final : public Shape {
+ public:
+  Cylinder(Vec3d base, Vec3d axis, double radius, std::optional<double> height, bool capped);
+  static std::unique_ptr<Shape> read(const Cursor& object);
+
+  std::string_view type() const override { return "cylinder"; }
+  Intersection intersect(const Ray& ray) const override;
+  std::vector<std::string> methods() const override { return {"quadratic"}; }
+  Derivation derive(const Ray& ray, std::string_view method,
+                    const Overrides* overrides) const override;
+  nlohmann::json to_json() const override;
+  Vec3d center() const override;
+  double extent() const override;
+
+ private:
+  Vec3d base_;
+  Vec3d axis_given_;
+  Vec3d axis_;  // unit
+  double radius_;
+  std::optional<double> height_;
+  bool capped_;
+};
+
+}  // namespace raygrade

@@ -1,0 +1,103 @@
+// Plane-and-interior helpers shared by the flat primitives.
+#include "shapes/flat.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace raygrade {
+namespace {
+
+struct P2 {
+  double u, v;
+};
+
+P2 project(const Vec3d& p, int drop) {
+  int i = (drop + 1) % 3, j = (drop + 2) % 3;
+  return {p[i], p[j]};
+}
+
+double orient(P2 a, P2 b, P2 c) { return (b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u); }
+
+// Edge tolerance: relative to the squared size of the polygon, a few ulps of the products.
+constexpr double kOnEdgeRelative = 64 * 2.220446049250313e-16;
+
+bool on_segment(P2 a, P2 b, P2 q, double scale2) {
+  if (std::abs(orient(a, b, q)) > kOnEdgeRelative * scale2) return false;
+  return q.u >= std::min(a.u, b.u) && q.u <= std::max(a.u, b.u) && q.v >= std::min(a.v, b.v) &&
+         q.v <= std::max(a.v, b.v);
+}
+
+}  // namespace
+
+bool parallel_to_plane(const Vec3d& n, const Vec3d& direction) {
+  return std::abs(dot(n, direction)) <= kParallelRelative * length(n) * length(direction);
+}
+
+bool in_plane(const Vec3d& n, const Vec3d& q, const Vec3d& p) {
+  double scale = length(n) * (std::abs(q.x) + std::abs(q.y) + std::abs(q.z) + std::abs(p.x) +
+                              std::abs(p.y) + std::abs(p.z));
+  return std::abs(dot(n, p - q)) <= kParallelRelative * scale;
+}
+
+Vec3d newell_normal(const std::vector<Vec3d>& v) {
+  Vec3d n{};
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Vec3d& a = v[i];
+    const Vec3d& b = v[(i + 1) % v.size()];
+    n.x += (a.y - b.y) * (a.z + b.z);
+    n.y += (a.z - b.z) * (a.x + b.x);
+    n.z += (a.x - b.x) * (a.y + b.y);
+  }
+  return n;
+}
+
+bool point_in_polygon(const Vec3d& q3, const std::vector<Vec3d>& vertices, const Vec3d& normal) {
+  int drop = max_dimension(normal);
+  P2 q = project(q3, drop);
+  double umin = q.u, umax = q.u, vmin = q.v, vmax = q.v;
+  std::vector<P2> p;
+  for (const auto& v : vertices) {
+    p.push_back(project(v, drop));
+    umin = std::min(umin, p.back().u);
+    umax = std::max(umax, p.back().u);
+    vmin = std::min(vmin, p.back().v);
+    vmax = std::max(vmax, p.back().v);
+  }
+  double scale2 = std::max({umax - umin, vmax - vmin, 1e-300});
+  scale2 *= scale2;
+  bool inside = false;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    P2 a = p[i], b = p[(i + 1) % p.size()];
+    if (on_segment(a, b, q, scale2)) return true;  // closed: the boundary belongs to it
+    if ((a.v > q.v) != (b.v > q.v)) {
+      double u = a.u + (q.v - a.v) * (b.u - a.u) / (b.v - a.v);
+      if (q.u < u) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+bool ray_in_plane_meets_polygon(const Ray& ray, const std::vector<Vec3d>& vertices,
+                                const Vec3d& normal) {
+  double t0 = ray.t_min, t1 = ray.t_max;
+  if (std::isfinite(t0) && point_in_polygon(ray.at(t0), vertices, normal)) return true;
+  int drop = max_dimension(normal);
+  P2 o = project(ray.origin, drop), d = project(ray.direction, drop);
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    P2 a = project(vertices[i], drop), b = project(vertices[(i + 1) % vertices.size()], drop);
+    // Solve o + t d = a + s (b − a) for t and s.
+    P2 e{b.u - a.u, b.v - a.v};
+    double den = d.u * e.v - d.v * e.u;
+    P2 w{a.u - o.u, a.v - o.v};
+    if (den == 0) {
+      // Parallel to this edge: it is met only if collinear; the other edges then decide.
+      continue;
+    }
+    double t = (w.u * e.v - w.v * e.u) / den;
+    double s = (w.u * d.v - w.v * d.u) / den;
+    if (s >= 0 && s <= 1 && t >= t0 && t <= t1) return true;
+  }
+  return false;
+}
+
+}  // namespace raygrade

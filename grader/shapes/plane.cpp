@@ -1,0 +1,122 @@
+// Plane: reading, reference intersection, and the point-normal and implicit derivations.
+#include "shapes/plane.h"
+
+#include "shapes/describe.h"
+#include "shapes/flat.h"
+
+namespace raygrade {
+
+std::unique_ptr<Shape> Plane::read(const Cursor& object) {
+  std::vector<std::string> keys = common_object_keys();
+  keys.insert(keys.end(), {"point", "normal", "d"});
+  object.allow_only(keys);
+  Vec3d n = object.at("normal").nonzero_vec3();
+  bool has_point = object.has("point"), has_d = object.has("d");
+  if (has_point == has_d) {
+    object.fail(has_point ? "give either 'point' or 'd', not both"
+                          : "missing 'point' (or 'd', for n·p + d = 0)",
+                has_point ? "invalid" : "missing-key");
+  }
+  if (has_point) return std::make_unique<Plane>(n, object.at("point").vec3(), std::nullopt);
+  return std::make_unique<Plane>(n, std::nullopt, object.at("d").number());
+}
+
+nlohmann::json Plane::to_json() const {
+  nlohmann::json j = {{"type", "plane"}, {"normal", {normal_.x, normal_.y, normal_.z}}};
+  if (point_) {
+    j["point"] = {point_->x, point_->y, point_->z};
+  } else {
+    j["d"] = *d_;
+  }
+  return j;
+}
+
+std::vector<std::string> Plane::methods() const {
+  if (point_) return {"point-normal", "implicit"};
+  return {"implicit", "point-normal"};
+}
+
+Vec3d Plane::some_point() const {
+  if (point_) return *point_;
+  return (-*d_ / length_squared(normal_)) * normal_;
+}
+
+Vec3d Plane::center() const { return some_point(); }
+
+Intersection Plane::intersect(const Ray& ray) const {
+  Intersection out;
+  Vec3d q = some_point();
+  if (parallel_to_plane(normal_, ray.direction)) {
+    out.contained = point_ ? in_plane(normal_, q, ray.origin)
+                           : std::abs(dot(normal_, ray.origin) + *d_) <=
+                                 kParallelRelative * (length(normal_) * (std::abs(ray.origin.x) +
+                                                                         std::abs(ray.origin.y) +
+                                                                         std::abs(ray.origin.z)) +
+                                                      std::abs(*d_));
+    return out;
+  }
+  double numerator = point_ ? dot(normal_, *point_ - ray.origin) : -(dot(normal_, ray.origin) + *d_);
+  double t = numerator / dot(normal_, ray.direction);
+  if (ray.accepts(t)) {
+    Hit h;
+    h.t = t;
+    h.point = ray.at(t);
+    h.normal = normalized(normal_);
+    out.hits.push_back(h);
+  }
+  return out;
+}
+
+Derivation Plane::derive(const Ray& ray, std::string_view method,
+                         const Overrides* overrides) const {
+  bool implicit = method.empty() ? !point_ : method == "implicit";
+  Deriver d(implicit ? "implicit" : "point-normal",
+            implicit ? "Plane, implicit form N·P + D = 0" : "Plane, point-normal form",
+            overrides);
+  E O = d.given("O", "O", ray.origin, "the ray's origin");
+  E R = d.given("R", "R", ray.direction, "the ray's direction");
+  E N = d.given("N", "N", normal_, "the plane's normal");
+  double t = 0, denominator = 0;
+  bool through_origin = false;
+  if (implicit) {
+    if (point_) {
+      E V0 = d.given("V0", "V_0", *point_, "a point of the plane");
+      d.step("D", "D", -dot(N, V0), "N·V0 + D = 0 since V0 lies in the plane, so D = −N·V0");
+    } else {
+      d.given("D", "D", *d_, "the plane's constant in N·P + D = 0");
+    }
+    denominator = d.step("NR", "N·R", dot(N, R)).scalar;
+    if (denominator == 0) {
+      double s = d.step("NO_D", "N·O + D", dot(N, O) + d.sym("D")).scalar;
+      through_origin = s == 0;
+    } else {
+      t = d.step("t", "t", -(dot(N, O) + d.sym("D")) / d.sym("NR"),
+                 "from N·(O + tR) + D = 0").scalar;
+    }
+  } else {
+    E P0 = d.given("P0", "P_0", *point_, "a point of the plane");
+    denominator = d.step("denominator", "N·R", dot(N, R)).scalar;
+    double numerator = d.step("numerator", "N·(P_0 − O)", dot(N, P0 - O)).scalar;
+    if (denominator == 0) {
+      through_origin = numerator == 0;
+    } else {
+      t = d.step("t", "t", d.sym("numerator") / d.sym("denominator"),
+                 "from N·(O + tR − P0) = 0").scalar;
+    }
+  }
+  if (denominator == 0) {
+    d.note("N·R = 0: the ray is parallel to the plane.");
+    if (through_origin) {
+      d.conclude("The ray lies in the plane (N·R = 0 and the origin satisfies the plane's "
+                 "equation): it meets the plane along a whole line, not at a point.");
+    } else {
+      d.conclude("The ray is parallel to the plane and off it: no intersection.");
+    }
+    return std::move(d).finish();
+  }
+  Value P = d.step("P", "P", O + d.sym("t") * R);
+  conclude_candidates(d, "plane", ray, {{t, P.vector, range_reason(ray, t)}}, false);
+  return std::move(d).finish();
+}
+
+}  // namespace raygrade

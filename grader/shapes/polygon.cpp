@@ -1,0 +1,151 @@
+// Polygon: reading with planarity checks, reference intersection, edge-test and
+// crossing-number derivations.
+#include "shapes/polygon.h"
+
+#include <algorithm>
+
+#include "shapes/describe.h"
+#include "shapes/flat.h"
+
+namespace raygrade {
+namespace {
+
+// Vertices farther than this fraction of the polygon's size from its plane make it
+// non-planar. Generous next to rounding (1e-16), tiny next to any drawn polygon.
+constexpr double kPlanarityRelative = 1e-9;
+
+bool is_convex(const std::vector<Vec3d>& v, const Vec3d& n) {
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Vec3d& a = v[i];
+    const Vec3d& b = v[(i + 1) % v.size()];
+    const Vec3d& c = v[(i + 2) % v.size()];
+    if (dot(cross(b - a, c - b), n) < 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+Polygon::Polygon(std::vector<Vec3d> vertices)
+    : v_(std::move(vertices)), normal_(newell_normal(v_)), convex_(is_convex(v_, normal_)) {}
+
+std::unique_ptr<Shape> Polygon::read(const Cursor& object) {
+  std::vector<std::string> keys = common_object_keys();
+  keys.push_back("vertices");
+  object.allow_only(keys);
+  Cursor list = object.at("vertices");
+  std::vector<Vec3d> v;
+  for (const auto& item : list.items()) v.push_back(item.vec3());
+  if (v.size() < 3) list.fail(fmt::format("a polygon needs at least 3 vertices, found {}", v.size()), "degenerate");
+  double size = 0;
+  for (const auto& p : v) size = std::max(size, length(p - v[0]));
+  Vec3d n = newell_normal(v);
+  if (length(n) <= 1e-14 * size * size) {
+    list.fail("degenerate polygon: the vertices are collinear or enclose no area", "degenerate");
+  }
+  Vec3d unit = normalized(n);
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    double off = std::abs(dot(unit, v[i] - v[0]));
+    if (off > kPlanarityRelative * size) {
+      list.items()[i].fail(
+          fmt::format("non-planar polygon: vertex {} lies {} off the plane of the others", i, off),
+          "degenerate");
+    }
+  }
+  return std::make_unique<Polygon>(std::move(v));
+}
+
+nlohmann::json Polygon::to_json() const {
+  nlohmann::json vs = nlohmann::json::array();
+  for (const auto& v : v_) vs.push_back({v.x, v.y, v.z});
+  return {{"type", "polygon"}, {"vertices", vs}};
+}
+
+std::vector<std::string> Polygon::methods() const {
+  if (convex_) return {"edge-tests", "crossing-number"};
+  return {"crossing-number"};
+}
+
+Vec3d Polygon::center() const {
+  Vec3d c{};
+  for (const auto& p : v_) c = c + p;
+  return c / static_cast<double>(v_.size());
+}
+
+double Polygon::extent() const {
+  Vec3d c = center();
+  double r = 0;
+  for (const auto& p : v_) r = std::max(r, length(p - c));
+  return r;
+}
+
+Intersection Polygon::intersect(const Ray& ray) const {
+  Intersection out;
+  if (parallel_to_plane(normal_, ray.direction)) {
+    out.contained = in_plane(normal_, v_[0], ray.origin) &&
+                    ray_in_plane_meets_polygon(ray, v_, normal_);
+    return out;
+  }
+  double t = dot(normal_, v_[0] - ray.origin) / dot(normal_, ray.direction);
+  if (!ray.accepts(t)) return out;
+  Vec3d q = ray.at(t);
+  if (!point_in_polygon(q, v_, normal_)) return out;
+  Hit h;
+  h.t = t;
+  h.point = q;
+  h.normal = normalized(normal_);
+  out.hits.push_back(h);
+  return out;
+}
+
+Derivation Polygon::derive(const Ray& ray, std::string_view method,
+                           const Overrides* overrides) const {
+  bool edges = convex_ && method != "crossing-number";
+  Deriver d(edges ? "edge-tests" : "crossing-number",
+            edges ? "Convex polygon: plane hit, then edge tests"
+                  : "Polygon: plane hit, then the crossing-number test",
+            overrides);
+  E O = d.given("O", "O", ray.origin, "the ray's origin");
+  E D = d.given("D", "D", ray.direction, "the ray's direction");
+  std::vector<E> V;
+  for (std::size_t i = 0; i < v_.size(); ++i) {
+    V.push_back(d.given(fmt::format("v{}", i), fmt::format("v_{}", i), v_[i]));
+  }
+  E sum = cross(V[0], V[1]);
+  for (std::size_t i = 1; i < V.size(); ++i) sum = sum + cross(V[i], V[(i + 1) % V.size()]);
+  d.step("n", "n", sum, "Newell's normal: the sum of v_i × v_(i+1), by vertex order");
+  E n = d.sym("n");
+  double den = d.step("denominator", "n·D", dot(n, D)).scalar;
+  if (den == 0) {
+    d.note("n·D = 0: the ray is parallel to the polygon's plane.");
+    d.conclude("The ray is parallel to the polygon's plane: it has no single hit point.");
+    return std::move(d).finish();
+  }
+  d.step("numerator", "n·(v_0 − O)", dot(n, V[0] - O));
+  double t = d.step("t", "t", d.sym("numerator") / d.sym("denominator")).scalar;
+  Value q = d.step("q", "q", O + d.sym("t") * D, "the point where the ray meets the plane");
+  bool inside = true;
+  if (edges) {
+    for (std::size_t i = 0; i < V.size(); ++i) {
+      std::size_t j = (i + 1) % V.size();
+      std::string name = fmt::format("e{}", i);
+      double e = d.step(name, fmt::format("e_{}", i), dot(cross(V[j] - V[i], d.sym("q") - V[i]), n),
+                        fmt::format("edge v{} v{}: ≥ 0 means inside", i, j)).scalar;
+      inside = inside && e >= 0;
+    }
+  } else {
+    inside = point_in_polygon(q.vector, v_, normal_);
+    int drop = max_dimension(normal_);
+    const char* axes[] = {"x", "y", "z"};
+    d.step("crossings", "crossings", inside ? 1 : 0,
+           fmt::format("project onto the plane without {} (the normal's largest component) and "
+                       "cast a ray from q along +{}: an odd number of edge crossings means "
+                       "inside (1 stands for odd, 0 for even; a point on an edge is inside)",
+                       axes[drop], axes[(drop + 1) % 3]));
+  }
+  std::string reason = inside ? range_reason(ray, t) : "the plane point q lies outside the polygon";
+  conclude_candidates(d, "polygon", ray, {{t, q.vector, reason}}, false);
+  return std::move(d).finish();
+}
+
+}  // namespace raygrade

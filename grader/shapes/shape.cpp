@@ -1,0 +1,45 @@
+// Shared helpers of the primitives: reading by type, and ordering hits.
+#include "shapes/shape.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace raygrade {
+
+const std::vector<std::string>& common_object_keys() {
+  static const std::vector<std::string> keys = {"type", "name", "material", "transform"};
+  return keys;
+}
+
+std::unique_ptr<Shape> read_shape(const Cursor& object) {
+  if (!object.is_object()) object.fail("expected an object with a 'type'", "type");
+  std::string type = object.at("type").string();
+  std::vector<std::string> names;
+  for (const auto& entry : shape_table()) {
+    if (entry.type == type) return entry.read(object);
+    names.emplace_back(entry.type);
+  }
+  std::string hint = closest_match(type, names);
+  object.at("type").fail(
+      hint.empty() ? fmt::format("unknown object type '{}' (known: {})", type,
+                                 fmt::join(names, ", "))
+                   : fmt::format("unknown object type '{}' (did you mean '{}'?)", type, hint),
+      "unknown-type");
+}
+
+void finish_hits(std::vector<Hit>& hits) {
+  std::stable_sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) { return a.t < b.t; });
+  // Two hits at the same t are the same point of the ray: a seam between two parts of the
+  // surface. Equal within a few ulps, since both parts compute t by different formulas.
+  constexpr double kSeamUlps = 8 * 2.220446049250313e-16;
+  std::vector<Hit> out;
+  for (auto& h : hits) {
+    if (!out.empty() && std::abs(h.t - out.back().t) <= kSeamUlps * std::max(1.0, std::abs(h.t))) {
+      continue;
+    }
+    out.push_back(std::move(h));
+  }
+  hits = std::move(out);
+}
+
+}  // namespace raygrade

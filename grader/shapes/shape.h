@@ -1,0 +1,63 @@
+// Shape: what every primitive provides, and the table of primitives.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "derivation/derivation.h"
+#include "json/cursor.h"
+#include "shapes/ray.h"
+
+namespace raygrade {
+
+class Shape {
+ public:
+  virtual ~Shape() = default;
+
+  virtual std::string_view type() const = 0;
+
+  // The reference answer: every hit of the closed object in [t_min, t_max], ascending.
+  virtual Intersection intersect(const Ray& ray) const = 0;
+
+  // The methods a course teaches for this primitive; the first is the default.
+  virtual std::vector<std::string> methods() const = 0;
+
+  // The worked derivation by `method` (empty for the default). `overrides` replaces step
+  // values or formulas, for error carried forward and mistake diagnosis.
+  virtual Derivation derive(const Ray& ray, std::string_view method,
+                            const Overrides* overrides = nullptr) const = 0;
+
+  // The parameters, in the problem format.
+  virtual nlohmann::json to_json() const = 0;
+
+  // A point and size that frame the object in a figure.
+  virtual Vec3d center() const = 0;
+  virtual double extent() const = 0;
+};
+
+// One row of the table of primitives: the `type` key in problem files and its reader.
+struct ShapeEntry {
+  std::string_view type;
+  std::string_view summary;
+  std::unique_ptr<Shape> (*read)(const Cursor& object);
+};
+
+// Every primitive, in the order the docs list them.
+const std::vector<ShapeEntry>& shape_table();
+
+// Reads an object by its `type`; unknown types get a "did you mean" error. `extra_keys` are
+// keys the caller allows beside the primitive's own (a `name` in a first-hit list).
+std::unique_ptr<Shape> read_shape(const Cursor& object);
+
+// The keys every object may carry beside its type's own parameters.
+const std::vector<std::string>& common_object_keys();
+
+// Sorts hits by t and merges those that are the same point of the surface (a seam: a
+// cylinder's rim, a box's edge), keeping the first.
+void finish_hits(std::vector<Hit>& hits);
+
+}  // namespace raygrade

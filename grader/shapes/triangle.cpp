@@ -1,0 +1,104 @@
+// Triangle: reading, reference intersection and the edge-test derivation of seeds 001 and 004.
+#include "shapes/triangle.h"
+
+#include <algorithm>
+
+#include "shapes/describe.h"
+#include "shapes/flat.h"
+
+namespace raygrade {
+
+// A triangle whose area is below this fraction of its longest edge squared is degenerate:
+// its normal would be noise. Far below any triangle an exercise draws.
+constexpr double kDegenerateArea = 1e-14;
+
+std::unique_ptr<Shape> Triangle::read(const Cursor& object) {
+  std::vector<std::string> keys = common_object_keys();
+  keys.push_back("vertices");
+  object.allow_only(keys);
+  auto items = object.at("vertices").items();
+  if (items.size() != 3) {
+    object.at("vertices").fail(fmt::format("a triangle has 3 vertices, found {}", items.size()),
+                               "type");
+  }
+  Vec3d a = items[0].vec3(), b = items[1].vec3(), c = items[2].vec3();
+  double longest = std::max({length_squared(b - a), length_squared(c - b), length_squared(a - c)});
+  if (length(cross_accurate(b - a, c - a)) <= kDegenerateArea * longest) {
+    object.at("vertices").fail("degenerate triangle: the vertices are collinear or coincide",
+                               "degenerate");
+  }
+  return std::make_unique<Triangle>(a, b, c);
+}
+
+nlohmann::json Triangle::to_json() const {
+  nlohmann::json vs = nlohmann::json::array();
+  for (const auto& v : v_) vs.push_back({v.x, v.y, v.z});
+  return {{"type", "triangle"}, {"vertices", vs}};
+}
+
+double Triangle::extent() const {
+  Vec3d c = center();
+  return std::sqrt(std::max({length_squared(v_[0] - c), length_squared(v_[1] - c),
+                             length_squared(v_[2] - c)}));
+}
+
+Intersection Triangle::intersect(const Ray& ray) const {
+  Intersection out;
+  Vec3d n = cross_accurate(v_[1] - v_[0], v_[2] - v_[0]);
+  if (parallel_to_plane(n, ray.direction)) {
+    out.contained = in_plane(n, v_[0], ray.origin) &&
+                    ray_in_plane_meets_polygon(ray, {v_[0], v_[1], v_[2]}, n);
+    return out;
+  }
+  auto hit = watertight_triangle(ray.origin, ray.direction, v_[0], v_[1], v_[2]);
+  if (!hit.hit || !ray.accepts(hit.t)) return out;
+  Hit h;
+  h.t = hit.t;
+  h.point = ray.at(hit.t);
+  h.normal = normalized(n);
+  h.barycentric = hit.barycentric;
+  out.hits.push_back(h);
+  return out;
+}
+
+Derivation Triangle::derive(const Ray& ray, std::string_view /*method*/,
+                            const Overrides* overrides) const {
+  Deriver d("edge-tests", "Triangle: plane hit, then edge tests", overrides);
+  E O = d.given("O", "O", ray.origin, "the ray's origin");
+  E D = d.given("D", "D", ray.direction, "the ray's direction");
+  E A = d.given("a", "a", v_[0]);
+  E B = d.given("b", "b", v_[1]);
+  E C = d.given("c", "c", v_[2]);
+  d.step("n", "n", cross(B - A, C - A), "the normal (b − a) × (c − a)");
+  E n = d.sym("n");
+  double den = d.step("denominator", "n·D", dot(n, D)).scalar;
+  if (den == 0) {
+    double s = d.step("numerator", "n·(a − O)", dot(n, A - O)).scalar;
+    d.note("n·D = 0: the ray is parallel to the triangle's plane.");
+    d.conclude(s == 0 ? "The ray lies in the triangle's plane: it meets the plane along a line, "
+                        "not at a point, so there is no single hit point."
+                      : "The ray is parallel to the triangle's plane and off it: no hit.");
+    return std::move(d).finish();
+  }
+  d.step("numerator", "n·(a − O)", dot(n, A - O));
+  double t = d.step("t", "t", d.sym("numerator") / d.sym("denominator"),
+                    "where the ray meets the plane n·(x − a) = 0").scalar;
+  Value q = d.step("q", "q", O + d.sym("t") * D, "the point where the ray meets the plane");
+  E Q = d.sym("q");
+  double e0 = d.step("e_ab", "e_ab", dot(cross(B - A, Q - A), n), "edge ab: ≥ 0 means inside").scalar;
+  double e1 = d.step("e_bc", "e_bc", dot(cross(C - B, Q - B), n), "edge bc").scalar;
+  double e2 = d.step("e_ca", "e_ca", dot(cross(A - C, Q - C), n), "edge ca").scalar;
+  bool inside = e0 >= 0 && e1 >= 0 && e2 >= 0;
+  if (inside) {
+    d.step("w_a", "w_a", d.sym("e_bc") / dot(n, n), "barycentric weight of a");
+    d.step("w_b", "w_b", d.sym("e_ca") / dot(n, n), "barycentric weight of b");
+    d.step("w_c", "w_c", d.sym("e_ab") / dot(n, n), "barycentric weight of c");
+  }
+  std::string reason = inside ? range_reason(ray, t)
+                              : "the plane point q lies outside the triangle (an edge test is "
+                                "negative)";
+  conclude_candidates(d, "triangle", ray, {{t, q.vector, reason}}, false);
+  return std::move(d).finish();
+}
+
+}  // namespace raygrade

@@ -1,0 +1,71 @@
+// Triangle: vertices a, b, c; watertight reference test; edge-test derivation.
+#pragma once
+
+#include <array>
+
+#include "math/robust.h"
+#include "shapes/shape.h"
+
+namespace raygrade {
+
+template <typename T>
+struct TriangleHit {
+  bool hit = false;
+  T t{};
+  std::array<T, 3> barycentric{};  // weights of a, b, c
+};
+
+// Watertight ray-triangle test (Woop, Benthin and Wald, JCGT 2(1), 2013): the ray is sheared
+// to the +z axis and the edge functions are evaluated in 2D, so that a ray through an edge or
+// vertex shared by two triangles never misses both. Edge functions that come out exactly zero
+// are recomputed with an FMA difference of products, whose sign is exact.
+template <typename T>
+TriangleHit<T> watertight_triangle(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& a,
+                                   const Vec3<T>& b, const Vec3<T>& c) {
+  TriangleHit<T> out;
+  int kz = max_dimension(d);
+  int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+  if (d[kz] < T(0)) std::swap(kx, ky);
+  T sx = d[kx] / d[kz], sy = d[ky] / d[kz], sz = T(1) / d[kz];
+  Vec3<T> A = a - o, B = b - o, C = c - o;
+  T ax = A[kx] - sx * A[kz], ay = A[ky] - sy * A[kz];
+  T bx = B[kx] - sx * B[kz], by = B[ky] - sy * B[kz];
+  T cx = C[kx] - sx * C[kz], cy = C[ky] - sy * C[kz];
+  T u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+  if (u == T(0) || v == T(0) || w == T(0)) {
+    u = difference_of_products(cx, by, cy, bx);
+    v = difference_of_products(ax, cy, ay, cx);
+    w = difference_of_products(bx, ay, by, ax);
+  }
+  if ((u < T(0) || v < T(0) || w < T(0)) && (u > T(0) || v > T(0) || w > T(0))) return out;
+  T det = u + v + w;
+  if (det == T(0)) return out;
+  T az = sz * A[kz], bz = sz * B[kz], cz = sz * C[kz];
+  T tt = u * az + v * bz + w * cz;
+  out.hit = true;
+  out.t = tt / det;
+  out.barycentric = {u / det, v / det, w / det};
+  return out;
+}
+
+class Triangle final : public Shape {
+ public:
+  Triangle(Vec3d a, Vec3d b, Vec3d c) : v_{a, b, c} {}
+  static std::unique_ptr<Shape> read(const Cursor& object);
+
+  std::string_view type() const override { return "triangle"; }
+  Intersection intersect(const Ray& ray) const override;
+  std::vector<std::string> methods() const override { return {"edge-tests"}; }
+  Derivation derive(const Ray& ray, std::string_view method,
+                    const Overrides* overrides) const override;
+  nlohmann::json to_json() const override;
+  Vec3d center() const override { return (v_[0] + v_[1] + v_[2]) / 3.0; }
+  double extent() const override;
+
+  const std::array<Vec3d, 3>& vertices() const { return v_; }
+
+ private:
+  std::array<Vec3d, 3> v_;
+};
+
+}  // namespace raygrade

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# The main job: install what is missing, build, solve the bundled bank, write the worked
+# solutions, grade the bundled sample submissions and print a short summary.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+cmake --preset release >/dev/null
+cmake --build --preset release
+exec build/release/grader/raygrade run --problems problems --submissions submissions --solutions solutions

@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Builds everything and runs every test (unit tests, bank checks, conformance).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+cmake --preset release >/dev/null
+cmake --build --preset release
+ctest --preset release
