@@ -93,8 +93,8 @@ Derivation Cylinder::derive(const Ray& ray, std::string_view /*method*/,
     bool centered = base_.x == 0 && base_.y == 0;
     E cx = 0, cy = 0;
     if (!centered) {
-      cx = d.given("cx", "a", base_.x, "the axis passes through (a, b)");
-      cy = d.given("cy", "b", base_.y);
+      cx = d.given("cx", "c_x", base_.x, "the axis passes through (c_x, c_y), the seed's (a, b)");
+      cy = d.given("cy", "c_y", base_.y);
     }
     E ex = centered ? px : px - cx, ey = centered ? py : py - cy;
     d.step("a", "a", square(vx) + square(vy),
