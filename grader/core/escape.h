@@ -1,0 +1,25 @@
+// Escaping of text that users control (names, ids, formulas, free text) for every output
+// format, and safe file names.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace raygrade {
+
+// &, <, >, " and ' as entities: safe in HTML and XML text and attribute values.
+std::string html_escape(std::string_view s);
+// The same for XML (JUnit); control characters other than tab and newline are dropped.
+std::string xml_escape(std::string_view s);
+// Markdown: backslash before every character Markdown or inline HTML could act on.
+std::string markdown_escape(std::string_view s);
+// LaTeX text mode: \ { } $ & # ^ _ % ~ escaped.
+std::string latex_escape(std::string_view s);
+// A CSV cell: quoted when needed, and a leading = + - @ (or tab, carriage return) neutralised
+// with a leading apostrophe so spreadsheets do not run it as a formula.
+std::string csv_cell(std::string_view s);
+// A file name made from an id: only [A-Za-z0-9._-], never "." or "..", never empty, at most
+// 100 bytes; other bytes become '_'. It cannot name a path outside its folder.
+std::string safe_file_name(std::string_view id);
+
+}  // namespace raygrade
