@@ -1,7 +1,8 @@
 // Sphere: the reference intersection against values derived by hand.
+#include "shapes/sphere.h"
+
 #include <gtest/gtest.h>
 
-#include "shapes/sphere.h"
 #include "test_util.h"
 
 namespace raygrade {

@@ -2,11 +2,10 @@
 // its CLI11 subcommand and returns the function that runs it.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <functional>
 #include <string_view>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 namespace raygrade::cli {
 

@@ -1,9 +1,9 @@
 // raygrade: solve, explain and grade ray-intersection exercises.
+#include <fmt/format.h>
+
 #include <cstring>
 #include <iostream>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "cli/command.h"
 #include "json/cursor.h"

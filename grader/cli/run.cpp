@@ -1,7 +1,7 @@
 // raygrade run: the main job over a bank, its solutions folder and sample submissions.
-#include <map>
-
 #include <fmt/format.h>
+
+#include <map>
 
 #include "cli/command.h"
 #include "problems/problem.h"

@@ -1,7 +1,7 @@
 // raygrade solve: the reference answer of every problem, and optionally its worked steps.
-#include <iostream>
-
 #include <fmt/format.h>
+
+#include <iostream>
 
 #include "cli/command.h"
 #include "problems/problem.h"

@@ -1,11 +1,11 @@
 // Diagnostic and Error: the one error type of the library, naming file, JSON path and fault.
 #pragma once
 
+#include <fmt/format.h>
+
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 namespace raygrade {
 

@@ -13,12 +13,12 @@
 namespace raygrade {
 
 struct Step {
-  std::string name;   // stable, documented, used by students in submissions ("t_ca")
-  E symbol;           // how the quantity is shown
-  E formula;          // empty for givens
+  std::string name;  // stable, documented, used by students in submissions ("t_ca")
+  E symbol;          // how the quantity is shown
+  E formula;         // empty for givens
   Value value;
-  std::string note;   // a short sentence: why this step, or what its value means
-  bool given = false; // an input of the problem rather than a computed quantity
+  std::string note;         // a short sentence: why this step, or what its value means
+  bool given = false;       // an input of the problem rather than a computed quantity
   bool overridden = false;  // the value came from Overrides (a student's own earlier value)
 };
 

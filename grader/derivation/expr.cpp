@@ -40,12 +40,12 @@ E sym(std::string name, std::string display) {
   std::size_t base_end = std::min(sup, sub);
   n->base = display.substr(0, base_end);
   if (sub != std::string::npos) {
-    n->sub = display.substr(sub + 1, sup != std::string::npos && sup > sub ? sup - sub - 1
-                                                                           : std::string::npos);
+    n->sub = display.substr(
+        sub + 1, sup != std::string::npos && sup > sub ? sup - sub - 1 : std::string::npos);
   }
   if (sup != std::string::npos) {
-    n->sup = display.substr(sup + 1, sub != std::string::npos && sub > sup ? sub - sup - 1
-                                                                           : std::string::npos);
+    n->sup = display.substr(
+        sup + 1, sub != std::string::npos && sub > sup ? sub - sup - 1 : std::string::npos);
   }
   n->name = std::move(name);
   return wrap(n);
@@ -145,8 +145,12 @@ Value evaluate(const E& e, const Env& env) {
     case Op::kCompare: {
       double a = scalar(arg(0)), b = scalar(arg(1));
       const std::string& r = n.relation;
-      bool t = r == "<" ? a < b : r == "<=" ? a <= b : r == ">" ? a > b : r == ">=" ? a >= b
-               : r == "=" ? a == b : a != b;
+      bool t = r == "<"    ? a < b
+               : r == "<=" ? a <= b
+               : r == ">"  ? a > b
+               : r == ">=" ? a >= b
+               : r == "="  ? a == b
+                           : a != b;
       return Value::verdict(t);
     }
   }
@@ -185,7 +189,7 @@ struct Dialect {
   std::function<std::string(const std::string&)> word;  // "undefined", "yes"
   std::function<std::string(const ExprNode&)> symbol;
   std::function<std::string(const std::string&, const std::string&, const std::string&)> vector;
-  std::function<std::string(const std::string&)> op;    // an operator sign, by its text form
+  std::function<std::string(const std::string&)> op;  // an operator sign, by its text form
   std::function<std::string(const std::string&)> paren;
   std::function<std::string(const std::string&, const std::string&)> frac;
   std::function<std::string(const std::string&)> sqrt;
@@ -239,16 +243,11 @@ std::string render(const E& e, const Dialect& d, const RenderOptions& o) {
         if (it != o.substitute->end()) return render_value(it->second, d, o);
       }
       return d.symbol(n);
-    case Op::kAdd:
-      return child(n.args[0], 1, d, o) + d.op("+") + child(n.args[1], 2, d, o);
-    case Op::kSub:
-      return child(n.args[0], 1, d, o) + d.op("−") + child(n.args[1], 2, d, o);
-    case Op::kMul:
-      return child(n.args[0], 2, d, o) + d.op("·") + child(n.args[1], 3, d, o);
-    case Op::kDot:
-      return child(n.args[0], 3, d, o) + d.op("·") + child(n.args[1], 3, d, o);
-    case Op::kCross:
-      return child(n.args[0], 3, d, o) + d.op("×") + child(n.args[1], 3, d, o);
+    case Op::kAdd: return child(n.args[0], 1, d, o) + d.op("+") + child(n.args[1], 2, d, o);
+    case Op::kSub: return child(n.args[0], 1, d, o) + d.op("−") + child(n.args[1], 2, d, o);
+    case Op::kMul: return child(n.args[0], 2, d, o) + d.op("·") + child(n.args[1], 3, d, o);
+    case Op::kDot: return child(n.args[0], 3, d, o) + d.op("·") + child(n.args[1], 3, d, o);
+    case Op::kCross: return child(n.args[0], 3, d, o) + d.op("×") + child(n.args[1], 3, d, o);
     case Op::kDiv: return d.frac(render(n.args[0], d, o), render(n.args[1], d, o));
     case Op::kNeg: return d.op("-") + child(n.args[0], 4, d, o);
     case Op::kSqrt: return d.sqrt(render(n.args[0], d, o));
@@ -265,8 +264,7 @@ std::string render(const E& e, const Dialect& d, const RenderOptions& o) {
       return d.call(n.op == Op::kMin ? "min" : "max", inner);
     }
     case Op::kCompare:
-      return render(n.args[0], d, o) + d.op(relation_text(n.relation)) +
-             render(n.args[1], d, o);
+      return render(n.args[0], d, o) + d.op(relation_text(n.relation)) + render(n.args[1], d, o);
   }
   return "";
 }
@@ -305,16 +303,18 @@ std::string text_part(const std::string& s) {
 
 const std::string& latex_op(const std::string& t) {
   static const std::map<std::string, std::string> ops = {
-      {"+", " + "}, {"−", " - "}, {"-", "-"}, {"·", " \\cdot "}, {"×", " \\times "},
-      {"<", " < "}, {">", " > "}, {"≤", " \\le "}, {"≥", " \\ge "}, {"=", " = "},
-      {"≠", " \\ne "}};
+      {"+", " + "},       {"−", " - "}, {"-", "-"},     {"·", " \\cdot "},
+      {"×", " \\times "}, {"<", " < "}, {">", " > "},   {"≤", " \\le "},
+      {"≥", " \\ge "},    {"=", " = "}, {"≠", " \\ne "}};
   auto it = ops.find(t);
   return it == ops.end() ? t : it->second;
 }
 
 const Dialect& latex_dialect() {
   static const Dialect d{
-      [](const std::string& s) { return s == "∞" ? std::string("\\infty") : s == "−∞" ? std::string("-\\infty") : s; },
+      [](const std::string& s) {
+        return s == "∞" ? std::string("\\infty") : s == "−∞" ? std::string("-\\infty") : s;
+      },
       [](const std::string& s) { return "\\text{" + s + "}"; },
       [](const ExprNode& n) {
         std::string s = latex_part(n.base);
@@ -332,7 +332,9 @@ const Dialect& latex_dialect() {
       [](const std::string& a) { return "{" + a + "}^2"; },
       [](const std::string& a) { return "\\left|" + a + "\\right|"; },
       [](const std::string& a) { return "\\lVert " + a + " \\rVert"; },
-      [](const std::string& f, const std::string& a) { return "\\" + f + "\\left(" + a + "\\right)"; },
+      [](const std::string& f, const std::string& a) {
+        return "\\" + f + "\\left(" + a + "\\right)";
+      },
       ", "};
   return d;
 }
@@ -421,9 +423,7 @@ const Dialect& text_dialect() {
 }  // namespace
 
 std::string to_latex(const E& e, const RenderOptions& o) { return render(e, latex_dialect(), o); }
-std::string to_mathml(const E& e, const RenderOptions& o) {
-  return render(e, mathml_dialect(), o);
-}
+std::string to_mathml(const E& e, const RenderOptions& o) { return render(e, mathml_dialect(), o); }
 std::string to_text(const E& e, const RenderOptions& o) { return render(e, text_dialect(), o); }
 
 }  // namespace raygrade

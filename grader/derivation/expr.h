@@ -16,20 +16,20 @@
 namespace raygrade {
 
 enum class Op {
-  kNumber,   // a constant
-  kVector,   // a constant vector
-  kSymbol,   // a named quantity
+  kNumber,  // a constant
+  kVector,  // a constant vector
+  kSymbol,  // a named quantity
   kAdd,
   kSub,
-  kMul,      // scalar product, or scalar times vector
-  kDiv,      // shown as a fraction
+  kMul,  // scalar product, or scalar times vector
+  kDiv,  // shown as a fraction
   kDot,
   kCross,
   kNeg,
   kSqrt,
-  kSquare,   // x²
-  kAbs,      // |x| of a scalar
-  kNorm,     // ‖v‖ of a vector
+  kSquare,  // x²
+  kAbs,     // |x| of a scalar
+  kNorm,    // ‖v‖ of a vector
   kMin,
   kMax,
   kCompare,  // a relation shown as "a < b", "a ≥ b"; evaluates to a verdict

@@ -1,9 +1,9 @@
 // Number formatting for worked solutions and feedback.
 #include "derivation/number_format.h"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace raygrade {
 namespace {

@@ -15,8 +15,8 @@ struct Value {
   bool truth = false;
 
   Value() = default;
-  Value(double s) : kind(Kind::kScalar), scalar(s) {}  // NOLINT: implicit by design
-  Value(int s) : kind(Kind::kScalar), scalar(s) {}     // NOLINT
+  Value(double s) : kind(Kind::kScalar), scalar(s) {}        // NOLINT: implicit by design
+  Value(int s) : kind(Kind::kScalar), scalar(s) {}           // NOLINT
   Value(const Vec3d& v) : kind(Kind::kVector), vector(v) {}  // NOLINT
   static Value verdict(bool b) {
     Value v;

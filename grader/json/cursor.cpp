@@ -166,8 +166,8 @@ void Cursor::allow_only(const std::vector<std::string>& allowed) const {
 
 Diagnostic Cursor::diagnostic(std::string message, std::string code, Severity severity) const {
   auto [line, column] = locate(file_->text, path_);
-  return Diagnostic{file_->name, path_, line, column, severity, std::move(message),
-                    std::move(code)};
+  return Diagnostic{file_->name,        path_,          line, column, severity,
+                    std::move(message), std::move(code)};
 }
 
 void Cursor::fail(std::string message, std::string code) const {

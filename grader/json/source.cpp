@@ -10,7 +10,8 @@ namespace {
 
 [[noreturn]] void fail(const std::string& file, std::string msg, int line = 0, int column = 0,
                        std::string code = "bad-json") {
-  throw Error(Diagnostic{file, "", line, column, Severity::kError, std::move(msg), std::move(code)});
+  throw Error(
+      Diagnostic{file, "", line, column, Severity::kError, std::move(msg), std::move(code)});
 }
 
 std::pair<int, int> line_column_of(std::string_view text, std::size_t offset) {
@@ -40,8 +41,8 @@ void prescan(const std::string& name, std::string_view text, const JsonLimits& l
         in_string = false;
         if (i - string_start > limits.max_string) {
           auto [l, col] = line_column_of(text, string_start);
-          fail(name, fmt::format("string longer than the limit of {} bytes", limits.max_string),
-               l, col, "limit");
+          fail(name, fmt::format("string longer than the limit of {} bytes", limits.max_string), l,
+               col, "limit");
         }
       }
     } else if (c == '"') {
@@ -64,8 +65,9 @@ void prescan(const std::string& name, std::string_view text, const JsonLimits& l
 std::shared_ptr<const SourceFile> parse_json_text(std::string name, std::string text,
                                                   const JsonLimits& limits) {
   if (text.size() > limits.max_bytes) {
-    fail(name, fmt::format("file is {} bytes, over the limit of {} bytes", text.size(),
-                           limits.max_bytes), 0, 0, "limit");
+    fail(name,
+         fmt::format("file is {} bytes, over the limit of {} bytes", text.size(), limits.max_bytes),
+         0, 0, "limit");
   }
   prescan(name, text, limits);
   auto file = std::make_shared<SourceFile>();
@@ -94,8 +96,10 @@ std::shared_ptr<const SourceFile> load_json_file(const std::string& path,
   auto size = in.tellg();
   if (size < 0) fail(path, "cannot read the file", 0, 0, "unreadable");
   if (static_cast<std::size_t>(size) > limits.max_bytes) {
-    fail(path, fmt::format("file is {} bytes, over the limit of {} bytes",
-                           static_cast<std::size_t>(size), limits.max_bytes), 0, 0, "limit");
+    fail(path,
+         fmt::format("file is {} bytes, over the limit of {} bytes", static_cast<std::size_t>(size),
+                     limits.max_bytes),
+         0, 0, "limit");
   }
   in.seekg(0);
   std::string text(static_cast<std::size_t>(size), '\0');

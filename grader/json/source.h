@@ -2,10 +2,9 @@
 #pragma once
 
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
-
-#include <nlohmann/json.hpp>
 
 #include "core/error.h"
 
@@ -13,9 +12,9 @@ namespace raygrade {
 
 // Limits on untrusted JSON. Each is far above what a real bank or submission needs.
 struct JsonLimits {
-  std::size_t max_bytes = 16u << 20;    // 16 MiB: a bank file of ~50,000 problems
-  int max_depth = 64;                   // problems nest 6 deep; nlohmann's parser recurses
-  std::size_t max_string = 64u << 10;   // 64 KiB: a long problem statement
+  std::size_t max_bytes = 16u << 20;   // 16 MiB: a bank file of ~50,000 problems
+  int max_depth = 64;                  // problems nest 6 deep; nlohmann's parser recurses
+  std::size_t max_string = 64u << 10;  // 64 KiB: a long problem statement
 };
 
 struct SourceFile {

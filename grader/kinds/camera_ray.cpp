@@ -24,7 +24,8 @@ std::unique_ptr<Task> CameraRayTask::read(const Cursor& problem) {
   if (res.size() != 2) c.at("resolution").fail("expected [resX, resY]", "type");
   cam.res_x = res[0].integer();
   cam.res_y = res[1].integer();
-  if (cam.res_x <= 0 || cam.res_y <= 0) c.at("resolution").fail("the resolution must be positive", "degenerate");
+  if (cam.res_x <= 0 || cam.res_y <= 0)
+    c.at("resolution").fail("the resolution must be positive", "degenerate");
   if (length_squared(cross(cam.direction, cam.up)) == 0) {
     c.at("up").fail("the up vector is parallel to the viewing direction", "degenerate");
   }
@@ -33,10 +34,11 @@ std::unique_ptr<Task> CameraRayTask::read(const Cursor& problem) {
   double x = pixel[0].number(), y = pixel[1].number();
   std::string conv = problem.string_or("convention", "center");
   if (conv != "center" && conv != "corner") {
-    problem.at("convention").fail(fmt::format("unknown convention '{}' (known: center, corner)", conv), "invalid");
+    problem.at("convention")
+        .fail(fmt::format("unknown convention '{}' (known: center, corner)", conv), "invalid");
   }
-  return std::make_unique<CameraRayTask>(cam, x, y, conv == "corner" ? PixelConvention::kCorner
-                                                                     : PixelConvention::kCenter);
+  return std::make_unique<CameraRayTask>(
+      cam, x, y, conv == "corner" ? PixelConvention::kCorner : PixelConvention::kCenter);
 }
 
 nlohmann::json CameraRayTask::answer() const {
@@ -67,10 +69,11 @@ std::vector<SolutionPart> CameraRayTask::derive(std::string_view /*method*/,
   }
   Value dr = d.step("d_r", "d_r", f * dir + d.sym("x_diff") * d.sym("v") + d.sym("y_diff") * u,
                     "f·d reaches the image plane's centre; then move across and up");
-  d.conclude(fmt::format("The ray through pixel ({}, {}) starts at the eye {} with direction {} "
-                         "(pixel {} convention).",
-                         format_number(x_), format_number(y_), format_vector(cam_.eye),
-                         format_vector(dr.vector), corner ? "corner" : "centre"));
+  d.conclude(
+      fmt::format("The ray through pixel ({}, {}) starts at the eye {} with direction {} "
+                  "(pixel {} convention).",
+                  format_number(x_), format_number(y_), format_vector(cam_.eye),
+                  format_vector(dr.vector), corner ? "corner" : "centre"));
   (void)e;
   return {SolutionPart{"", std::move(d).finish()}};
 }

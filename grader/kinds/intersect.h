@@ -36,7 +36,7 @@ struct NamedShape {
 struct FirstHit {
   int index = -1;  // into the objects; -1 when nothing is hit
   Hit hit;
-  bool tie = false;  // another object is hit at the same t
+  bool tie = false;                         // another object is hit at the same t
   std::vector<std::optional<Hit>> nearest;  // per object
 };
 FirstHit first_hit(const Ray& ray, const std::vector<NamedShape>& objects);

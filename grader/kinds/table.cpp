@@ -9,8 +9,10 @@ const std::vector<KindEntry>& kind_table() {
   static const std::vector<KindEntry> table = {
       {"intersect", "every hit of a ray with one object", {"ray", "object"}, &IntersectTask::read},
       {"first-hit", "the object a ray hits first", {"ray", "objects"}, &FirstHitTask::read},
-      {"camera-ray", "the ray a perspective camera shoots through a pixel",
-       {"camera", "pixel", "convention"}, &CameraRayTask::read},
+      {"camera-ray",
+       "the ray a perspective camera shoots through a pixel",
+       {"camera", "pixel", "convention"},
+       &CameraRayTask::read},
   };
   return table;
 }

@@ -1,8 +1,9 @@
 // Vec3: a 3-vector over any number type, with the operations intersection code needs.
 #pragma once
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace raygrade {
 

@@ -14,9 +14,9 @@ std::vector<std::string> Task::conclusion() const {
 }
 
 const std::vector<std::string>& common_problem_keys() {
-  static const std::vector<std::string> keys = {
-      "id", "kind", "title", "statement", "method", "precision", "expected", "tolerance",
-      "points", "tests", "tags", "source"};
+  static const std::vector<std::string> keys = {"id",     "kind",      "title",    "statement",
+                                                "method", "precision", "expected", "tolerance",
+                                                "points", "tests",     "tags",     "source"};
   return keys;
 }
 
@@ -64,11 +64,10 @@ Problem read_problem(const Cursor& c) {
   }
   if (!entry) {
     std::string hint = closest_match(p.kind, names);
-    c.at("kind").fail(hint.empty() ? fmt::format("unknown kind '{}' (known: {})", p.kind,
-                                                 fmt::join(names, ", "))
-                                   : fmt::format("unknown kind '{}' (did you mean '{}'?)",
-                                                 p.kind, hint),
-                      "unknown-kind");
+    c.at("kind").fail(
+        hint.empty() ? fmt::format("unknown kind '{}' (known: {})", p.kind, fmt::join(names, ", "))
+                     : fmt::format("unknown kind '{}' (did you mean '{}'?)", p.kind, hint),
+        "unknown-kind");
   }
   std::vector<std::string> keys = common_problem_keys();
   keys.insert(keys.end(), entry->keys.begin(), entry->keys.end());
@@ -94,8 +93,8 @@ Problem read_problem(const Cursor& c) {
   if (!p.method.empty()) {
     auto methods = p.task->methods();
     if (std::find(methods.begin(), methods.end(), p.method) == methods.end()) {
-      c.at("method").fail(fmt::format("unknown method '{}' for this problem (known: {})",
-                                      p.method, fmt::join(methods, ", ")),
+      c.at("method").fail(fmt::format("unknown method '{}' for this problem (known: {})", p.method,
+                                      fmt::join(methods, ", ")),
                           "unknown-method");
     }
   }
@@ -120,8 +119,8 @@ void collect_files(const std::filesystem::path& path, std::vector<std::string>& 
   } else if (fs::exists(path, ec)) {
     out.push_back(path.string());
   } else {
-    errors.push_back(Diagnostic{path.string(), "", 0, 0, Severity::kError,
-                                "no such file or folder", "unreadable"});
+    errors.push_back(Diagnostic{path.string(), "", 0, 0, Severity::kError, "no such file or folder",
+                                "unreadable"});
   }
 }
 
@@ -156,7 +155,9 @@ Bank load_bank(const std::vector<std::string>& paths) {
       try {
         Problem p = read_problem(item);
         auto [it, fresh] = seen.emplace(p.id, fmt::format("{}{}", p.file, p.path));
-        if (!fresh) item.at("id").fail(fmt::format("duplicate id '{}' (first used at {})", p.id, it->second), "duplicate-id");
+        if (!fresh)
+          item.at("id").fail(fmt::format("duplicate id '{}' (first used at {})", p.id, it->second),
+                             "duplicate-id");
         bank.problems.push_back(std::move(p));
       } catch (const Error& e) {
         bank.errors.push_back(e.diagnostic());

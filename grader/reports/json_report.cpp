@@ -34,8 +34,7 @@ nlohmann::json derivation_json(const Derivation& d, const NumberFormat& numbers)
     steps.push_back(std::move(j));
     env[s.name] = s.value;
   }
-  return {{"method", d.method}, {"title", d.title}, {"steps", steps},
-          {"conclusion", d.conclusion}};
+  return {{"method", d.method}, {"title", d.title}, {"steps", steps}, {"conclusion", d.conclusion}};
 }
 
 nlohmann::json parts_json(const std::vector<SolutionPart>& parts, const NumberFormat& numbers) {
@@ -49,8 +48,10 @@ nlohmann::json parts_json(const std::vector<SolutionPart>& parts, const NumberFo
 }
 
 nlohmann::json diagnostic_json(const Diagnostic& d) {
-  nlohmann::json j = {{"file", d.file},       {"path", d.path},
-                      {"severity", to_string(d.severity)}, {"message", d.message},
+  nlohmann::json j = {{"file", d.file},
+                      {"path", d.path},
+                      {"severity", to_string(d.severity)},
+                      {"message", d.message},
                       {"code", d.code}};
   if (d.line > 0) j["line"] = d.line;
   if (d.column > 0) j["column"] = d.column;

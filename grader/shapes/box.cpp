@@ -12,8 +12,9 @@ std::unique_ptr<Shape> Box::read(const Cursor& object) {
   Vec3d lo = object.at("min").vec3(), hi = object.at("max").vec3();
   for (int i = 0; i < 3; ++i) {
     if (!(lo[i] < hi[i])) {
-      object.at("max").fail(fmt::format("degenerate box: max[{}] = {} is not above min[{}] = {}",
-                                        i, hi[i], i, lo[i]), "degenerate");
+      object.at("max").fail(
+          fmt::format("degenerate box: max[{}] = {} is not above min[{}] = {}", i, hi[i], i, lo[i]),
+          "degenerate");
     }
   }
   return std::make_unique<Box>(lo, hi);
@@ -74,11 +75,12 @@ Derivation Box::derive(const Ray& ray, std::string_view /*method*/,
     E mx = d.given("max_" + ax, "max_" + ax, hi_[i]);
     if (ray.direction[i] == 0) {
       bool inside = ray.origin[i] >= lo_[i] && ray.origin[i] <= hi_[i];
-      d.note(fmt::format("d_{} = 0: the ray never leaves its {} slab; o_{} = {} is {} [{}, {}], so "
-                         "{}.", ax, ax, ax, format_number(ray.origin[i]),
-                         inside ? "inside" : "outside", format_number(lo_[i]),
-                         format_number(hi_[i]),
-                         inside ? "this slab allows every t" : "the ray misses the box"));
+      d.note(
+          fmt::format("d_{} = 0: the ray never leaves its {} slab; o_{} = {} is {} [{}, {}], so "
+                      "{}.",
+                      ax, ax, ax, format_number(ray.origin[i]), inside ? "inside" : "outside",
+                      format_number(lo_[i]), format_number(hi_[i]),
+                      inside ? "this slab allows every t" : "the ray misses the box"));
       if (!inside) empty = true;
       continue;
     }
@@ -96,10 +98,12 @@ Derivation Box::derive(const Ray& ray, std::string_view /*method*/,
                      : "The ray does not move.");
     return std::move(d).finish();
   }
-  double enter = d.step("t_enter", "t_enter", lows.size() == 1 ? lows[0] : max(lows),
-                        "the largest low end").scalar;
-  double exit = d.step("t_exit", "t_exit", highs.size() == 1 ? highs[0] : min(highs),
-                       "the smallest high end").scalar;
+  double enter =
+      d.step("t_enter", "t_enter", lows.size() == 1 ? lows[0] : max(lows), "the largest low end")
+          .scalar;
+  double exit =
+      d.step("t_exit", "t_exit", highs.size() == 1 ? highs[0] : min(highs), "the smallest high end")
+          .scalar;
   if (enter > exit) {
     d.note("t_enter > t_exit: the slabs' intervals do not overlap.");
     d.conclude("The ray does not hit the box: the slabs' intervals do not overlap.");

@@ -5,8 +5,7 @@
 
 namespace raygrade {
 
-Cylinder::Cylinder(Vec3d base, Vec3d axis, double radius, std::optional<double> height,
-                   bool capped)
+Cylinder::Cylinder(Vec3d base, Vec3d axis, double radius, std::optional<double> height, bool capped)
     : base_(base),
       axis_given_(axis),
       axis_(normalized(axis)),
@@ -22,7 +21,8 @@ std::unique_ptr<Shape> Cylinder::read(const Cursor& object) {
   std::optional<double> height;
   if (object.has("height")) height = object.at("height").positive_number();
   bool capped = object.boolean_or("capped", false);
-  if (capped && !height) object.at("capped").fail("an infinite cylinder cannot have caps: give a height", "invalid");
+  if (capped && !height)
+    object.at("capped").fail("an infinite cylinder cannot have caps: give a height", "invalid");
   return std::make_unique<Cylinder>(object.at("base").vec3(), axis,
                                     object.at("radius").positive_number(), height, capped);
 }
@@ -39,9 +39,7 @@ nlohmann::json Cylinder::to_json() const {
 
 Vec3d Cylinder::center() const { return height_ ? base_ + (*height_ / 2) * axis_ : base_; }
 
-double Cylinder::extent() const {
-  return height_ ? std::max(radius_, *height_ / 2) : 2 * radius_;
-}
+double Cylinder::extent() const { return height_ ? std::max(radius_, *height_ / 2) : 2 * radius_; }
 
 Intersection Cylinder::intersect(const Ray& ray) const {
   Intersection out;
@@ -78,8 +76,7 @@ Intersection Cylinder::intersect(const Ray& ray) const {
 
 Derivation Cylinder::derive(const Ray& ray, std::string_view /*method*/,
                             const Overrides* overrides) const {
-  Deriver d("quadratic", "Cylinder: the side's quadratic, then the height and the caps",
-            overrides);
+  Deriver d("quadratic", "Cylinder: the side's quadratic, then the height and the caps", overrides);
   bool vertical = axis_given_.x == 0 && axis_given_.y == 0 && axis_given_.z > 0;
   E O = d.given("O", "O", ray.origin, "the ray's origin");
   E D = d.given("D", "D", ray.direction, "the ray's direction");
@@ -116,13 +113,15 @@ Derivation Cylinder::derive(const Ray& ray, std::string_view /*method*/,
   if (a == 0) {
     d.note("a = 0: the ray runs parallel to the axis and never crosses the side.");
   } else {
-    double disc = d.step("discriminant", "Delta",
-                         square(d.sym("b")) - 4 * d.sym("a") * d.sym("c")).scalar;
+    double disc =
+        d.step("discriminant", "Delta", square(d.sym("b")) - 4 * d.sym("a") * d.sym("c")).scalar;
     if (disc < 0) {
       d.note("Δ < 0: the ray misses the infinite cylinder.");
     } else {
-      double t0 = d.step("t0", "t0", (-d.sym("b") - sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
-      double t1 = d.step("t1", "t1", (-d.sym("b") + sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
+      double t0 =
+          d.step("t0", "t0", (-d.sym("b") - sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
+      double t1 =
+          d.step("t1", "t1", (-d.sym("b") + sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
       std::vector<double> ts = {t0};
       if (t1 != t0) ts.push_back(t1);
       for (std::size_t k = 0; k < ts.size(); ++k) {
@@ -133,9 +132,11 @@ Derivation Cylinder::derive(const Ray& ray, std::string_view /*method*/,
           std::string h = k == 0 ? "h0" : "h1";
           double hv = d.step(h, h, dot(d.sym(p) - B, A),
                              fmt::format("height along the axis: must lie in [0, {}]",
-                                         format_number(*height_))).scalar;
+                                         format_number(*height_)))
+                          .scalar;
           if (reason.empty() && (hv < 0 || hv > *height_)) {
-            reason = fmt::format("it lies outside the cylinder's height (h = {})", format_number(hv));
+            reason =
+                fmt::format("it lies outside the cylinder's height (h = {})", format_number(hv));
           }
         }
         candidates.push_back({ts[k], P.vector, reason});
@@ -149,12 +150,14 @@ Derivation Cylinder::derive(const Ray& ray, std::string_view /*method*/,
         std::string t = cap == 0 ? "t_bottom" : "t_top";
         E level = cap == 0 ? E(0) : E(*height_);
         double tv = d.step(t, t, (level - dot(O - B, A)) / d.sym("D_axis"),
-                           cap == 0 ? "the bottom cap's plane" : "the top cap's plane").scalar;
+                           cap == 0 ? "the bottom cap's plane" : "the top cap's plane")
+                        .scalar;
         std::string p = cap == 0 ? "P_bottom" : "P_top";
         Value P = d.step(p, p, O + d.sym(t) * D);
         std::string rho = cap == 0 ? "rho2_bottom" : "rho2_top";
         double rv = d.step(rho, rho, square(d.sym(p) - B - dot(d.sym(p) - B, A) * A),
-                           "squared distance from the axis: ≤ r² on the cap").scalar;
+                           "squared distance from the axis: ≤ r² on the cap")
+                        .scalar;
         std::string reason = range_reason(ray, tv);
         if (reason.empty() && rv > radius_ * radius_) reason = "it lies outside the cap's disc";
         candidates.push_back({tv, P.vector, reason});

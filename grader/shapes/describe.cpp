@@ -29,8 +29,8 @@ void conclude_candidates(Deriver& d, const std::string& object, const Ray& /*ray
     d.conclude(fmt::format("The ray does not hit the {}.", object));
   } else if (hits.size() == 1) {
     bool tangent = solid && candidates.size() == 1;
-    d.conclude(fmt::format("The ray {} the {} at {}.", tangent ? "touches" : "hits", object,
-                           at(hits[0])));
+    d.conclude(
+        fmt::format("The ray {} the {} at {}.", tangent ? "touches" : "hits", object, at(hits[0])));
   } else if (solid && hits.size() == 2) {
     d.conclude(fmt::format("The ray enters the {} at {}, and leaves at {}.", object, at(hits[0]),
                            at(hits[1])));

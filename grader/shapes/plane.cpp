@@ -55,7 +55,8 @@ Intersection Plane::intersect(const Ray& ray) const {
                                                       std::abs(*d_));
     return out;
   }
-  double numerator = point_ ? dot(normal_, *point_ - ray.origin) : -(dot(normal_, ray.origin) + *d_);
+  double numerator =
+      point_ ? dot(normal_, *point_ - ray.origin) : -(dot(normal_, ray.origin) + *d_);
   double t = numerator / dot(normal_, ray.direction);
   if (ray.accepts(t)) {
     Hit h;
@@ -71,8 +72,7 @@ Derivation Plane::derive(const Ray& ray, std::string_view method,
                          const Overrides* overrides) const {
   bool implicit = method.empty() ? !point_ : method == "implicit";
   Deriver d(implicit ? "implicit" : "point-normal",
-            implicit ? "Plane, implicit form N·P + D = 0" : "Plane, point-normal form",
-            overrides);
+            implicit ? "Plane, implicit form N·P + D = 0" : "Plane, point-normal form", overrides);
   E O = d.given("O", "O", ray.origin, "the ray's origin");
   E R = d.given("R", "R", ray.direction, "the ray's direction");
   E N = d.given("N", "N", normal_, "the plane's normal");
@@ -90,8 +90,8 @@ Derivation Plane::derive(const Ray& ray, std::string_view method,
       double s = d.step("NO_D", "N·O + D", dot(N, O) + d.sym("D")).scalar;
       through_origin = s == 0;
     } else {
-      t = d.step("t", "t", -(dot(N, O) + d.sym("D")) / d.sym("NR"),
-                 "from N·(O + tR) + D = 0").scalar;
+      t = d.step("t", "t", -(dot(N, O) + d.sym("D")) / d.sym("NR"), "from N·(O + tR) + D = 0")
+              .scalar;
     }
   } else {
     E P0 = d.given("P0", "P_0", *point_, "a point of the plane");
@@ -100,15 +100,16 @@ Derivation Plane::derive(const Ray& ray, std::string_view method,
     if (denominator == 0) {
       through_origin = numerator == 0;
     } else {
-      t = d.step("t", "t", d.sym("numerator") / d.sym("denominator"),
-                 "from N·(O + tR − P0) = 0").scalar;
+      t = d.step("t", "t", d.sym("numerator") / d.sym("denominator"), "from N·(O + tR − P0) = 0")
+              .scalar;
     }
   }
   if (denominator == 0) {
     d.note("N·R = 0: the ray is parallel to the plane.");
     if (through_origin) {
-      d.conclude("The ray lies in the plane (N·R = 0 and the origin satisfies the plane's "
-                 "equation): it meets the plane along a whole line, not at a point.");
+      d.conclude(
+          "The ray lies in the plane (N·R = 0 and the origin satisfies the plane's "
+          "equation): it meets the plane along a whole line, not at a point.");
     } else {
       d.conclude("The ray is parallel to the plane and off it: no intersection.");
     }

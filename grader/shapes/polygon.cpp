@@ -36,7 +36,8 @@ std::unique_ptr<Shape> Polygon::read(const Cursor& object) {
   Cursor list = object.at("vertices");
   std::vector<Vec3d> v;
   for (const auto& item : list.items()) v.push_back(item.vec3());
-  if (v.size() < 3) list.fail(fmt::format("a polygon needs at least 3 vertices, found {}", v.size()), "degenerate");
+  if (v.size() < 3)
+    list.fail(fmt::format("a polygon needs at least 3 vertices, found {}", v.size()), "degenerate");
   double size = 0;
   for (const auto& p : v) size = std::max(size, length(p - v[0]));
   Vec3d n = newell_normal(v);
@@ -82,8 +83,8 @@ double Polygon::extent() const {
 Intersection Polygon::intersect(const Ray& ray) const {
   Intersection out;
   if (parallel_to_plane(normal_, ray.direction)) {
-    out.contained = in_plane(normal_, v_[0], ray.origin) &&
-                    ray_in_plane_meets_polygon(ray, v_, normal_);
+    out.contained =
+        in_plane(normal_, v_[0], ray.origin) && ray_in_plane_meets_polygon(ray, v_, normal_);
     return out;
   }
   double t = dot(normal_, v_[0] - ray.origin) / dot(normal_, ray.direction);
@@ -130,7 +131,8 @@ Derivation Polygon::derive(const Ray& ray, std::string_view method,
       std::size_t j = (i + 1) % V.size();
       std::string name = fmt::format("e{}", i);
       double e = d.step(name, fmt::format("e_{}", i), dot(cross(V[j] - V[i], d.sym("q") - V[i]), n),
-                        fmt::format("edge v{} v{}: ≥ 0 means inside", i, j)).scalar;
+                        fmt::format("edge v{} v{}: ≥ 0 means inside", i, j))
+                     .scalar;
       inside = inside && e >= 0;
     }
   } else {

@@ -15,8 +15,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 struct Ray {
   Vec3d origin;
-  Vec3d direction;  // never normalized by the solver: t is in units of this vector
-  double t_min = 0;          // closed interval [t_min, t_max]
+  Vec3d direction;   // never normalized by the solver: t is in units of this vector
+  double t_min = 0;  // closed interval [t_min, t_max]
   double t_max = kInfinity;
 
   Vec3d at(double t) const { return origin + t * direction; }

@@ -21,9 +21,9 @@ std::unique_ptr<Shape> read_shape(const Cursor& object) {
   }
   std::string hint = closest_match(type, names);
   object.at("type").fail(
-      hint.empty() ? fmt::format("unknown object type '{}' (known: {})", type,
-                                 fmt::join(names, ", "))
-                   : fmt::format("unknown object type '{}' (did you mean '{}'?)", type, hint),
+      hint.empty()
+          ? fmt::format("unknown object type '{}' (known: {})", type, fmt::join(names, ", "))
+          : fmt::format("unknown object type '{}' (did you mean '{}'?)", type, hint),
       "unknown-type");
 }
 

@@ -14,9 +14,7 @@ std::unique_ptr<Shape> Sphere::read(const Cursor& object) {
 }
 
 nlohmann::json Sphere::to_json() const {
-  return {{"type", "sphere"},
-          {"center", {center_.x, center_.y, center_.z}},
-          {"radius", radius_}};
+  return {{"type", "sphere"}, {"center", {center_.x, center_.y, center_.z}}, {"radius", radius_}};
 }
 
 Intersection Sphere::intersect(const Ray& ray) const {
@@ -58,9 +56,11 @@ Derivation Sphere::derive_geometric(const Ray& ray, const Overrides* overrides) 
   }
   d.step("L", "L", C - O, "from the origin to the center");
   double t_ca = d.step("t_ca", "t_ca", dot(d.sym("L"), Dhat),
-                       "the distance along the ray to the point closest to the center").scalar;
+                       "the distance along the ray to the point closest to the center")
+                    .scalar;
   double LL = d.step("L2", "L^2", dot(d.sym("L"), d.sym("L")),
-                     "the squared distance from the origin to the center").scalar;
+                     "the squared distance from the origin to the center")
+                  .scalar;
   double r2 = d.step("r2", "r^2", square(r)).scalar;
   bool outside = LL > r2;
   std::vector<Candidate> candidates;
@@ -70,7 +70,8 @@ Derivation Sphere::derive_geometric(const Ray& ray, const Overrides* overrides) 
     return std::move(d).finish();
   }
   double d2 = d.step("d2", "d^2", d.sym("L2") - square(d.sym("t_ca")),
-                     "the squared distance from the center to the ray").scalar;
+                     "the squared distance from the center to the ray")
+                  .scalar;
   if (d2 > r2) {
     d.note("d² > r²: the ray passes the sphere without touching it.");
     d.conclude("The ray does not hit the sphere: it passes at a distance d > r from the center.");
@@ -109,8 +110,8 @@ Derivation Sphere::derive_algebraic(const Ray& ray, const Overrides* overrides) 
   double a = d.step("a", "a", dot(D, D)).scalar;
   d.step("b", "b", 2 * dot(D, d.sym("f")));
   d.step("c", "c", dot(d.sym("f"), d.sym("f")) - square(r));
-  double disc = d.step("discriminant", "Delta",
-                       square(d.sym("b")) - 4 * d.sym("a") * d.sym("c")).scalar;
+  double disc =
+      d.step("discriminant", "Delta", square(d.sym("b")) - 4 * d.sym("a") * d.sym("c")).scalar;
   (void)a;
   if (disc < 0) {
     d.note("Δ < 0: the quadratic has no real roots.");
@@ -118,10 +119,10 @@ Derivation Sphere::derive_algebraic(const Ray& ray, const Overrides* overrides) 
     return std::move(d).finish();
   }
   if (disc == 0) d.note("Δ = 0: one double root, the ray is tangent to the sphere.");
-  double t0 = d.step("t0", "t0", (-d.sym("b") - sqrt(d.sym("discriminant"))) / (2 * d.sym("a")))
-                  .scalar;
-  double t1 = d.step("t1", "t1", (-d.sym("b") + sqrt(d.sym("discriminant"))) / (2 * d.sym("a")))
-                  .scalar;
+  double t0 =
+      d.step("t0", "t0", (-d.sym("b") - sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
+  double t1 =
+      d.step("t1", "t1", (-d.sym("b") + sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
   std::vector<Candidate> candidates;
   std::vector<std::pair<std::string, double>> ts = {{"t0", t0}};
   if (t1 != t0) ts.emplace_back("t1", t1);

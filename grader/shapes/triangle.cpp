@@ -18,14 +18,14 @@ std::unique_ptr<Shape> Triangle::read(const Cursor& object) {
   object.allow_only(keys);
   auto items = object.at("vertices").items();
   if (items.size() != 3) {
-    object.at("vertices").fail(fmt::format("a triangle has 3 vertices, found {}", items.size()),
-                               "type");
+    object.at("vertices")
+        .fail(fmt::format("a triangle has 3 vertices, found {}", items.size()), "type");
   }
   Vec3d a = items[0].vec3(), b = items[1].vec3(), c = items[2].vec3();
   double longest = std::max({length_squared(b - a), length_squared(c - b), length_squared(a - c)});
   if (length(cross_accurate(b - a, c - a)) <= kDegenerateArea * longest) {
-    object.at("vertices").fail("degenerate triangle: the vertices are collinear or coincide",
-                               "degenerate");
+    object.at("vertices")
+        .fail("degenerate triangle: the vertices are collinear or coincide", "degenerate");
   }
   return std::make_unique<Triangle>(a, b, c);
 }
@@ -38,16 +38,16 @@ nlohmann::json Triangle::to_json() const {
 
 double Triangle::extent() const {
   Vec3d c = center();
-  return std::sqrt(std::max({length_squared(v_[0] - c), length_squared(v_[1] - c),
-                             length_squared(v_[2] - c)}));
+  return std::sqrt(
+      std::max({length_squared(v_[0] - c), length_squared(v_[1] - c), length_squared(v_[2] - c)}));
 }
 
 Intersection Triangle::intersect(const Ray& ray) const {
   Intersection out;
   Vec3d n = cross_accurate(v_[1] - v_[0], v_[2] - v_[0]);
   if (parallel_to_plane(n, ray.direction)) {
-    out.contained = in_plane(n, v_[0], ray.origin) &&
-                    ray_in_plane_meets_polygon(ray, {v_[0], v_[1], v_[2]}, n);
+    out.contained =
+        in_plane(n, v_[0], ray.origin) && ray_in_plane_meets_polygon(ray, {v_[0], v_[1], v_[2]}, n);
     return out;
   }
   auto hit = watertight_triangle(ray.origin, ray.direction, v_[0], v_[1], v_[2]);
@@ -82,10 +82,12 @@ Derivation Triangle::derive(const Ray& ray, std::string_view /*method*/,
   }
   d.step("numerator", "n·(a − O)", dot(n, A - O));
   double t = d.step("t", "t", d.sym("numerator") / d.sym("denominator"),
-                    "where the ray meets the plane n·(x − a) = 0").scalar;
+                    "where the ray meets the plane n·(x − a) = 0")
+                 .scalar;
   Value q = d.step("q", "q", O + d.sym("t") * D, "the point where the ray meets the plane");
   E Q = d.sym("q");
-  double e0 = d.step("e_ab", "e_ab", dot(cross(B - A, Q - A), n), "edge ab: ≥ 0 means inside").scalar;
+  double e0 =
+      d.step("e_ab", "e_ab", dot(cross(B - A, Q - A), n), "edge ab: ≥ 0 means inside").scalar;
   double e1 = d.step("e_bc", "e_bc", dot(cross(C - B, Q - B), n), "edge bc").scalar;
   double e2 = d.step("e_ca", "e_ca", dot(cross(A - C, Q - C), n), "edge ca").scalar;
   bool inside = e0 >= 0 && e1 >= 0 && e2 >= 0;
