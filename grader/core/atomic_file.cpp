@@ -1,0 +1,72 @@
+// Atomic file writes: a temporary file in the same folder, fsync, rename.
+#include "core/atomic_file.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+
+namespace raygrade {
+namespace {
+
+[[noreturn]] void fail(const std::filesystem::path& path, std::string_view what, int error) {
+  throw Error(Diagnostic{path.string(), "", 0, 0, Severity::kError,
+                         fmt::format("cannot write the file: {}: {}", what, std::strerror(error)),
+                         "unwritable"});
+}
+
+// Removes the temporary file when the write does not complete.
+class TempFile {
+ public:
+  explicit TempFile(std::string name) : name_(std::move(name)) {}
+  TempFile(const TempFile&) = delete;
+  TempFile& operator=(const TempFile&) = delete;
+  ~TempFile() {
+    if (fd_ >= 0) ::close(fd_);
+    if (!committed_) ::unlink(name_.c_str());
+  }
+  int fd_ = -1;
+  bool committed_ = false;
+  std::string name_;
+};
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
+  if (path.filename().empty()) fail(path, "the path names a folder", EISDIR);
+  // mkstemp needs a writable template: "<folder>/.<name>.tmp-XXXXXX", hidden and in the same
+  // folder so that the rename stays on one file system.
+  std::filesystem::path folder = path.parent_path();
+  std::string pattern =
+      (folder / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
+  std::vector<char> name(pattern.begin(), pattern.end());
+  name.push_back('\0');
+  int fd = ::mkstemp(name.data());
+  if (fd < 0) fail(path, "creating a temporary file", errno);
+  TempFile temp(name.data());
+  temp.fd_ = fd;
+  // mkstemp creates the file readable by its owner only; results are meant to be shared.
+  if (::fchmod(fd, 0644) != 0) fail(path, "setting permissions", errno);
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      fail(path, "writing", errno);
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0) fail(path, "flushing to disk", errno);
+  temp.fd_ = -1;
+  if (::close(fd) != 0) fail(path, "closing", errno);
+  if (::rename(temp.name_.c_str(), path.c_str()) != 0) fail(path, "renaming into place", errno);
+  temp.committed_ = true;
+}
+
+}  // namespace raygrade

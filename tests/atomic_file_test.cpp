@@ -1,0 +1,102 @@
+// write_file_atomically: whole files or nothing, and no temporary files left behind.
+#include "core/atomic_file.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace raygrade {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh empty folder for one test, removed at the end.
+class ScratchFolder {
+ public:
+  ScratchFolder() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = fs::temp_directory_path() /
+            fmt::format("raygrade-{}-{}-{}", info->test_suite_name(), info->name(), ::getpid());
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~ScratchFolder() { fs::remove_all(path_); }
+  const fs::path& path() const { return path_; }
+  std::vector<std::string> names() const {
+    std::vector<std::string> out;
+    for (const auto& e : fs::directory_iterator(path_)) out.push_back(e.path().filename());
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+ private:
+  fs::path path_;
+};
+
+std::string read_all(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(AtomicFile, WritesTheBytes) {
+  ScratchFolder dir;
+  std::string bytes("{\"a\": 1}\n\0tail", 14);
+  write_file_atomically(dir.path() / "results.json", bytes);
+  EXPECT_EQ(read_all(dir.path() / "results.json"), bytes);
+  EXPECT_EQ(dir.names(), std::vector<std::string>{"results.json"});  // no temporary file left
+}
+
+TEST(AtomicFile, ReplacesAnOldFileWhole) {
+  ScratchFolder dir;
+  write_file_atomically(dir.path() / "r.json", std::string(10000, 'x'));
+  write_file_atomically(dir.path() / "r.json", "short");
+  EXPECT_EQ(read_all(dir.path() / "r.json"), "short");
+  EXPECT_EQ(dir.names(), std::vector<std::string>{"r.json"});
+}
+
+TEST(AtomicFile, WritesAnEmptyFile) {
+  ScratchFolder dir;
+  write_file_atomically(dir.path() / "empty.txt", "");
+  EXPECT_TRUE(fs::exists(dir.path() / "empty.txt"));
+  EXPECT_EQ(fs::file_size(dir.path() / "empty.txt"), 0u);
+}
+
+TEST(AtomicFile, FileIsReadableByOthers) {
+  ScratchFolder dir;
+  write_file_atomically(dir.path() / "r.json", "{}");
+  auto perms = fs::status(dir.path() / "r.json").permissions();
+  EXPECT_NE(perms & fs::perms::others_read, fs::perms::none);
+}
+
+TEST(AtomicFile, MissingFolderIsAnErrorNamingThePath) {
+  ScratchFolder dir;
+  fs::path target = dir.path() / "no-such-folder" / "r.json";
+  try {
+    write_file_atomically(target, "{}");
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.diagnostic().file, target.string());
+    EXPECT_EQ(e.diagnostic().code, "unwritable");
+  }
+  EXPECT_EQ(dir.names(), std::vector<std::string>{});
+}
+
+// Renaming over a non-empty folder fails after the bytes were written: the folder stays, and
+// the temporary file is removed.
+TEST(AtomicFile, FailedRenameLeavesTargetAndNoTemporaryFile) {
+  ScratchFolder dir;
+  fs::create_directories(dir.path() / "r.json" / "inside");
+  EXPECT_THROW(write_file_atomically(dir.path() / "r.json", "{}"), Error);
+  EXPECT_TRUE(fs::is_directory(dir.path() / "r.json" / "inside"));
+  EXPECT_EQ(dir.names(), std::vector<std::string>{"r.json"});
+}
+
+}  // namespace
+}  // namespace raygrade
