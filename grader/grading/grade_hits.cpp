@@ -1,0 +1,428 @@
+// Grading the kinds `intersect` (every hit) and `first-hit` (the nearest object's hit): t
+// values matched regardless of order, points, normals, the object, and the mistakes a
+// student's t values reveal.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "derivation/number_format.h"
+#include "grading/kind_grader.h"
+#include "grading/mistakes.h"
+#include "grading/steps.h"
+#include "kinds/intersect.h"
+
+namespace raygrade {
+namespace {
+
+// How wrong the discriminant of a student's hand computation may be, relative to the size of
+// its terms b² and 4|ac|: four significant figures carried through. Near a tangent
+// (discriminant ≈ 0) a root moves by the square root of this, so the tolerance of t widens
+// to (√(Δ + δΔ) − √Δ) / 2|a|; far from a tangent the widening is below the usual tolerance.
+constexpr double kTangentInputError = 1e-4;
+
+struct StudentHit {
+  std::optional<StudentNumber> t;
+  std::string t_fault;
+  std::optional<AnswerReader::Vector> point, normal;
+};
+
+std::string norm_name(std::string s) {
+  std::string out;
+  for (char ch : s) {
+    if (ch == ' ' || ch == '_' || ch == '-') continue;
+    out += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  }
+  return out;
+}
+
+class HitsGrader final : public KindGrader {
+ public:
+  explicit HitsGrader(const Problem& p);
+  void grade(const AnswerReader& a, GradeResult& out) const override;
+
+ private:
+  void grade_object(const AnswerReader& a, GradeResult& out) const;
+  void grade_hits(const std::vector<StudentHit>& hits, const StepsGrade* steps,
+                  GradeResult& out) const;
+  double widen_point(std::size_t j) const { return widen_[j] * length(ray_.direction); }
+  std::string fmt_t(double t) const { return format_number(t, numbers_); }
+
+  const Task* task_;
+  bool first_hit_ = false;
+  Ray ray_;
+  std::vector<Hit> ref_;
+  bool contained_ = false;
+  std::vector<std::string> names_;
+  int ref_object_ = -1;
+  const Shape* shape_ = nullptr;  // the object whose hits are asked for
+  std::vector<double> widen_;
+  std::vector<double> behind_;  // roots with t < t_min: behind the origin
+  std::vector<double> far_;     // roots past the first hit of the same object
+  std::vector<MethodSolution> methods_;
+  std::vector<MistakenSolution> mistaken_;
+  NumberFormat numbers_;
+};
+
+HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()) {
+  context_.problem = &p;
+  context_.tolerance = read_tolerance_policy(p);
+  if (p.precision >= 0) numbers_.decimals = p.precision;
+  std::vector<const Shape*> shapes;
+  if (auto* it = dynamic_cast<const IntersectTask*>(task_)) {
+    context_.points = read_points_policy(p, {{"t", 2}, {"point", 1}, {"normal", 0}, {"steps", 0}});
+    ray_ = it->ray();
+    Intersection x = it->object().intersect(ray_);
+    ref_ = x.hits;
+    contained_ = x.contained;
+    shape_ = &it->object();
+    shapes.push_back(shape_);
+  } else {
+    auto& fh = dynamic_cast<const FirstHitTask&>(*task_);
+    first_hit_ = true;
+    context_.points =
+        read_points_policy(p, {{"object", 2}, {"t", 1}, {"point", 1}, {"normal", 0}});
+    ray_ = fh.ray();
+    FirstHit f = first_hit(ray_, fh.objects());
+    for (const auto& o : fh.objects()) {
+      names_.push_back(o.name);
+      shapes.push_back(o.shape.get());
+    }
+    ref_object_ = f.index;
+    if (f.index >= 0) {
+      ref_.push_back(f.hit);
+      shape_ = fh.objects()[static_cast<std::size_t>(f.index)].shape.get();
+    }
+  }
+  // Roots every method computes, kept when they are not hits: behind the origin, or far.
+  for (const Shape* s : shapes) {
+    Intersection x = s->intersect(ray_);
+    for (const auto& m : s->methods()) {
+      for (double t : derivation_roots(s->derive(ray_, m))) {
+        if (t < ray_.t_min) behind_.push_back(t);
+        if (first_hit_ && !x.hits.empty() && t > x.hits.front().t + 1e-9 * (1 + std::abs(t))) {
+          far_.push_back(t);
+        }
+      }
+    }
+  }
+  // The conditioning of the roots: a quadratic's a, b, c and discriminant, when it has one.
+  widen_.assign(ref_.size(), 0);
+  if (shape_) {
+    auto methods = shape_->methods();
+    std::string m = std::find(methods.begin(), methods.end(), "algebraic") != methods.end()
+                        ? "algebraic"
+                        : methods.front();
+    Derivation d = shape_->derive(ray_, m);
+    const Step *a = d.find("a"), *b = d.find("b"), *c = d.find("c");
+    if (a && b && c && a->value.is_scalar() && a->value.scalar != 0) {
+      double A = a->value.scalar, B = b->value.scalar, C = c->value.scalar;
+      double disc = std::max(0.0, B * B - 4 * A * C);
+      double delta = kTangentInputError * (B * B + 4 * std::abs(A * C));
+      double w = (std::sqrt(disc + delta) - std::sqrt(disc)) / (2 * std::abs(A));
+      widen_.assign(ref_.size(), w);
+    }
+  }
+  if (!first_hit_) methods_ = solutions_by_method(*task_);
+  mistaken_ = mistaken_solutions(*task_);
+}
+
+void HitsGrader::grade(const AnswerReader& a, GradeResult& out) const {
+  if (first_hit_) {
+    a.allow_only({"object", "hits", "tie", "steps"});
+  } else {
+    a.allow_only({"hits", "contained", "steps"});
+  }
+  std::optional<StepsGrade> steps;
+  if (a.has("steps")) {
+    if (first_hit_) {
+      out.notes.push_back("Steps are not graded for first-hit problems; the final answer is.");
+    } else {
+      steps = grade_steps(context_, *task_, methods_, mistaken_, a.at("steps"));
+      out.parts.push_back(steps->part);
+      for (auto& m : steps->mistakes) out.mistakes.push_back(m);
+    }
+  }
+  if (first_hit_) grade_object(a, out);
+  if (!a.has("hits")) {
+    for (const char* part : {"t", "point", "normal"}) {
+      if (context_.points.of(part) > 0) out.parts.push_back(missing_part(context_, part));
+    }
+    return;
+  }
+  std::vector<StudentHit> hits;
+  for (const auto& h : a.at("hits").items()) {
+    h.allow_only({"t", "point", "normal", "barycentric", "part"});
+    StudentHit s;
+    if (h.has("t")) {
+      auto n = h.at("t").number();
+      s.t = n.value;
+      s.t_fault = n.fault;
+    }
+    if (h.has("point")) s.point = h.at("point").vector();
+    if (h.has("normal")) s.normal = h.at("normal").vector();
+    hits.push_back(std::move(s));
+  }
+  if (!first_hit_ && contained_) {
+    bool says = a.has("contained") && a.at("contained").json() == true;
+    out.parts.push_back(make_part(
+        context_, "t", says && hits.empty() ? 1 : hits.empty() ? 0.5 : 0,
+        {says && hits.empty()
+             ? "Right: the ray lies in the plane and meets it along a whole line."
+             : "The ray lies in the plane (N·R = 0 and its origin is on the plane): it meets "
+               "the plane along a whole line; say so with \"contained\": true."}));
+    return;
+  }
+  grade_hits(hits, steps ? &*steps : nullptr, out);
+}
+
+void HitsGrader::grade_object(const AnswerReader& a, GradeResult& out) const {
+  if (!a.has("object")) {
+    out.parts.push_back(missing_part(context_, "object", "No object named."));
+    return;
+  }
+  const auto& v = a.at("object").json();
+  std::string right = ref_object_ >= 0 ? names_[static_cast<std::size_t>(ref_object_)] : "";
+  if (v.is_null() || (v.is_string() && norm_name(v.get<std::string>()) == "none")) {
+    out.parts.push_back(make_part(context_, "object", ref_object_ < 0 ? 1 : 0,
+                                  {ref_object_ < 0 ? "Right: no object is hit."
+                                                   : fmt::format("{} is hit.", right)}));
+    return;
+  }
+  std::string name = a.at("object").string();
+  bool ok = ref_object_ >= 0 && norm_name(name) == norm_name(right);
+  out.parts.push_back(make_part(
+      context_, "object", ok ? 1 : 0,
+      {ok ? fmt::format("Right: {} is hit first.", right)
+          : ref_object_ < 0 ? "No object is hit."
+                            : fmt::format("The first object hit is {}, not {}.", right, name)}));
+}
+
+void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrade* steps,
+                            GradeResult& out) const {
+  const Tolerance& tt = context_.tolerance.for_field("t");
+  const Tolerance& tp = context_.tolerance.for_field("point");
+  const Tolerance& tn = context_.tolerance.for_field("normal");
+  std::size_t n_ref = ref_.size(), n_stu = hits.size();
+  std::vector<int> match(n_stu, -1);
+  std::vector<bool> used(n_ref, false);
+  std::vector<Match> verdict(n_stu, Match::kWrong);
+  std::vector<std::string> t_feedback;
+  bool any_t = false;
+  // Match t values to reference hits regardless of order: right matches first, then those
+  // right to the digits given.
+  for (Match wanted : {Match::kRight, Match::kInsufficientPrecision}) {
+    for (std::size_t i = 0; i < n_stu; ++i) {
+      if (!hits[i].t || match[i] >= 0) continue;
+      for (std::size_t j = 0; j < n_ref; ++j) {
+        if (used[j]) continue;
+        NumberVerdict v = compare_number(*hits[i].t, ref_[j].t, ref_[j].t, tt, widen_[j]);
+        if (v.match != wanted) continue;
+        match[i] = static_cast<int>(j);
+        used[j] = true;
+        verdict[i] = v.match;
+        if (v.match == Match::kInsufficientPrecision) t_feedback.push_back("t: " + v.message);
+        break;
+      }
+    }
+  }
+  double t_credit = 0;
+  std::vector<double> carried_roots;
+  if (steps && steps->carried) carried_roots = derivation_roots(*steps->carried);
+  double dlen = length(ray_.direction);
+  for (std::size_t i = 0; i < n_stu; ++i) {
+    if (!hits[i].t) {
+      if (!hits[i].t_fault.empty()) t_feedback.push_back("t: " + hits[i].t_fault);
+      continue;
+    }
+    any_t = true;
+    const std::string& typed = hits[i].t->text;
+    if (match[i] >= 0) {
+      t_credit += verdict[i] == Match::kRight ? 1 : tt.precision_credit;
+      continue;
+    }
+    auto near = [&](double r) {
+      return compare_number(*hits[i].t, r, r, tt).match == Match::kRight;
+    };
+    bool explained = false;
+    for (double r : carried_roots) {
+      if (!near(r)) continue;
+      t_credit += context_.points.carried_forward;
+      out.carried_forward = true;
+      t_feedback.push_back(fmt::format(
+          "t = {} follows correctly from your own earlier steps (error carried forward).", typed));
+      explained = true;
+      break;
+    }
+    for (double r : behind_) {
+      if (explained || !near(r)) continue;
+      out.mistakes.push_back(make_mistake(
+          "negative-t", "t",
+          fmt::format("t = {} solves the equation, but t < {} puts it behind the ray's origin.",
+                      typed, fmt_t(ray_.t_min))));
+      explained = true;
+    }
+    for (double r : far_) {
+      if (explained || !near(r)) continue;
+      out.mistakes.push_back(make_mistake(
+          "far-root", "t",
+          fmt::format("t = {} is where the ray leaves the object; it enters at t = {}.", typed,
+                      ref_.empty() ? "?" : fmt_t(ref_.front().t))));
+      explained = true;
+    }
+    if (!explained && std::abs(dlen - 1) > 1e-9) {
+      for (const auto& h : ref_) {
+        if (!near(h.t * dlen)) continue;
+        out.mistakes.push_back(make_mistake(
+            "unit-direction-t", "t",
+            fmt::format("t = {} is the distance along D/|D|; with |D| = {} the ray's t is {}.",
+                        typed, format_number(dlen, numbers_), fmt_t(h.t))));
+        explained = true;
+        break;
+      }
+    }
+    for (const auto& ms : mistaken_) {
+      if (explained) break;
+      for (const auto& part : ms.parts) {
+        for (double r : derivation_roots(part.derivation)) {
+          if (explained || !near(r)) continue;
+          out.mistakes.push_back(make_mistake(ms.id, "t", fmt::format("your t = {} is what it gives.", typed)));
+          explained = true;
+        }
+      }
+    }
+    if (!explained) t_feedback.push_back(fmt::format("t = {} is not a hit of this ray.", typed));
+  }
+  std::size_t denom = std::max(n_ref, n_stu);
+  for (std::size_t j = 0; j < n_ref; ++j) {
+    if (!used[j] && any_t) {
+      t_feedback.push_back(first_hit_ ? fmt::format("The first hit is at t = {}.", fmt_t(ref_[j].t))
+                                      : fmt::format("The ray also hits at t = {}.", fmt_t(ref_[j].t)));
+    }
+  }
+  if (n_ref == 0 && n_stu == 0) {
+    out.parts.push_back(make_part(context_, "t", 1, {"Right: the ray does not hit."}));
+  } else if (!any_t) {
+    out.parts.push_back(missing_part(context_, "t", t_feedback.empty() ? "" : t_feedback.front()));
+  } else {
+    if (t_credit >= static_cast<double>(denom) && t_feedback.empty()) {
+      t_feedback.push_back(n_ref == 1 ? "Right." : "Right: every hit, in any order.");
+    }
+    if (n_ref == 0) t_feedback.push_back("The ray does not hit this object.");
+    out.parts.push_back(make_part(context_, "t", t_credit / static_cast<double>(denom), t_feedback));
+  }
+  // Points and normals of the hits the student found; when no t was given, matched by point.
+  if (!any_t) {
+    for (std::size_t i = 0; i < n_stu; ++i) {
+      if (!hits[i].point || !hits[i].point->ok) continue;
+      for (std::size_t j = 0; j < n_ref; ++j) {
+        if (used[j]) continue;
+        if (compare_vector(hits[i].point->c, ref_[j].point, tp, widen_point(j)).match ==
+            Match::kWrong)
+          continue;
+        match[i] = static_cast<int>(j);
+        used[j] = true;
+        break;
+      }
+    }
+  }
+  double p_credit = 0, n_credit = 0;
+  std::size_t n_points = 0, n_normals = 0;
+  std::vector<std::string> p_feedback, n_feedback;
+  for (std::size_t i = 0; i < n_stu; ++i) {
+    const StudentHit& h = hits[i];
+    if (h.point) {
+      ++n_points;
+      if (!h.point->ok) {
+        p_feedback.push_back("point: " + h.point->fault);
+      } else if (match[i] >= 0) {
+        auto j = static_cast<std::size_t>(match[i]);
+        NumberVerdict v = compare_vector(h.point->c, ref_[j].point, tp, widen_point(j));
+        if (v.match == Match::kRight) {
+          p_credit += 1;
+        } else if (v.match == Match::kInsufficientPrecision) {
+          p_credit += tp.precision_credit;
+          p_feedback.push_back("point: " + v.message);
+        } else {
+          p_feedback.push_back(fmt::format("The point at t = {} is {}.", fmt_t(ref_[j].t),
+                                           format_vector(ref_[j].point, numbers_)));
+        }
+      } else if (h.t) {
+        // Consistent with the student's own t: P = O + tD.
+        Vec3d own = ray_.at(h.t->value);
+        if (compare_vector(h.point->c, own, tp).match == Match::kRight) {
+          p_credit += context_.points.carried_forward;
+          out.carried_forward = true;
+          p_feedback.push_back(fmt::format(
+              "The point follows correctly from your t = {} (error carried forward).",
+              h.t->text));
+        }
+      }
+    }
+    if (h.normal) {
+      ++n_normals;
+      if (!h.normal->ok) {
+        n_feedback.push_back("normal: " + h.normal->fault);
+        continue;
+      }
+      if (match[i] < 0) continue;
+      auto j = static_cast<std::size_t>(match[i]);
+      Vec3d mine = h.normal->value();
+      double len = length(mine);
+      if (len == 0) {
+        n_feedback.push_back("A normal cannot be the zero vector.");
+        continue;
+      }
+      // Graded as a direction: any positive multiple of the unit normal is right.
+      StudentNumber unit[3];
+      for (int k = 0; k < 3; ++k) unit[k] = {mine[k] / len, {}, ""};
+      Vec3d r = ref_[j].normal;
+      if (compare_vector(unit, r, tn).match == Match::kRight) {
+        n_credit += 1;
+        if (std::abs(len - 1) > 1e-3) {
+          n_feedback.push_back(fmt::format("Your normal has length {}; as a direction it is right.",
+                                           format_number(len, numbers_)));
+        }
+      } else if (compare_vector(unit, -r, tn).match == Match::kRight) {
+        std::string type(shape_ ? shape_->type() : "");
+        bool flat = type == "triangle" || type == "polygon";
+        if (flat || type == "sphere" || type == "cylinder" || type == "box") {
+          const char* id = flat ? "cross-order" : "inward-normal";
+          out.mistakes.push_back(make_mistake(
+              id, "normal",
+              fmt::format("your normal {} points the opposite way to {}.",
+                          format_vector(mine, numbers_), format_vector(r, numbers_))));
+          n_credit += mistake_info(id).credit;
+        } else {
+          n_feedback.push_back(fmt::format("Your normal points the opposite way to the plane's "
+                                           "normal {}.", format_vector(r, numbers_)));
+        }
+      } else {
+        n_feedback.push_back(fmt::format("The normal at t = {} is {}.", fmt_t(ref_[j].t),
+                                         format_vector(r, numbers_)));
+      }
+    }
+  }
+  auto add = [&](const char* name, double credit, std::size_t given, std::vector<std::string> fb) {
+    std::size_t d = std::max(n_ref, given);
+    if (n_ref == 0 && n_stu == 0) {  // no hit and none given: nothing was missed
+      if (context_.points.of(name) > 0) out.parts.push_back(make_part(context_, name, 1, {}));
+      return;
+    }
+    if (given == 0) {
+      if (context_.points.of(name) > 0) out.parts.push_back(missing_part(context_, name));
+      return;
+    }
+    if (credit >= static_cast<double>(d) && fb.empty()) fb.push_back("Right.");
+    out.parts.push_back(make_part(context_, name, credit / static_cast<double>(d), std::move(fb)));
+  };
+  add("point", p_credit, n_points, std::move(p_feedback));
+  add("normal", n_credit, n_normals, std::move(n_feedback));
+}
+
+}  // namespace
+
+std::shared_ptr<const KindGrader> make_hits_grader(const Problem& p) {
+  return std::make_shared<HitsGrader>(p);
+}
+
+}  // namespace raygrade

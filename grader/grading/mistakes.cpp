@@ -1,0 +1,210 @@
+// The mistake catalogue and the formula rewrites that model each mistake.
+#include "grading/mistakes.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "core/error.h"
+
+namespace raygrade {
+
+const std::vector<MistakeInfo>& mistake_catalogue() {
+  static const std::vector<MistakeInfo> c = {
+      {"discriminant-sign", "sign", "Sign slip in the discriminant",
+       "The discriminant is b² − 4ac; with + 4ac the roots move.", 0},
+      {"b-sign", "sign", "Sign slip in the quadratic's b",
+       "b = 2 D·(O − C): with C − O instead of O − C the sign of b flips, and with it both "
+       "roots.",
+       0},
+      {"plane-d-sign", "sign", "Sign slip in the plane's D",
+       "In N·P + D = 0 a point V0 of the plane gives N·V0 + D = 0, so D = −N·V0 (not +N·V0).",
+       0},
+      {"far-root", "root-choice", "Far root given as the first hit",
+       "Of two roots, the ray meets the surface first at the smaller t ≥ 0; the larger is "
+       "where it leaves.",
+       0},
+      {"negative-t", "root-choice", "Negative t given as a hit",
+       "A root with t < 0 lies behind the ray's origin: it solves the equation but is not a "
+       "hit.",
+       0},
+      {"unit-direction-t", "convention", "t measured along the normalized direction",
+       "t counts lengths of the direction as given. The direction here is not a unit vector, "
+       "so a distance along D/|D| must be divided by |D| to give t.",
+       0},
+      {"cross-order", "orientation", "Cross product in the wrong order",
+       "a × b = −(b × a): swapping the factors flips the vector. With vertices a, b, c in "
+       "order the normal is (b − a) × (c − a); a camera's right vector is d × u.",
+       0.5},
+      {"inward-normal", "orientation", "Normal pointing inward",
+       "A closed surface's normal points outward: for a sphere, (P − C)/r.", 0.5},
+      {"pixel-corner", "convention", "Pixel corner instead of pixel centre",
+       "The offsets x − resX/2 aim at the pixel's lower-left corner; the centre needs half a "
+       "pixel more, x + 0.5 − resX/2.",
+       0.5},
+      {"pixel-centre", "convention", "Pixel centre instead of pixel corner",
+       "This problem uses the corner convention x − resX/2 (as in the course's formula); the "
+       "extra half pixel aims at the centre instead.",
+       0.5},
+      {"cylinder-b-no-origin", "algebra", "Origin terms missing from b",
+       "(p_x + t v_x)² = p_x² + 2 p_x v_x t + v_x² t²: the middle term keeps p_x, so "
+       "b = 2(p_x v_x + p_y v_y), not 2v_x + 2v_y.",
+       0},
+      {"r-not-squared", "algebra", "r where r² belongs",
+       "The surface's equation has r² (|P − C|² = r²); using r itself changes every root.", 0},
+  };
+  return c;
+}
+
+const MistakeInfo& mistake_info(std::string_view id) {
+  for (const auto& m : mistake_catalogue()) {
+    if (m.id == id) return m;
+  }
+  throw Error(Diagnostic{"", "", 0, 0, Severity::kError,
+                         fmt::format("no mistake named '{}' in the catalogue", id), "internal"});
+}
+
+FoundMistake make_mistake(std::string_view id, std::string part, const std::string& specific) {
+  const MistakeInfo& m = mistake_info(id);
+  return FoundMistake{std::string(m.id), std::string(m.kind), std::move(part),
+                      fmt::format("{}: {} {}", m.title, specific, m.explanation)};
+}
+
+E rewrite_tree(const E& e, const std::function<std::optional<E>(const E&)>& replace) {
+  if (e.empty()) return e;
+  if (auto r = replace(e)) return *r;
+  const ExprNode& n = e.node();
+  if (n.args.empty()) return e;
+  auto copy = std::make_shared<ExprNode>(n);
+  bool changed = false;
+  for (auto& a : copy->args) {
+    E b = rewrite_tree(a, replace);
+    if (&b.node() != &a.node()) changed = true;
+    a = b;
+  }
+  return changed ? E(std::shared_ptr<const ExprNode>(std::move(copy))) : e;
+}
+
+namespace {
+
+bool is_symbol(const E& e, std::string_view name) {
+  return !e.empty() && e.node().op == Op::kSymbol && e.node().name == name;
+}
+
+bool mentions(const E& e, std::string_view name) {
+  if (e.empty()) return false;
+  if (is_symbol(e, name)) return true;
+  for (const auto& a : e.node().args) {
+    if (mentions(a, name)) return true;
+  }
+  return false;
+}
+
+std::optional<E> discriminant_sign(std::string_view step, const E& f) {
+  if (step != "discriminant" || f.empty() || f.node().op != Op::kSub) return std::nullopt;
+  return f.node().args[0] + f.node().args[1];
+}
+
+std::optional<E> b_sign(std::string_view step, const E& f) {
+  if (step != "b") return std::nullopt;
+  return -f;
+}
+
+std::optional<E> plane_d_sign(std::string_view step, const E& f) {
+  if (step != "D" || f.empty()) return std::nullopt;
+  return -f;
+}
+
+// Seed 000: (p_x + t v_x)² expanded as p_x² + 2t v_x + t² v_x², so b = 2v_x + 2v_y.
+std::optional<E> cylinder_b_no_origin(std::string_view step, const E& f) {
+  if (step != "b" || !mentions(f, "vx") || !mentions(f, "vy")) return std::nullopt;
+  return 2 * sym("vx", "v_x") + 2 * sym("vy", "v_y");
+}
+
+std::optional<E> r_not_squared(std::string_view /*step*/, const E& f) {
+  bool changed = false;
+  E g = rewrite_tree(f, [&](const E& x) -> std::optional<E> {
+    if (x.node().op == Op::kSquare && is_symbol(x.node().args[0], "r")) {
+      changed = true;
+      return x.node().args[0];
+    }
+    return std::nullopt;
+  });
+  if (!changed) return std::nullopt;
+  return g;
+}
+
+// Two derivations differ in some step's value.
+bool same_value(const Value& a, const Value& b) {
+  constexpr double kSame = 1e-12;  // far below any tolerance; above rounding noise
+  if (a.kind != b.kind) return false;
+  if (a.is_scalar()) return std::abs(a.scalar - b.scalar) <= kSame * (1 + std::abs(b.scalar));
+  if (a.is_vector()) return length(a.vector - b.vector) <= kSame * (1 + length(b.vector));
+  return a.truth == b.truth;
+}
+
+bool same_parts(const std::vector<SolutionPart>& a, const std::vector<SolutionPart>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const auto& sa = a[i].derivation.steps;
+    const auto& sb = b[i].derivation.steps;
+    if (sa.size() != sb.size()) return false;
+    for (std::size_t k = 0; k < sa.size(); ++k) {
+      if (sa[k].name != sb[k].name || !same_value(sa[k].value, sb[k].value)) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+const std::vector<FormulaMistake>& formula_mistakes() {
+  static const std::vector<FormulaMistake> m = {
+      {"discriminant-sign", &discriminant_sign},
+      {"b-sign", &b_sign},
+      {"plane-d-sign", &plane_d_sign},
+      {"cylinder-b-no-origin", &cylinder_b_no_origin},
+      {"r-not-squared", &r_not_squared},
+  };
+  return m;
+}
+
+std::vector<MistakenSolution> mistaken_solutions(const Task& task) {
+  std::vector<MistakenSolution> out;
+  for (const auto& method : task.methods()) {
+    std::vector<SolutionPart> right;
+    try {
+      right = task.derive(method, nullptr);
+    } catch (const Error&) {
+      continue;
+    }
+    for (const auto& fm : formula_mistakes()) {
+      Overrides o;
+      o.formula = fm.rewrite;
+      try {
+        auto parts = task.derive(method, &o);
+        if (!same_parts(parts, right)) {
+          out.push_back(MistakenSolution{std::string(fm.id), method, std::move(parts)});
+        }
+      } catch (const Error&) {
+        // The mistake makes the derivation meaningless here (a vector where a number was).
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<double> derivation_roots(const Derivation& d) {
+  static const char* const kNames[] = {"t0",      "t1",     "t",    "t_enter",
+                                       "t_exit",  "t_bottom", "t_top"};
+  std::vector<double> out;
+  for (const auto& s : d.steps) {
+    if (s.given || !s.value.is_scalar() || !std::isfinite(s.value.scalar)) continue;
+    for (const char* n : kNames) {
+      if (s.name == n) out.push_back(s.value.scalar);
+    }
+  }
+  return out;
+}
+
+}  // namespace raygrade

@@ -1,0 +1,56 @@
+// The catalogue of named mistakes (docs/grading.md), and derivations recomputed with a
+// mistake: a student's numbers that match a mistaken derivation and not the right one name
+// the mistake.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "derivation/derivation.h"
+#include "grading/result.h"
+#include "problems/problem.h"
+
+namespace raygrade {
+
+struct MistakeInfo {
+  std::string_view id;
+  std::string_view kind;  // sign, root-choice, convention, orientation, algebra
+  std::string_view title;
+  std::string_view explanation;  // the general lesson, appended to the specific message
+  double credit;                 // the fraction of the part's points it still earns
+};
+
+const std::vector<MistakeInfo>& mistake_catalogue();
+// The entry for `id` (a defect if unknown: throws Error).
+const MistakeInfo& mistake_info(std::string_view id);
+
+// A found mistake: `specific` says what the student wrote; the catalogue adds the lesson.
+FoundMistake make_mistake(std::string_view id, std::string part, const std::string& specific);
+
+// A mistake that is a change to a step's formula.
+struct FormulaMistake {
+  std::string_view id;
+  // The mistaken formula for `step`, or nothing when the mistake does not touch it.
+  std::optional<E> (*rewrite)(std::string_view step, const E& formula);
+};
+const std::vector<FormulaMistake>& formula_mistakes();
+
+// Copies a formula tree, replacing every subtree for which `replace` returns a value.
+E rewrite_tree(const E& e, const std::function<std::optional<E>(const E&)>& replace);
+
+// The worked solution recomputed with one formula mistake, by one method.
+struct MistakenSolution {
+  std::string id;
+  std::string method;
+  std::vector<SolutionPart> parts;
+};
+
+// Every formula mistake that changes something in some method of the task's solution.
+std::vector<MistakenSolution> mistaken_solutions(const Task& task);
+
+// The roots a derivation computes (steps t0, t1, t, t_enter, t_exit, t_bottom, t_top).
+std::vector<double> derivation_roots(const Derivation& d);
+
+}  // namespace raygrade

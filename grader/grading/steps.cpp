@@ -1,0 +1,168 @@
+// Steps and error carried forward.
+#include "grading/steps.h"
+
+#include <fmt/format.h>
+
+#include "derivation/number_format.h"
+#include "json/cursor.h"
+
+namespace raygrade {
+
+std::vector<MethodSolution> solutions_by_method(const Task& task) {
+  std::vector<MethodSolution> out;
+  for (const auto& m : task.methods()) {
+    try {
+      auto parts = task.derive(m, nullptr);
+      if (!parts.empty()) out.push_back({m, std::move(parts.front().derivation)});
+    } catch (const Error&) {
+      // A method that does not apply to this problem's data.
+    }
+  }
+  return out;
+}
+
+namespace {
+
+// The student's value as a derivation Value (scalar or vector); nullopt with a fault.
+std::optional<Value> student_value(const AnswerReader& s, std::string* fault) {
+  if (s.json().is_array()) {
+    auto v = s.vector();
+    if (!v.ok) {
+      *fault = v.fault;
+      return std::nullopt;
+    }
+    return Value(v.value());
+  }
+  auto n = s.number();
+  if (!n.value) {
+    *fault = n.fault;
+    return std::nullopt;
+  }
+  return Value(n.value->value);
+}
+
+}  // namespace
+
+Match match_value(const AnswerReader& student, const Value& reference, const Tolerance& t,
+                  std::string* message) {
+  if (reference.is_vector()) {
+    if (!student.json().is_array()) return Match::kWrong;
+    auto v = student.vector();
+    if (!v.ok) return Match::kWrong;
+    NumberVerdict r = compare_vector(v.c, reference.vector, t);
+    if (message) *message = r.message;
+    return r.match;
+  }
+  if (!reference.is_scalar() || student.json().is_array()) return Match::kWrong;
+  auto n = student.number();
+  if (!n.value) return Match::kWrong;
+  NumberVerdict r = compare_number(*n.value, reference.scalar, reference.scalar, t);
+  if (message) *message = r.message;
+  return r.match;
+}
+
+StepsGrade grade_steps(const GradingContext& c, const Task& task,
+                       const std::vector<MethodSolution>& reference,
+                       const std::vector<MistakenSolution>& mistaken, const AnswerReader& steps) {
+  StepsGrade out;
+  if (!steps.json().is_object()) steps.fail("steps is an object: step name → value", "type");
+  const Tolerance& tol = c.tolerance.for_field("steps");
+  NumberFormat fmt_numbers;
+  if (c.problem->precision >= 0) fmt_numbers.decimals = c.problem->precision;
+  // The method whose derivation has the most of the student's step names.
+  const MethodSolution* best = nullptr;
+  std::size_t best_count = 0;
+  for (const auto& m : reference) {
+    std::size_t count = 0;
+    for (const auto& [name, v] : steps.json().items()) count += m.derivation.find(name) != nullptr;
+    if (!best || count > best_count) {
+      best = &m;
+      best_count = count;
+    }
+  }
+  std::vector<std::string> feedback;
+  if (!best) {
+    out.part = make_part(c, "steps", 0, {"This problem has no worked steps to compare with."});
+    return out;
+  }
+  out.method = best->method;
+  std::vector<std::string> known;
+  for (const auto& s : best->derivation.steps) known.push_back(s.name);
+  for (const auto& [name, v] : steps.json().items()) {
+    if (best->derivation.find(name)) continue;
+    std::string hint = closest_match(name, known);
+    feedback.push_back(hint.empty() ? fmt::format("There is no step '{}' in this solution.", name)
+                                    : fmt::format("There is no step '{}' (did you mean '{}'?).",
+                                                  name, hint));
+  }
+  Overrides own;  // the student's values of the wrong steps so far
+  double credit = 0;
+  int graded = 0;
+  for (const auto& step : best->derivation.steps) {
+    if (!steps.has(step.name)) continue;
+    AnswerReader s = steps.at(step.name);
+    ++graded;
+    std::string fault, precision;
+    std::optional<Value> mine = student_value(s, &fault);
+    if (!mine) {
+      feedback.push_back(fmt::format("{}: {}", step.name, fault));
+      continue;
+    }
+    Match m = match_value(s, step.value, tol, &precision);
+    if (m == Match::kRight) {
+      credit += 1;
+      continue;
+    }
+    if (m == Match::kInsufficientPrecision) {
+      credit += tol.precision_credit;
+      feedback.push_back(fmt::format("{}: {}", step.name, precision));
+      continue;
+    }
+    // Wrong by the right solution: does it follow from the student's own earlier values?
+    bool carried = false;
+    if (!own.values.empty()) {
+      auto parts = task.derive(best->method, &own);
+      const Step* ecf = parts.empty() ? nullptr : parts.front().derivation.find(step.name);
+      if (ecf && match_value(s, ecf->value, tol) == Match::kRight) {
+        carried = true;
+        credit += c.points.carried_forward;
+        feedback.push_back(fmt::format(
+            "{} = {} follows correctly from your earlier values (error carried forward); "
+            "with the right values it is {}.",
+            step.name, format_value(*mine, fmt_numbers), format_value(step.value, fmt_numbers)));
+      }
+    }
+    if (!carried) {
+      bool named = false;
+      for (const auto& ms : mistaken) {
+        if (ms.method != best->method || ms.parts.empty()) continue;
+        const Step* wrong = ms.parts.front().derivation.find(step.name);
+        if (!wrong || match_value(s, wrong->value, tol) != Match::kRight) continue;
+        out.mistakes.push_back(make_mistake(
+            ms.id, "steps/" + step.name,
+            fmt::format("you have {} = {}; the right value is {}.", step.name,
+                        format_value(*mine, fmt_numbers), format_value(step.value, fmt_numbers))));
+        named = true;
+        break;
+      }
+      if (!named) {
+        feedback.push_back(fmt::format("{} = {} is not right: it is {}.", step.name,
+                                       format_value(*mine, fmt_numbers),
+                                       format_value(step.value, fmt_numbers)));
+      }
+    }
+    out.wrong.push_back(step.name);
+    own.values[step.name] = *mine;
+  }
+  if (!out.wrong.empty()) {
+    auto parts = task.derive(best->method, &own);
+    if (!parts.empty()) out.carried = std::move(parts.front().derivation);
+  }
+  if (graded > 0 && out.wrong.empty() && feedback.empty()) {
+    feedback.push_back(fmt::format("All {} steps are right.", graded));
+  }
+  out.part = make_part(c, "steps", graded > 0 ? credit / graded : 0, std::move(feedback));
+  return out;
+}
+
+}  // namespace raygrade

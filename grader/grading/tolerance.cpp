@@ -1,0 +1,189 @@
+// Tolerance modes, verdicts and the reading of a problem's `tolerance`.
+#include "grading/tolerance.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace raygrade {
+
+double allowed_error(double reference, double scale, const Tolerance& t, double widen) {
+  double a = 0;
+  switch (t.mode) {
+    case ToleranceMode::kRelAbs: a = t.atol + t.rtol * std::abs(scale); break;
+    case ToleranceMode::kDecimals: a = kHalfUnit * std::pow(10.0, -t.digits); break;
+    case ToleranceMode::kSigFigs:
+      if (reference == 0) {
+        a = t.atol;
+      } else {
+        double e = std::floor(std::log10(std::abs(reference)));
+        a = kHalfUnit * std::pow(10.0, e - t.digits + 1);
+      }
+      break;
+  }
+  return std::max(a, widen);
+}
+
+namespace {
+
+std::string plural(int n, const char* one, const char* many) {
+  return fmt::format("{} {}", n, n == 1 ? one : many);
+}
+
+// What the student must give for the answer to count, in words.
+std::string needed(const Tolerance& t, double allowed) {
+  switch (t.mode) {
+    case ToleranceMode::kDecimals:
+      return fmt::format("give {}", plural(t.digits, "decimal place", "decimal places"));
+    case ToleranceMode::kSigFigs:
+      return fmt::format("give {}", plural(t.digits, "significant figure", "significant figures"));
+    case ToleranceMode::kRelAbs: break;
+  }
+  int decimals = static_cast<int>(std::ceil(std::log10(kHalfUnit / allowed)));
+  return fmt::format("give at least {} (within {:.2g})",
+                     plural(std::max(decimals, 0), "decimal place", "decimal places"), allowed);
+}
+
+}  // namespace
+
+NumberVerdict compare_number(const StudentNumber& s, double reference, double scale,
+                             const Tolerance& t, double widen) {
+  NumberVerdict v;
+  v.allowed = allowed_error(reference, scale, t, widen);
+  double error = std::abs(s.value - reference);
+  if (std::isfinite(s.value) && error <= v.allowed) {
+    v.match = Match::kRight;
+    return v;
+  }
+  // Right to the digits the student typed, but too few of them?
+  if (s.digits.literal && std::isfinite(s.value)) {
+    double own = kHalfUnit * std::pow(10.0, -s.digits.decimals);
+    if (error <= own && own > v.allowed) {
+      v.match = Match::kInsufficientPrecision;
+      v.message = fmt::format("{} is right to the digits given, but too imprecise: {}", s.text,
+                              needed(t, v.allowed));
+      return v;
+    }
+  }
+  v.match = Match::kWrong;
+  return v;
+}
+
+NumberVerdict compare_vector(const StudentNumber (&s)[3], const Vec3d& reference,
+                             const Tolerance& t, double widen) {
+  double scale = length(reference);
+  NumberVerdict out;
+  out.match = Match::kRight;
+  for (int i = 0; i < 3; ++i) {
+    NumberVerdict c = compare_number(s[i], reference[i], scale, t, widen);
+    out.allowed = std::max(out.allowed, c.allowed);
+    if (c.match == Match::kWrong) {
+      out.match = Match::kWrong;
+      out.message.clear();
+    } else if (c.match == Match::kInsufficientPrecision && out.match == Match::kRight) {
+      out.match = Match::kInsufficientPrecision;
+      out.message = c.message;
+    }
+  }
+  return out;
+}
+
+std::string describe(const Tolerance& t) {
+  switch (t.mode) {
+    case ToleranceMode::kDecimals:
+      return plural(t.digits, "decimal place", "decimal places");
+    case ToleranceMode::kSigFigs:
+      return plural(t.digits, "significant figure", "significant figures");
+    case ToleranceMode::kRelAbs: break;
+  }
+  return fmt::format("relative {:g}%, absolute {:g}", t.rtol * 100, t.atol);
+}
+
+const Tolerance& TolerancePolicy::for_field(std::string_view field) const {
+  auto it = fields.find(field);
+  return it == fields.end() ? base : it->second;
+}
+
+const std::vector<std::string>& tolerance_fields() {
+  static const std::vector<std::string> f = {"t", "point", "normal", "ray", "steps"};
+  return f;
+}
+
+namespace {
+
+const std::vector<std::string>& mode_keys() {
+  static const std::vector<std::string> k = {"rtol", "atol", "sigfigs", "decimals",
+                                             "precision_credit"};
+  return k;
+}
+
+// Reads the mode keys of one object on top of `t`.
+Tolerance read_modes(const Cursor& c, Tolerance t) {
+  if (c.has("sigfigs") && c.has("decimals")) {
+    c.fail("give either 'sigfigs' or 'decimals', not both", "invalid");
+  }
+  if (c.has("rtol") || c.has("atol")) {
+    t.mode = ToleranceMode::kRelAbs;
+    if (c.has("rtol")) {
+      t.rtol = c.at("rtol").number();
+      if (t.rtol < 0 || t.rtol >= 1) c.at("rtol").fail("rtol must lie in [0, 1)", "range");
+    }
+    if (c.has("atol")) {
+      t.atol = c.at("atol").number();
+      if (t.atol < 0) c.at("atol").fail("atol must not be negative", "range");
+    }
+  }
+  for (const char* key : {"sigfigs", "decimals"}) {
+    if (!c.has(key)) continue;
+    int d = c.at(key).integer();
+    bool sig = std::string_view(key) == "sigfigs";
+    if (d < (sig ? 1 : 0) || d > 15) {
+      c.at(key).fail(fmt::format("{} must be an integer from {} to 15", key, sig ? 1 : 0),
+                     "range");
+    }
+    t.mode = sig ? ToleranceMode::kSigFigs : ToleranceMode::kDecimals;
+    t.digits = d;
+  }
+  if (c.has("precision_credit")) {
+    t.precision_credit = c.at("precision_credit").number();
+    if (t.precision_credit < 0 || t.precision_credit > 1) {
+      c.at("precision_credit").fail("precision_credit is a fraction from 0 to 1", "range");
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
+TolerancePolicy read_tolerance_policy(const Problem& p) {
+  TolerancePolicy policy;
+  if (p.precision >= 0) {
+    policy.base.mode = ToleranceMode::kDecimals;
+    policy.base.digits = p.precision;
+  }
+  if (p.tolerance.is_null() || !p.source.contains("tolerance")) return policy;
+  Cursor c(p.source_file, &p.source.at("tolerance"), p.path + "/tolerance");
+  if (c.json().is_number()) {
+    policy.base.mode = ToleranceMode::kRelAbs;
+    policy.base.rtol = c.number();
+    if (policy.base.rtol < 0 || policy.base.rtol >= 1) {
+      c.fail("a relative tolerance must lie in [0, 1)", "range");
+    }
+    return policy;
+  }
+  if (!c.is_object()) c.fail("the tolerance is a number (relative) or an object", "type");
+  std::vector<std::string> keys = mode_keys();
+  keys.insert(keys.end(), tolerance_fields().begin(), tolerance_fields().end());
+  c.allow_only(keys);
+  policy.base = read_modes(c, policy.base);
+  for (const auto& field : tolerance_fields()) {
+    if (!c.has(field)) continue;
+    Cursor f = c.at(field);
+    if (!f.is_object()) f.fail("a field's tolerance is an object", "type");
+    f.allow_only(mode_keys());
+    policy.fields[field] = read_modes(f, policy.base);
+  }
+  return policy;
+}
+
+}  // namespace raygrade
