@@ -79,7 +79,8 @@ double Cursor::number() const {
     fail(fmt::format("expected a number, found {}", type_name(*value_)), "type");
   }
   double v = value_->get<double>();
-  if (!std::isfinite(v)) fail("number out of range (not finite)", "range");
+  if (!std::isfinite(v))
+    fail("number out of range: beyond what a double holds (about ±1.8e308)", "range");
   return v;
 }
 

@@ -1,7 +1,9 @@
 // Reading JSON files with limits, and mapping JSON pointers back to lines and columns.
 #include "json/source.h"
 
+#include <cstdint>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <vector>
 
@@ -60,6 +62,34 @@ void prescan(const std::string& name, std::string_view text, const JsonLimits& l
   }
 }
 
+// JSON with long double numbers: it parses literals such as 1e400 that overflow a double.
+using WideJson = nlohmann::basic_json<std::map, std::vector, std::string, bool, std::int64_t,
+                                      std::uint64_t, long double>;
+
+// Copies a wide document into a plain one. Numbers beyond double's range become ±infinity,
+// which the typed readers (Cursor::number) report with their JSON path, like any other
+// non-finite number, instead of failing the whole file.
+nlohmann::json narrow(const WideJson& w) {
+  switch (w.type()) {
+    case WideJson::value_t::object: {
+      nlohmann::json out = nlohmann::json::object();
+      for (const auto& [key, value] : w.items()) out[key] = narrow(value);
+      return out;
+    }
+    case WideJson::value_t::array: {
+      nlohmann::json out = nlohmann::json::array();
+      for (const auto& value : w) out.push_back(narrow(value));
+      return out;
+    }
+    case WideJson::value_t::number_float: return static_cast<double>(w.get<long double>());
+    case WideJson::value_t::number_integer: return w.get<std::int64_t>();
+    case WideJson::value_t::number_unsigned: return w.get<std::uint64_t>();
+    case WideJson::value_t::string: return w.get<std::string>();
+    case WideJson::value_t::boolean: return w.get<bool>();
+    default: return nullptr;
+  }
+}
+
 }  // namespace
 
 std::shared_ptr<const SourceFile> parse_json_text(std::string name, std::string text,
@@ -84,6 +114,13 @@ std::shared_ptr<const SourceFile> parse_json_text(std::string name, std::string 
     if (pos == std::string::npos) pos = what.find("parse error");
     fail(file->name, "invalid JSON: " + what.substr(pos == std::string::npos ? 0 : pos), line,
          column);
+  } catch (const nlohmann::json::out_of_range&) {
+    // A number too large for a double (406): parse again with long doubles.
+    try {
+      file->root = narrow(WideJson::parse(file->text));
+    } catch (const WideJson::exception& e) {
+      fail(file->name, fmt::format("invalid JSON: {}", e.what()), 0, 0, "range");
+    }
   }
   return file;
 }

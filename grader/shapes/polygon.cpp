@@ -44,14 +44,26 @@ std::unique_ptr<Shape> Polygon::read(const Cursor& object) {
   if (length(n) <= 1e-14 * size * size) {
     list.fail("degenerate polygon: the vertices are collinear or enclose no area", "degenerate");
   }
+  // The plane through the vertices' centroid with Newell's normal fits them best; name the
+  // vertex farthest from it.
   Vec3d unit = normalized(n);
+  Vec3d centroid{};
+  for (const auto& p : v) centroid = centroid + p / static_cast<double>(v.size());
+  std::size_t worst = 0;
+  double worst_off = 0;
   for (std::size_t i = 0; i < v.size(); ++i) {
-    double off = std::abs(dot(unit, v[i] - v[0]));
-    if (off > kPlanarityRelative * size) {
-      list.items()[i].fail(
-          fmt::format("non-planar polygon: vertex {} lies {} off the plane of the others", i, off),
-          "degenerate");
+    double off = std::abs(dot(unit, v[i] - centroid));
+    if (off > worst_off) {
+      worst = i;
+      worst_off = off;
     }
+  }
+  if (worst_off > kPlanarityRelative * size) {
+    list.items()[worst].fail(
+        fmt::format("non-planar polygon: vertex {} lies {:.6g} off the plane that best fits the "
+                    "vertices",
+                    worst, worst_off),
+        "degenerate");
   }
   return std::make_unique<Polygon>(std::move(v));
 }
