@@ -1,6 +1,8 @@
 // Formatting of diagnostics.
 #include "core/error.h"
 
+#include "core/escape.h"
+
 namespace raygrade {
 
 const char* to_string(Severity s) {
@@ -12,17 +14,19 @@ const char* to_string(Severity s) {
   return "error";
 }
 
+// File names and messages may quote what a student wrote: printable() keeps terminal escape
+// sequences and ill-formed UTF-8 out of what is printed.
 std::string format_diagnostic(const Diagnostic& d) {
-  std::string out = d.file.empty() ? "<input>" : d.file;
+  std::string out = d.file.empty() ? "<input>" : printable(d.file);
   if (d.line > 0) {
     out += fmt::format(":{}", d.line);
     if (d.column > 0) out += fmt::format(":{}", d.column);
   }
   out += ": ";
-  if (!d.path.empty()) out += d.path + ": ";
+  if (!d.path.empty()) out += printable(d.path) + ": ";
   out += to_string(d.severity);
   out += ": ";
-  out += d.message;
+  out += printable(d.message);
   return out;
 }
 

@@ -22,4 +22,12 @@ std::string csv_cell(std::string_view s);
 // 100 bytes; other bytes become '_'. It cannot name a path outside its folder.
 std::string safe_file_name(std::string_view id);
 
+// True when `s` is well-formed UTF-8 (no overlong forms, surrogates or code points above
+// U+10FFFF).
+bool is_valid_utf8(std::string_view s);
+// Text quoted in a diagnostic or printed to a terminal: well-formed UTF-8 is kept, control
+// characters (escape sequences included) and ill-formed bytes become \xNN, and the result is
+// cut after `max_bytes` of input with "...". Always valid UTF-8 with no control characters.
+std::string printable(std::string_view s, std::size_t max_bytes = std::string_view::npos);
+
 }  // namespace raygrade

@@ -1,11 +1,15 @@
 // Reading JSON files with limits, and mapping JSON pointers back to lines and columns.
 #include "json/source.h"
 
+#include <cctype>
 #include <cstdint>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <vector>
+
+#include "core/escape.h"
+#include "json/scan.h"
 
 namespace raygrade {
 namespace {
@@ -16,50 +20,40 @@ namespace {
       Diagnostic{file, "", line, column, Severity::kError, std::move(msg), std::move(code)});
 }
 
-std::pair<int, int> line_column_of(std::string_view text, std::size_t offset) {
-  int line = 1, column = 1;
-  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
+// nlohmann's parse error as a sentence without its prefix ("[json.exception.parse_error.101]
+// parse error at line 1, column 2:") and with the text it quotes made printable: the quoted
+// bytes may be the very ill-formed UTF-8 or control characters that made the parse fail.
+std::string parse_error_message(std::string_view text, std::size_t offset,
+                                const std::string& what) {
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+    return "the file is empty: expected a JSON object";
+  }
+  // The word the lexer stopped in ("nan" fails at the 'a', reading for "null").
+  auto is_word = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '-'; };
+  std::size_t begin = std::min(offset, text.size()), end = begin;
+  while (begin > 0 && is_word(text[begin - 1])) --begin;
+  while (end < text.size() && is_word(text[end])) ++end;
+  std::string word(text.substr(begin, end - begin));
+  std::string lower;
+  for (char c : word) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (std::string_view w : {"nan", "-nan", "infinity", "-infinity", "inf", "-inf"}) {
+    if (lower == w) {
+      return fmt::format("invalid JSON: '{}' is not a number (JSON has no NaN or infinity)", word);
     }
   }
-  return {line, column};
-}
-
-// Checks nesting depth and string lengths before nlohmann's recursive parser sees the text.
-void prescan(const std::string& name, std::string_view text, const JsonLimits& limits) {
-  int depth = 0;
-  bool in_string = false;
-  std::size_t string_start = 0;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    char c = text[i];
-    if (in_string) {
-      if (c == '\\') {
-        ++i;
-      } else if (c == '"') {
-        in_string = false;
-        if (i - string_start > limits.max_string) {
-          auto [l, col] = line_column_of(text, string_start);
-          fail(name, fmt::format("string longer than the limit of {} bytes", limits.max_string), l,
-               col, "limit");
-        }
-      }
-    } else if (c == '"') {
-      in_string = true;
-      string_start = i;
-    } else if (c == '[' || c == '{') {
-      if (++depth > limits.max_depth) {
-        auto [l, col] = line_column_of(text, i);
-        fail(name, fmt::format("nesting deeper than the limit of {} levels", limits.max_depth), l,
-             col, "limit");
-      }
-    } else if (c == ']' || c == '}') {
-      --depth;
-    }
+  // The lexer stops at the first ill-formed byte or at the opening quote of the string.
+  if (what.find("ill-formed UTF-8") != std::string::npos) {
+    return "invalid UTF-8 in a string: save the file as UTF-8";
   }
+  if (what.find("control character") != std::string::npos) {
+    return "invalid string: a control character must be written as an escape (\\n, \\t, "
+           "\\u0000)";
+  }
+  std::string_view message = what;
+  auto pos = message.find("syntax error");
+  if (pos == std::string_view::npos) pos = message.find("parse error");
+  if (pos != std::string_view::npos) message = message.substr(pos);
+  return "invalid JSON: " + printable(message, 200);
 }
 
 // JSON with long double numbers: it parses literals such as 1e400 that overflow a double.
@@ -99,29 +93,38 @@ std::shared_ptr<const SourceFile> parse_json_text(std::string name, std::string 
          fmt::format("file is {} bytes, over the limit of {} bytes", text.size(), limits.max_bytes),
          0, 0, "limit");
   }
-  prescan(name, text, limits);
+  if (text.size() >= 2 &&
+      ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF'))) {
+    fail(name, "the file is UTF-16: save it as UTF-8", 1, 1, "bad-encoding");
+  }
+  auto report = [&](const TextFault& f) {
+    auto [line, column] = line_column_of(text, f.offset);
+    throw Error(Diagnostic{name, f.path, line, column, Severity::kError, f.message, f.code});
+  };
+  if (auto fault = check_limits(text, limits)) report(*fault);
   auto file = std::make_shared<SourceFile>();
-  file->name = std::move(name);
-  file->text = std::move(text);
   try {
-    file->root = nlohmann::json::parse(file->text);
+    file->root = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    auto [line, column] = line_column_of(file->text, e.byte > 0 ? e.byte - 1 : 0);
-    std::string what = e.what();
-    // nlohmann's message starts with "[json.exception.parse_error.101] parse error at line ..:";
-    // keep the part after the last ": " that names the fault.
-    auto pos = what.find("syntax error");
-    if (pos == std::string::npos) pos = what.find("parse error");
-    fail(file->name, "invalid JSON: " + what.substr(pos == std::string::npos ? 0 : pos), line,
-         column);
+    std::size_t offset = e.byte > 0 ? std::min<std::size_t>(e.byte - 1, text.size()) : 0;
+    auto [line, column] = line_column_of(text, offset);
+    std::string code = e.id == 101 && std::string_view(e.what()).find("UTF-8") != std::string::npos
+                           ? "bad-encoding"
+                           : "bad-json";
+    fail(name, parse_error_message(text, offset, e.what()), line, column, code);
   } catch (const nlohmann::json::out_of_range&) {
     // A number too large for a double (406): parse again with long doubles.
     try {
-      file->root = narrow(WideJson::parse(file->text));
-    } catch (const WideJson::exception& e) {
-      fail(file->name, fmt::format("invalid JSON: {}", e.what()), 0, 0, "range");
+      file->root = narrow(WideJson::parse(text));
+    } catch (const WideJson::out_of_range&) {
+      // Beyond even a long double (1e5000): the error has no position, so find the number.
+      if (auto fault = find_duplicate_or_overflow(text)) report(*fault);
+      fail(name, "a number is out of range", 0, 0, "range");
     }
   }
+  if (auto fault = find_duplicate_or_overflow(text)) report(*fault);
+  file->name = std::move(name);
+  file->text = std::move(text);
   return file;
 }
 

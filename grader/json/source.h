@@ -11,10 +11,23 @@
 namespace raygrade {
 
 // Limits on untrusted JSON. Each is far above what a real bank or submission needs.
+// Beyond them a file is rejected with a clear error before nlohmann builds anything, so hostile
+// input cannot exhaust the stack (deep nesting) or memory (millions of tiny items).
 struct JsonLimits {
   std::size_t max_bytes = 16u << 20;   // 16 MiB: a bank file of ~50,000 problems
   int max_depth = 64;                  // problems nest 6 deep; nlohmann's parser recurses
   std::size_t max_string = 64u << 10;  // 64 KiB: a long problem statement
+  std::size_t max_items = 100000;      // items in one array or object: 50,000 problems fit
+
+  // The limits for a student's submission: one student's answers to one assignment.
+  static JsonLimits submission() {
+    JsonLimits l;
+    l.max_bytes = 1u << 20;    // 1 MiB: about 5,000 answers with every step
+    l.max_depth = 32;          // a submission nests 5 deep (answers, steps, hits, vectors)
+    l.max_string = 16u << 10;  // 16 KiB: a long free-text explanation
+    l.max_items = 10000;       // answers, or steps of one answer
+    return l;
+  }
 };
 
 struct SourceFile {

@@ -1,6 +1,8 @@
 // Steps as data, for tools and for the JSON worked solutions.
 #include "reports/json_report.h"
 
+#include "core/escape.h"
+
 namespace raygrade {
 
 nlohmann::json value_json(const Value& v) {
@@ -48,10 +50,11 @@ nlohmann::json parts_json(const std::vector<SolutionPart>& parts, const NumberFo
 }
 
 nlohmann::json diagnostic_json(const Diagnostic& d) {
-  nlohmann::json j = {{"file", d.file},
-                      {"path", d.path},
+  // printable(): a file name may be ill-formed UTF-8, which nlohmann refuses to dump.
+  nlohmann::json j = {{"file", printable(d.file)},
+                      {"path", printable(d.path)},
                       {"severity", to_string(d.severity)},
-                      {"message", d.message},
+                      {"message", printable(d.message)},
                       {"code", d.code}};
   if (d.line > 0) j["line"] = d.line;
   if (d.column > 0) j["column"] = d.column;
