@@ -12,8 +12,7 @@ Vec3d camera_ray_direction(const Camera& cam, double x, double y, PixelConventio
   return cam.focal_length * cam.direction + x_diff * cross(cam.direction, cam.up) + y_diff * cam.up;
 }
 
-std::unique_ptr<Task> CameraRayTask::read(const Cursor& problem) {
-  Cursor c = problem.at("camera");
+Camera read_camera(const Cursor& c) {
   c.allow_only({"eye", "direction", "up", "focal_length", "resolution"});
   Camera cam;
   cam.eye = c.at("eye").vec3();
@@ -29,16 +28,24 @@ std::unique_ptr<Task> CameraRayTask::read(const Cursor& problem) {
   if (length_squared(cross(cam.direction, cam.up)) == 0) {
     c.at("up").fail("the up vector is parallel to the viewing direction", "degenerate");
   }
-  auto pixel = problem.at("pixel").items();
-  if (pixel.size() != 2) problem.at("pixel").fail("expected [x, y]", "type");
-  double x = pixel[0].number(), y = pixel[1].number();
+  return cam;
+}
+
+PixelConvention read_pixel_convention(const Cursor& problem) {
   std::string conv = problem.string_or("convention", "center");
   if (conv != "center" && conv != "corner") {
     problem.at("convention")
         .fail(fmt::format("unknown convention '{}' (known: center, corner)", conv), "invalid");
   }
-  return std::make_unique<CameraRayTask>(
-      cam, x, y, conv == "corner" ? PixelConvention::kCorner : PixelConvention::kCenter);
+  return conv == "corner" ? PixelConvention::kCorner : PixelConvention::kCenter;
+}
+
+std::unique_ptr<Task> CameraRayTask::read(const Cursor& problem) {
+  Camera cam = read_camera(problem.at("camera"));
+  auto pixel = problem.at("pixel").items();
+  if (pixel.size() != 2) problem.at("pixel").fail("expected [x, y]", "type");
+  double x = pixel[0].number(), y = pixel[1].number();
+  return std::make_unique<CameraRayTask>(cam, x, y, read_pixel_convention(problem));
 }
 
 nlohmann::json CameraRayTask::answer() const {

@@ -18,6 +18,11 @@ struct Camera {
   int res_x = 0, res_y = 0;
 };
 
+// Reads a `camera` {eye, direction, up, focal_length, resolution}.
+Camera read_camera(const Cursor& camera);
+// Reads a problem's `convention` ("center", the default, or "corner").
+PixelConvention read_pixel_convention(const Cursor& problem);
+
 // d_r = f·d + x_diff·(d × u) + y_diff·u.
 Vec3d camera_ray_direction(const Camera& cam, double x, double y, PixelConvention convention);
 

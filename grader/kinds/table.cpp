@@ -1,6 +1,7 @@
 // The table of problem kinds: adding one is one line here plus its own file pair.
 #include "kinds/camera_ray.h"
 #include "kinds/intersect.h"
+#include "kinds/ray_tree.h"
 #include "problems/problem.h"
 
 namespace raygrade {
@@ -13,6 +14,10 @@ const std::vector<KindEntry>& kind_table() {
        "the ray a perspective camera shoots through a pixel",
        {"camera", "pixel", "convention"},
        &CameraRayTask::read},
+      {"ray-tree",
+       "the tree of rays one ray spawns in a scene: shadows, reflection, refraction, Phong",
+       {"scene", "ray", "camera", "pixel", "convention", "ask", "labels"},
+       &RayTreeTask::read},
   };
   return table;
 }

@@ -13,11 +13,26 @@
 
 namespace raygrade {
 
+// A drawing in a worked solution, in the forms the renderers use.
+struct Figure {
+  std::string caption;
+  std::string svg;   // a complete <svg> element with its text escaped (HTML pages)
+  std::string dot;   // Graphviz source
+  std::string text;  // lines for a terminal (text and Markdown solutions)
+};
+
 // One part of a worked solution: a derivation, with a heading when a problem has several
-// (one per object of a first-hit problem).
+// (one per object of a first-hit problem), and any figures drawn before its steps.
 struct SolutionPart {
+  SolutionPart() = default;
+  SolutionPart(std::string heading_, Derivation derivation_, std::vector<Figure> figures_ = {})
+      : heading(std::move(heading_)),
+        derivation(std::move(derivation_)),
+        figures(std::move(figures_)) {}
+
   std::string heading;
   Derivation derivation;
+  std::vector<Figure> figures;
 };
 
 // The kind-specific part of a problem: what it asks and how to answer it.

@@ -16,6 +16,10 @@ std::string render_text(const Problem& problem, const std::vector<SolutionPart>&
     out += "\n";
     if (!part.heading.empty()) out += part.heading + " — ";
     out += d.title + "\n";
+    for (const auto& f : part.figures) {
+      if (!f.caption.empty()) out += "  " + f.caption + "\n";
+      out += f.text;
+    }
     Env env;  // the values of the steps so far, for the substituted form
     RenderOptions plain{nullptr, numbers};
     for (const auto& s : d.steps) {

@@ -1,0 +1,44 @@
+// Kind `ray-tree`: the tree of rays one primary ray spawns in a scene (seed 001), with shadow
+// rays, the Phong terms that apply at each point and, when asked, every intensity.
+#pragma once
+
+#include <map>
+
+#include "problems/problem.h"
+#include "scenes/scene.h"
+#include "scenes/trace.h"
+
+namespace raygrade {
+
+// Reads a problem's `ray`, or its `camera` and `pixel` (and `convention`), as the primary ray.
+Ray read_primary_ray(const Cursor& problem);
+
+// Reads `ask`: "hit", "tree" (the default) or "intensity".
+Ask read_ask(const Cursor& problem, Ask fallback);
+
+class RayTreeTask final : public Task {
+ public:
+  RayTreeTask(Scene scene, Ray primary, Ask ask, std::map<std::string, std::string> labels);
+  static std::unique_ptr<Task> read(const Cursor& problem);
+
+  std::string_view kind() const override { return "ray-tree"; }
+  nlohmann::json answer() const override;
+  std::vector<std::string> methods() const override { return {"whitted"}; }
+  std::vector<SolutionPart> derive(std::string_view method,
+                                   const Overrides* overrides) const override;
+  std::vector<std::string> conclusion() const override;
+
+  const Scene& scene() const { return scene_; }
+  const RayTree& tree() const { return tree_; }
+
+ private:
+  Scene scene_;
+  Ray primary_;
+  RayTree tree_;
+};
+
+// The problem's own names for the tree's points ({"P": "I1", "P.T": "I2"}): every path must be
+// a hit node of the tree and every label unique; others keep their automatic labels.
+void apply_labels(RayTree& tree, const std::map<std::string, std::string>& labels);
+
+}  // namespace raygrade

@@ -1,0 +1,201 @@
+// Scenes: reading objects, materials and lights, and the nearest hit of a world ray.
+#include "scenes/scene.h"
+
+#include <map>
+#include <set>
+
+#include "scenes/offset.h"
+
+namespace raygrade {
+namespace {
+
+double coefficient(const Cursor& c, std::string_view key, double fallback) {
+  if (!c.has(key)) return fallback;
+  double v = c.at(key).number();
+  if (v < 0) c.at(key).fail(fmt::format("{} must not be negative", key), "range");
+  return v;
+}
+
+bool encloses_volume(const Shape& s) {
+  if (s.type() == "sphere" || s.type() == "box") return true;
+  if (s.type() == "cylinder") {
+    nlohmann::json j = s.to_json();
+    return j.contains("height") && j.value("capped", false);
+  }
+  return false;
+}
+
+}  // namespace
+
+Material read_material(const Cursor& c) {
+  c.allow_only({"ambient", "diffuse", "specular", "shininess", "reflectivity", "transparency",
+                "refractive_index"});
+  Material m;
+  m.ambient = coefficient(c, "ambient", m.ambient);
+  m.diffuse = coefficient(c, "diffuse", m.diffuse);
+  m.specular = coefficient(c, "specular", m.specular);
+  m.shininess = coefficient(c, "shininess", m.shininess);
+  m.reflectivity = coefficient(c, "reflectivity", m.reflectivity);
+  m.transparency = coefficient(c, "transparency", m.transparency);
+  if (m.reflectivity > 1) c.at("reflectivity").fail("reflectivity is at most 1", "range");
+  if (m.transparency > 1) c.at("transparency").fail("transparency is at most 1", "range");
+  if (m.transmits() && !c.has("refractive_index")) {
+    c.fail("a transparent material needs its refractive_index (1.5 for glass)", "missing");
+  }
+  if (c.has("refractive_index")) m.refractive_index = c.at("refractive_index").positive_number();
+  return m;
+}
+
+nlohmann::json material_json(const Material& m) {
+  nlohmann::json j = {{"ambient", m.ambient},   {"diffuse", m.diffuse},
+                      {"specular", m.specular}, {"shininess", m.shininess},
+                      {"reflectivity", m.reflectivity}, {"transparency", m.transparency}};
+  if (m.transmits()) j["refractive_index"] = m.refractive_index;
+  return j;
+}
+
+Light read_light(const Cursor& c, int index) {
+  c.allow_only({"name", "type", "position", "direction", "intensity"});
+  Light l;
+  l.name = c.string_or("name", fmt::format("L{}", index + 1));
+  std::string type = c.string_or("type", "point");
+  if (type == "point") {
+    l.type = LightType::kPoint;
+    l.position = c.at("position").vec3();
+    if (c.has("direction")) c.at("direction").fail("a point light has a position only", "invalid");
+  } else if (type == "directional") {
+    l.type = LightType::kDirectional;
+    l.direction = c.at("direction").nonzero_vec3();
+    if (c.has("position")) {
+      c.at("position").fail("a directional light has a direction only", "invalid");
+    }
+  } else {
+    c.at("type").fail(
+        fmt::format("unknown light type '{}' (known: point, directional)", type), "invalid");
+  }
+  l.intensity = coefficient(c, "intensity", 1);
+  return l;
+}
+
+Scene read_scene(const Cursor& c) {
+  c.allow_only({"objects", "lights", "materials", "ambient_light", "background",
+                "refractive_index", "max_depth", "internal_reflection", "transparent_shadows"});
+  Scene s;
+  std::map<std::string, Material, std::less<>> named;
+  if (auto m = c.find("materials")) {
+    if (!m->is_object()) m->fail("materials is an object of named materials", "type");
+    for (const auto& [key, value] : m->json().items()) {
+      named[key] = read_material(m->at(key));
+    }
+  }
+  std::set<std::string> names;
+  std::map<std::string, int> per_type;
+  auto items = c.at("objects").items();
+  if (items.empty()) c.at("objects").fail("the scene has no objects", "invalid");
+  for (const auto& item : items) {
+    SceneObject o;
+    o.shape = read_shape(item);
+    std::string type(o.shape->type());
+    int n = ++per_type[type];
+    o.name = item.has("name") ? item.at("name").string() : fmt::format("{} {}", type, n);
+    if (o.name.empty()) item.at("name").fail("the name must not be empty", "invalid");
+    if (!names.insert(o.name).second) {
+      item.at(item.has("name") ? "name" : "type")
+          .fail(fmt::format("duplicate object name '{}'", o.name), "duplicate-name");
+    }
+    if (auto m = item.find("material")) {
+      if (m->json().is_string()) {
+        auto it = named.find(m->string());
+        if (it == named.end()) {
+          m->fail(fmt::format("no material named '{}' in the scene's materials", m->string()),
+                  "unknown-material");
+        }
+        o.material = it->second;
+      } else {
+        o.material = read_material(*m);
+      }
+    }
+    if (auto t = item.find("transform")) {
+      o.transform = read_transform(*t);
+      if (o.transform.to_world.determinant() == 0) t->fail("the transform is singular", "degenerate");
+    }
+    o.solid = encloses_volume(*o.shape);
+    s.objects.push_back(std::move(o));
+  }
+  if (auto lights = c.find("lights")) {
+    auto list = lights->items();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      s.lights.push_back(read_light(list[i], static_cast<int>(i)));
+      for (std::size_t j = 0; j < i; ++j) {
+        if (s.lights[j].name == s.lights[i].name) {
+          list[i].fail(fmt::format("duplicate light name '{}'", s.lights[i].name),
+                       "duplicate-name");
+        }
+      }
+    }
+  }
+  s.ambient_light = coefficient(c, "ambient_light", s.ambient_light);
+  s.background = coefficient(c, "background", s.background);
+  if (c.has("refractive_index")) s.refractive_index = c.at("refractive_index").positive_number();
+  if (c.has("max_depth")) {
+    s.max_depth = c.at("max_depth").integer();
+    if (s.max_depth < 1 || s.max_depth > kMaxTreeDepth) {
+      c.at("max_depth").fail(
+          fmt::format("max_depth counts ray generations, from 1 (the primary ray only) to {}",
+                      kMaxTreeDepth),
+          "range");
+    }
+  }
+  s.internal_reflection = c.boolean_or("internal_reflection", true);
+  std::string shadows = c.string_or("transparent_shadows", "block");
+  if (shadows != "block" && shadows != "transmit") {
+    c.at("transparent_shadows")
+        .fail(fmt::format("unknown transparent_shadows '{}' (known: block, transmit)", shadows),
+              "invalid");
+  }
+  s.transparent_shadows =
+      shadows == "transmit" ? TransparentShadows::kTransmit : TransparentShadows::kBlock;
+  return s;
+}
+
+namespace {
+
+// The first hit of one object, in world terms.
+std::optional<SceneHit> object_hit(const SceneObject& o, int index, const Ray& ray) {
+  bool moved = !o.transform.identity();
+  Ray local = moved ? o.transform.ray_to_object(ray) : ray;
+  Intersection x = o.shape->intersect(local);
+  if (x.hits.empty()) return std::nullopt;
+  SceneHit h;
+  h.object = index;
+  h.object_ray = local;
+  h.hit = x.hits.front();
+  // t is the world ray's t: the direction went into object space by A⁻¹ without normalizing.
+  h.hit.point = ray.at(h.hit.t);
+  if (moved) h.hit.normal = o.transform.normal_to_world_unit(h.hit.normal);
+  h.point_error = hit_point_error(ray, h.hit.t, moved ? &o.transform : nullptr);
+  return h;
+}
+
+}  // namespace
+
+SceneHit nearest_hit(const Scene& scene, const Ray& ray) {
+  SceneHit best;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    auto h = object_hit(scene.objects[i], static_cast<int>(i), ray);
+    if (h && (best.object < 0 || h->hit.t < best.hit.t)) best = *h;
+  }
+  return best;
+}
+
+std::vector<SceneHit> all_hits(const Scene& scene, const Ray& ray) {
+  std::vector<SceneHit> out;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    if (auto h = object_hit(scene.objects[i], static_cast<int>(i), ray)) out.push_back(*h);
+  }
+  std::stable_sort(out.begin(), out.end(),
+                   [](const SceneHit& a, const SceneHit& b) { return a.hit.t < b.hit.t; });
+  return out;
+}
+
+}  // namespace raygrade

@@ -1,0 +1,94 @@
+// Scene: objects of every primitive with materials and transforms, lights, and the settings
+// of Whitted-style tracing (maximum depth, shadows through transparent objects).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "json/cursor.h"
+#include "scenes/transform.h"
+#include "shapes/shape.h"
+
+namespace raygrade {
+
+// Phong coefficients and the Whitted coefficients of secondary rays. One channel of
+// intensity, as course exercises compute it.
+struct Material {
+  double ambient = 0.1;   // k_a
+  double diffuse = 0.7;   // k_d
+  double specular = 0.2;  // k_s
+  double shininess = 10;  // n, the Phong exponent
+  double reflectivity = 0;     // k_r: weight of the reflection ray; 0 spawns none
+  double transparency = 0;     // k_t: weight of the refraction ray; 0 spawns none
+  double refractive_index = 1;  // η of the object's inside (used when transparency > 0)
+
+  bool reflects() const { return reflectivity > 0; }
+  bool transmits() const { return transparency > 0; }
+};
+
+// The deepest tree a scene may ask for: 2^16 − 1 hit nodes at most with both secondary rays,
+// far beyond any exercise, and a bound on the work one problem can cause.
+constexpr int kMaxTreeDepth = 16;
+
+enum class LightType { kPoint, kDirectional };
+
+struct Light {
+  std::string name;
+  LightType type = LightType::kPoint;
+  Vec3d position{};   // point lights
+  Vec3d direction{};  // directional lights: the direction the light travels
+  double intensity = 1;  // I_p
+};
+
+struct SceneObject {
+  std::string name;
+  std::unique_ptr<Shape> shape;  // in object space when transformed
+  Material material;
+  Transform transform;
+  bool solid = false;  // encloses a volume (sphere, box, capped cylinder): a ray can be inside
+};
+
+// What a shadow ray does when the object between the point and the light is transparent.
+enum class TransparentShadows {
+  kBlock,     // every object blocks the light (the course model: "the shadow ray hits an object")
+  kTransmit,  // transparent objects let k_t of the light through; opaque ones block it
+};
+
+struct Scene {
+  std::vector<SceneObject> objects;
+  std::vector<Light> lights;
+  double ambient_light = 1;   // I_a
+  double background = 0;      // the intensity of a ray that hits nothing
+  double refractive_index = 1;  // of the space between the objects
+  int max_depth = 5;  // generations of rays in the tree; the primary ray is generation 1
+  bool internal_reflection = true;  // reflection rays inside transparent solids
+  TransparentShadows transparent_shadows = TransparentShadows::kBlock;
+};
+
+// The nearest hit of a world ray among the scene's objects.
+struct SceneHit {
+  int object = -1;  // index into the objects; -1 for a miss
+  Hit hit;          // in world space: t of the world ray, world point, unit world normal
+  Ray object_ray;   // the ray in the object's space (the world ray when not transformed)
+  Vec3d point_error{};  // a bound on the rounding error of each coordinate of hit.point
+};
+
+// The nearest hit in [ray.t_min, ray.t_max]; on a tie, the object listed first.
+SceneHit nearest_hit(const Scene& scene, const Ray& ray);
+
+// Every object hit between the ray's origin and t_max, nearest first (for shadow rays).
+std::vector<SceneHit> all_hits(const Scene& scene, const Ray& ray);
+
+// Reads a `scene` object; object names must be unique (unnamed objects are named by type and
+// position: "sphere 1"). Materials may name an entry of the scene's `materials`.
+Scene read_scene(const Cursor& scene);
+
+// Reads one material object (unknown keys and coefficients below 0 are errors).
+Material read_material(const Cursor& material);
+Light read_light(const Cursor& light, int index);
+
+nlohmann::json material_json(const Material& m);
+
+}  // namespace raygrade

@@ -1,0 +1,143 @@
+// Transforms: reading the steps, composing them, and moving rays and normals between spaces.
+#include "scenes/transform.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "derivation/number_format.h"
+
+namespace raygrade {
+
+Affine Affine::then(const Affine& next) const {
+  // next(this(p)) = N·(A·p + b) + c = (N·A)·p + (N·b + c)
+  Affine out;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      out.rows[i][j] = next.rows[i][0] * rows[0][j] + next.rows[i][1] * rows[1][j] +
+                       next.rows[i][2] * rows[2][j];
+    }
+  }
+  out.translation = next.linear(translation) + next.translation;
+  return out;
+}
+
+double Affine::determinant() const { return dot(rows[0], cross(rows[1], rows[2])); }
+
+Affine Affine::transpose_linear() const {
+  Affine out;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) out.rows[i][j] = rows[j][i];
+  }
+  return out;
+}
+
+Affine Affine::inverse() const {
+  // A⁻¹ = adj(A)/det(A): the columns of the adjugate are cross products of A's rows.
+  double det = determinant();
+  Vec3d c0 = cross(rows[1], rows[2]), c1 = cross(rows[2], rows[0]), c2 = cross(rows[0], rows[1]);
+  Affine out;
+  for (int i = 0; i < 3; ++i) out.rows[i] = Vec3d{c0[i], c1[i], c2[i]} / det;
+  out.translation = -out.linear(translation);
+  return out;
+}
+
+bool Affine::is_identity() const {
+  return rows[0] == Vec3d{1, 0, 0} && rows[1] == Vec3d{0, 1, 0} && rows[2] == Vec3d{0, 0, 1} &&
+         translation == Vec3d{};
+}
+
+Ray Transform::ray_to_object(const Ray& world) const {
+  Ray r = world;
+  r.origin = to_object.point(world.origin);
+  r.direction = to_object.linear(world.direction);
+  return r;
+}
+
+Vec3d Transform::normal_to_world_unit(const Vec3d& n) const {
+  return normalized(normal_to_world.linear(n));
+}
+
+namespace {
+
+Affine step_matrix(const TransformStep& s) {
+  Affine m;
+  if (s.op == "translate") {
+    m.translation = s.vector;
+  } else if (s.op == "scale") {
+    m.rows = {Vec3d{s.vector.x, 0, 0}, Vec3d{0, s.vector.y, 0}, Vec3d{0, 0, s.vector.z}};
+  } else {
+    // Rodrigues' rotation formula about the unit axis k, by the right-hand rule.
+    Vec3d k = normalized(s.vector);
+    double a = s.degrees * std::numbers::pi / 180;
+    double c = std::cos(a), sn = std::sin(a), v = 1 - c;
+    m.rows = {Vec3d{c + k.x * k.x * v, k.x * k.y * v - k.z * sn, k.x * k.z * v + k.y * sn},
+              Vec3d{k.y * k.x * v + k.z * sn, c + k.y * k.y * v, k.y * k.z * v - k.x * sn},
+              Vec3d{k.z * k.x * v - k.y * sn, k.z * k.y * v + k.x * sn, c + k.z * k.z * v}};
+  }
+  return m;
+}
+
+}  // namespace
+
+Transform read_transform(const Cursor& list) {
+  Transform t;
+  for (const auto& item : list.items()) {
+    if (!item.is_object() || item.json().size() != 1) {
+      item.fail("a transform step is an object with one key: translate, rotate or scale", "type");
+    }
+    TransformStep s;
+    if (item.has("translate")) {
+      s.op = "translate";
+      s.vector = item.at("translate").vec3();
+    } else if (item.has("scale")) {
+      s.op = "scale";
+      Cursor c = item.at("scale");
+      s.vector = c.json().is_number() ? Vec3d{c.number(), c.number(), c.number()} : c.vec3();
+      if (s.vector.x == 0 || s.vector.y == 0 || s.vector.z == 0) {
+        c.fail("a scale factor of 0 flattens the object", "degenerate");
+      }
+    } else if (item.has("rotate")) {
+      s.op = "rotate";
+      Cursor c = item.at("rotate");
+      c.allow_only({"axis", "degrees"});
+      s.vector = c.at("axis").nonzero_vec3();
+      s.degrees = c.at("degrees").number();
+    } else {
+      item.allow_only({"translate", "rotate", "scale"});
+      item.fail("a transform step is translate, rotate or scale", "type");
+    }
+    t.to_world = t.to_world.then(step_matrix(s));
+    t.steps.push_back(s);
+  }
+  t.to_object = t.to_world.inverse();
+  t.normal_to_world = t.to_object.transpose_linear();
+  return t;
+}
+
+nlohmann::json Transform::to_json() const {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& s : steps) {
+    nlohmann::json v = nlohmann::json::array({s.vector.x, s.vector.y, s.vector.z});
+    if (s.op == "rotate") {
+      out.push_back({{"rotate", {{"axis", v}, {"degrees", s.degrees}}}});
+    } else {
+      out.push_back({{s.op, v}});
+    }
+  }
+  return out;
+}
+
+std::string describe_transform(const Transform& t) {
+  std::string out;
+  for (const auto& s : t.steps) {
+    if (!out.empty()) out += ", then ";
+    if (s.op == "rotate") {
+      out += fmt::format("rotate {}° about {}", format_number(s.degrees), format_vector(s.vector));
+    } else {
+      out += fmt::format("{} by {}", s.op, format_vector(s.vector));
+    }
+  }
+  return out;
+}
+
+}  // namespace raygrade

@@ -1,0 +1,31 @@
+// The ray tree as answer data: nodes with their rays, hits, lights and Phong terms, and the
+// answer to "which points need all three terms" in the seed's own words.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "scenes/trace.h"
+
+namespace raygrade {
+
+// The Phong terms that apply at a hit node: "ambient", then "diffuse" and "specular" when a
+// light reaches it.
+std::vector<std::string> node_terms(const TreeNode& node);
+
+// A hit node is in shadow when the scene has lights and none of them reaches it.
+bool in_shadow(const TreeNode& node);
+
+// The objects that block a node's lights, by name, nearest first for each light.
+std::vector<std::string> shadow_blockers(const RayTree& tree, const Scene& scene,
+                                         const TreeNode& node);
+
+nlohmann::json node_json(const RayTree& tree, const Scene& scene, const TreeNode& node);
+
+// The whole answer of a ray-tree problem: {nodes, all_terms, ambient_only, rays, intensity}.
+nlohmann::json tree_json(const RayTree& tree, const Scene& scene);
+
+nlohmann::json counts_json(const RayCounts& c);
+
+}  // namespace raygrade

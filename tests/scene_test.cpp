@@ -1,0 +1,216 @@
+// Scenes and Whitted tracing: ray counts, shadows through transparent and opaque blockers,
+// total internal reflection and the depth limit, against values derived by hand.
+#include "scenes/scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "kinds/ray_tree.h"
+#include "scenes/trace.h"
+#include "scenes/tree_json.h"
+#include "test_util.h"
+
+namespace raygrade {
+namespace {
+
+const RayTreeTask& tree_task(const Problem& p) { return dynamic_cast<const RayTreeTask&>(*p.task); }
+
+// A floor y = 0, a light straight above the origin, and a sphere of radius 1 at (0, 3, 0)
+// between them. The primary ray comes straight down onto the floor at (2, 0, 0)... or under
+// the sphere at (0, 0, 0), where the sphere blocks the light.
+std::string blocker_problem(const std::string& blocker_material, const std::string& shadows,
+                            const std::string& ask = "tree") {
+  return R"({"id": "b", "kind": "ray-tree", "ask": ")" + ask + R"(",
+    "ray": {"origin": [0, 10, 5], "direction": [0, -10, -5]},
+    "scene": {"objects": [
+      {"name": "floor", "type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0]},
+      {"name": "ball", "type": "sphere", "center": [0, 3, 0], "radius": 1, "material": )" +
+         blocker_material + R"(}],
+      "lights": [{"name": "sun", "position": [0, 8, 0]}],
+      "transparent_shadows": ")" + shadows + R"("}})";
+}
+
+// The ray (0,10,5) + t(0,−10,−5) meets the floor at t = 1, at the origin, passing beside the
+// ball (its distance from (0,3,0) is 7·5/√125 ≈ 3.13 > 1). From the origin the light at
+// (0,8,0) is straight up, through the ball.
+TEST(RayTree, OpaqueBlockerShadowsThePoint) {
+  Problem p = testing::problem(blocker_problem(R"({"diffuse": 0.5})", "block"));
+  const RayTree& t = tree_task(p).tree();
+  ASSERT_EQ(t.nodes.size(), 1u);
+  const TreeNode& n = t.nodes[0];
+  EXPECT_DOUBLE_EQ(n.t, 1);
+  ASSERT_EQ(n.lights.size(), 1u);
+  EXPECT_EQ(n.lights[0].status, LightStatus::kBlocked);
+  ASSERT_EQ(n.lights[0].blockers.size(), 1u);
+  EXPECT_EQ(n.lights[0].blockers[0], 1);
+  EXPECT_TRUE(in_shadow(n));
+  EXPECT_EQ(node_terms(n), std::vector<std::string>{"ambient"});
+}
+
+const char* kGlass = R"({"transparency": 0.8, "refractive_index": 1.5})";
+
+TEST(RayTree, TransparentBlockerBlocksInBlockMode) {
+  Problem p = testing::problem(blocker_problem(kGlass, "block"));
+  const TreeNode& n = tree_task(p).tree().nodes[0];
+  EXPECT_EQ(n.lights[0].status, LightStatus::kBlocked);
+  EXPECT_TRUE(in_shadow(n));
+}
+
+// In transmit mode the glass ball passes k_t = 0.8 of the light: diffuse and specular apply
+// and the diffuse term is k_d·0.8·I_p·(N·L) = 0.7·0.8·1·1 = 0.56 (default k_d = 0.7).
+TEST(RayTree, TransparentBlockerTransmitsInTransmitMode) {
+  Problem p = testing::problem(blocker_problem(kGlass, "transmit", "intensity"));
+  const TreeNode& n = tree_task(p).tree().nodes[0];
+  EXPECT_EQ(n.lights[0].status, LightStatus::kTransmitted);
+  EXPECT_DOUBLE_EQ(n.lights[0].transmission, 0.8);
+  EXPECT_FALSE(in_shadow(n));
+  EXPECT_NEAR(n.lights[0].phong.diffuse, 0.56, 1e-12);
+}
+
+TEST(RayTree, OpaqueBlockerBlocksInTransmitModeToo) {
+  Problem p = testing::problem(blocker_problem(R"({"diffuse": 0.5})", "transmit"));
+  EXPECT_EQ(tree_task(p).tree().nodes[0].lights[0].status, LightStatus::kBlocked);
+}
+
+// Nothing is transparent or reflective: one primary and one shadow ray, no others.
+TEST(RayTree, NothingTransparentCastsNoRefractionRays) {
+  Problem p = testing::problem(blocker_problem(R"({"reflectivity": 0.5})", "block"));
+  const RayCounts& c = tree_task(p).tree().counts;
+  EXPECT_EQ(c.primary, 1);
+  EXPECT_EQ(c.refraction, 0);
+  EXPECT_EQ(c.shadow, 1);
+  EXPECT_EQ(c.reflection, 0);  // the floor (hit) does not reflect; the ball is not hit
+  bool skipped = false;
+  for (const auto& e : tree_task(p).tree().effects) {
+    if (e.name == "refraction") skipped = !e.simulated;
+  }
+  EXPECT_TRUE(skipped);
+}
+
+TEST(RayTree, AskingOnlyForTheHitCastsNoShadowRays) {
+  Problem p = testing::problem(blocker_problem(kGlass, "block", "hit"));
+  const RayTree& t = tree_task(p).tree();
+  EXPECT_EQ(t.counts.shadow, 0);
+  EXPECT_EQ(t.counts.total(), 1);
+  EXPECT_FALSE(t.nodes[0].shaded);
+  nlohmann::json a = p.task->answer();
+  EXPECT_EQ(a["object"], "floor");
+  EXPECT_DOUBLE_EQ(a["hits"][0]["t"].get<double>(), 1);
+}
+
+TEST(RayTree, NoLightsCastNoShadowRays) {
+  Problem p = testing::problem(R"({"id": "n", "kind": "ray-tree",
+    "ray": {"origin": [0, 0, 0], "direction": [0, 0, 1]},
+    "scene": {"objects": [{"type": "sphere", "center": [0, 0, 5], "radius": 1}]}})");
+  const RayTree& t = tree_task(p).tree();
+  EXPECT_EQ(t.counts.shadow, 0);
+  EXPECT_EQ(node_terms(t.nodes[0]), std::vector<std::string>{"ambient"});
+  EXPECT_EQ(t.nodes[0].label, "I1");
+}
+
+// Two facing mirrors x = 0 and x = 10; a ray along +x bounces between them until the depth
+// limit: max_depth 4 gives the primary ray and three reflections, the last one noting why it
+// stops.
+TEST(RayTree, DepthLimitStopsTheBounces) {
+  Problem p = testing::problem(R"({"id": "m", "kind": "ray-tree",
+    "ray": {"origin": [5, 0, 0], "direction": [1, 0, 0]},
+    "scene": {"max_depth": 4, "objects": [
+      {"name": "left", "type": "plane", "point": [0, 0, 0], "normal": [1, 0, 0],
+       "material": {"reflectivity": 1}},
+      {"name": "right", "type": "plane", "point": [10, 0, 0], "normal": [-1, 0, 0],
+       "material": {"reflectivity": 1}}]}})");
+  const RayTree& t = tree_task(p).tree();
+  ASSERT_EQ(t.nodes.size(), 4u);
+  EXPECT_EQ(t.counts.reflection, 3);
+  EXPECT_DOUBLE_EQ(t.nodes[0].t, 5);
+  EXPECT_NEAR(t.nodes[1].t, 10, 1e-12);
+  EXPECT_EQ(t.nodes[3].path, "P.R.R.R");
+  EXPECT_EQ(t.nodes[3].depth, 4);
+  ASSERT_EQ(t.nodes[3].notes.size(), 1u);
+  EXPECT_NE(t.nodes[3].notes[0].find("depth limit"), std::string::npos);
+}
+
+// Inside a glass sphere (n = 1.5) of radius 1 at the origin, a ray from (0, 0.9, 0) along
+// +x meets the surface where sin θi = 0.9 > 1/1.5: beyond the critical angle (41.8°), so
+// the refraction becomes a reflection.
+TEST(RayTree, TotalInternalReflectionReplacesTheRefraction) {
+  Problem p = testing::problem(R"({"id": "tir", "kind": "ray-tree",
+    "ray": {"origin": [0, 0.9, 0], "direction": [1, 0, 0]},
+    "scene": {"max_depth": 2, "objects": [{"name": "glass", "type": "sphere",
+      "center": [0, 0, 0], "radius": 1,
+      "material": {"transparency": 0.9, "refractive_index": 1.5}}]}})");
+  const RayTree& t = tree_task(p).tree();
+  const TreeNode& n = t.nodes[0];
+  EXPECT_TRUE(n.inside);
+  EXPECT_NEAR(n.t, std::sqrt(1 - 0.81), 1e-15);
+  EXPECT_TRUE(n.refraction_math.total_internal_reflection);
+  EXPECT_EQ(n.refraction, -1);
+  ASSERT_GE(n.reflection, 0);
+  EXPECT_TRUE(t.nodes[n.reflection].total_internal_reflection);
+  EXPECT_EQ(t.counts.refraction, 0);
+  EXPECT_EQ(t.counts.reflection, 1);
+  EXPECT_DOUBLE_EQ(t.nodes[n.reflection].weight, 0.9);  // k_t goes to the reflected ray
+}
+
+TEST(RayTree, NoInternalReflectionAssumedSkipsTheTotalReflection) {
+  Problem p = testing::problem(R"({"id": "tir", "kind": "ray-tree",
+    "ray": {"origin": [0, 0.9, 0], "direction": [1, 0, 0]},
+    "scene": {"internal_reflection": false, "objects": [{"name": "glass", "type": "sphere",
+      "center": [0, 0, 0], "radius": 1,
+      "material": {"transparency": 0.9, "refractive_index": 1.5}}]}})");
+  const RayTree& t = tree_task(p).tree();
+  EXPECT_EQ(t.nodes.size(), 1u);
+  EXPECT_EQ(t.counts.total(), 1);
+}
+
+// Seed 001: the glass sphere, mirror ceiling, floor and back wall of the bank's exercise.
+TEST(RayTree, SeedOneHasFivePointsTwoInShadow) {
+  Bank bank = load_bank({std::string(RAYGRADE_SOURCE_DIR) + "/problems/seeds/seed001-ray-tree.json"});
+  ASSERT_TRUE(bank.errors.empty());
+  const Problem& p = bank.problems.at(0);
+  nlohmann::json a = p.task->answer();
+  EXPECT_EQ(a["all_terms"], nlohmann::json({"I1", "I2", "I3"}));
+  EXPECT_EQ(a["ambient_only"], nlohmann::json({"I4", "I5"}));
+  const RayTree& t = tree_task(p).tree();
+  // I1: (x − 6)² + 1 = 4 gives x = 6 − √3; the mirror reflection (−1/2, √3/2) reaches y = 6
+  // after t = 5/(√3/2) = 10/√3, at x = 6 − √3 − 5/√3.
+  EXPECT_NEAR(t.nodes[0].t, 6 - std::sqrt(3.0), 1e-14);
+  const TreeNode* i2 = t.find("P.R");
+  ASSERT_NE(i2, nullptr);
+  EXPECT_NEAR(i2->t, 10 / std::sqrt(3.0), 1e-13);
+  EXPECT_NEAR(i2->point.x, 6 - std::sqrt(3.0) - 5 / std::sqrt(3.0), 1e-13);
+  // Snell at I1: θi = 30°, sin θt = 0.5/1.5.
+  const Refraction& r = t.nodes[0].refraction_math;
+  EXPECT_NEAR(r.cos_i, std::sqrt(3.0) / 2, 1e-15);
+  double sin_t = std::sqrt(1 - r.k);
+  EXPECT_NEAR(sin_t, 1.0 / 3, 1e-15);
+  EXPECT_EQ(t.counts.primary, 1);
+  EXPECT_EQ(t.counts.reflection, 2);
+  EXPECT_EQ(t.counts.refraction, 2);
+  EXPECT_EQ(t.counts.shadow, 5);
+}
+
+TEST(Scene, UnknownMaterialNameIsAnErrorWithItsPath) {
+  try {
+    testing::problem(R"({"id": "x", "kind": "ray-tree",
+      "ray": {"origin": [0, 0, 0], "direction": [0, 0, 1]},
+      "scene": {"objects": [{"type": "sphere", "center": [0, 0, 5], "radius": 1,
+                             "material": "glas"}]}})");
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.diagnostic().path, "/scene/objects/0/material");
+    EXPECT_EQ(e.diagnostic().code, "unknown-material");
+  }
+}
+
+TEST(Scene, TransparentMaterialNeedsAnIndex) {
+  EXPECT_THROW(testing::problem(R"({"id": "x", "kind": "ray-tree",
+      "ray": {"origin": [0, 0, 0], "direction": [0, 0, 1]},
+      "scene": {"objects": [{"type": "sphere", "center": [0, 0, 5], "radius": 1,
+                             "material": {"transparency": 0.5}}]}})"),
+               Error);
+}
+
+}  // namespace
+}  // namespace raygrade
