@@ -43,6 +43,10 @@ std::unique_ptr<Task> FirstHitTask::read(const Cursor& problem) {
                                         problem.string_or("method", ""));
 }
 
+// Two objects whose nearest hits agree within this many ulps of t are hit at the same t (a
+// tie): each t comes from its own formula and rounds on its own.
+constexpr double kTieRelative = 8 * 2.220446049250313e-16;
+
 FirstHit first_hit(const Ray& ray, const std::vector<NamedShape>& objects) {
   FirstHit out;
   for (std::size_t i = 0; i < objects.size(); ++i) {
@@ -53,12 +57,13 @@ FirstHit first_hit(const Ray& ray, const std::vector<NamedShape>& objects) {
     }
     const Hit& h = x.hits.front();
     out.nearest.push_back(h);
-    if (out.index < 0 || h.t < out.hit.t) {
+    double tie = kTieRelative * std::max(1.0, std::abs(h.t));
+    if (out.index >= 0 && std::abs(h.t - out.hit.t) <= tie) {
+      out.tie = true;  // the first in the list keeps the name
+    } else if (out.index < 0 || h.t < out.hit.t) {
       out.index = static_cast<int>(i);
       out.hit = h;
       out.tie = false;
-    } else if (h.t == out.hit.t) {
-      out.tie = true;
     }
   }
   return out;

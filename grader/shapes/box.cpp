@@ -44,9 +44,33 @@ Hit face_hit(const Ray& ray, double t, int axis, bool entering, const Vec3d& lo,
 
 }  // namespace
 
+namespace {
+
+// Each slab end (bound − o)/d rounds twice from exact input, so it is within 2 ulps of the
+// truth; a t_enter above t_exit by less than twice that is a ray touching an edge or corner
+// (closed box), not a miss.
+constexpr double kSlabUlps = 4 * 2.220446049250313e-16;
+
+// A ray that touches the box along an edge or at a corner whose slab ends, rounded, cross.
+bool touches_edge(const Ray& ray, const SlabInterval<double>& s, const Vec3d& lo, const Vec3d& hi) {
+  if (s.enter_axis < 0 || s.exit_axis < 0) return false;
+  for (int i = 0; i < 3; ++i) {
+    if (ray.direction[i] == 0 && (ray.origin[i] < lo[i] || ray.origin[i] > hi[i])) return false;
+  }
+  return s.t_enter - s.t_exit <= kSlabUlps * (std::abs(s.t_enter) + std::abs(s.t_exit));
+}
+
+}  // namespace
+
 Intersection Box::intersect(const Ray& ray) const {
   Intersection out;
   auto s = slab_interval(ray.origin, ray.direction, lo_, hi_);
+  if (!s.hit && touches_edge(ray, s, lo_, hi_)) {
+    if (ray.accepts(s.t_enter)) {
+      out.hits.push_back(face_hit(ray, s.t_enter, s.enter_axis, true, lo_, hi_));
+    }
+    return out;
+  }
   if (!s.hit) return out;
   if (s.enter_axis >= 0 && ray.accepts(s.t_enter)) {
     out.hits.push_back(face_hit(ray, s.t_enter, s.enter_axis, true, lo_, hi_));

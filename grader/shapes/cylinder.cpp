@@ -41,36 +41,70 @@ Vec3d Cylinder::center() const { return height_ ? base_ + (*height_ / 2) * axis_
 
 double Cylinder::extent() const { return height_ ? std::max(radius_, *height_ / 2) : 2 * radius_; }
 
+namespace {
+
+// Relative size below which |A × D| counts as zero (the ray runs parallel to the axis): a few
+// ulps (double epsilon 2.2e-16) of |D|. Without it, the rounding of a tilted unit axis leaves
+// D − (D·A)A at 1e-16 instead of 0, and the side's quadratic reports roots near t = 1e16.
+constexpr double kAxisParallelRelative = 8 * 2.220446049250313e-16;
+
+// Tolerance of the seams, relative to the size of the figure: a point within this of a rim
+// belongs to both the side and the cap (each computes it with its own rounding), and two hits
+// closer than this are one. Far below any exercise's precision, far above rounding.
+constexpr double kSeamRelative = 64 * 2.220446049250313e-16;
+
+}  // namespace
+
 Intersection Cylinder::intersect(const Ray& ray) const {
   Intersection out;
-  Roots<double> roots = cylinder_side_roots(ray.origin, ray.direction, base_, axis_, radius_);
-  double ts[2] = {roots.t0, roots.t1};
-  for (int i = 0; i < roots.count; ++i) {
-    double t = ts[i];
-    if (!ray.accepts(t)) continue;
-    Vec3d p = ray.at(t);
-    double h = dot(p - base_, axis_);
-    if (height_ && (h < 0 || h > *height_)) continue;
-    Vec3d radial = (p - base_) - h * axis_;
-    out.hits.push_back(Hit{t, p, normalized(radial), std::nullopt, "side"});
-  }
-  if (capped_) {
-    double da = dot(ray.direction, axis_);
-    if (da != 0) {
-      double fa = dot(ray.origin - base_, axis_);
-      for (int cap = 0; cap < 2; ++cap) {
-        double level = cap == 0 ? 0 : *height_;
+  Vec3d f = ray.origin - base_;
+  double fa = dot(f, axis_), da = dot(ray.direction, axis_);
+  double scale = length(f) + length(ray.direction) + radius_ + (height_ ? *height_ : 0);
+  double seam = kSeamRelative * scale;
+  bool parallel =
+      length(cross(axis_, ray.direction)) <= kAxisParallelRelative * length(ray.direction);
+  // Compute the side's hits
+  if (parallel) {
+    // The ray never crosses the side; it lies in it when its distance to the axis is r.
+    Vec3d radial = f - fa * axis_;
+    if (std::abs(length(radial) - radius_) <= seam) {
+      if (!height_) {
+        out.contained = true;  // it meets the infinite side along a whole line
+        return out;
+      }
+      // On a finite side it touches the surface from rim to rim.
+      for (double level : {0.0, *height_}) {
         double t = (level - fa) / da;
-        if (!ray.accepts(t)) continue;
-        Vec3d p = ray.at(t);
-        Vec3d radial = (p - base_) - dot(p - base_, axis_) * axis_;
-        if (length_squared(radial) > radius_ * radius_) continue;
-        out.hits.push_back(Hit{t, p, cap == 0 ? -axis_ : axis_, std::nullopt,
-                               cap == 0 ? "bottom cap" : "top cap"});
+        if (ray.accepts(t)) out.hits.push_back(Hit{t, ray.at(t), normalized(radial), {}, "rim"});
       }
     }
+  } else {
+    Roots<double> roots = cylinder_side_roots(ray.origin, ray.direction, base_, axis_, radius_);
+    double ts[2] = {roots.t0, roots.t1};
+    for (int i = 0; i < roots.count; ++i) {
+      double t = ts[i];
+      if (!ray.accepts(t)) continue;
+      Vec3d p = ray.at(t);
+      double h = dot(p - base_, axis_);
+      if (height_ && (h < -seam || h > *height_ + seam)) continue;
+      Vec3d radial = (p - base_) - h * axis_;
+      out.hits.push_back(Hit{t, p, normalized(radial), std::nullopt, "side"});
+    }
   }
-  finish_hits(out.hits);
+  // Compute the caps' hits
+  if (capped_ && da != 0) {
+    for (int cap = 0; cap < 2; ++cap) {
+      double level = cap == 0 ? 0 : *height_;
+      double t = (level - fa) / da;
+      if (!ray.accepts(t)) continue;
+      Vec3d p = ray.at(t);
+      Vec3d radial = (p - base_) - dot(p - base_, axis_) * axis_;
+      if (length(radial) > radius_ + seam) continue;
+      out.hits.push_back(
+          Hit{t, p, cap == 0 ? -axis_ : axis_, std::nullopt, cap == 0 ? "bottom cap" : "top cap"});
+    }
+  }
+  finish_hits(out.hits, seam);
   return out;
 }
 

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math/robust.h"
+
 namespace raygrade {
 namespace {
 
@@ -21,11 +23,21 @@ double orient(P2 a, P2 b, P2 c) { return (b.u - a.u) * (c.v - a.v) - (b.v - a.v)
 // Edge tolerance: relative to the squared size of the polygon, a few ulps of the products.
 constexpr double kOnEdgeRelative = 64 * 2.220446049250313e-16;
 
+// q on the segment ab: on its line, and between its ends ((a − q)·(b − q) ≤ 0), both within
+// the tolerance (an exact bounding-box test would reject a point a rounding off an
+// axis-aligned edge).
 bool on_segment(P2 a, P2 b, P2 q, double scale2) {
   if (std::abs(orient(a, b, q)) > kOnEdgeRelative * scale2) return false;
-  return q.u >= std::min(a.u, b.u) && q.u <= std::max(a.u, b.u) && q.v >= std::min(a.v, b.v) &&
-         q.v <= std::max(a.v, b.v);
+  return (a.u - q.u) * (b.u - q.u) + (a.v - q.v) * (b.v - q.v) <= kOnEdgeRelative * scale2;
 }
+
+// Rounding error bound of one sheared coordinate, in ulps of its terms' magnitudes: the shear
+// factor, the product and the difference each round once.
+constexpr double kShearUlps = 8 * 2.220446049250313e-16;
+
+struct Sheared {
+  double x, y, error;
+};
 
 }  // namespace
 
@@ -73,6 +85,40 @@ bool point_in_polygon(const Vec3d& q3, const std::vector<Vec3d>& vertices, const
       double u = a.u + (q.v - a.v) * (b.u - a.u) / (b.v - a.v);
       if (q.u < u) inside = !inside;
     }
+  }
+  return inside;
+}
+
+bool ray_pierces_polygon(const Ray& ray, const std::vector<Vec3d>& vertices) {
+  const Vec3d& d = ray.direction;
+  int kz = max_dimension(d), kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+  double sx = d[kx] / d[kz], sy = d[ky] / d[kz];
+  std::vector<Sheared> p;
+  for (const auto& v : vertices) {
+    Vec3d a = v - ray.origin;
+    double error = kShearUlps * std::max(std::abs(a[kx]) + std::abs(sx * a[kz]),
+                                         std::abs(a[ky]) + std::abs(sy * a[kz]));
+    p.push_back({a[kx] - sx * a[kz], a[ky] - sy * a[kz], error});
+  }
+  // The edge function of (a, b) at the frame's origin, and whether the origin is on the edge.
+  auto edge = [&](const Sheared& a, const Sheared& b, bool& on_edge) {
+    double e = difference_of_products(a.x, b.y, a.y, b.x);
+    double bound =
+        a.error * (std::abs(b.x) + std::abs(b.y)) + b.error * (std::abs(a.x) + std::abs(a.y));
+    double between = a.x * b.x + a.y * b.y;  // ≤ 0 when the origin lies between a and b
+    double reach = a.error * std::hypot(b.x, b.y) + b.error * std::hypot(a.x, a.y);
+    on_edge = std::abs(e) <= bound && between <= reach;
+    return e;
+  };
+  bool inside = false;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Sheared& a = p[i];
+    const Sheared& b = p[(i + 1) % p.size()];
+    bool on_edge = false;
+    double e = edge(a, b, on_edge);
+    if (on_edge) return true;  // closed: the boundary belongs to it
+    // Crossing number along +x: the edge crosses y = 0 at x = e / (b.y − a.y).
+    if ((a.y > 0) != (b.y > 0) && (e > 0) == (b.y - a.y > 0)) inside = !inside;
   }
   return inside;
 }

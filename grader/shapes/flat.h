@@ -27,6 +27,13 @@ bool ray_in_plane_meets_polygon(const Ray& ray, const std::vector<Vec3d>& vertic
 // number in the projection that drops the normal's largest component.
 bool point_in_polygon(const Vec3d& q, const std::vector<Vec3d>& vertices, const Vec3d& normal);
 
+// Does the ray's line pass through the simple polygon (boundary included)? The test runs in
+// the ray's sheared frame, like the watertight triangle test: the vertices are moved so that
+// the ray is the +z axis, and the origin of that 2D frame is tested against the polygon, with
+// no plane point computed. An edge function within its rounding error of zero counts as on
+// the boundary, so rays through edges and vertices hit.
+bool ray_pierces_polygon(const Ray& ray, const std::vector<Vec3d>& vertices);
+
 // Newell's normal of a polygon (twice the area vector; not normalized).
 Vec3d newell_normal(const std::vector<Vec3d>& vertices);
 

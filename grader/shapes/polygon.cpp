@@ -102,7 +102,7 @@ Intersection Polygon::intersect(const Ray& ray) const {
   double t = dot(normal_, v_[0] - ray.origin) / dot(normal_, ray.direction);
   if (!ray.accepts(t)) return out;
   Vec3d q = ray.at(t);
-  if (!point_in_polygon(q, v_, normal_)) return out;
+  if (!ray_pierces_polygon(ray, v_)) return out;
   Hit h;
   h.t = t;
   h.point = q;

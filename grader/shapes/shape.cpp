@@ -27,14 +27,15 @@ std::unique_ptr<Shape> read_shape(const Cursor& object) {
       "unknown-type");
 }
 
-void finish_hits(std::vector<Hit>& hits) {
+void finish_hits(std::vector<Hit>& hits, double seam_distance) {
   std::stable_sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) { return a.t < b.t; });
   // Two hits at the same t are the same point of the ray: a seam between two parts of the
   // surface. Equal within a few ulps, since both parts compute t by different formulas.
   constexpr double kSeamUlps = 8 * 2.220446049250313e-16;
   std::vector<Hit> out;
   for (auto& h : hits) {
-    if (!out.empty() && std::abs(h.t - out.back().t) <= kSeamUlps * std::max(1.0, std::abs(h.t))) {
+    if (!out.empty() && (std::abs(h.t - out.back().t) <= kSeamUlps * std::max(1.0, std::abs(h.t)) ||
+                         length(h.point - out.back().point) <= seam_distance)) {
       continue;
     }
     out.push_back(std::move(h));

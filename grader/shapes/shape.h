@@ -56,7 +56,8 @@ std::unique_ptr<Shape> read_shape(const Cursor& object);
 const std::vector<std::string>& common_object_keys();
 
 // Sorts hits by t and merges those that are the same point of the surface (a seam: a
-// cylinder's rim, a box's edge), keeping the first.
-void finish_hits(std::vector<Hit>& hits);
+// cylinder's rim, a box's edge), keeping the first: hits whose t agree within a few ulps, or
+// whose points lie within `seam_distance` of each other.
+void finish_hits(std::vector<Hit>& hits, double seam_distance = 0);
 
 }  // namespace raygrade

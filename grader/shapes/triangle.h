@@ -1,7 +1,9 @@
 // Triangle: vertices a, b, c; watertight reference test; edge-test derivation.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <limits>
 
 #include "math/robust.h"
 #include "shapes/shape.h"
@@ -14,6 +16,35 @@ struct TriangleHit {
   T t{};
   std::array<T, 3> barycentric{};  // weights of a, b, c
 };
+
+// The sheared 2D coordinates of a vertex (x, y) and its unsheared ones (X, Y, Z).
+template <typename T>
+struct ShearedVertex {
+  T x, y, X, Y, Z;
+};
+
+// Sets to zero the edge functions u, v, w that lie within their rounding error of zero. A
+// sheared coordinate X − s·Z is exact up to kEdgeUlps of |X| + |s·Z| (the shear factor, the
+// product and the difference each round once), and the error of an edge function
+// p.x·q.y − p.y·q.x is that error times the other vertex's coordinates. Number types without
+// a numeric_limits epsilon (the exact or multiple-precision ones) keep the exact test.
+template <typename T>
+void snap_edge_functions(T& u, T& v, T& w, const ShearedVertex<T>& a, const ShearedVertex<T>& b,
+                         const ShearedVertex<T>& c, T sx, T sy) {
+  using std::abs;
+  constexpr int kEdgeUlps = 8;
+  const T eps = std::numeric_limits<T>::epsilon();
+  if (!(eps > T(0))) return;
+  auto error = [&](const ShearedVertex<T>& p) {
+    return std::max(abs(p.X) + abs(sx * p.Z), abs(p.Y) + abs(sy * p.Z)) * T(kEdgeUlps) * eps;
+  };
+  auto bound = [&](const ShearedVertex<T>& p, const ShearedVertex<T>& q) {
+    return error(p) * (abs(q.x) + abs(q.y)) + error(q) * (abs(p.x) + abs(p.y));
+  };
+  if (abs(u) <= bound(c, b)) u = T(0);
+  if (abs(v) <= bound(a, c)) v = T(0);
+  if (abs(w) <= bound(b, a)) w = T(0);
+}
 
 // Watertight ray-triangle test (Woop, Benthin and Wald, JCGT 2(1), 2013): the ray is sheared
 // to the +z axis and the edge functions are evaluated in 2D, so that a ray through an edge or
@@ -37,6 +68,10 @@ TriangleHit<T> watertight_triangle(const Vec3<T>& o, const Vec3<T>& d, const Vec
     v = difference_of_products(ax, cy, ay, cx);
     w = difference_of_products(bx, ay, by, ax);
   }
+  // Closed triangle: an edge function within its rounding error of zero is zero, so that a
+  // ray through an edge or vertex hits, whatever the shear's rounding.
+  snap_edge_functions(u, v, w, {ax, ay, A[kx], A[ky], A[kz]}, {bx, by, B[kx], B[ky], B[kz]},
+                      {cx, cy, C[kx], C[ky], C[kz]}, sx, sy);
   if ((u < T(0) || v < T(0) || w < T(0)) && (u > T(0) || v > T(0) || w > T(0))) return out;
   T det = u + v + w;
   if (det == T(0)) return out;
