@@ -121,6 +121,16 @@ TEST(JsonLimits, NumberBeyondALongDoubleRejectsTheFileWithItsPlace) {
   EXPECT_EQ(rejection("[-1e5000]").code, "range");
 }
 
+// Found by fuzzing: the second parse (with long doubles) goes past the big number and meets
+// the syntax error the first parse never reached.
+TEST(JsonLimits, BigNumberThenASyntaxErrorIsASyntaxError) {
+  Diagnostic d = rejection("[1e400, }");
+  EXPECT_EQ(d.code, "bad-json");
+  EXPECT_EQ(d.line, 1);
+  EXPECT_EQ(d.column, 9);
+  EXPECT_EQ(rejection("-1e400\"").code, "bad-json");
+}
+
 // 1e-400 underflows to zero, which is a fine double: accepted as 0.
 TEST(JsonLimits, UnderflowingNumberIsZero) {
   auto f = parse_json_text("in.json", "[1e-400]");

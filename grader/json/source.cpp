@@ -104,7 +104,13 @@ std::shared_ptr<const SourceFile> parse_json_text(std::string name, std::string 
   if (auto fault = check_limits(text, limits)) report(*fault);
   auto file = std::make_shared<SourceFile>();
   try {
-    file->root = nlohmann::json::parse(text);
+    try {
+      file->root = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::out_of_range&) {
+      // A number too large for a double (406): parse again with long doubles. This parse
+      // goes on past the number, so it may yet meet a syntax error.
+      file->root = narrow(WideJson::parse(text));
+    }
   } catch (const nlohmann::json::parse_error& e) {
     std::size_t offset = e.byte > 0 ? std::min<std::size_t>(e.byte - 1, text.size()) : 0;
     auto [line, column] = line_column_of(text, offset);
@@ -113,14 +119,9 @@ std::shared_ptr<const SourceFile> parse_json_text(std::string name, std::string 
                            : "bad-json";
     fail(name, parse_error_message(text, offset, e.what()), line, column, code);
   } catch (const nlohmann::json::out_of_range&) {
-    // A number too large for a double (406): parse again with long doubles.
-    try {
-      file->root = narrow(WideJson::parse(text));
-    } catch (const WideJson::out_of_range&) {
-      // Beyond even a long double (1e5000): the error has no position, so find the number.
-      if (auto fault = find_duplicate_or_overflow(text)) report(*fault);
-      fail(name, "a number is out of range", 0, 0, "range");
-    }
+    // Beyond even a long double (1e5000): the error has no position, so find the number.
+    if (auto fault = find_duplicate_or_overflow(text)) report(*fault);
+    fail(name, "a number is out of range", 0, 0, "range");
   }
   if (auto fault = find_duplicate_or_overflow(text)) report(*fault);
   file->name = std::move(name);
