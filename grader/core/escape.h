@@ -9,9 +9,11 @@ namespace raygrade {
 
 // &, <, >, " and ' as entities: safe in HTML and XML text and attribute values.
 std::string html_escape(std::string_view s);
-// The same for XML (JUnit); control characters other than tab and newline are dropped.
+// The same for XML (JUnit); control characters other than tab and newline are dropped, and
+// ill-formed UTF-8 becomes U+FFFD, so the document always parses.
 std::string xml_escape(std::string_view s);
-// Markdown: backslash before every character Markdown or inline HTML could act on.
+// Markdown: backslash before every character Markdown or inline HTML could act on; line
+// breaks become spaces.
 std::string markdown_escape(std::string_view s);
 // LaTeX text mode: \ { } $ & # ^ _ % ~ escaped.
 std::string latex_escape(std::string_view s);
