@@ -2,6 +2,9 @@
 #include "kinds/camera_ray.h"
 #include "kinds/intersect.h"
 #include "kinds/ray_tree.h"
+#include "kinds/reflect.h"
+#include "kinds/refract.h"
+#include "kinds/shade.h"
 #include "problems/problem.h"
 
 namespace raygrade {
@@ -18,6 +21,16 @@ const std::vector<KindEntry>& kind_table() {
        "the tree of rays one ray spawns in a scene: shadows, reflection, refraction, Phong",
        {"scene", "ray", "camera", "pixel", "convention", "ask", "labels"},
        &RayTreeTask::read},
+      {"reflect", "the mirror direction of a ray at a surface", {"direction", "normal"},
+       &ReflectTask::read},
+      {"refract",
+       "Snell's law at a surface, with total internal reflection",
+       {"direction", "normal", "n1", "n2"},
+       &RefractTask::read},
+      {"shade",
+       "the Phong intensity at a point, term by term",
+       {"point", "normal", "eye", "material", "lights", "ambient_light"},
+       &ShadeTask::read},
   };
   return table;
 }

@@ -8,6 +8,10 @@
 
 namespace raygrade {
 
+// A vector typed as unit length is taken as unit when |n| is within this of 1: decimals such
+// as (0.6, 0.8, 0) are off by an ulp or two, far below; anything not meant as unit, far above.
+constexpr double kUnitLengthTolerance = 1e-12;
+
 // r = d − 2(d·n)n for a unit normal n (either orientation gives the same r).
 Vec3d reflect(const Vec3d& d, const Vec3d& n);
 

@@ -1,0 +1,86 @@
+// The refract kind.
+#include "kinds/refract.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "derivation/number_format.h"
+#include "scenes/optics.h"
+
+namespace raygrade {
+namespace {
+
+double degrees(double radians) { return radians * 180 / std::numbers::pi; }
+
+}  // namespace
+
+std::unique_ptr<Task> RefractTask::read(const Cursor& problem) {
+  Vec3d d = problem.at("direction").nonzero_vec3();
+  Vec3d n = problem.at("normal").nonzero_vec3();
+  if (dot(d, n) == 0) problem.at("normal").fail("the ray runs along the surface", "degenerate");
+  return std::make_unique<RefractTask>(d, n, problem.at("n1").positive_number(),
+                                       problem.at("n2").positive_number());
+}
+
+Vec3d RefractTask::facing_normal() const {
+  Vec3d n = normalized(n_);
+  return dot(d_, n) > 0 ? -n : n;
+}
+
+nlohmann::json RefractTask::answer() const {
+  Refraction r = refract(normalized(d_), facing_normal(), n1_, n2_);
+  nlohmann::json j = {{"total_internal_reflection", r.total_internal_reflection},
+                      {"angle_of_incidence", degrees(std::acos(std::clamp(r.cos_i, -1.0, 1.0)))}};
+  if (r.total_internal_reflection) {
+    j["direction"] = nullptr;
+    j["reflected_direction"] = vec_json(reflect(normalized(d_), facing_normal()));
+  } else {
+    j["direction"] = vec_json(r.direction);
+    j["angle_of_refraction"] = degrees(std::acos(std::clamp(std::sqrt(r.k), -1.0, 1.0)));
+  }
+  if (auto c = critical_angle_degrees(n1_, n2_)) j["critical_angle"] = *c;
+  return j;
+}
+
+std::vector<SolutionPart> RefractTask::derive(std::string_view /*method*/,
+                                              const Overrides* overrides) const {
+  Deriver d("vector", "Refraction by Snell's law", overrides);
+  E D = d.given("d", "d", d_, "the incoming direction");
+  E N = d.given("n", "n", n_, "the surface normal");
+  E n1 = d.given("n1", "n_1", n1_, "the index on the incoming side");
+  E n2 = d.given("n2", "n_2", n2_, "the index on the far side");
+  d.step("d_hat", "d_hat", D / norm(D));
+  bool flip = dot(d_, n_) > 0;
+  d.step("n_hat", "n_hat", flip ? -N / norm(N) : N / norm(N),
+         flip ? "the unit normal, turned to face the incoming ray (d·n > 0 as given)"
+              : "the unit normal; it faces the incoming ray");
+  d.step("eta", "eta", n1 / n2);
+  d.step("cos_i", "cos_i", -dot(d.sym("d_hat"), d.sym("n_hat")), "cos θi");
+  Value k = d.step("k", "k", 1 - square(d.sym("eta")) * (1 - square(d.sym("cos_i"))),
+                   "1 − η²·sin²θi = cos²θt");
+  Refraction r = refract(normalized(d_), facing_normal(), n1_, n2_);
+  double theta_i = degrees(std::acos(std::clamp(r.cos_i, -1.0, 1.0)));
+  if (auto c = critical_angle_degrees(n1_, n2_)) {
+    d.note(fmt::format("Going into a lower index, the critical angle is asin(n₂/n₁) = {}°.",
+                       format_number(*c)));
+  }
+  if (k.scalar < 0) {
+    d.note("k < 0: sin θt would exceed 1.");
+    d.step("r", "r",
+           d.sym("d_hat") + 2 * d.sym("cos_i") * d.sym("n_hat"),
+           "all the light is reflected: r = d̂ − 2(d̂·n̂)n̂");
+    d.conclude(fmt::format("Total internal reflection: at θi = {}° there is no refracted ray.",
+                           format_number(theta_i)));
+  } else {
+    Value t = d.step("t", "t",
+                     d.sym("eta") * d.sym("d_hat") +
+                         (d.sym("eta") * d.sym("cos_i") - sqrt(d.sym("k"))) * d.sym("n_hat"),
+                     "t = η·d̂ + (η·cos θi − √k)·n̂, a unit vector");
+    d.conclude(fmt::format("The refracted direction is t = {} (θi = {}°, θt = {}°).",
+                           format_vector(t.vector), format_number(theta_i),
+                           format_number(degrees(std::acos(std::sqrt(k.scalar))))));
+  }
+  return {SolutionPart{"", std::move(d).finish()}};
+}
+
+}  // namespace raygrade

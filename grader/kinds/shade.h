@@ -1,0 +1,36 @@
+// Kind `shade`: the Phong intensity at one point, term by term: k_a·I_a, and for each light
+// that reaches the point k_d·I_p·(N·L) and k_s·I_p·(R·V)^n.
+#pragma once
+
+#include "problems/problem.h"
+#include "scenes/scene.h"
+
+namespace raygrade {
+
+struct ShadeLight {
+  Light light;
+  bool blocked = false;  // the exercise says its shadow ray is blocked
+};
+
+class ShadeTask final : public Task {
+ public:
+  ShadeTask(Vec3d point, Vec3d normal, Vec3d eye, Material m, double ambient_light,
+            std::vector<ShadeLight> lights)
+      : point_(point), normal_(normal), eye_(eye), m_(m), ambient_light_(ambient_light),
+        lights_(std::move(lights)) {}
+  static std::unique_ptr<Task> read(const Cursor& problem);
+
+  std::string_view kind() const override { return "shade"; }
+  nlohmann::json answer() const override;
+  std::vector<std::string> methods() const override { return {"phong"}; }
+  std::vector<SolutionPart> derive(std::string_view method,
+                                   const Overrides* overrides) const override;
+
+ private:
+  Vec3d point_, normal_, eye_;
+  Material m_;
+  double ambient_light_;
+  std::vector<ShadeLight> lights_;
+};
+
+}  // namespace raygrade
