@@ -78,6 +78,7 @@ std::shared_ptr<const KindGrader> make_kind_grader(const Problem& p) {
   if (p.kind == "intersect" || p.kind == "first-hit") return make_hits_grader(p);
   if (p.kind == "camera-ray") return make_camera_grader(p);
   if (p.kind == "derive") return make_formula_grader(p);
+  if (p.kind == "ray-tree") return make_ray_tree_grader(p);
   return make_generic_grader(p);
 }
 

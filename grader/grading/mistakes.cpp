@@ -52,6 +52,14 @@ const std::vector<MistakeInfo>& mistake_catalogue() {
        0},
       {"r-not-squared", "algebra", "r where r² belongs",
        "The surface's equation has r² (|P − C|² = r²); using r itself changes every root.", 0},
+      {"diffuse-in-shadow", "lighting", "Diffuse term at a point in shadow",
+       "The diffuse and specular terms need light arriving from the light source; when the "
+       "shadow ray toward it meets an object first, only the ambient term remains.",
+       0},
+      {"lit-point-ambient-only", "lighting", "Ambient term only at a lit point",
+       "When the shadow ray reaches the light (and the surface faces it), the diffuse and "
+       "specular terms apply as well as the ambient one.",
+       0},
   };
   return c;
 }

@@ -1,0 +1,366 @@
+// Grading the kind `ray-tree` node by node: the tree's shape (which rays, which objects they
+// hit), which points are in shadow, and which Phong terms apply at each, with partial credit
+// per node and the reason for every node marked wrong.
+#include <fmt/format.h>
+
+#include <set>
+
+#include "derivation/number_format.h"
+#include "grading/kind_grader.h"
+#include "grading/mistakes.h"
+#include "kinds/ray_tree.h"
+#include "scenes/tree_json.h"
+
+namespace raygrade {
+namespace {
+
+// An extra node costs half a node of the tree part: drawing a ray that does not exist is a
+// mistake, but a smaller one than missing a ray that does.
+constexpr double kExtraNodePenalty = 0.5;
+
+struct StudentNode {
+  std::string label;
+  std::string where;  // its JSON path in the answer
+  std::optional<std::string> path, parent, ray, object;
+  std::optional<bool> in_shadow;
+  std::optional<std::set<std::string>> terms;
+  std::string resolved;  // the path in the tree it stands for ("" when it cannot be placed)
+};
+
+std::set<std::string> term_set(const std::vector<std::string>& v) { return {v.begin(), v.end()}; }
+
+std::string terms_words(const std::set<std::string>& t) {
+  std::vector<std::string> order;
+  for (const char* k : {"ambient", "diffuse", "specular"}) {
+    if (t.count(k)) order.emplace_back(k);
+  }
+  for (const auto& k : t) {
+    if (k != "ambient" && k != "diffuse" && k != "specular") order.push_back(k);
+  }
+  return order.empty() ? "no terms" : fmt::format("{}", fmt::join(order, ", "));
+}
+
+class RayTreeGrader final : public KindGrader {
+ public:
+  explicit RayTreeGrader(const Problem& p) : task_(dynamic_cast<const RayTreeTask&>(*p.task)) {
+    context_.problem = &p;
+    context_.tolerance = read_tolerance_policy(p);
+    Ask ask = task_.tree().ask;
+    if (ask == Ask::kHit) {
+      context_.points = read_points_policy(p, {{"hit", 1}});
+    } else if (ask == Ask::kTree) {
+      context_.points = read_points_policy(p, {{"tree", 1}, {"shadows", 1}, {"terms", 1}});
+    } else {
+      context_.points =
+          read_points_policy(p, {{"tree", 1}, {"shadows", 1}, {"terms", 1}, {"intensity", 1}});
+    }
+  }
+
+  void grade(const AnswerReader& a, GradeResult& out) const override {
+    if (task_.tree().ask == Ask::kHit) return grade_hit(a, out);
+    a.allow_only({"nodes", "all_terms", "ambient_only", "rays", "intensity"});
+    std::vector<StudentNode> nodes = read_nodes(a);
+    // Reference hit node index -> the student's node standing for it.
+    std::map<int, const StudentNode*> match;
+    std::vector<const StudentNode*> extra;
+    for (const auto& s : nodes) {
+      const TreeNode* r = s.resolved.empty() ? nullptr : task_.tree().find(s.resolved);
+      if (r && r->hit && !match.count(r->index)) {
+        match[r->index] = &s;
+      } else if (!r || r->hit) {
+        extra.push_back(&s);
+      }
+    }
+    auto lists = read_lists(a);
+    if (a.has("nodes")) {
+      out.parts.push_back(grade_tree(match, extra));
+    } else {
+      out.parts.push_back(missing_part(context_, "tree", "No tree (nodes) given."));
+    }
+    grade_lighting(match, lists, nodes.empty(), out);
+    if (task_.tree().ask == Ask::kIntensity) grade_intensity(a, out);
+  }
+
+ private:
+  const RayTree& tree() const { return task_.tree(); }
+  const Scene& scene() const { return task_.scene(); }
+  std::string object_name(int i) const { return scene().objects[i].name; }
+
+  void grade_hit(const AnswerReader& a, GradeResult& out) const {
+    a.allow_only({"object", "hits", "rays"});
+    const TreeNode& root = tree().nodes.front();
+    std::vector<std::string> fb;
+    double credit = 0;
+    std::string want = root.hit ? object_name(root.object) : "";
+    if (a.has("object")) {
+      std::string got = a.at("object").json().is_null() ? "" : a.at("object").string();
+      if (got == want) {
+        credit += 0.5;
+      } else {
+        fb.push_back(root.hit ? fmt::format("The ray first hits {}, not {}.", want,
+                                            got.empty() ? "nothing" : got)
+                              : "The ray hits nothing.");
+      }
+    }
+    if (root.hit && a.has("hits") && !a.at("hits").items().empty()) {
+      AnswerReader h = a.at("hits").items().front();
+      if (h.has("t")) {
+        auto n = h.at("t").number();
+        const Tolerance& tol = context_.tolerance.for_field("t");
+        if (n.value && compare_number(*n.value, root.t, std::abs(root.t), tol).match ==
+                           Match::kRight) {
+          credit += 0.5;
+        } else {
+          fb.push_back(n.value ? fmt::format("t is {}, not {}.", format_number(root.t),
+                                             n.value->text)
+                               : "t: " + n.fault);
+        }
+      }
+    } else if (!root.hit) {
+      credit += a.has("hits") && a.at("hits").items().empty() ? 0.5 : 0;
+    }
+    if (credit >= 1) fb.push_back("Right.");
+    out.parts.push_back(make_part(context_, "hit", credit, fb));
+  }
+
+  std::vector<StudentNode> read_nodes(const AnswerReader& a) const {
+    std::vector<StudentNode> out;
+    if (!a.has("nodes")) return out;
+    for (const auto& n : a.at("nodes").items()) {
+      n.allow_only({"label", "path", "parent", "ray", "object", "in_shadow", "terms", "lights",
+                    "children", "depth", "origin", "direction", "hit", "t", "point", "normal",
+                    "inside", "intensity", "total_internal_reflection", "background"});
+      StudentNode s;
+      s.where = n.path();
+      s.label = n.has("label") ? n.at("label").string() : "";
+      if (n.has("path")) s.path = n.at("path").string();
+      if (n.has("parent") && !n.at("parent").json().is_null()) s.parent = n.at("parent").string();
+      if (n.has("ray")) s.ray = n.at("ray").string();
+      if (n.has("object") && !n.at("object").json().is_null()) s.object = n.at("object").string();
+      if (n.has("in_shadow")) {
+        if (!n.at("in_shadow").json().is_boolean()) n.at("in_shadow").fail("expected true or false", "type");
+        s.in_shadow = n.at("in_shadow").json().get<bool>();
+      }
+      if (n.has("terms")) {
+        std::set<std::string> t;
+        for (const auto& x : n.at("terms").items()) t.insert(x.string());
+        s.terms = t;
+      }
+      out.push_back(std::move(s));
+    }
+    // Place each node in the tree: by its path, or by its parent and the kind of its ray.
+    for (auto& s : out) s.resolved = resolve(s, out, 0);
+    return out;
+  }
+
+  static std::string resolve(const StudentNode& s, const std::vector<StudentNode>& all,
+                             int depth) {
+    if (s.path) return *s.path;
+    if (depth > kMaxTreeDepth) return "";  // a cycle of parents
+    if (!s.parent) return !s.ray || *s.ray == "primary" ? "P" : "";
+    for (const auto& p : all) {
+      if (p.label != *s.parent) continue;
+      std::string base = resolve(p, all, depth + 1);
+      if (base.empty() || !s.ray) return "";
+      if (*s.ray == "reflection") return base + ".R";
+      if (*s.ray == "refraction") return base + ".T";
+      return "";
+    }
+    return "";
+  }
+
+  // Why the tree has no ray where the student drew one.
+  std::string no_such_ray(const StudentNode& s) const {
+    std::string where = s.label.empty() ? s.where : s.label;
+    const TreeNode* parent = nullptr;
+    if (s.resolved.size() > 2) parent = tree().find(s.resolved.substr(0, s.resolved.size() - 2));
+    if (parent && parent->hit) {
+      const SceneObject& o = scene().objects[parent->object];
+      bool reflection = s.resolved.back() == 'R';
+      if (reflection && !o.material.reflects() && !(parent->refraction_math.total_internal_reflection))
+        return fmt::format("{}: {} does not reflect (reflectivity 0), so {} spawns no reflection "
+                           "ray.",
+                           where, o.name, parent->label);
+      if (!reflection && !o.material.transmits())
+        return fmt::format("{}: {} is opaque (transparency 0), so {} spawns no refraction ray.",
+                           where, o.name, parent->label);
+      if (parent->depth >= scene().max_depth)
+        return fmt::format("{}: the depth limit (max_depth {}) ends the tree at {}.", where,
+                           scene().max_depth, parent->label);
+      if (reflection && parent->inside && !scene().internal_reflection)
+        return fmt::format("{}: the problem assumes no internal reflection.", where);
+      if (!reflection && parent->refraction_math.total_internal_reflection)
+        return fmt::format("{}: at {} the light is totally reflected: no refraction ray.", where,
+                           parent->label);
+    }
+    return fmt::format("{}: the tree has no such ray.", where);
+  }
+
+  PartResult grade_tree(const std::map<int, const StudentNode*>& match,
+                        const std::vector<const StudentNode*>& extra) const {
+    double earned = 0;
+    int total = 0;
+    std::vector<std::string> fb;
+    for (const auto& n : tree().nodes) {
+      if (!n.hit) continue;
+      ++total;
+      auto it = match.find(n.index);
+      std::string what = n.parent < 0 ? "the primary ray's hit"
+                                      : fmt::format("where the {} ray from {} hits",
+                                                    to_string(n.kind), tree().nodes[n.parent].label);
+      if (it == match.end()) {
+        fb.push_back(fmt::format("Missing: {}, {} ({}).", n.label, what, object_name(n.object)));
+        continue;
+      }
+      const StudentNode& s = *it->second;
+      if (s.object && *s.object != object_name(n.object)) {
+        earned += 0.5;
+        fb.push_back(fmt::format("{}: {} is on {}, not on {}.", s.label, what,
+                                 object_name(n.object), *s.object));
+      } else {
+        earned += 1;
+      }
+    }
+    for (const auto* s : extra) fb.push_back(no_such_ray(*s));
+    double credit = total ? std::max(0.0, earned - kExtraNodePenalty * extra.size()) / total : 1;
+    if (fb.empty()) fb.push_back(fmt::format("Right: all {} points of the tree.", total));
+    return make_part(context_, "tree", credit, fb);
+  }
+
+  struct Lists {
+    std::set<std::string> all, ambient;
+    bool given = false;
+  };
+
+  Lists read_lists(const AnswerReader& a) const {
+    Lists l;
+    for (const char* key : {"all_terms", "ambient_only"}) {
+      if (!a.has(key)) continue;
+      l.given = true;
+      for (const auto& x : a.at(key).items()) {
+        (std::string(key) == "all_terms" ? l.all : l.ambient).insert(x.string());
+      }
+    }
+    return l;
+  }
+
+  // The reason a node's terms are what they are, in words.
+  std::string light_reason(const TreeNode& n) const {
+    std::vector<std::string> parts;
+    for (const auto& s : n.lights) {
+      std::vector<std::string> by;
+      for (int b : s.blockers) by.push_back(object_name(b));
+      switch (s.status) {
+        case LightStatus::kVisible:
+          parts.push_back(fmt::format("its shadow ray toward {} reaches the light", s.light_name));
+          break;
+        case LightStatus::kTransmitted:
+          parts.push_back(fmt::format("its shadow ray toward {} passes only transparent {}",
+                                      s.light_name, fmt::join(by, ", ")));
+          break;
+        case LightStatus::kBlocked:
+          parts.push_back(fmt::format("its shadow ray toward {} is blocked by {}", s.light_name,
+                                      fmt::join(by, ", ")));
+          break;
+        case LightStatus::kBehind:
+          parts.push_back(fmt::format("it faces away from {}", s.light_name));
+          break;
+      }
+    }
+    if (parts.empty()) return "the scene has no lights";
+    return fmt::format("{}", fmt::join(parts, "; "));
+  }
+
+  void grade_lighting(const std::map<int, const StudentNode*>& match, const Lists& lists,
+                      bool no_nodes, GradeResult& out) const {
+    int total = 0, shadows_right = 0, terms_right = 0;
+    bool any_shadow = false, any_terms = false;
+    std::vector<std::string> shadow_fb, terms_fb;
+    for (const auto& n : tree().nodes) {
+      if (!n.hit) continue;
+      ++total;
+      auto it = match.find(n.index);
+      const StudentNode* s = it == match.end() ? nullptr : it->second;
+      // The label the student uses for this point: their node's, or the problem's.
+      std::string label = s && !s->label.empty() ? s->label : n.label;
+      std::optional<std::set<std::string>> terms;
+      if (s && s->terms) terms = s->terms;
+      if (!terms && (s || no_nodes) && lists.given) {
+        if (lists.all.count(label)) terms = std::set<std::string>{"ambient", "diffuse", "specular"};
+        if (lists.ambient.count(label)) terms = std::set<std::string>{"ambient"};
+      }
+      // In shadow: 1, lit: 0, not said: −1 (an int: GCC misreads an optional<bool> here).
+      int shadow = s && s->in_shadow ? int(*s->in_shadow) : -1;
+      if (shadow < 0 && terms && !scene().lights.empty()) shadow = terms->count("diffuse") ? 0 : 1;
+      std::set<std::string> want = term_set(node_terms(n));
+      bool want_shadow = in_shadow(n);
+      std::string reason = light_reason(n);
+      if (shadow >= 0) {
+        any_shadow = true;
+        if ((shadow == 1) == want_shadow) {
+          ++shadows_right;
+        } else {
+          shadow_fb.push_back(fmt::format("{} is {}: {}.", label,
+                                          want_shadow ? "in shadow" : "not in shadow", reason));
+        }
+      } else {
+        shadow_fb.push_back(fmt::format("{}: not said whether it is in shadow.", label));
+      }
+      if (!terms) {
+        terms_fb.push_back(fmt::format("{}: no Phong terms given.", label));
+        continue;
+      }
+      any_terms = true;
+      if (*terms == want) {
+        ++terms_right;
+        continue;
+      }
+      bool extra_light = !n.diffuse && (terms->count("diffuse") || terms->count("specular"));
+      bool missing_light = n.diffuse && !terms->count("diffuse");
+      std::string specific = fmt::format("{} needs {}, not {}: {}.", label, terms_words(want),
+                                         terms_words(*terms), reason);
+      terms_fb.push_back(specific);
+      if (extra_light) {
+        out.mistakes.push_back(make_mistake("diffuse-in-shadow", "terms", specific));
+      } else if (missing_light) {
+        out.mistakes.push_back(make_mistake("lit-point-ambient-only", "terms", specific));
+      }
+    }
+    auto part = [&](const char* name, bool given, int right, std::vector<std::string> fb) {
+      if (!given) return missing_part(context_, name);
+      if (right == total) fb = {fmt::format("Right at all {} points.", total)};
+      return make_part(context_, name, total ? double(right) / total : 1, fb);
+    };
+    out.parts.push_back(part("shadows", any_shadow, shadows_right, shadow_fb));
+    out.parts.push_back(part("terms", any_terms, terms_right, terms_fb));
+  }
+
+  void grade_intensity(const AnswerReader& a, GradeResult& out) const {
+    if (!a.has("intensity")) {
+      out.parts.push_back(missing_part(context_, "intensity"));
+      return;
+    }
+    double want = tree().nodes.front().intensity;
+    auto n = a.at("intensity").number();
+    const Tolerance& tol = context_.tolerance.for_field("intensity");
+    if (n.value && compare_number(*n.value, want, std::abs(want), tol).match == Match::kRight) {
+      out.parts.push_back(make_part(context_, "intensity", 1, {"Right."}));
+    } else {
+      out.parts.push_back(make_part(
+          context_, "intensity", 0,
+          {n.value ? fmt::format("The intensity along the primary ray is {}, not {}.",
+                                 format_number(want), n.value->text)
+                   : "intensity: " + n.fault}));
+    }
+  }
+
+  const RayTreeTask& task_;
+};
+
+}  // namespace
+
+std::shared_ptr<const KindGrader> make_ray_tree_grader(const Problem& p) {
+  return std::make_shared<RayTreeGrader>(p);
+}
+
+}  // namespace raygrade

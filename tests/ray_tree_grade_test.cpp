@@ -1,0 +1,121 @@
+// Grading ray trees node by node: seed 001's own answer is right; a shadowed point given its
+// diffuse term, a missing ray and a ray the scene cannot spawn are marked with the reason.
+#include <gtest/gtest.h>
+
+#include "grading/grade.h"
+#include "problems/problem.h"
+
+namespace raygrade {
+namespace {
+
+const Problem& seed() {
+  static const Bank bank =
+      load_bank({std::string(RAYGRADE_SOURCE_DIR) + "/problems/seeds/seed001-ray-tree.json"});
+  return bank.problems.at(0);
+}
+
+// The seed's answer, as the sample submission gives it.
+nlohmann::json seed_answer() {
+  return nlohmann::json::parse(R"({
+    "nodes": [
+      {"label": "I1", "parent": null, "ray": "primary", "object": "glass sphere", "in_shadow": false},
+      {"label": "I2", "parent": "I1", "ray": "reflection", "object": "mirror ceiling", "in_shadow": false},
+      {"label": "I3", "parent": "I2", "ray": "reflection", "object": "floor", "in_shadow": false},
+      {"label": "I4", "parent": "I1", "ray": "refraction", "object": "glass sphere", "in_shadow": true},
+      {"label": "I5", "parent": "I4", "ray": "refraction", "object": "back wall", "in_shadow": true}],
+    "all_terms": ["I1", "I2", "I3"],
+    "ambient_only": ["I4", "I5"]})");
+}
+
+const PartResult* part(const GradeResult& r, const std::string& name) {
+  for (const auto& p : r.parts) {
+    if (p.name == name) return &p;
+  }
+  return nullptr;
+}
+
+std::string all_feedback(const PartResult& p) {
+  std::string s;
+  for (const auto& f : p.feedback) s += f + "\n";
+  return s;
+}
+
+TEST(RayTreeGrade, SeedAnswerIsRight) {
+  GradeResult r = grade_answer(seed(), seed_answer());
+  EXPECT_DOUBLE_EQ(r.score, r.max_score);
+  EXPECT_DOUBLE_EQ(r.max_score, 3);
+  EXPECT_TRUE(r.mistakes.empty());
+}
+
+TEST(RayTreeGrade, TheSolversOwnAnswerIsRight) {
+  GradeResult r = grade_answer(seed(), seed().task->answer());
+  EXPECT_DOUBLE_EQ(r.score, r.max_score);
+}
+
+// A shadowed point (I4, whose shadow ray meets the glass sphere) given the diffuse term.
+TEST(RayTreeGrade, DiffuseAtAShadowedPointIsWrongWithTheReason) {
+  nlohmann::json a = seed_answer();
+  a["all_terms"] = {"I1", "I2", "I3", "I4"};
+  a["ambient_only"] = {"I5"};
+  a["nodes"][3]["terms"] = {"ambient", "diffuse"};
+  a["nodes"][3].erase("in_shadow");
+  GradeResult r = grade_answer(seed(), a);
+  const PartResult* terms = part(r, "terms");
+  ASSERT_NE(terms, nullptr);
+  EXPECT_EQ(terms->status, PartStatus::kPartial);
+  EXPECT_DOUBLE_EQ(terms->points, 0.8);  // four of the five points right
+  std::string fb = all_feedback(*terms);
+  EXPECT_NE(fb.find("I4 needs ambient, not ambient, diffuse"), std::string::npos) << fb;
+  EXPECT_NE(fb.find("blocked by glass sphere"), std::string::npos) << fb;
+  ASSERT_TRUE(r.has_mistake("diffuse-in-shadow"));
+  const PartResult* shadows = part(r, "shadows");
+  ASSERT_NE(shadows, nullptr);
+  EXPECT_DOUBLE_EQ(shadows->points, 0.8);  // "diffuse" says the student thought I4 lit
+}
+
+TEST(RayTreeGrade, LitPointGivenAmbientOnlyIsNamed) {
+  nlohmann::json a = seed_answer();
+  a["all_terms"] = {"I1", "I3"};
+  a["ambient_only"] = {"I2", "I4", "I5"};
+  a["nodes"][1].erase("in_shadow");
+  GradeResult r = grade_answer(seed(), a);
+  EXPECT_TRUE(r.has_mistake("lit-point-ambient-only"));
+  EXPECT_NE(all_feedback(*part(r, "terms")).find("reaches the light"), std::string::npos);
+}
+
+// Only the seed's sentence (no tree): terms and shadows are right, the tree is missing.
+TEST(RayTreeGrade, ListsAloneEarnTermsAndShadows) {
+  nlohmann::json a = {{"all_terms", {"I1", "I2", "I3"}}, {"ambient_only", {"I4", "I5"}}};
+  GradeResult r = grade_answer(seed(), a);
+  EXPECT_EQ(part(r, "tree")->status, PartStatus::kMissing);
+  EXPECT_DOUBLE_EQ(part(r, "terms")->points, 1);
+  EXPECT_DOUBLE_EQ(part(r, "shadows")->points, 1);
+  EXPECT_DOUBLE_EQ(r.score, 2);
+}
+
+// Dropping I5 loses one node of five; a reflection drawn from the matte floor costs half a
+// node more and says why the floor spawns none.
+TEST(RayTreeGrade, MissingAndImpossibleRaysCostPartOfTheTree) {
+  nlohmann::json a = seed_answer();
+  a["nodes"].erase(4);
+  a["nodes"].push_back({{"label", "I6"}, {"parent", "I3"}, {"ray", "reflection"},
+                        {"object", "back wall"}});
+  GradeResult r = grade_answer(seed(), a);
+  const PartResult* tree = part(r, "tree");
+  EXPECT_DOUBLE_EQ(tree->points, (4 - 0.5) / 5);
+  std::string fb = all_feedback(*tree);
+  EXPECT_NE(fb.find("Missing: I5"), std::string::npos) << fb;
+  EXPECT_NE(fb.find("floor does not reflect"), std::string::npos) << fb;
+}
+
+TEST(RayTreeGrade, WrongObjectEarnsHalfTheNode) {
+  nlohmann::json a = seed_answer();
+  a["nodes"][2]["object"] = "back wall";
+  GradeResult r = grade_answer(seed(), a);
+  EXPECT_DOUBLE_EQ(part(r, "tree")->points, 4.5 / 5);
+  EXPECT_NE(all_feedback(*part(r, "tree")).find("is on floor, not on back wall"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace raygrade
