@@ -6,7 +6,7 @@
 #include "cli/command.h"
 #include "problems/problem.h"
 #include "reports/json_report.h"
-#include "reports/text.h"
+#include "reports/render.h"
 
 namespace raygrade::cli {
 namespace {
@@ -19,21 +19,12 @@ struct SolveOptions {
   bool steps = false;
 };
 
-// The methods to show for a problem: the chosen one, or every one with --method all.
-std::vector<std::string> methods_for(const Problem& p, const std::string& method) {
-  if (method == "all") return p.task->methods();
-  auto known = p.task->methods();
-  if (!method.empty() && std::find(known.begin(), known.end(), method) != known.end()) {
-    return {method};
-  }
-  return {p.method};
-}
-
 int run_solve(const SolveOptions& o) {
   Bank bank = load_bank(o.paths);
   for (const auto& e : bank.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   nlohmann::json solutions = nlohmann::json::array();
-  std::string text;
+  std::vector<Solution> worked;
+  worked.reserve(bank.problems.size());
   for (const auto& p : bank.problems) {
     NumberFormat numbers = number_format_for(p, o.precision);
     try {
@@ -41,16 +32,14 @@ int run_solve(const SolveOptions& o) {
         nlohmann::json s = {{"id", p.id}, {"kind", p.kind}, {"answer", p.task->answer()}};
         if (o.steps) {
           nlohmann::json all = nlohmann::json::array();
-          for (const auto& m : methods_for(p, o.method)) {
-            for (auto& part : parts_json(p.task->derive(m), numbers)) all.push_back(part);
+          for (const auto& m : make_solution(p, o.method, numbers).methods) {
+            for (auto& part : parts_json(m.parts, numbers)) all.push_back(part);
           }
           s["derivations"] = all;
         }
         solutions.push_back(std::move(s));
       } else {
-        for (const auto& m : methods_for(p, o.method)) {
-          text += render_text(p, p.task->derive(m), numbers) + "\n";
-        }
+        worked.push_back(make_solution(p, o.method, numbers));
       }
     } catch (const Error& e) {
       Diagnostic d = e.diagnostic();
@@ -69,7 +58,9 @@ int run_solve(const SolveOptions& o) {
     }
     std::cout << out.dump(2) << "\n";
   } else {
-    std::cout << text;
+    std::vector<const Solution*> list;
+    for (const auto& w : worked) list.push_back(&w);
+    std::cout << render_document(*parse_format(o.format), list);
   }
   return bank.errors.empty() ? kExitOk : kExitBadInput;
 }
@@ -79,10 +70,14 @@ int run_solve(const SolveOptions& o) {
 Runner setup_solve(CLI::App& sub) {
   auto o = std::make_shared<SolveOptions>();
   sub.add_option("paths", o->paths, "problem files or folders")->required();
-  sub.add_option("--format", o->format, "json (answers), txt or md (worked solutions)")
-      ->check(CLI::IsMember({"json", "txt", "md"}));
+  sub.add_option("--format", o->format,
+                 "json (answers; with --steps, the steps too), or a worked solution as md, html "
+                 "or txt")
+      ->check(CLI::IsMember({"json", "txt", "md", "html"}));
   sub.add_option("--method", o->method, "a method name, or 'all' to show every method");
-  sub.add_option("--precision", o->precision, "decimals shown in worked solutions")
+  sub.add_option("--precision", o->precision,
+                 "decimals shown in worked solutions (default: the problem's precision, else 4 "
+                 "significant digits)")
       ->check(CLI::Range(0, 15));
   sub.add_flag("--steps", o->steps, "with --format json: include the derivation steps");
   return [o] { return run_solve(*o); };

@@ -134,6 +134,16 @@ std::string csv_cell(std::string_view s) {
   return out + "\"";
 }
 
+std::string text_escape(std::string_view s) {
+  std::string out;
+  for (char c : s) {
+    auto u = static_cast<unsigned char>(c);
+    if ((u < 0x20 && c != '\t' && c != '\n') || u == 0x7f) continue;
+    out += c;
+  }
+  return out;
+}
+
 std::string safe_file_name(std::string_view id) {
   std::string out;
   for (char c : id) {

@@ -20,6 +20,9 @@ std::string latex_escape(std::string_view s);
 // A CSV cell: quoted when needed, and a leading = + - @ (or tab, carriage return) neutralised
 // with a leading apostrophe so spreadsheets do not run it as a formula.
 std::string csv_cell(std::string_view s);
+// Plain text for terminals and .txt files: control characters other than tab and newline
+// (terminal escape sequences among them) are dropped.
+std::string text_escape(std::string_view s);
 // A file name made from an id: only [A-Za-z0-9._-], never "." or "..", never empty, at most
 // 100 bytes; other bytes become '_'. It cannot name a path outside its folder.
 std::string safe_file_name(std::string_view id);

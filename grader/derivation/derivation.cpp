@@ -74,7 +74,32 @@ void Deriver::note(std::string text) {
   n = n.empty() ? std::move(text) : n + " " + text;
 }
 
-void Deriver::conclude(std::string sentence) { d_.conclusion.push_back(std::move(sentence)); }
+void Deriver::conclude(std::string sentence) { conclude(Sentence(std::move(sentence))); }
+
+void Deriver::conclude(Sentence sentence) {
+  d_.conclusion.push_back(sentence.plain());
+  d_.sentences.push_back(std::move(sentence));
+}
+
+Sentence& Sentence::text(std::string words) {
+  if (!parts_.empty() && parts_.back().value.kind == Value::Kind::kNone) {
+    parts_.back().text += words;
+  } else {
+    parts_.push_back(Part{std::move(words), Value()});
+  }
+  return *this;
+}
+
+Sentence& Sentence::value(const Value& v) {
+  parts_.push_back(Part{"", v});
+  return *this;
+}
+
+std::string Sentence::plain(const NumberFormat& f) const {
+  std::string out;
+  for (const auto& p : parts_) out += p.value.kind == Value::Kind::kNone ? p.text : format_value(p.value, f);
+  return out;
+}
 
 Derivation Deriver::finish() && { return std::move(d_); }
 

@@ -22,11 +22,33 @@ struct Step {
   bool overridden = false;  // the value came from Overrides (a student's own earlier value)
 };
 
+// A sentence of a conclusion: words with numbers in them, kept as values so that each output
+// shows them at its own precision (and in exact form where one exists).
+class Sentence {
+ public:
+  struct Part {
+    std::string text;  // words, when `value` is empty
+    Value value;       // a number or a point, when its kind is not kNone
+  };
+
+  Sentence() = default;
+  explicit Sentence(std::string words) { text(std::move(words)); }
+  Sentence& text(std::string words);
+  Sentence& value(const Value& v);
+  const std::vector<Part>& parts() const { return parts_; }
+  // The sentence with its numbers written by format_value (points as (x, y, z)).
+  std::string plain(const NumberFormat& f = {}) const;
+
+ private:
+  std::vector<Part> parts_;
+};
+
 struct Derivation {
   std::string method;  // "geometric", "algebraic", "slab", ...
   std::string title;   // "Sphere, geometric method"
   std::vector<Step> steps;
   std::vector<std::string> conclusion;  // sentences in plain words
+  std::vector<Sentence> sentences;      // the same sentences, with their numbers as values
 
   const Step* find(std::string_view name) const;
 };
@@ -57,6 +79,7 @@ class Deriver {
   // Adds a note to the last step.
   void note(std::string text);
   void conclude(std::string sentence);
+  void conclude(Sentence sentence);
 
   const Env& env() const { return env_; }
   Derivation finish() &&;

@@ -2,6 +2,7 @@
 #include "derivation/expr.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 #include "core/error.h"
@@ -51,6 +52,12 @@ E sym(std::string name, std::string display) {
   return wrap(n);
 }
 
+E sym(std::string name, const E& shown) {
+  auto n = make(Op::kSymbol, {shown});
+  n->name = std::move(name);
+  return wrap(n);
+}
+
 E vec(const Vec3d& v) {
   auto n = make(Op::kVector);
   n->vector = v;
@@ -64,6 +71,12 @@ E operator/(const E& a, const E& b) { return wrap(make(Op::kDiv, {a, b})); }
 E operator-(const E& a) { return wrap(make(Op::kNeg, {a})); }
 E dot(const E& a, const E& b) { return wrap(make(Op::kDot, {a, b})); }
 E cross(const E& a, const E& b) { return wrap(make(Op::kCross, {a, b})); }
+E cross_written_out(const E& a, const E& b) {
+  auto n = make(Op::kCross, {a, b});
+  n->written_out = true;
+  return wrap(n);
+}
+E tuple(const E& x, const E& y, const E& z) { return wrap(make(Op::kTuple, {x, y, z})); }
 E sqrt(const E& a) { return wrap(make(Op::kSqrt, {a})); }
 E square(const E& a) { return wrap(make(Op::kSquare, {a})); }
 E abs(const E& a) { return wrap(make(Op::kAbs, {a})); }
@@ -153,6 +166,7 @@ Value evaluate(const E& e, const Env& env) {
                            : a != b;
       return Value::verdict(t);
     }
+    case Op::kTuple: return Vec3d{scalar(arg(0)), scalar(arg(1)), scalar(arg(2))};
   }
   defect("unknown operation");
 }
@@ -167,7 +181,7 @@ int precedence(const ExprNode& n, const RenderOptions& o) {
     case Op::kCompare: return 0;
     case Op::kAdd:
     case Op::kSub: return 1;
-    case Op::kMul:
+    case Op::kMul: return n.implicit ? 3 : 2;
     case Op::kDot:
     case Op::kCross: return 2;
     case Op::kNeg: return 3;
@@ -176,9 +190,11 @@ int precedence(const ExprNode& n, const RenderOptions& o) {
     case Op::kSymbol:
       if (o.substitute) {
         auto it = o.substitute->find(n.name);
-        if (it != o.substitute->end() && it->second.is_scalar() && it->second.scalar < 0) return 3;
+        if (it != o.substitute->end()) {
+          return it->second.is_scalar() && it->second.scalar < 0 ? 3 : 5;
+        }
       }
-      return 5;
+      return n.args.empty() ? 5 : precedence(n.args[0].node(), o);
     default: return 5;
   }
 }
@@ -200,29 +216,35 @@ struct Dialect {
   std::string comma;
 };
 
-std::string render(const E& e, const Dialect& d, const RenderOptions& o);
+// `leading`: the formula is the first thing in its group, where a negative number needs no
+// parentheses ("−3 · x" but "x + (−3)").
+std::string render(const E& e, const Dialect& d, const RenderOptions& o, bool leading = true);
 
-std::string render_number(double v, const Dialect& d, const RenderOptions& o) {
+std::string render_number(double v, const Dialect& d, const RenderOptions& o, bool leading) {
   std::string s = format_number(v, o.numbers);
-  if (!std::isfinite(v) && !std::isinf(v)) return d.word(s);
-  return d.number(s);
+  if (std::isnan(v)) return d.word(s);
+  s = d.number(s);
+  return v < 0 && !leading ? d.paren(s) : s;
 }
 
-std::string render_value(const Value& v, const Dialect& d, const RenderOptions& o) {
+std::string render_value(const Value& v, const Dialect& d, const RenderOptions& o,
+                         bool leading) {
   switch (v.kind) {
-    case Value::Kind::kScalar: return render_number(v.scalar, d, o);
+    case Value::Kind::kScalar: return render_number(v.scalar, d, o, leading);
     case Value::Kind::kVector:
-      return d.vector(render_number(v.vector.x, d, o), render_number(v.vector.y, d, o),
-                      render_number(v.vector.z, d, o));
+      return d.vector(render_number(v.vector.x, d, o, true), render_number(v.vector.y, d, o, true),
+                      render_number(v.vector.z, d, o, true));
     case Value::Kind::kBool: return d.word(v.truth ? "true" : "false");
     case Value::Kind::kNone: break;
   }
   return d.word("?");
 }
 
-std::string child(const E& c, int min_prec, const Dialect& d, const RenderOptions& o) {
-  std::string s = render(c, d, o);
-  return precedence(c.node(), o) < min_prec ? d.paren(s) : s;
+std::string child(const E& c, int min_prec, const Dialect& d, const RenderOptions& o,
+                  bool leading) {
+  bool paren = precedence(c.node(), o) < min_prec;
+  std::string s = render(c, d, o, paren || leading);
+  return paren ? d.paren(s) : s;
 }
 
 const char* relation_text(const std::string& r) {
@@ -232,26 +254,53 @@ const char* relation_text(const std::string& r) {
   return r.c_str();
 }
 
-std::string render(const E& e, const Dialect& d, const RenderOptions& o) {
+// a × b by components, with the numbers of a and b: ⟨a_y·b_z − a_z·b_y, …⟩.
+std::optional<E> cross_components(const ExprNode& n, const RenderOptions& o) {
+  if (!o.substitute) return std::nullopt;
+  Value a, b;
+  try {
+    a = evaluate(n.args[0], *o.substitute);
+    b = evaluate(n.args[1], *o.substitute);
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+  if (!a.is_vector() || !b.is_vector()) return std::nullopt;
+  auto part = [&](int i, int j) {
+    return E(a.vector[i]) * E(b.vector[j]) - E(a.vector[j]) * E(b.vector[i]);
+  };
+  return tuple(part(1, 2), part(2, 0), part(0, 1));
+}
+
+std::string render(const E& e, const Dialect& d, const RenderOptions& o, bool leading) {
   const ExprNode& n = e.node();
   switch (n.op) {
-    case Op::kNumber: return render_number(n.number, d, o);
-    case Op::kVector: return render_value(Value(n.vector), d, o);
+    case Op::kNumber: return render_number(n.number, d, o, leading);
+    case Op::kVector: return render_value(Value(n.vector), d, o, leading);
     case Op::kSymbol:
       if (o.substitute) {
         auto it = o.substitute->find(n.name);
-        if (it != o.substitute->end()) return render_value(it->second, d, o);
+        if (it != o.substitute->end()) return render_value(it->second, d, o, leading);
       }
+      if (!n.args.empty()) return render(n.args[0], d, o, leading);
       return d.symbol(n);
-    case Op::kAdd: return child(n.args[0], 1, d, o) + d.op("+") + child(n.args[1], 2, d, o);
-    case Op::kSub: return child(n.args[0], 1, d, o) + d.op("−") + child(n.args[1], 2, d, o);
-    case Op::kMul: return child(n.args[0], 2, d, o) + d.op("·") + child(n.args[1], 3, d, o);
-    case Op::kDot: return child(n.args[0], 3, d, o) + d.op("·") + child(n.args[1], 3, d, o);
-    case Op::kCross: return child(n.args[0], 3, d, o) + d.op("×") + child(n.args[1], 3, d, o);
+    case Op::kAdd:
+      return child(n.args[0], 1, d, o, leading) + d.op("+") + child(n.args[1], 2, d, o, false);
+    case Op::kSub:
+      return child(n.args[0], 1, d, o, leading) + d.op("−") + child(n.args[1], 2, d, o, false);
+    case Op::kMul:
+      if (n.implicit) return child(n.args[0], 3, d, o, leading) + child(n.args[1], 4, d, o, false);
+      return child(n.args[0], 2, d, o, leading) + d.op("·") + child(n.args[1], 3, d, o, false);
+    case Op::kDot:
+      return child(n.args[0], 3, d, o, leading) + d.op("·") + child(n.args[1], 3, d, o, false);
+    case Op::kCross:
+      if (n.written_out) {
+        if (auto parts = cross_components(n, o)) return render(*parts, d, o, leading);
+      }
+      return child(n.args[0], 3, d, o, leading) + d.op("×") + child(n.args[1], 3, d, o, false);
     case Op::kDiv: return d.frac(render(n.args[0], d, o), render(n.args[1], d, o));
-    case Op::kNeg: return d.op("-") + child(n.args[0], 4, d, o);
+    case Op::kNeg: return d.op("-") + child(n.args[0], 4, d, o, false);
     case Op::kSqrt: return d.sqrt(render(n.args[0], d, o));
-    case Op::kSquare: return d.square(child(n.args[0], 5, d, o));
+    case Op::kSquare: return d.square(child(n.args[0], 5, d, o, true));
     case Op::kAbs: return d.abs(render(n.args[0], d, o));
     case Op::kNorm: return d.norm(render(n.args[0], d, o));
     case Op::kMin:
@@ -265,6 +314,8 @@ std::string render(const E& e, const Dialect& d, const RenderOptions& o) {
     }
     case Op::kCompare:
       return render(n.args[0], d, o) + d.op(relation_text(n.relation)) + render(n.args[1], d, o);
+    case Op::kTuple:
+      return d.vector(render(n.args[0], d, o), render(n.args[1], d, o), render(n.args[2], d, o));
   }
   return "";
 }
@@ -305,7 +356,7 @@ const std::string& latex_op(const std::string& t) {
   static const std::map<std::string, std::string> ops = {
       {"+", " + "},       {"−", " - "}, {"-", "-"},     {"·", " \\cdot "},
       {"×", " \\times "}, {"<", " < "}, {">", " > "},   {"≤", " \\le "},
-      {"≥", " \\ge "},    {"=", " = "}, {"≠", " \\ne "}};
+      {"≥", " \\ge "},    {"=", " = "}, {"≠", " \\ne "},    {"≈", " \\approx "}};
   auto it = ops.find(t);
   return it == ops.end() ? t : it->second;
 }
@@ -389,7 +440,7 @@ const Dialect& mathml_dialect() {
 
 const Dialect& text_dialect() {
   static const Dialect d{
-      [](const std::string& s) { return s; },
+      [](const std::string& s) { return !s.empty() && s[0] == '-' ? "−" + s.substr(1) : s; },
       [](const std::string& s) { return s; },
       [](const ExprNode& n) {
         std::string s = text_part(n.base);
@@ -408,10 +459,13 @@ const Dialect& text_dialect() {
       [](const std::string& s) { return "(" + s + ")"; },
       [](const std::string& a, const std::string& b) {
         bool simple_a = a.find(' ') == std::string::npos;
-        bool simple_b = b.find(' ') == std::string::npos;
+        bool simple_b = b.find(' ') == std::string::npos && b.rfind("−", 0) != 0;
         return (simple_a ? a : "(" + a + ")") + " / " + (simple_b ? b : "(" + b + ")");
       },
-      [](const std::string& a) { return "√(" + a + ")"; },
+      [](const std::string& a) {
+        bool simple = a.find(' ') == std::string::npos && a.find('/') == std::string::npos;
+        return simple ? "√" + a : "√(" + a + ")";
+      },
       [](const std::string& a) { return a + "²"; },
       [](const std::string& a) { return "|" + a + "|"; },
       [](const std::string& a) { return "‖" + a + "‖"; },
@@ -425,5 +479,51 @@ const Dialect& text_dialect() {
 std::string to_latex(const E& e, const RenderOptions& o) { return render(e, latex_dialect(), o); }
 std::string to_mathml(const E& e, const RenderOptions& o) { return render(e, mathml_dialect(), o); }
 std::string to_text(const E& e, const RenderOptions& o) { return render(e, text_dialect(), o); }
+
+namespace {
+
+// The exact form as a formula: (p + s√k)/q.
+E exact_formula(const ExactForm& x) {
+  E root;
+  if (x.s != 0) {
+    E r = raygrade::sqrt(E(static_cast<double>(x.k)));
+    if (std::llabs(x.s) != 1) {
+      auto n = make(Op::kMul, {E(static_cast<double>(std::llabs(x.s))), r});
+      n->implicit = true;
+      r = wrap(n);
+    }
+    root = r;
+  }
+  E top;
+  if (x.s == 0) {
+    top = E(static_cast<double>(x.p));
+  } else if (x.p == 0) {
+    top = x.s < 0 ? -root : root;
+  } else {
+    top = x.s < 0 ? E(static_cast<double>(x.p)) - root : E(static_cast<double>(x.p)) + root;
+  }
+  return x.q == 1 ? top : top / E(static_cast<double>(x.q));
+}
+
+std::string render_result(const Value& v, const Dialect& d, const RenderOptions& o) {
+  if (o.exact && v.is_scalar()) {
+    if (auto x = exact_form(v.scalar)) {
+      return render(exact_formula(*x), d, o) + d.op("≈") + render_number(v.scalar, d, o, true);
+    }
+  }
+  return render_value(v, d, o, true);
+}
+
+}  // namespace
+
+std::string value_latex(const Value& v, const RenderOptions& o) {
+  return render_result(v, latex_dialect(), o);
+}
+std::string value_mathml(const Value& v, const RenderOptions& o) {
+  return render_result(v, mathml_dialect(), o);
+}
+std::string value_text(const Value& v, const RenderOptions& o) {
+  return render_result(v, text_dialect(), o);
+}
 
 }  // namespace raygrade

@@ -33,6 +33,7 @@ enum class Op {
   kMin,
   kMax,
   kCompare,  // a relation shown as "a < b", "a ≥ b"; evaluates to a verdict
+  kTuple,    // a vector from three scalar formulas: ⟨a, b, c⟩
 };
 
 struct ExprNode;
@@ -59,11 +60,18 @@ struct ExprNode {
   // `base`, `sub` and `sup` are how it is shown (t with subscript "ca"; d with superscript 2).
   std::string name, base, sub, sup;
   std::string relation;  // for kCompare: "<", "<=", ">", ">=", "=", "!="
+  // kMul: shown without a sign (2√3). kCross: with numbers substituted, written out by
+  // components (⟨a_y b_z − a_z b_y, …⟩) before the result.
+  bool implicit = false;
+  bool written_out = false;
+  // kSymbol: args[0], when present, is how the symbol is shown (N · R rather than a letter).
   std::vector<E> args;
 };
 
 // A symbol. `display` is "t_ca" (subscript), "d^2" (superscript), or plain "L".
 E sym(std::string name, std::string display = "");
+// A symbol shown as a formula: the step "denominator" shown as N · R.
+E sym(std::string name, const E& shown);
 E vec(const Vec3d& v);
 E operator+(const E& a, const E& b);
 E operator-(const E& a, const E& b);
@@ -72,6 +80,9 @@ E operator/(const E& a, const E& b);
 E operator-(const E& a);
 E dot(const E& a, const E& b);
 E cross(const E& a, const E& b);
+// a × b, written out by components when its numbers are substituted.
+E cross_written_out(const E& a, const E& b);
+E tuple(const E& x, const E& y, const E& z);
 E sqrt(const E& a);
 E square(const E& a);
 E abs(const E& a);
@@ -91,11 +102,18 @@ Value evaluate(const E& e, const Env& env);
 struct RenderOptions {
   const Env* substitute = nullptr;  // when set, symbols with values print as numbers
   NumberFormat numbers;
+  // Values (not formulas) with an exact form print as "9 − √3 ≈ 7.268".
+  bool exact = false;
 };
 
 std::string to_latex(const E& e, const RenderOptions& o = {});
 std::string to_mathml(const E& e, const RenderOptions& o = {});  // the inner MathML, no <math>
 std::string to_text(const E& e, const RenderOptions& o = {});
+
+// A value (the result of a step), with its exact form when `o.exact` is set.
+std::string value_latex(const Value& v, const RenderOptions& o = {});
+std::string value_mathml(const Value& v, const RenderOptions& o = {});
+std::string value_text(const Value& v, const RenderOptions& o = {});
 
 // A symbol shown alone (for the left side of "t_ca = ...").
 inline std::string symbol_latex(const E& s) { return to_latex(s); }

@@ -1,6 +1,7 @@
 // How numbers appear to people: 1 rather than 1.000000, 7.27 at a chosen precision.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "derivation/value.h"
@@ -22,5 +23,24 @@ std::string format_number(double v, const NumberFormat& f = {});
 std::string format_vector(const Vec3d& v, const NumberFormat& f = {});
 
 std::string format_value(const Value& v, const NumberFormat& f = {});
+
+// A number of the form (p + s·√k) / q with small integers, as people write it when a square
+// root or a fraction appears in an exercise: 9 − √3, (1 + √5)/2, 1/6, 2√2. `k` is square-free
+// (1 when there is no root, so the number is the fraction p/q); q >= 1; gcd(p, s, q) = 1.
+struct ExactForm {
+  long long p = 0;
+  long long s = 0;
+  long long k = 1;
+  long long q = 1;
+};
+
+// The exact form of `v` when one with small parts matches it to rounding and its decimal
+// form would be rounded; nothing for integers, short decimals (0.5, 1.25) and numbers with
+// no small exact form. Small means: q <= 12 for fractions; q in {1, 2, 3, 4, 6}, k <= 30 and
+// |s| <= 12 for roots; |p| <= 10000.
+std::optional<ExactForm> exact_form(double v);
+
+// "9 − √3", "(1 + √5)/2", "1/6", "−2√2".
+std::string exact_text(const ExactForm& e);
 
 }  // namespace raygrade

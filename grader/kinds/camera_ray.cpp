@@ -76,13 +76,36 @@ std::vector<SolutionPart> CameraRayTask::derive(std::string_view /*method*/,
   }
   Value dr = d.step("d_r", "d_r", f * dir + d.sym("x_diff") * d.sym("v") + d.sym("y_diff") * u,
                     "f·d reaches the image plane's centre; then move across and up");
-  d.conclude(
-      fmt::format("The ray through pixel ({}, {}) starts at the eye {} with direction {} "
-                  "(pixel {} convention).",
-                  format_number(x_), format_number(y_), format_vector(cam_.eye),
-                  format_vector(dr.vector), corner ? "corner" : "centre"));
+  d.conclude(Sentence(fmt::format("The ray through pixel ({}, {}) starts at the eye ",
+                                  format_number(x_), format_number(y_)))
+                 .value(cam_.eye)
+                 .text(" with direction ")
+                 .value(dr.vector)
+                 .text(corner ? " (seed 004's convention: offsets from the pixel's corner)."
+                              : " (through the pixel's centre)."));
   (void)e;
   return {SolutionPart{"", std::move(d).finish()}};
+}
+
+// The eye, the image plane (resX by resY pixels of size 1, at distance f along d), the pixel
+// the ray passes through, and the ray itself, drawn a little past the image plane.
+Sketch CameraRayTask::sketch() const {
+  Sketch f;
+  f.across = cam_.direction;
+  f.across_name = "the viewing direction d";
+  Vec3d v = cross(cam_.direction, cam_.up);
+  Vec3d center = cam_.eye + cam_.focal_length * cam_.direction;
+  double hx = cam_.res_x / 2.0, hy = cam_.res_y / 2.0;
+  f.path({center - hx * v - hy * cam_.up, center + hx * v - hy * cam_.up,
+          center + hx * v + hy * cam_.up, center - hx * v + hy * cam_.up},
+         true, Ink::kGuide, "image plane");
+  f.path({cam_.eye, center}, false, Ink::kGuide, "f·d");
+  Vec3d dr = camera_ray_direction(cam_, x_, y_, convention_);
+  f.arrow(cam_.eye, cam_.eye + 1.3 * dr, Ink::kRay);
+  f.point(cam_.eye, Ink::kPoint, "eye");
+  f.point(cam_.eye + dr, Ink::kHit,
+          fmt::format("pixel ({}, {})", format_number(x_), format_number(y_)));
+  return f;
 }
 
 }  // namespace raygrade

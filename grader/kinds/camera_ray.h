@@ -37,6 +37,7 @@ class CameraRayTask final : public Task {
   std::vector<std::string> methods() const override { return {"image-plane"}; }
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
+  Sketch sketch() const override;
 
   const Camera& camera() const { return cam_; }
   PixelConvention convention() const { return convention_; }

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "derivation/number_format.h"
+#include "kinds/sketch.h"
 
 namespace raygrade {
 
@@ -19,6 +20,15 @@ std::vector<SolutionPart> IntersectTask::derive(std::string_view method,
                                                 const Overrides* overrides) const {
   std::string_view m = method.empty() ? std::string_view(method_) : method;
   return {SolutionPart{"", object_->derive(ray_, m, overrides)}};
+}
+
+Sketch IntersectTask::sketch() const {
+  Sketch f;
+  object_->sketch(f, "");
+  Intersection x = object_->intersect(ray_);
+  sketch_ray(f, ray_, {object_.get()}, x.hits);
+  for (const auto& h : x.hits) sketch_hit(f, h, Ink::kHit);
+  return f;
 }
 
 std::vector<NamedShape> read_named_objects(const Cursor& list) {
@@ -115,8 +125,11 @@ std::vector<SolutionPart> FirstHitTask::derive(std::string_view method,
     d.conclude("The ray hits none of the objects.");
   } else {
     if (ts.size() > 1) d.step("t_first", "t_first", min(ts), "the smallest of them");
-    d.conclude(fmt::format("The ray first hits {} at t = {}, at P = {}.", objects_[f.index].name,
-                           format_number(f.hit.t), format_vector(f.hit.point)));
+    d.conclude(Sentence(fmt::format("The ray first hits {} at t = ", objects_[f.index].name))
+                   .value(f.hit.t)
+                   .text(", at P = ")
+                   .value(f.hit.point)
+                   .text("."));
     for (std::size_t i = 0; i < objects_.size(); ++i) {
       if (!f.nearest[i]) d.conclude(fmt::format("{} is not hit.", objects_[i].name));
     }
@@ -124,6 +137,27 @@ std::vector<SolutionPart> FirstHitTask::derive(std::string_view method,
   }
   parts.push_back(SolutionPart{"The first hit", std::move(d).finish()});
   return parts;
+}
+
+Sketch FirstHitTask::sketch() const {
+  Sketch f;
+  std::vector<const Shape*> shapes;
+  for (const auto& o : objects_) {
+    o.shape->sketch(f, o.name);
+    shapes.push_back(o.shape.get());
+  }
+  FirstHit first = first_hit(ray_, objects_);
+  std::vector<Hit> hits;
+  for (const auto& h : first.nearest) {
+    if (h) hits.push_back(*h);
+  }
+  sketch_ray(f, ray_, shapes, hits);
+  for (std::size_t i = 0; i < objects_.size(); ++i) {
+    if (!first.nearest[i] || static_cast<int>(i) == first.index) continue;
+    sketch_hit(f, *first.nearest[i], Ink::kPoint);
+  }
+  if (first.index >= 0) sketch_hit(f, first.hit, Ink::kHit, "first hit, ");
+  return f;
 }
 
 }  // namespace raygrade

@@ -17,6 +17,7 @@ class IntersectTask final : public Task {
   std::vector<std::string> methods() const override { return object_->methods(); }
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
+  Sketch sketch() const override;
 
   const Ray& ray() const { return ray_; }
   const Shape& object() const { return *object_; }
@@ -52,6 +53,7 @@ class FirstHitTask final : public Task {
   std::vector<std::string> methods() const override;
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
+  Sketch sketch() const override;
 
   const Ray& ray() const { return ray_; }
   const std::vector<NamedShape>& objects() const { return objects_; }

@@ -9,6 +9,7 @@
 
 #include "derivation/derivation.h"
 #include "json/cursor.h"
+#include "shapes/sketch.h"
 #include "shapes/ray.h"
 
 namespace raygrade {
@@ -49,6 +50,9 @@ class Task {
                                            const Overrides* overrides = nullptr) const = 0;
   // Sentences that sum up the answer (the last part's conclusion, for most kinds).
   virtual std::vector<std::string> conclusion() const;
+  // The sketch of the worked solution: the objects, the ray, the hit points. Empty (no
+  // sketch) unless the kind draws one.
+  virtual Sketch sketch() const { return {}; }
 };
 
 struct Problem {

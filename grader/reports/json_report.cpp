@@ -22,6 +22,7 @@ nlohmann::json derivation_json(const Derivation& d, const NumberFormat& numbers)
   for (const auto& s : d.steps) {
     nlohmann::json j = {{"name", s.name},
                         {"symbol", to_latex(s.symbol)},
+                        {"symbol_text", to_text(s.symbol)},
                         {"value", value_json(s.value)},
                         {"shown", format_value(s.value, numbers)}};
     if (s.given) {
@@ -31,12 +32,18 @@ nlohmann::json derivation_json(const Derivation& d, const NumberFormat& numbers)
       j["formula"] = to_latex(s.formula);
       j["substituted"] = to_latex(s.formula, subst);
       j["formula_text"] = to_text(s.formula);
+      j["substituted_text"] = to_text(s.formula, subst);
     }
     if (!s.note.empty()) j["note"] = s.note;
+    if (s.value.is_scalar()) {
+      if (auto x = exact_form(s.value.scalar)) j["exact"] = exact_text(*x);
+    }
     steps.push_back(std::move(j));
     env[s.name] = s.value;
   }
-  return {{"method", d.method}, {"title", d.title}, {"steps", steps}, {"conclusion", d.conclusion}};
+  nlohmann::json conclusion = nlohmann::json::array();
+  for (const auto& s : d.sentences) conclusion.push_back(sentence_text(s, numbers));
+  return {{"method", d.method}, {"title", d.title}, {"steps", steps}, {"conclusion", conclusion}};
 }
 
 nlohmann::json parts_json(const std::vector<SolutionPart>& parts, const NumberFormat& numbers) {
@@ -44,9 +51,28 @@ nlohmann::json parts_json(const std::vector<SolutionPart>& parts, const NumberFo
   for (const auto& p : parts) {
     nlohmann::json j = derivation_json(p.derivation, numbers);
     if (!p.heading.empty()) j["heading"] = p.heading;
+    for (const auto& f : p.figures) {
+      nlohmann::json fj = {{"caption", f.caption}};
+      if (!f.dot.empty()) fj["dot"] = f.dot;
+      if (!f.text.empty()) fj["text"] = f.text;
+      j["figures"].push_back(std::move(fj));
+    }
     out.push_back(std::move(j));
   }
   return out;
+}
+
+nlohmann::json solution_json(const Solution& solution) {
+  const Problem& p = *solution.problem;
+  nlohmann::json methods = nlohmann::json::array();
+  for (const auto& m : solution.methods) {
+    methods.push_back({{"method", m.method}, {"parts", parts_json(m.parts, solution.numbers)}});
+  }
+  nlohmann::json j = {{"id", p.id}, {"kind", p.kind}, {"answer", p.task->answer()}};
+  if (!p.title.empty()) j["title"] = p.title;
+  if (!p.statement.empty()) j["statement"] = p.statement;
+  j["methods"] = methods;
+  return j;
 }
 
 nlohmann::json diagnostic_json(const Diagnostic& d) {

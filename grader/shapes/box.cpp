@@ -144,4 +144,17 @@ Derivation Box::derive(const Ray& ray, std::string_view /*method*/,
   return std::move(d).finish();
 }
 
+void Box::sketch(Sketch& figure, const std::string& label) const {
+  // The twelve edges: from each corner with a low coordinate, one step along that axis.
+  for (int corner = 0; corner < 8; ++corner) {
+    Vec3d p{corner & 1 ? hi_.x : lo_.x, corner & 2 ? hi_.y : lo_.y, corner & 4 ? hi_.z : lo_.z};
+    for (int axis = 0; axis < 3; ++axis) {
+      if (corner & (1 << axis)) continue;
+      Vec3d q = p;
+      q[axis] = hi_[axis];
+      figure.path({p, q}, false, Ink::kObject, corner == 0 && axis == 0 ? label : "");
+    }
+  }
+}
+
 }  // namespace raygrade

@@ -55,6 +55,7 @@ class Box final : public Shape {
   nlohmann::json to_json() const override;
   Vec3d center() const override { return (lo_ + hi_) / 2.0; }
   double extent() const override { return length(hi_ - lo_) / 2; }
+  void sketch(Sketch& figure, const std::string& label) const override;
 
  private:
   Vec3d lo_, hi_;

@@ -204,4 +204,8 @@ Derivation Cylinder::derive(const Ray& ray, std::string_view /*method*/,
   return std::move(d).finish();
 }
 
+void Cylinder::sketch(Sketch& figure, const std::string& label) const {
+  figure.cylinder(base_, axis_, radius_, height_ ? *height_ : 0, Ink::kObject, label);
+}
+
 }  // namespace raygrade

@@ -53,6 +53,7 @@ class Cylinder final : public Shape {
   nlohmann::json to_json() const override;
   Vec3d center() const override;
   double extent() const override;
+  void sketch(Sketch& figure, const std::string& label) const override;
 
  private:
   Vec3d base_;

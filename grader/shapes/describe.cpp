@@ -22,26 +22,36 @@ void conclude_candidates(Deriver& d, const std::string& object, const Ray& /*ray
   for (const auto& c : candidates) {
     if (c.rejected.empty()) hits.push_back(&c);
   }
-  auto at = [](const Candidate* c) {
-    return fmt::format("t = {}, at P = {}", format_number(c->t), format_vector(c->point));
+  // "t = 1, at P = (1, 0, 0)"
+  auto at = [](Sentence& s, const Candidate* c) {
+    s.text("t = ").value(c->t).text(", at P = ").value(c->point);
   };
+  Sentence s;
   if (hits.empty()) {
-    d.conclude(fmt::format("The ray does not hit the {}.", object));
+    s.text(fmt::format("The ray does not hit the {}.", object));
   } else if (hits.size() == 1) {
     bool tangent = solid && candidates.size() == 1;
-    d.conclude(
-        fmt::format("The ray {} the {} at {}.", tangent ? "touches" : "hits", object, at(hits[0])));
+    s.text(fmt::format("The ray {} the {} at ", tangent ? "touches" : "hits", object));
+    at(s, hits[0]);
+    s.text(".");
   } else if (solid && hits.size() == 2) {
-    d.conclude(fmt::format("The ray enters the {} at {}, and leaves at {}.", object, at(hits[0]),
-                           at(hits[1])));
+    s.text(fmt::format("The ray enters the {} at ", object));
+    at(s, hits[0]);
+    s.text(", and leaves at ");
+    at(s, hits[1]);
+    s.text(".");
   } else {
-    std::string list;
-    for (std::size_t i = 0; i < hits.size(); ++i) list += (i ? "; " : "") + at(hits[i]);
-    d.conclude(fmt::format("The ray hits the {} at {}.", object, list));
+    s.text(fmt::format("The ray hits the {} at ", object));
+    for (std::size_t i = 0; i < hits.size(); ++i) {
+      if (i) s.text("; ");
+      at(s, hits[i]);
+    }
+    s.text(".");
   }
+  d.conclude(std::move(s));
   for (const auto& c : candidates) {
     if (!c.rejected.empty()) {
-      d.conclude(fmt::format("t = {} is not a hit: {}.", format_number(c.t), c.rejected));
+      d.conclude(Sentence("t = ").value(c.t).text(fmt::format(" is not a hit: {}.", c.rejected)));
     }
   }
 }

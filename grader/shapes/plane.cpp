@@ -120,4 +120,8 @@ Derivation Plane::derive(const Ray& ray, std::string_view method,
   return std::move(d).finish();
 }
 
+void Plane::sketch(Sketch& figure, const std::string& label) const {
+  figure.plane(some_point(), normal_, Ink::kObject, label);
+}
+
 }  // namespace raygrade

@@ -22,6 +22,7 @@ class Plane final : public Shape {
   nlohmann::json to_json() const override;
   Vec3d center() const override;
   double extent() const override { return 1; }
+  void sketch(Sketch& figure, const std::string& label) const override;
 
  private:
   // A point of the plane (the given one, or the one closest to the world origin).

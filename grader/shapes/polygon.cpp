@@ -162,4 +162,8 @@ Derivation Polygon::derive(const Ray& ray, std::string_view method,
   return std::move(d).finish();
 }
 
+void Polygon::sketch(Sketch& figure, const std::string& label) const {
+  figure.path(v_, true, Ink::kObject, label);
+}
+
 }  // namespace raygrade

@@ -18,6 +18,7 @@ class Polygon final : public Shape {
   nlohmann::json to_json() const override;
   Vec3d center() const override;
   double extent() const override;
+  void sketch(Sketch& figure, const std::string& label) const override;
 
   bool convex() const { return convex_; }
 

@@ -9,6 +9,7 @@
 
 #include "derivation/derivation.h"
 #include "json/cursor.h"
+#include "shapes/sketch.h"
 #include "shapes/ray.h"
 
 namespace raygrade {
@@ -36,6 +37,12 @@ class Shape {
   // A point and size that frame the object in a figure.
   virtual Vec3d center() const = 0;
   virtual double extent() const = 0;
+
+  // Draws the object into a worked solution's sketch. The default, for a primitive that
+  // has no drawing of its own, is a dashed circle that frames it.
+  virtual void sketch(Sketch& figure, const std::string& label) const {
+    figure.circle(center(), extent(), Ink::kGuide, label);
+  }
 };
 
 // One row of the table of primitives: the `type` key in problem files and its reader.

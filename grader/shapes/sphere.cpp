@@ -136,4 +136,8 @@ Derivation Sphere::derive_algebraic(const Ray& ray, const Overrides* overrides) 
   return std::move(d).finish();
 }
 
+void Sphere::sketch(Sketch& figure, const std::string& label) const {
+  figure.circle(center_, radius_, Ink::kObject, label);
+}
+
 }  // namespace raygrade

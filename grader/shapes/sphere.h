@@ -101,6 +101,7 @@ class Sphere final : public Shape {
   nlohmann::json to_json() const override;
   Vec3d center() const override { return center_; }
   double extent() const override { return radius_; }
+  void sketch(Sketch& figure, const std::string& label) const override;
 
   double radius() const { return radius_; }
 

@@ -103,4 +103,8 @@ Derivation Triangle::derive(const Ray& ray, std::string_view /*method*/,
   return std::move(d).finish();
 }
 
+void Triangle::sketch(Sketch& figure, const std::string& label) const {
+  figure.path({v_[0], v_[1], v_[2]}, true, Ink::kObject, label);
+}
+
 }  // namespace raygrade

@@ -96,6 +96,7 @@ class Triangle final : public Shape {
   nlohmann::json to_json() const override;
   Vec3d center() const override { return (v_[0] + v_[1] + v_[2]) / 3.0; }
   double extent() const override;
+  void sketch(Sketch& figure, const std::string& label) const override;
 
   const std::array<Vec3d, 3>& vertices() const { return v_; }
 

@@ -1,0 +1,17 @@
+// Markdown worked solutions with LaTeX math ($...$ and $$...$$), as GitHub renders them.
+#pragma once
+
+#include <string>
+
+#include "reports/solution.h"
+
+namespace raygrade {
+
+struct DocumentOptions {
+  std::string generated;  // the first line's note (who generated the file, how); empty: none
+  std::string html_link;  // Markdown: a link to the HTML page with the sketch; empty: none
+};
+
+std::string render_markdown(const Solution& solution, const DocumentOptions& options = {});
+
+}  // namespace raygrade

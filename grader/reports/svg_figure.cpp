@@ -1,0 +1,383 @@
+// Drawing a Sketch as SVG: choosing the view, projecting, clipping lines to the frame.
+#include "reports/svg_figure.h"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <optional>
+
+#include "core/escape.h"
+#include "derivation/number_format.h"
+
+namespace raygrade {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// Directions shorter than this (they are unit or zero) count as zero: a candidate up
+// direction parallel to the main one, a cylinder seen along its axis.
+constexpr double kTinyDirection = 1e-9;
+// Rims of cylinders are drawn as polygons with this many sides.
+constexpr int kRimSides = 48;
+// The drawing's size in pixels, and the blank border around the figure, as a fraction.
+constexpr double kMaxWidth = 560, kMaxHeight = 380, kMargin = 0.12;
+// Neither side of the frame is shorter than this fraction of the other, so that a figure
+// along one line still has room for its labels.
+constexpr double kMinAspect = 0.45;
+
+struct P2 {
+  double x = 0, y = 0;
+};
+
+struct View {
+  Vec3d ref, u, v, m;  // origin of the view, right, up, and toward the viewer
+  P2 at(const Vec3d& p) const { return {dot(p - ref, u), dot(p - ref, v)}; }
+};
+
+// Two unit vectors perpendicular to the unit `a`.
+void basis(const Vec3d& a, Vec3d& e1, Vec3d& e2) {
+  Vec3d helper = std::abs(a.x) < 0.9 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
+  e1 = normalized(cross(a, helper));
+  e2 = cross(a, e1);
+}
+
+std::vector<Vec3d> rim(const Vec3d& center, const Vec3d& axis, double r) {
+  Vec3d e1, e2;
+  basis(axis, e1, e2);
+  std::vector<Vec3d> out;
+  for (int i = 0; i < kRimSides; ++i) {
+    double a = 2 * kPi * i / kRimSides;
+    out.push_back(center + r * std::cos(a) * e1 + r * std::sin(a) * e2);
+  }
+  return out;
+}
+
+// The points that decide the view and the frame (lines and planes have no extent).
+void samples(const SketchItem& item, std::vector<Vec3d>& pts, std::vector<std::pair<Vec3d, double>>& balls) {
+  using T = SketchItem::Type;
+  switch (item.type) {
+    case T::kPath:
+    case T::kArrow:
+    case T::kPoint: pts.insert(pts.end(), item.points.begin(), item.points.end()); break;
+    case T::kCircle: balls.emplace_back(item.points[0], item.radius); break;
+    case T::kCylinder:
+      if (item.height > 0) {
+        for (const auto& p : rim(item.points[0], item.points[1], item.radius)) pts.push_back(p);
+        Vec3d top = item.points[0] + item.height * item.points[1];
+        for (const auto& p : rim(top, item.points[1], item.radius)) pts.push_back(p);
+      } else {
+        balls.emplace_back(item.points[0], item.radius);
+      }
+      break;
+    case T::kLine:
+    case T::kPlane: pts.push_back(item.points[0]); break;
+  }
+}
+
+std::string direction_name(const Vec3d& v) {
+  static const char* names[] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) {
+    Vec3d e{};
+    e[i] = 1;
+    if (length(v - e) < 1e-9) return std::string("+") + names[i];
+    if (length(v + e) < 1e-9) return std::string("−") + names[i];
+  }
+  return format_vector(v, NumberFormat{3, -1});
+}
+
+View choose_view(const Sketch& f, const std::vector<Vec3d>& pts,
+                 const std::vector<std::pair<Vec3d, double>>& balls) {
+  View view;
+  view.u = length(f.across) > 0 ? normalized(f.across) : Vec3d{1, 0, 0};
+  for (const auto& item : f.items) {
+    if (item.type == SketchItem::Type::kArrow) {
+      view.ref = item.points[0];
+      break;
+    }
+  }
+  // Up: the direction across the main one along which the figure is widest; among equals,
+  // the first of +z, +y, +x and the direction toward the figure's middle.
+  Vec3d middle{};
+  for (const auto& p : pts) middle = middle + p;
+  for (const auto& b : balls) middle = middle + b.first;
+  if (!pts.empty() || !balls.empty()) middle = middle / static_cast<double>(pts.size() + balls.size());
+  std::vector<Vec3d> candidates = {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}, middle - view.ref};
+  double best = -1;
+  for (const auto& c : candidates) {
+    Vec3d w = c - dot(c, view.u) * view.u;
+    if (length(w) < kTinyDirection * std::max(1.0, length(c))) continue;
+    w = normalized(w);
+    double lo = INFINITY, hi = -INFINITY;
+    for (const auto& p : pts) {
+      lo = std::min(lo, dot(p, w));
+      hi = std::max(hi, dot(p, w));
+    }
+    for (const auto& [center, r] : balls) {
+      lo = std::min(lo, dot(center, w) - r);
+      hi = std::max(hi, dot(center, w) + r);
+    }
+    double spread = hi - lo;
+    if (spread > best * (1 + 1e-9) + 1e-12) {
+      best = spread;
+      view.v = w;
+    }
+  }
+  if (best < 0) basis(view.u, view.v, view.m);
+  view.m = cross(view.u, view.v);
+  return view;
+}
+
+// Clips the line p + s·d to the rectangle; false when it misses it.
+bool clip_line(P2 p, P2 d, P2 lo, P2 hi, P2& a, P2& b) {
+  double s0 = -INFINITY, s1 = INFINITY;
+  auto side = [&](double pc, double dc, double l, double h) {
+    if (dc == 0) return pc >= l && pc <= h;
+    double x = (l - pc) / dc, y = (h - pc) / dc;
+    if (x > y) std::swap(x, y);
+    s0 = std::max(s0, x);
+    s1 = std::min(s1, y);
+    return s0 <= s1;
+  };
+  if (!side(p.x, d.x, lo.x, hi.x) || !side(p.y, d.y, lo.y, hi.y)) return false;
+  a = {p.x + s0 * d.x, p.y + s0 * d.y};
+  b = {p.x + s1 * d.x, p.y + s1 * d.y};
+  return true;
+}
+
+const char* ink_class(Ink ink) {
+  switch (ink) {
+    case Ink::kObject: return "object";
+    case Ink::kGuide: return "guide";
+    case Ink::kRay: return "ray";
+    case Ink::kHit: return "hit";
+    case Ink::kMiss: return "miss";
+    case Ink::kPoint: return "point";
+  }
+  return "object";
+}
+
+class Canvas {
+ public:
+  Canvas(P2 lo, P2 hi, double scale) : lo_(lo), hi_(hi), scale_(scale) {}
+  double width() const { return (hi_.x - lo_.x) * scale_; }
+  double height() const { return (hi_.y - lo_.y) * scale_; }
+  P2 lo() const { return lo_; }
+  P2 hi() const { return hi_; }
+  P2 px(P2 p) const { return {(p.x - lo_.x) * scale_, (hi_.y - p.y) * scale_}; }
+  double scale() const { return scale_; }
+
+  void polyline(const std::vector<P2>& pts, bool closed, const char* cls) {
+    std::string d;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      P2 q = px(pts[i]);
+      d += fmt::format("{}{:.1f} {:.1f}", i ? " L" : "M", q.x, q.y);
+    }
+    if (closed) d += " Z";
+    body_ += fmt::format("<path class=\"{}\" d=\"{}\"/>\n", cls, d);
+  }
+  void circle(P2 c, double r, const char* cls) {
+    P2 q = px(c);
+    body_ += fmt::format("<circle class=\"{}\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{:.1f}\"/>\n", cls, q.x,
+                         q.y, r * scale_);
+  }
+  void arrow(P2 a, P2 b, const char* cls) {
+    polyline({a, b}, false, cls);
+    P2 qa = px(a), qb = px(b);
+    double dx = qb.x - qa.x, dy = qb.y - qa.y, len = std::hypot(dx, dy);
+    if (len == 0) return;
+    dx /= len;
+    dy /= len;
+    const double size = 10, half = 4.5;
+    P2 l{qb.x - size * dx - half * dy, qb.y - size * dy + half * dx};
+    P2 r{qb.x - size * dx + half * dy, qb.y - size * dy - half * dx};
+    body_ += fmt::format("<path class=\"{}-head\" d=\"M{:.1f} {:.1f} L{:.1f} {:.1f} L{:.1f} {:.1f} Z\"/>\n",
+                         cls, qb.x, qb.y, l.x, l.y, r.x, r.y);
+  }
+  void marker(P2 c, const char* cls) {
+    P2 q = px(c);
+    body_ += fmt::format("<circle class=\"mark-{}\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4\"/>\n", cls, q.x, q.y);
+  }
+  // A label near a point (in pixels), moved down while it would overlap an earlier one.
+  void label(P2 at_px, const std::string& text, const char* cls) {
+    if (text.empty()) return;
+    double w = 7.0 * static_cast<double>(text.size()), h = 14;
+    double x = std::min(at_px.x + 7, std::max(2.0, width() - w - 2));
+    double y = std::max(h, at_px.y - 7);
+    for (int tries = 0; tries < 12; ++tries) {
+      bool clash = false;
+      for (const auto& [bx, by, bw] : placed_) {
+        if (x < bx + bw && bx < x + w && std::abs(y - by) < h) clash = true;
+      }
+      if (!clash) break;
+      y += h;
+    }
+    placed_.push_back({x, y, w});
+    labels_ += fmt::format("<text class=\"label-{}\" x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n", cls, x, y,
+                           html_escape(text));
+  }
+  std::string body() const { return body_ + labels_; }
+
+ private:
+  P2 lo_, hi_;
+  double scale_;
+  std::string body_, labels_;
+  std::vector<std::array<double, 3>> placed_;
+};
+
+constexpr const char* kStyle =
+    "<style>"
+    ".object{fill:#dce9f7;fill-opacity:.55;stroke:#2d5f8b;stroke-width:1.6}"
+    ".guide{fill:none;stroke:#8a8a8a;stroke-width:1.1;stroke-dasharray:5 4}"
+    ".ray{fill:none;stroke:#b83227;stroke-width:2}.ray-head{fill:#b83227}"
+    ".mark-hit{fill:#b83227;stroke:#fff;stroke-width:1.2}"
+    ".mark-point{fill:#222}.mark-miss{fill:#fff;stroke:#777;stroke-width:1.2}"
+    ".mark-object,.mark-guide,.mark-ray{fill:#555}"
+    "text{font:12px sans-serif;fill:#222}.label-hit{fill:#8e241c;font-weight:bold}"
+    ".label-guide{fill:#666}.label-object{fill:#2d5f8b}"
+    "</style>";
+
+}  // namespace
+
+SvgFigure render_svg(const Sketch& f, const std::string& title) {
+  std::vector<Vec3d> pts;
+  std::vector<std::pair<Vec3d, double>> balls;
+  for (const auto& item : f.items) samples(item, pts, balls);
+  View view = choose_view(f, pts, balls);
+
+  // The frame: every sample, with a margin, not too thin either way.
+  P2 lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+  auto grow = [&](P2 p, double r) {
+    lo = {std::min(lo.x, p.x - r), std::min(lo.y, p.y - r)};
+    hi = {std::max(hi.x, p.x + r), std::max(hi.y, p.y + r)};
+  };
+  grow(view.at(view.ref), 0);
+  for (const auto& p : pts) grow(view.at(p), 0);
+  for (const auto& [c, r] : balls) grow(view.at(c), r);
+  double w = std::max(hi.x - lo.x, 1e-9), h = std::max(hi.y - lo.y, 1e-9);
+  if (h < kMinAspect * w) {
+    double grow_by = (kMinAspect * w - h) / 2;
+    lo.y -= grow_by;
+    hi.y += grow_by;
+  } else if (w < kMinAspect * h) {
+    double grow_by = (kMinAspect * h - w) / 2;
+    lo.x -= grow_by;
+    hi.x += grow_by;
+  }
+  w = hi.x - lo.x;
+  h = hi.y - lo.y;
+  lo = {lo.x - kMargin * w, lo.y - kMargin * h};
+  hi = {hi.x + kMargin * w, hi.y + kMargin * h};
+  double scale = std::min(kMaxWidth / (hi.x - lo.x), kMaxHeight / (hi.y - lo.y));
+  Canvas canvas(lo, hi, scale);
+
+  auto project = [&](const std::vector<Vec3d>& v) {
+    std::vector<P2> out;
+    for (const auto& p : v) out.push_back(view.at(p));
+    return out;
+  };
+  auto draw_line = [&](P2 p, P2 d, const char* cls) -> std::optional<P2> {
+    P2 a, b;
+    if (!clip_line(p, d, canvas.lo(), canvas.hi(), a, b)) return std::nullopt;
+    canvas.polyline({a, b}, false, cls);
+    return a.y > b.y ? a : b;
+  };
+
+  // Objects and guides first, then the ray, then the points, so that marks stay on top.
+  for (int pass = 0; pass < 3; ++pass) {
+    for (const auto& item : f.items) {
+      int layer = item.type == SketchItem::Type::kPoint ? 2 : item.ink == Ink::kRay ? 1 : 0;
+      if (layer != pass) continue;
+      const char* cls = ink_class(item.ink);
+      using T = SketchItem::Type;
+      switch (item.type) {
+        case T::kPath: {
+          auto p2 = project(item.points);
+          canvas.polyline(p2, item.closed, cls);
+          if (!p2.empty()) canvas.label(canvas.px(p2[0]), item.label, cls);
+          break;
+        }
+        case T::kCircle: {
+          P2 c = view.at(item.points[0]);
+          canvas.circle(c, item.radius, cls);
+          canvas.label(canvas.px({c.x, c.y + item.radius}), item.label, cls);
+          break;
+        }
+        case T::kLine: {
+          P2 d{dot(item.points[1], view.u), dot(item.points[1], view.v)};
+          if (std::hypot(d.x, d.y) < kTinyDirection) break;
+          if (auto top = draw_line(view.at(item.points[0]), d, cls)) {
+            canvas.label(canvas.px(*top), item.label, cls);
+          }
+          break;
+        }
+        case T::kPlane: {
+          const Vec3d& n = item.points[1];
+          P2 n2{dot(n, view.u), dot(n, view.v)};
+          double nn = n2.x * n2.x + n2.y * n2.y;
+          if (nn < kTinyDirection * length_squared(n)) break;  // parallel to the page
+          double k = dot(n, item.points[0] - view.ref) / nn;
+          if (auto top = draw_line({k * n2.x, k * n2.y}, {-n2.y, n2.x}, cls)) {
+            canvas.label(canvas.px(*top), item.label.empty() ? "plane" : item.label, cls);
+          }
+          break;
+        }
+        case T::kCylinder: {
+          const Vec3d& b = item.points[0];
+          const Vec3d& a = item.points[1];
+          Vec3d s = cross(a, view.m);
+          P2 base = view.at(b);
+          if (length(s) < kTinyDirection) {
+            canvas.circle(base, item.radius, cls);  // seen along its axis
+            canvas.label(canvas.px(base), item.label, cls);
+            break;
+          }
+          s = normalized(s);
+          if (item.height > 0) {
+            Vec3d top = b + item.height * a;
+            canvas.polyline(project(rim(b, a, item.radius)), true, cls);
+            canvas.polyline(project(rim(top, a, item.radius)), true, cls);
+            for (double side : {-1.0, 1.0}) {
+              canvas.polyline(project({b + side * item.radius * s, top + side * item.radius * s}),
+                              false, cls);
+            }
+          } else {
+            P2 d{dot(a, view.u), dot(a, view.v)};
+            draw_line(view.at(b), d, "guide");
+            for (double side : {-1.0, 1.0}) draw_line(view.at(b + side * item.radius * s), d, cls);
+          }
+          canvas.label(canvas.px(base), item.label, cls);
+          break;
+        }
+        case T::kArrow:
+          canvas.arrow(view.at(item.points[0]), view.at(item.points[1]), cls);
+          canvas.label(canvas.px(view.at(item.points[1])), item.label, cls);
+          break;
+        case T::kPoint: {
+          P2 c = view.at(item.points[0]);
+          canvas.marker(c, cls);
+          canvas.label(canvas.px(c), item.label, cls);
+          break;
+        }
+      }
+    }
+  }
+
+  SvgFigure out;
+  int width = static_cast<int>(std::ceil(canvas.width()));
+  int height = static_cast<int>(std::ceil(canvas.height()));
+  out.svg = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"sketch\" width=\"{0}\" height=\"{1}\" "
+      "viewBox=\"0 0 {0} {1}\" role=\"img\" aria-label=\"{2}\">\n<title>{2}</title>\n{3}\n"
+      "<rect x=\"0.5\" y=\"0.5\" width=\"{4}\" height=\"{5}\" fill=\"none\" stroke=\"#ddd\"/>\n{6}"
+      "</svg>",
+      width, height, html_escape(title), kStyle, width - 1, height - 1, canvas.body());
+  std::string across = f.across_name.empty() ? direction_name(view.u)
+                                             : f.across_name + " (" + direction_name(view.u) + ")";
+  out.caption = fmt::format(
+      "Side view, drawn to scale: {} points right, {} points up; the page is the plane that "
+      "holds both.",
+      across, direction_name(view.v));
+  return out;
+}
+
+}  // namespace raygrade
