@@ -1,6 +1,8 @@
 // Generating, writing and checking the solutions folder.
 #include "reports/solutions_folder.h"
 
+#include <fmt/format.h>
+
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -97,7 +99,7 @@ std::vector<GeneratedFile> solution_files(const std::vector<Problem>& problems,
                                           const std::vector<Format>& formats,
                                           const std::string& command,
                                           std::vector<Diagnostic>& errors) {
-  std::string note = std::string(kGeneratedMarker) + " with `" + command + "`; do not edit.";
+  std::string note = fmt::format("{} with `{}`; do not edit.", kGeneratedMarker, command);
   std::vector<GeneratedFile> files;
   std::vector<std::pair<const Problem*, std::string>> done;
   std::set<std::string> bases;
