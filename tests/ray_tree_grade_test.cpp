@@ -119,3 +119,24 @@ TEST(RayTreeGrade, WrongObjectEarnsHalfTheNode) {
 
 }  // namespace
 }  // namespace raygrade
+
+namespace raygrade {
+namespace {
+
+// The ray (0, 0, 0) + t(0, −0.2, −1) reaches the ball of radius 1 at (0, −1, −6) where
+// y = −1: at t = 5, the point (0, −1, −5) in front of its centre.
+TEST(RayTreeGrade, HitOnlyQuestionGradesObjectAndT) {
+  auto f = parse_json_text("hit.json", R"({"id": "h", "kind": "ray-tree", "ask": "hit",
+    "ray": {"origin": [0, 0, 0], "direction": [0, -0.2, -1]},
+    "scene": {"objects": [
+      {"name": "floor", "type": "plane", "point": [0, -2, 0], "normal": [0, 1, 0]},
+      {"name": "ball", "type": "sphere", "center": [0, -1, -6], "radius": 1}]}})");
+  Problem p = read_problem(Cursor(f));
+  GradeResult right = grade_answer(p, {{"object", "ball"}, {"hits", {{{"t", 5}}}}});
+  EXPECT_DOUBLE_EQ(right.score, 1);
+  GradeResult wrong = grade_answer(p, {{"object", "floor"}, {"hits", {{{"t", 5}}}}});
+  EXPECT_DOUBLE_EQ(wrong.score, 0.5);
+}
+
+}  // namespace
+}  // namespace raygrade

@@ -214,3 +214,32 @@ TEST(Scene, TransparentMaterialNeedsAnIndex) {
 
 }  // namespace
 }  // namespace raygrade
+
+namespace raygrade {
+namespace {
+
+// A mirror floor (k_r = 0.5) under a matte ball, lamp at (5, 1, 0), default material
+// otherwise (k_a 0.1, k_d 0.7, k_s 0.2, n 10), I_a = I_p = 1. Worked by hand:
+// floor point (0, −1, 0): N = V = (0, 1, 0), L = (5, 2, 0)/√29, N·L = R·V = 2/√29;
+// ball point (0, 29, 0): N = V = (0, −1, 0), L = (5, −28, 0)/√809, N·L = R·V = 28/√809.
+TEST(RayTree, IntensityAddsTheReflectionWeighted) {
+  Problem p = testing::problem(R"({"id": "i", "kind": "ray-tree", "ask": "intensity",
+    "ray": {"origin": [0, 10, 0], "direction": [0, -1, 0]},
+    "scene": {"objects": [
+      {"name": "floor", "type": "plane", "point": [0, -1, 0], "normal": [0, 1, 0],
+       "material": {"reflectivity": 0.5}},
+      {"name": "ball", "type": "sphere", "center": [0, 30, 0], "radius": 1}],
+      "lights": [{"name": "lamp", "position": [5, 1, 0]}]}})");
+  double c1 = 2 / std::sqrt(29.0), c2 = 28 / std::sqrt(809.0);
+  double floor_local = 0.1 + 0.7 * c1 + 0.2 * std::pow(c1, 10);
+  double ball = 0.1 + 0.7 * c2 + 0.2 * std::pow(c2, 10);
+  const RayTree& t = dynamic_cast<const RayTreeTask&>(*p.task).tree();
+  ASSERT_EQ(t.nodes.size(), 2u);
+  EXPECT_NEAR(t.nodes[1].intensity, ball, 1e-13);
+  EXPECT_NEAR(t.nodes[0].local, floor_local, 1e-13);
+  EXPECT_NEAR(t.nodes[0].intensity, floor_local + 0.5 * ball, 1e-13);
+  EXPECT_NEAR(p.task->answer()["intensity"].get<double>(), floor_local + 0.5 * ball, 1e-13);
+}
+
+}  // namespace
+}  // namespace raygrade

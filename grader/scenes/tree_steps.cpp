@@ -57,7 +57,7 @@ void light_steps(Deriver& d, const Scene& scene, const TreeNode& node, const Sha
   E N = flipped ? -d.sym("N_f") : d.sym("N_f");
   d.step("NL_" + i, "N·L_" + i, dot(N, L),
          flipped ? "the surface is transparent: it is lit from the light's side, so N is "
-                   "taken on that side"
+                   "taken on that side."
                  : "");
   const Material& m = scene.objects[node.object].material;
   std::string verdict;
@@ -195,8 +195,9 @@ Derivation node_steps(const RayTree& tree, const Scene& scene, const TreeNode& n
     d.conclude(fmt::format("Phong terms at {}: {}.", node.label, fmt::join(terms, ", ")));
   }
   if (intensity) {
-    d.step("ambient", "I_a", obj.material.ambient * scene.ambient_light,
-           fmt::format("k_a·I_a with k_a = {}", format_number(obj.material.ambient)));
+    E ka = d.given("k_a", "k_a", obj.material.ambient, "the ambient coefficient");
+    E ia = d.given("I_a", "I_a", scene.ambient_light, "the ambient light");
+    d.step("ambient", "I_amb", ka * ia, "the ambient term, which always applies");
   }
   secondary_steps(d, scene, node);
   for (int c : tree.children(node.index)) {
