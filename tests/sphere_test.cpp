@@ -93,6 +93,42 @@ TEST(Sphere, SegmentEndsAtTMax) {
   EXPECT_EQ(x.hits[0].t, 8);
 }
 
+// The origin on the surface, moving out: from (1, 0, 0) along +x the unit sphere at the origin
+// gives (1 + t)² = 1, t = 0 or −2. The closed interval [0, ∞) keeps t = 0; t_min = 1e-9 (a ray
+// leaving a surface) drops it.
+TEST(Sphere, OriginOnTheSurfaceHitsAtZeroUnlessTMinSkipsIt) {
+  Sphere s({0, 0, 0}, 1);
+  auto x = s.intersect(ray({1, 0, 0}, {1, 0, 0}));
+  ASSERT_EQ(x.hits.size(), 1u);
+  EXPECT_EQ(x.hits[0].t, 0);
+  EXPECT_TRUE(s.intersect(ray({1, 0, 0}, {1, 0, 0}, 1e-9)).hits.empty());
+  // Moving in from the surface: t = 0 and t = 2, at (−1, 0, 0).
+  auto in = s.intersect(ray({1, 0, 0}, {-1, 0, 0}));
+  ASSERT_EQ(in.hits.size(), 2u);
+  EXPECT_EQ(in.hits[1].t, 2);
+}
+
+// t_min cuts off the entry: from z = 0 the sphere of radius 2 at z = 10 is met at 8 and 12;
+// with t_min = 9 only the exit remains.
+TEST(Sphere, TMinSkipsTheEntry) {
+  Sphere s({0, 0, 10}, 2);
+  auto x = s.intersect(ray({0, 0, 0}, {0, 0, 1}, 9));
+  ASSERT_EQ(x.hits.size(), 1u);
+  EXPECT_EQ(x.hits[0].t, 12);
+  EXPECT_EQ(x.hits[0].normal, Vec3d(0, 0, 1));
+}
+
+// Seed 000 case 4, an oblique unnormalized ray: from the origin along (1, 1, 1), the sphere of
+// radius 1 at (1, 1, 0.8): 3t² − 2(2.8)t + (1 + 1 + 0.64 − 1) = 0, i.e. 3t² − 5.6t + 1.64 = 0,
+// t = (5.6 ∓ √(31.36 − 19.68))/6 = (5.6 ∓ √11.68)/6.
+TEST(Sphere, SeedCaseFourObliqueRay) {
+  Sphere s({1, 1, 0.8}, 1);
+  auto x = s.intersect(ray({0, 0, 0}, {1, 1, 1}));
+  ASSERT_EQ(x.hits.size(), 2u);
+  EXPECT_NEAR(x.hits[0].t, (5.6 - std::sqrt(11.68)) / 6, 1e-15);
+  EXPECT_NEAR(x.hits[1].t, (5.6 + std::sqrt(11.68)) / 6, 1e-15);
+}
+
 TEST(Sphere, ZeroRadiusIsRejected) {
   EXPECT_THROW(testing::shape(R"({"type":"sphere","center":[0,0,0],"radius":0})"), Error);
 }

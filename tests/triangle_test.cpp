@@ -108,6 +108,16 @@ TEST(Triangle, RayInThePlaneIsContainedOnlyWhenItMeetsTheTriangle) {
 // In a tilted plane with inexact coordinates: the plane through (1,0,0), (0,1,0), (0,0,1);
 // the ray from (0.5, 0.5, 0) along (−0.1, −0.2, 0.3) stays in it (the components sum to 0)
 // and passes through the triangle.
+// In the tilted plane x + y + z = 1: the line (−0.9, 0.9, 1) + t(0.3, −0.3, 0) touches the
+// triangle only at its vertex (0, 0, 1), at t = 3 (for t > 3, y < 0; for t < 3, x < 0), where
+// 3·0.3 does not round to 0.9. It still meets the closed triangle; shifted off the vertex by
+// 1e-9 along the plane, it misses.
+TEST(Triangle, RayInATiltedPlaneTouchingAVertexIsContained) {
+  Triangle t({1, 0, 0}, {0, 1, 0}, {0, 0, 1});
+  EXPECT_TRUE(t.intersect(ray({-0.9, 0.9, 1}, {0.3, -0.3, 0})).contained);
+  EXPECT_FALSE(t.intersect(ray({-0.9, 0.9 - 1e-9, 1 + 1e-9}, {0.3, -0.3, 0})).contained);
+}
+
 TEST(Triangle, RayInATiltedPlaneIsContained) {
   Triangle t({1, 0, 0}, {0, 1, 0}, {0, 0, 1});
   EXPECT_TRUE(t.intersect(ray({0.5, 0.5, 0}, {-0.1, -0.2, 0.3})).contained);

@@ -141,7 +141,8 @@ bool ray_in_plane_meets_polygon(const Ray& ray, const std::vector<Vec3d>& vertic
     }
     double t = (w.u * e.v - w.v * e.u) / den;
     double s = (w.u * d.v - w.v * d.u) / den;
-    if (s >= 0 && s <= 1 && t >= t0 && t <= t1) return true;
+    // Closed edges: an s a rounding outside [0, 1] still reaches the edge's end.
+    if (s >= -kOnEdgeRelative && s <= 1 + kOnEdgeRelative && t >= t0 && t <= t1) return true;
   }
   return false;
 }
