@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds everything and runs every test (unit tests, bank checks, conformance).
+# Builds everything and runs every test (unit tests, bank checks, conformance), then the same
+# tests under AddressSanitizer and UndefinedBehaviorSanitizer, then each fuzz target briefly.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # The browser extra: the HTML worked solutions are checked in headless Chromium.
@@ -7,3 +8,9 @@ RAYGRADE_EXTRA="${RAYGRADE_EXTRA:-} browser" bash scripts/install-deps.sh
 cmake --preset release >/dev/null
 cmake --build --preset release
 ctest --preset release
+# The whole suite again with ASan and UBSan (the asan preset).
+cmake --preset asan >/dev/null
+cmake --build --preset asan
+ctest --preset asan
+# Each fuzz target for 30 seconds (scripts/fuzz.sh TARGET SECONDS runs longer campaigns).
+bash scripts/fuzz.sh all 30
