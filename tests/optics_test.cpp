@@ -35,7 +35,8 @@ TEST(Optics, TotalInternalReflectionBeyondTheCriticalAngle) {
   EXPECT_FALSE(critical_angle_degrees(1, 1.5).has_value());
   // Just below the critical angle (40°) the ray still leaves.
   double a = 40 * 3.141592653589793 / 180;
-  EXPECT_FALSE(refract({std::sin(a), -std::cos(a), 0}, {0, 1, 0}, 1.5, 1).total_internal_reflection);
+  EXPECT_FALSE(
+      refract({std::sin(a), -std::cos(a), 0}, {0, 1, 0}, 1.5, 1).total_internal_reflection);
 }
 
 // N = (0,1,0), L = (0.6, 0.8, 0), V = (−0.6, 0.8, 0): R = 2·0.8·N − L = (−0.6, 0.8, 0) = V,

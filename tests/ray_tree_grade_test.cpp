@@ -98,8 +98,8 @@ TEST(RayTreeGrade, ListsAloneEarnTermsAndShadows) {
 TEST(RayTreeGrade, MissingAndImpossibleRaysCostPartOfTheTree) {
   nlohmann::json a = seed_answer();
   a["nodes"].erase(4);
-  a["nodes"].push_back({{"label", "I6"}, {"parent", "I3"}, {"ray", "reflection"},
-                        {"object", "back wall"}});
+  a["nodes"].push_back(
+      {{"label", "I6"}, {"parent", "I3"}, {"ray", "reflection"}, {"object", "back wall"}});
   GradeResult r = grade_answer(seed(), a);
   const PartResult* tree = part(r, "tree");
   EXPECT_DOUBLE_EQ(tree->points, (4 - 0.5) / 5);
@@ -116,12 +116,6 @@ TEST(RayTreeGrade, WrongObjectEarnsHalfTheNode) {
   EXPECT_NE(all_feedback(*part(r, "tree")).find("is on floor, not on back wall"),
             std::string::npos);
 }
-
-}  // namespace
-}  // namespace raygrade
-
-namespace raygrade {
-namespace {
 
 // The ray (0, 0, 0) + t(0, −0.2, −1) reaches the ball of radius 1 at (0, −1, −6) where
 // y = −1: at t = 5, the point (0, −1, −5) in front of its centre.

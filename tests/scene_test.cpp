@@ -28,7 +28,8 @@ std::string blocker_problem(const std::string& blocker_material, const std::stri
       {"name": "ball", "type": "sphere", "center": [0, 3, 0], "radius": 1, "material": )" +
          blocker_material + R"(}],
       "lights": [{"name": "sun", "position": [0, 8, 0]}],
-      "transparent_shadows": ")" + shadows + R"("}})";
+      "transparent_shadows": ")" +
+         shadows + R"("}})";
 }
 
 // The ray (0,10,5) + t(0,−10,−5) meets the floor at t = 1, at the origin, passing beside the
@@ -166,7 +167,8 @@ TEST(RayTree, NoInternalReflectionAssumedSkipsTheTotalReflection) {
 
 // Seed 001: the glass sphere, mirror ceiling, floor and back wall of the bank's exercise.
 TEST(RayTree, SeedOneHasFivePointsTwoInShadow) {
-  Bank bank = load_bank({std::string(RAYGRADE_SOURCE_DIR) + "/problems/seeds/seed001-ray-tree.json"});
+  Bank bank =
+      load_bank({std::string(RAYGRADE_SOURCE_DIR) + "/problems/seeds/seed001-ray-tree.json"});
   ASSERT_TRUE(bank.errors.empty());
   const Problem& p = bank.problems.at(0);
   nlohmann::json a = p.task->answer();
@@ -211,12 +213,6 @@ TEST(Scene, TransparentMaterialNeedsAnIndex) {
                              "material": {"transparency": 0.5}}]}})"),
                Error);
 }
-
-}  // namespace
-}  // namespace raygrade
-
-namespace raygrade {
-namespace {
 
 // A mirror floor (k_r = 0.5) under a matte ball, lamp at (5, 1, 0), default material
 // otherwise (k_a 0.1, k_d 0.7, k_s 0.2, n 10), I_a = I_p = 1. Worked by hand:

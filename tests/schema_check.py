@@ -57,6 +57,12 @@ BROKEN = [
       "camera": {"eye": [0, 0, 0], "direction": [0, 0, -1], "up": [0, 1, 0],
                  "focal_length": 1, "resolution": [4, 4]}}),
     ("wrapper with an unknown key", {"problems": [GOOD], "problem": []}),
+    ("ray-tree with an unknown ask",
+     {"id": "t", "kind": "ray-tree", "ask": "everything", "ray": GOOD["ray"],
+      "scene": {"objects": [GOOD["object"]]}}),
+    ("transparent material without its refractive index",
+     {"id": "t", "kind": "ray-tree", "ray": GOOD["ray"],
+      "scene": {"objects": [dict(GOOD["object"], material={"transparency": 0.5})]}}),
 ]
 
 

@@ -41,8 +41,7 @@ TEST(RefractKind, TotalInternalReflection) {
   EXPECT_NEAR(a["reflected_direction"][1].get<double>(), -0.5, 1e-15);
   auto parts = p.task->derive("");
   ASSERT_FALSE(parts[0].derivation.conclusion.empty());
-  EXPECT_NE(parts[0].derivation.conclusion[0].find("Total internal reflection"),
-            std::string::npos);
+  EXPECT_NE(parts[0].derivation.conclusion[0].find("Total internal reflection"), std::string::npos);
 }
 
 // P = origin, N = y, eye at (−3, 4, 0): V = (−0.6, 0.8, 0). Light at (3, 4, 0):
@@ -70,7 +69,8 @@ TEST(ShadeKind, TermByTerm) {
 TEST(ShadeKind, UnknownLightKeyIsAnError) {
   EXPECT_THROW(testing::problem(R"({"id": "s", "kind": "shade",
     "point": [0, 0, 0], "normal": [0, 1, 0], "eye": [0, 1, 0],
-    "lights": [{"position": [3, 4, 0], "blockd": true}]})"), Error);
+    "lights": [{"position": [3, 4, 0], "blockd": true}]})"),
+               Error);
 }
 
 }  // namespace

@@ -90,8 +90,9 @@ TEST(Offset, ReflectedRaysNeverRehitTheirConvexSurface) {
   int rehit_raw = 0, rehit_offset = 0, hits = 0;
   for (int i = 0; i < 3000; ++i) {
     const SceneObject& target = s.objects[i % 3];
-    Vec3d aim = target.transform.identity() ? target.shape->center()
-                                            : target.transform.to_world.point(target.shape->center());
+    Vec3d aim = target.transform.identity()
+                    ? target.shape->center()
+                    : target.transform.to_world.point(target.shape->center());
     Vec3d origin = aim + Vec3d{u(rng), u(rng), u(rng)} * 5000.0;
     Vec3d jitter = Vec3d{u(rng), u(rng), u(rng)} * (target.shape->extent() * 0.8);
     Ray ray{origin, aim + jitter - origin, 0, kInfinity};

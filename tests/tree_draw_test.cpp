@@ -23,7 +23,8 @@ Problem mirror_problem(const std::string& ball_name) {
     "scene": {"objects": [
       {"name": "floor", "type": "plane", "point": [0, -1, 0], "normal": [0, 1, 0],
        "material": {"reflectivity": 0.5}},
-      {"name": ")" + ball_name + R"(", "type": "sphere", "center": [0, 30, 0], "radius": 1}],
+      {"name": ")" + ball_name +
+                          R"(", "type": "sphere", "center": [0, 30, 0], "radius": 1}],
       "lights": [{"name": "lamp", "position": [5, 1, 0]}]}})");
 }
 

@@ -125,7 +125,7 @@ class CameraGrader final : public KindGrader {
   const CameraRayTask& task_;
   Vec3d direction_;
   std::vector<Variant> variants_;
-  std::vector<MethodSolution> methods_;
+  std::vector<MethodDerivation> methods_;
   std::vector<MistakenSolution> mistaken_;
   NumberFormat numbers_;
 };

@@ -58,7 +58,7 @@ class HitsGrader final : public KindGrader {
   std::vector<double> widen_;
   std::vector<double> behind_;  // roots with t < t_min: behind the origin
   std::vector<double> far_;     // roots past the first hit of the same object
-  std::vector<MethodSolution> methods_;
+  std::vector<MethodDerivation> methods_;
   std::vector<MistakenSolution> mistaken_;
   NumberFormat numbers_;
 };

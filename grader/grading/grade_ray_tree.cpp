@@ -107,13 +107,13 @@ class RayTreeGrader final : public KindGrader {
       if (h.has("t")) {
         auto n = h.at("t").number();
         const Tolerance& tol = context_.tolerance.for_field("t");
-        if (n.value && compare_number(*n.value, root.t, std::abs(root.t), tol).match ==
-                           Match::kRight) {
+        if (n.value &&
+            compare_number(*n.value, root.t, std::abs(root.t), tol).match == Match::kRight) {
           credit += 0.5;
         } else {
-          fb.push_back(n.value ? fmt::format("t is {}, not {}.", format_number(root.t),
-                                             n.value->text)
-                               : "t: " + n.fault);
+          fb.push_back(n.value
+                           ? fmt::format("t is {}, not {}.", format_number(root.t), n.value->text)
+                           : "t: " + n.fault);
         }
       }
     } else if (!root.hit) {
@@ -127,9 +127,26 @@ class RayTreeGrader final : public KindGrader {
     std::vector<StudentNode> out;
     if (!a.has("nodes")) return out;
     for (const auto& n : a.at("nodes").items()) {
-      n.allow_only({"label", "path", "parent", "ray", "object", "in_shadow", "terms", "lights",
-                    "children", "depth", "origin", "direction", "hit", "t", "point", "normal",
-                    "inside", "intensity", "total_internal_reflection", "background"});
+      n.allow_only({"label",
+                    "path",
+                    "parent",
+                    "ray",
+                    "object",
+                    "in_shadow",
+                    "terms",
+                    "lights",
+                    "children",
+                    "depth",
+                    "origin",
+                    "direction",
+                    "hit",
+                    "t",
+                    "point",
+                    "normal",
+                    "inside",
+                    "intensity",
+                    "total_internal_reflection",
+                    "background"});
       StudentNode s;
       s.where = n.path();
       s.label = n.has("label") ? n.at("label").string() : "";
@@ -138,7 +155,8 @@ class RayTreeGrader final : public KindGrader {
       if (n.has("ray")) s.ray = n.at("ray").string();
       if (n.has("object") && !n.at("object").json().is_null()) s.object = n.at("object").string();
       if (n.has("in_shadow")) {
-        if (!n.at("in_shadow").json().is_boolean()) n.at("in_shadow").fail("expected true or false", "type");
+        if (!n.at("in_shadow").json().is_boolean())
+          n.at("in_shadow").fail("expected true or false", "type");
         s.in_shadow = n.at("in_shadow").json().get<bool>();
       }
       if (n.has("terms")) {
@@ -153,8 +171,7 @@ class RayTreeGrader final : public KindGrader {
     return out;
   }
 
-  static std::string resolve(const StudentNode& s, const std::vector<StudentNode>& all,
-                             int depth) {
+  static std::string resolve(const StudentNode& s, const std::vector<StudentNode>& all, int depth) {
     if (s.path) return *s.path;
     if (depth > kMaxTreeDepth) return "";  // a cycle of parents
     if (!s.parent) return !s.ray || *s.ray == "primary" ? "P" : "";
@@ -177,10 +194,12 @@ class RayTreeGrader final : public KindGrader {
     if (parent && parent->hit) {
       const SceneObject& o = scene().objects[parent->object];
       bool reflection = s.resolved.back() == 'R';
-      if (reflection && !o.material.reflects() && !(parent->refraction_math.total_internal_reflection))
-        return fmt::format("{}: {} does not reflect (reflectivity 0), so {} spawns no reflection "
-                           "ray.",
-                           where, o.name, parent->label);
+      if (reflection && !o.material.reflects() &&
+          !(parent->refraction_math.total_internal_reflection))
+        return fmt::format(
+            "{}: {} does not reflect (reflectivity 0), so {} spawns no reflection "
+            "ray.",
+            where, o.name, parent->label);
       if (!reflection && !o.material.transmits())
         return fmt::format("{}: {} is opaque (transparency 0), so {} spawns no refraction ray.",
                            where, o.name, parent->label);
@@ -205,9 +224,10 @@ class RayTreeGrader final : public KindGrader {
       if (!n.hit) continue;
       ++total;
       auto it = match.find(n.index);
-      std::string what = n.parent < 0 ? "the primary ray's hit"
-                                      : fmt::format("where the {} ray from {} hits",
-                                                    to_string(n.kind), tree().nodes[n.parent].label);
+      std::string what = n.parent < 0
+                             ? "the primary ray's hit"
+                             : fmt::format("where the {} ray from {} hits", to_string(n.kind),
+                                           tree().nodes[n.parent].label);
       if (it == match.end()) {
         fb.push_back(fmt::format("Missing: {}, {} ({}).", n.label, what, object_name(n.object)));
         continue;
@@ -346,11 +366,11 @@ class RayTreeGrader final : public KindGrader {
     if (n.value && compare_number(*n.value, want, std::abs(want), tol).match == Match::kRight) {
       out.parts.push_back(make_part(context_, "intensity", 1, {"Right."}));
     } else {
-      out.parts.push_back(make_part(
-          context_, "intensity", 0,
-          {n.value ? fmt::format("The intensity along the primary ray is {}, not {}.",
-                                 format_number(want), n.value->text)
-                   : "intensity: " + n.fault}));
+      out.parts.push_back(
+          make_part(context_, "intensity", 0,
+                    {n.value ? fmt::format("The intensity along the primary ray is {}, not {}.",
+                                           format_number(want), n.value->text)
+                             : "intensity: " + n.fault}));
     }
   }
 

@@ -8,8 +8,8 @@
 
 namespace raygrade {
 
-std::vector<MethodSolution> solutions_by_method(const Task& task) {
-  std::vector<MethodSolution> out;
+std::vector<MethodDerivation> solutions_by_method(const Task& task) {
+  std::vector<MethodDerivation> out;
   for (const auto& m : task.methods()) {
     try {
       auto parts = task.derive(m, nullptr);
@@ -62,7 +62,7 @@ Match match_value(const AnswerReader& student, const Value& reference, const Tol
 }
 
 StepsGrade grade_steps(const GradingContext& c, const Task& task,
-                       const std::vector<MethodSolution>& reference,
+                       const std::vector<MethodDerivation>& reference,
                        const std::vector<MistakenSolution>& mistaken, const AnswerReader& steps) {
   StepsGrade out;
   if (!steps.json().is_object()) steps.fail("steps is an object: step name → value", "type");
@@ -70,7 +70,7 @@ StepsGrade grade_steps(const GradingContext& c, const Task& task,
   NumberFormat fmt_numbers;
   if (c.problem->precision >= 0) fmt_numbers.decimals = c.problem->precision;
   // The method whose derivation has the most of the student's step names.
-  const MethodSolution* best = nullptr;
+  const MethodDerivation* best = nullptr;
   std::size_t best_count = 0;
   for (const auto& m : reference) {
     std::size_t count = 0;

@@ -11,12 +11,14 @@
 
 namespace raygrade {
 
-// A problem's worked solution by each of its methods (the first part of each).
-struct MethodSolution {
+// A problem's worked solution by each of its methods (the first part of each). Not named
+// MethodSolution: reports/solution.h has that name, and one name for two types breaks the
+// one-definition rule (their std::vector code is shared at link time).
+struct MethodDerivation {
   std::string method;
   Derivation derivation;
 };
-std::vector<MethodSolution> solutions_by_method(const Task& task);
+std::vector<MethodDerivation> solutions_by_method(const Task& task);
 
 struct StepsGrade {
   PartResult part;  // "steps"
@@ -28,7 +30,7 @@ struct StepsGrade {
 
 // Grades `steps` (an object: step name → number or [x, y, z]).
 StepsGrade grade_steps(const GradingContext& c, const Task& task,
-                       const std::vector<MethodSolution>& reference,
+                       const std::vector<MethodDerivation>& reference,
                        const std::vector<MistakenSolution>& mistaken, const AnswerReader& steps);
 
 // Whether a student's value matches a derivation's value of a step, by a tolerance.

@@ -11,7 +11,8 @@ namespace raygrade {
 
 Ray read_primary_ray(const Cursor& problem) {
   if (problem.has("ray")) {
-    if (problem.has("camera")) problem.at("camera").fail("give either a ray or a camera", "invalid");
+    if (problem.has("camera"))
+      problem.at("camera").fail("give either a ray or a camera", "invalid");
     return read_ray(problem.at("ray"));
   }
   if (!problem.has("camera")) problem.fail("a ray or a camera and pixel is needed", "missing");

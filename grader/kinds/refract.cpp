@@ -66,8 +66,7 @@ std::vector<SolutionPart> RefractTask::derive(std::string_view /*method*/,
   }
   if (k.scalar < 0) {
     d.note("k < 0: sin θt would exceed 1.");
-    d.step("r", "r",
-           d.sym("d_hat") + 2 * d.sym("cos_i") * d.sym("n_hat"),
+    d.step("r", "r", d.sym("d_hat") + 2 * d.sym("cos_i") * d.sym("n_hat"),
            "all the light is reflected: r = d̂ − 2(d̂·n̂)n̂");
     d.conclude(fmt::format("Total internal reflection: at θi = {}° there is no refracted ray.",
                            format_number(theta_i)));

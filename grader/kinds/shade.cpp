@@ -42,12 +42,14 @@ nlohmann::json ShadeTask::answer() const {
   nlohmann::json per = nlohmann::json::array();
   for (const auto& sl : lights_) {
     Vec3d l = to_light(sl.light, point_);
-    PhongLight p = phong_light(normal_, l, v, sl.light.intensity, m_.diffuse, m_.specular,
-                               m_.shininess);
+    PhongLight p =
+        phong_light(normal_, l, v, sl.light.intensity, m_.diffuse, m_.specular, m_.shininess);
     bool reaches = !sl.blocked && p.n_dot_l > 0;
     any |= reaches;
-    nlohmann::json j = {{"light", sl.light.name}, {"n_dot_l", p.n_dot_l},
-                        {"r_dot_v", p.r_dot_v},   {"reaches", reaches},
+    nlohmann::json j = {{"light", sl.light.name},
+                        {"n_dot_l", p.n_dot_l},
+                        {"r_dot_v", p.r_dot_v},
+                        {"reaches", reaches},
                         {"diffuse", reaches ? p.diffuse : 0.0},
                         {"specular", reaches ? p.specular : 0.0}};
     if (reaches) {
@@ -59,8 +61,9 @@ nlohmann::json ShadeTask::answer() const {
   double ambient = m_.ambient * ambient_light_;
   nlohmann::json terms = {"ambient"};
   if (any) terms = {"ambient", "diffuse", "specular"};
-  return {{"ambient", ambient},          {"diffuse", diffuse}, {"specular", specular},
-          {"intensity", ambient + diffuse + specular}, {"lights", per}, {"terms", terms}};
+  return {{"ambient", ambient},   {"diffuse", diffuse},
+          {"specular", specular}, {"intensity", ambient + diffuse + specular},
+          {"lights", per},        {"terms", terms}};
 }
 
 std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
@@ -87,10 +90,10 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
     }
     Value nl = d.step("NL_" + i, "N·L_" + i, dot(N, d.sym("L_" + i)));
     if (lights_[k].blocked || nl.scalar <= 0) {
-      d.note(lights_[k].blocked
-                 ? fmt::format("The shadow ray to {} is blocked: no diffuse or specular term.",
-                               l.name)
-                 : "N·L ≤ 0: the light is behind the surface.");
+      d.note(
+          lights_[k].blocked
+              ? fmt::format("The shadow ray to {} is blocked: no diffuse or specular term.", l.name)
+              : "N·L ≤ 0: the light is behind the surface.");
       continue;
     }
     E ip = d.given("Ip_" + i, "I_p" + i, l.intensity);
@@ -99,9 +102,8 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
     d.step("R_" + i, "R_" + i, 2 * d.sym("NL_" + i) * N - d.sym("L_" + i),
            "the mirror direction of the light");
     Value rv = d.step("RV_" + i, "R·V_" + i, dot(d.sym("R_" + i), d.sym("V")));
-    PhongLight p = phong_light(normal_, normalized(d.value("L_" + i).vector),
-                               d.value("V").vector, l.intensity, m_.diffuse, m_.specular,
-                               m_.shininess);
+    PhongLight p = phong_light(normal_, normalized(d.value("L_" + i).vector), d.value("V").vector,
+                               l.intensity, m_.diffuse, m_.specular, m_.shininess);
     d.given("specular_" + i, "I_s" + i, rv.scalar > 0 ? p.specular : 0.0,
             rv.scalar > 0 ? fmt::format("k_s·I_p·(R·V)^n with k_s = {}, n = {}",
                                         format_number(m_.specular), format_number(m_.shininess))

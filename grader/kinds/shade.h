@@ -16,7 +16,11 @@ class ShadeTask final : public Task {
  public:
   ShadeTask(Vec3d point, Vec3d normal, Vec3d eye, Material m, double ambient_light,
             std::vector<ShadeLight> lights)
-      : point_(point), normal_(normal), eye_(eye), m_(m), ambient_light_(ambient_light),
+      : point_(point),
+        normal_(normal),
+        eye_(eye),
+        m_(m),
+        ambient_light_(ambient_light),
         lights_(std::move(lights)) {}
   static std::unique_ptr<Task> read(const Cursor& problem);
 

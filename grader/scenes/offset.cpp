@@ -27,15 +27,13 @@ Vec3d hit_point_error(const Ray& world, double t, const Transform* transform) {
     Vec3d object_size = abs_linear(inv, size) + abs3(inv.translation);
     Vec3d object_error = gamma_bound(kTransformRoundings) * object_size +
                          gamma_bound(kRootRoundings + kPointRoundings) * object_size;
-    error = error + (1 + gamma_bound(kTransformRoundings)) *
-                        abs_linear(transform->to_world, object_error);
+    error = error +
+            (1 + gamma_bound(kTransformRoundings)) * abs_linear(transform->to_world, object_error);
   }
   return error;
 }
 
-double offset_distance(const Vec3d& error, const Vec3d& normal) {
-  return dot(abs3(normal), error);
-}
+double offset_distance(const Vec3d& error, const Vec3d& normal) { return dot(abs3(normal), error); }
 
 Vec3d offset_ray_origin(const Vec3d& point, const Vec3d& error, const Vec3d& normal,
                         const Vec3d& direction) {

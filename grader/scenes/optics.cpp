@@ -26,8 +26,8 @@ std::optional<double> critical_angle_degrees(double n1, double n2) {
   return std::asin(n2 / n1) * 180 / std::numbers::pi;
 }
 
-PhongLight phong_light(const Vec3d& n, const Vec3d& l, const Vec3d& v, double intensity,
-                       double k_d, double k_s, double shininess) {
+PhongLight phong_light(const Vec3d& n, const Vec3d& l, const Vec3d& v, double intensity, double k_d,
+                       double k_s, double shininess) {
   PhongLight p;
   p.n_dot_l = dot(n, l);
   p.r = 2 * p.n_dot_l * n - l;

@@ -39,7 +39,7 @@ struct PhongLight {
   double diffuse = 0;
   double specular = 0;
 };
-PhongLight phong_light(const Vec3d& n, const Vec3d& l, const Vec3d& v, double intensity,
-                       double k_d, double k_s, double shininess);
+PhongLight phong_light(const Vec3d& n, const Vec3d& l, const Vec3d& v, double intensity, double k_d,
+                       double k_s, double shininess);
 
 }  // namespace raygrade

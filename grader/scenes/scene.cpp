@@ -47,8 +47,8 @@ Material read_material(const Cursor& c) {
 }
 
 nlohmann::json material_json(const Material& m) {
-  nlohmann::json j = {{"ambient", m.ambient},   {"diffuse", m.diffuse},
-                      {"specular", m.specular}, {"shininess", m.shininess},
+  nlohmann::json j = {{"ambient", m.ambient},           {"diffuse", m.diffuse},
+                      {"specular", m.specular},         {"shininess", m.shininess},
                       {"reflectivity", m.reflectivity}, {"transparency", m.transparency}};
   if (m.transmits()) j["refractive_index"] = m.refractive_index;
   return j;
@@ -70,16 +70,16 @@ Light read_light(const Cursor& c, int index) {
       c.at("position").fail("a directional light has a direction only", "invalid");
     }
   } else {
-    c.at("type").fail(
-        fmt::format("unknown light type '{}' (known: point, directional)", type), "invalid");
+    c.at("type").fail(fmt::format("unknown light type '{}' (known: point, directional)", type),
+                      "invalid");
   }
   l.intensity = coefficient(c, "intensity", 1);
   return l;
 }
 
 Scene read_scene(const Cursor& c) {
-  c.allow_only({"objects", "lights", "materials", "ambient_light", "background",
-                "refractive_index", "max_depth", "internal_reflection", "transparent_shadows"});
+  c.allow_only({"objects", "lights", "materials", "ambient_light", "background", "refractive_index",
+                "max_depth", "internal_reflection", "transparent_shadows"});
   Scene s;
   std::map<std::string, Material, std::less<>> named;
   if (auto m = c.find("materials")) {
@@ -117,7 +117,8 @@ Scene read_scene(const Cursor& c) {
     }
     if (auto t = item.find("transform")) {
       o.transform = read_transform(*t);
-      if (o.transform.to_world.determinant() == 0) t->fail("the transform is singular", "degenerate");
+      if (o.transform.to_world.determinant() == 0)
+        t->fail("the transform is singular", "degenerate");
     }
     o.solid = encloses_volume(*o.shape);
     s.objects.push_back(std::move(o));
@@ -140,10 +141,10 @@ Scene read_scene(const Cursor& c) {
   if (c.has("max_depth")) {
     s.max_depth = c.at("max_depth").integer();
     if (s.max_depth < 1 || s.max_depth > kMaxTreeDepth) {
-      c.at("max_depth").fail(
-          fmt::format("max_depth counts ray generations, from 1 (the primary ray only) to {}",
-                      kMaxTreeDepth),
-          "range");
+      c.at("max_depth")
+          .fail(fmt::format("max_depth counts ray generations, from 1 (the primary ray only) to {}",
+                            kMaxTreeDepth),
+                "range");
     }
   }
   s.internal_reflection = c.boolean_or("internal_reflection", true);

@@ -16,12 +16,12 @@ namespace raygrade {
 // Phong coefficients and the Whitted coefficients of secondary rays. One channel of
 // intensity, as course exercises compute it.
 struct Material {
-  double ambient = 0.1;   // k_a
-  double diffuse = 0.7;   // k_d
-  double specular = 0.2;  // k_s
-  double shininess = 10;  // n, the Phong exponent
-  double reflectivity = 0;     // k_r: weight of the reflection ray; 0 spawns none
-  double transparency = 0;     // k_t: weight of the refraction ray; 0 spawns none
+  double ambient = 0.1;         // k_a
+  double diffuse = 0.7;         // k_d
+  double specular = 0.2;        // k_s
+  double shininess = 10;        // n, the Phong exponent
+  double reflectivity = 0;      // k_r: weight of the reflection ray; 0 spawns none
+  double transparency = 0;      // k_t: weight of the refraction ray; 0 spawns none
   double refractive_index = 1;  // η of the object's inside (used when transparency > 0)
 
   bool reflects() const { return reflectivity > 0; }
@@ -37,8 +37,8 @@ enum class LightType { kPoint, kDirectional };
 struct Light {
   std::string name;
   LightType type = LightType::kPoint;
-  Vec3d position{};   // point lights
-  Vec3d direction{};  // directional lights: the direction the light travels
+  Vec3d position{};      // point lights
+  Vec3d direction{};     // directional lights: the direction the light travels
   double intensity = 1;  // I_p
 };
 
@@ -59,19 +59,19 @@ enum class TransparentShadows {
 struct Scene {
   std::vector<SceneObject> objects;
   std::vector<Light> lights;
-  double ambient_light = 1;   // I_a
-  double background = 0;      // the intensity of a ray that hits nothing
+  double ambient_light = 1;     // I_a
+  double background = 0;        // the intensity of a ray that hits nothing
   double refractive_index = 1;  // of the space between the objects
-  int max_depth = 5;  // generations of rays in the tree; the primary ray is generation 1
+  int max_depth = 5;            // generations of rays in the tree; the primary ray is generation 1
   bool internal_reflection = true;  // reflection rays inside transparent solids
   TransparentShadows transparent_shadows = TransparentShadows::kBlock;
 };
 
 // The nearest hit of a world ray among the scene's objects.
 struct SceneHit {
-  int object = -1;  // index into the objects; -1 for a miss
-  Hit hit;          // in world space: t of the world ray, world point, unit world normal
-  Ray object_ray;   // the ray in the object's space (the world ray when not transformed)
+  int object = -1;      // index into the objects; -1 for a miss
+  Hit hit;              // in world space: t of the world ray, world point, unit world normal
+  Ray object_ray;       // the ray in the object's space (the world ray when not transformed)
   Vec3d point_error{};  // a bound on the rounding error of each coordinate of hit.point
 };
 

@@ -120,8 +120,8 @@ class Tracer {
       ShadowCheck s;
       s.light = static_cast<int>(i);
       s.light_name = light.name;
-      Vec3d to_light = light.type == LightType::kPoint ? light.position - node.point
-                                                       : -light.direction;
+      Vec3d to_light =
+          light.type == LightType::kPoint ? light.position - node.point : -light.direction;
       s.l = normalized(to_light);
       s.normal = lit_normal(node, m, s.l);
       if (dot(s.normal, s.l) <= 0) {
@@ -211,8 +211,9 @@ class Tracer {
         tree_.nodes[index].reflection = child;
         if (tir) {
           tree_.nodes[child].total_internal_reflection = true;
-          note("Total internal reflection: no refraction ray; the reflection ray carries the "
-               "transmitted share too.");
+          note(
+              "Total internal reflection: no refraction ray; the reflection ray carries the "
+              "transmitted share too.");
         }
       }
     }
@@ -220,9 +221,9 @@ class Tracer {
       Vec3d t = refr.direction;
       Vec3d side = obj.solid ? -node.facing_normal : node.facing_normal;
       Vec3d o = offset_ray_origin(node.point, node.point_error, side, t);
-      int child = trace_ray(Ray{o, t, 0, kInfinity}, node.point, RayKind::kRefraction, index,
-                            depth + 1, node.path + ".T", m.transparency,
-                            offset_distance(node.point_error, side));
+      int child =
+          trace_ray(Ray{o, t, 0, kInfinity}, node.point, RayKind::kRefraction, index, depth + 1,
+                    node.path + ".T", m.transparency, offset_distance(node.point_error, side));
       tree_.nodes[index].refraction = child;
     }
   }

@@ -43,29 +43,31 @@ struct ShadowCheck {
   double transmission = 1;    // the fraction of the light's intensity that arrives
   PhongLight phong;           // filled when the intensity is asked and the light arrives
 
-  bool reaches() const { return status == LightStatus::kVisible || status == LightStatus::kTransmitted; }
+  bool reaches() const {
+    return status == LightStatus::kVisible || status == LightStatus::kTransmitted;
+  }
 };
 
 struct TreeNode {
   int index = 0;
   int parent = -1;
   RayKind kind = RayKind::kPrimary;
-  int depth = 1;     // generation: the primary ray is 1
-  std::string path;  // "P", "P.R", "P.T.R": stable identity for grading and drawing
+  int depth = 1;      // generation: the primary ray is 1
+  std::string path;   // "P", "P.R", "P.T.R": stable identity for grading and drawing
   std::string label;  // "I1" for hit nodes (or the problem's own label); the path otherwise
-  Ray ray;             // as cast: the origin is moved off the surface it leaves
-  Vec3d from{};        // where it starts: the eye or the parent's hit point
-  double offset = 0;   // how far the origin was moved off the surface
-  double weight = 1;   // k_r or k_t of the parent (1 for the primary ray)
+  Ray ray;            // as cast: the origin is moved off the surface it leaves
+  Vec3d from{};       // where it starts: the eye or the parent's hit point
+  double offset = 0;  // how far the origin was moved off the surface
+  double weight = 1;  // k_r or k_t of the parent (1 for the primary ray)
   bool total_internal_reflection = false;  // this reflection ray replaces a refraction ray
 
   bool hit = false;
   int object = -1;
   double t = 0;
   Vec3d point{};
-  Vec3d normal{};          // the object's normal (outward for solids), world space
-  Vec3d facing_normal{};   // the normal turned to face the incoming ray
-  bool inside = false;     // the ray arrives from inside a solid
+  Vec3d normal{};         // the object's normal (outward for solids), world space
+  Vec3d facing_normal{};  // the normal turned to face the incoming ray
+  bool inside = false;    // the ray arrives from inside a solid
   Vec3d point_error{};
 
   bool shaded = false;  // Phong terms were decided (false when only the hit is asked)
@@ -73,8 +75,8 @@ struct TreeNode {
   bool diffuse = false, specular = false;  // the terms that apply (ambient always applies)
 
   int reflection = -1, refraction = -1;  // children, or -1
-  std::vector<std::string> notes;  // why a secondary ray was not cast, and other remarks
-  Refraction refraction_math;      // when a refraction was attempted
+  std::vector<std::string> notes;        // why a secondary ray was not cast, and other remarks
+  Refraction refraction_math;            // when a refraction was attempted
   double n1 = 1, n2 = 1;
 
   // Intensities (when asked): local = ambient + Σ lights; total = local + k_r·I_r + k_t·I_t.

@@ -8,8 +8,7 @@ namespace raygrade {
 
 std::string node_caption(const RayTree& tree, const Scene& scene, const TreeNode& node) {
   if (!node.hit) return "miss";
-  std::string s = fmt::format("{}, t = {}", scene.objects[node.object].name,
-                              format_number(node.t));
+  std::string s = fmt::format("{}, t = {}", scene.objects[node.object].name, format_number(node.t));
   if (node.inside) s += ", from inside";
   if (node.shaded) s += fmt::format(" [{}]", fmt::join(node_terms(node), ", "));
   if (tree.ask == Ask::kIntensity) s += fmt::format(" I = {}", format_number(node.intensity));

@@ -97,8 +97,8 @@ nlohmann::json tree_json(const RayTree& tree, const Scene& scene) {
   if (tree.ask == Ask::kHit) {
     nlohmann::json hits = nlohmann::json::array();
     if (root.hit) {
-      hits.push_back({{"t", root.t}, {"point", vec_json(root.point)},
-                      {"normal", vec_json(root.normal)}});
+      hits.push_back(
+          {{"t", root.t}, {"point", vec_json(root.point)}, {"normal", vec_json(root.normal)}});
     }
     return {{"object", root.hit ? nlohmann::json(scene.objects[root.object].name) : nullptr},
             {"hits", hits},

@@ -23,22 +23,22 @@ std::string counts_sentence(const RayCounts& c) {
 SolutionPart overview(const RayTree& tree, const Scene& scene) {
   Deriver d("whitted", "The ray tree");
   for (const auto& e : tree.effects) {
-    d.conclude(fmt::format("{} {}: {}.", e.simulated ? "Simulated:" : "Skipped:", e.name,
-                           e.reason));
+    d.conclude(
+        fmt::format("{} {}: {}.", e.simulated ? "Simulated:" : "Skipped:", e.name, e.reason));
   }
   d.conclude(counts_sentence(tree.counts));
   SolutionPart part{"", std::move(d).finish(), {}};
   if (tree.ask != Ask::kHit) {
-    part.figures.push_back(Figure{"The ray tree (R: reflection, T: refraction, dashed: shadow rays)",
-                                  tree_svg(tree, scene), tree_dot(tree, scene),
-                                  tree_text(tree, scene)});
+    part.figures.push_back(
+        Figure{"The ray tree (R: reflection, T: refraction, dashed: shadow rays)",
+               tree_svg(tree, scene), tree_dot(tree, scene), tree_text(tree, scene)});
   }
   return part;
 }
 
 // Shadow ray and Phong steps for one light.
-void light_steps(Deriver& d, const Scene& scene, const TreeNode& node, const ShadowCheck& s,
-                 int k, bool intensity) {
+void light_steps(Deriver& d, const Scene& scene, const TreeNode& node, const ShadowCheck& s, int k,
+                 bool intensity) {
   const Light& light = scene.lights[s.light];
   std::string i = std::to_string(k + 1);
   E L;
@@ -77,9 +77,10 @@ void light_steps(Deriver& d, const Scene& scene, const TreeNode& node, const Sha
       verdict = s.status == LightStatus::kBlocked
                     ? fmt::format("The shadow ray toward {} is blocked by {}.", light.name,
                                   names_list(by))
-                    : fmt::format("The shadow ray toward {} passes only transparent objects ({}): "
-                                  "{} of the light arrives.",
-                                  light.name, names_list(by), format_number(s.transmission));
+                    : fmt::format(
+                          "The shadow ray toward {} passes only transparent objects ({}): "
+                          "{} of the light arrives.",
+                          light.name, names_list(by), format_number(s.transmission));
       break;
     }
   }
@@ -109,17 +110,16 @@ void secondary_steps(Deriver& d, const Scene& scene, const TreeNode& node) {
     E n2 = d.given("n2", "n_2", node.n2, node.inside ? "outside" : "inside the object");
     d.step("eta", "eta", n1 / n2);
     d.step("cos_i", "cos_i", -dot(d.sym("D_hat"), d.sym("N_f")), "the angle of incidence");
-    Value k = d.step("k", "k",
-                     1 - square(d.sym("eta")) * (1 - square(d.sym("cos_i"))),
+    Value k = d.step("k", "k", 1 - square(d.sym("eta")) * (1 - square(d.sym("cos_i"))),
                      "cos²θt by Snell's law");
     if (k.scalar < 0) {
       d.note("k < 0: total internal reflection, there is no refracted ray.");
     } else {
-      d.step("T_dir", "T",
-             d.sym("eta") * d.sym("D_hat") +
-                 (d.sym("eta") * d.sym("cos_i") - sqrt(d.sym("k"))) * d.sym("N_f"),
-             fmt::format("the refraction ray's direction (k_t = {})",
-                         format_number(m.transparency)));
+      d.step(
+          "T_dir", "T",
+          d.sym("eta") * d.sym("D_hat") +
+              (d.sym("eta") * d.sym("cos_i") - sqrt(d.sym("k"))) * d.sym("N_f"),
+          fmt::format("the refraction ray's direction (k_t = {})", format_number(m.transparency)));
     }
   }
 }
@@ -147,10 +147,11 @@ Derivation node_steps(const RayTree& tree, const Scene& scene, const TreeNode& n
     std::string name = fmt::format("t_{}", h.object + 1);
     std::string note = fmt::format("the nearest hit of {}", o.name);
     if (!o.transform.identity()) {
-      note += fmt::format(", found in its own space (transform: {}) with O' = {}, D' = {}; t "
-                          "is the same",
-                          describe_transform(o.transform), format_vector(h.object_ray.origin),
-                          format_vector(h.object_ray.direction));
+      note += fmt::format(
+          ", found in its own space (transform: {}) with O' = {}, D' = {}; t "
+          "is the same",
+          describe_transform(o.transform), format_vector(h.object_ray.origin),
+          format_vector(h.object_ray.direction));
     }
     ts.push_back(d.given(name, name, h.hit.t, note));
   }
@@ -237,18 +238,19 @@ Derivation tree_answer(const RayTree& tree, const Scene& scene) {
     ambient.push_back(n.label);
     std::vector<std::string> by = shadow_blockers(tree, scene, n);
     if (scene.lights.empty()) continue;
-    why.push_back(by.empty() ? fmt::format("{} faces away from every light", n.label)
-                             : fmt::format("{}'s shadow ray is blocked by {}", n.label,
-                                           names_list(by)));
+    why.push_back(by.empty()
+                      ? fmt::format("{} faces away from every light", n.label)
+                      : fmt::format("{}'s shadow ray is blocked by {}", n.label, names_list(by)));
   }
   std::size_t points = all.size() + ambient.size();
   d.conclude(fmt::format("The tree has {} point{} where intensity is computed.", points,
                          points == 1 ? "" : "s"));
-  d.conclude(fmt::format("All three Phong terms (ambient, diffuse, specular): {}.", names_list(all)));
+  d.conclude(
+      fmt::format("All three Phong terms (ambient, diffuse, specular): {}.", names_list(all)));
   if (!ambient.empty()) {
-    d.conclude(fmt::format("Only the ambient term: {}{}.", names_list(ambient),
-                           why.empty() ? " (the scene has no lights)"
-                                       : fmt::format(" ({})", fmt::join(why, "; "))));
+    d.conclude(fmt::format(
+        "Only the ambient term: {}{}.", names_list(ambient),
+        why.empty() ? " (the scene has no lights)" : fmt::format(" ({})", fmt::join(why, "; "))));
   }
   if (tree.ask == Ask::kIntensity) {
     d.conclude(fmt::format("The intensity seen along the primary ray is {}.",

@@ -81,7 +81,8 @@ std::string tree_svg(const RayTree& tree, const Scene& scene) {
       width, height);
   Placed eye{layout.node(0).x, kMargin + 10};
   out += fmt::format(
-      "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"40\" height=\"20\" fill=\"#eee\" stroke=\"#333\"/>\n",
+      "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"40\" height=\"20\" fill=\"#eee\" "
+      "stroke=\"#333\"/>\n",
       eye.x - 20, eye.y - 10);
   out += text_at(eye.x, eye.y + 4, "eye");
   // Edges first, so that nodes are drawn over them.
@@ -112,9 +113,9 @@ std::string tree_svg(const RayTree& tree, const Scene& scene) {
       continue;
     }
     bool shadowed = in_shadow(n);
-    out += fmt::format(
-        "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{}\" fill=\"{}\" stroke=\"#333\"/>\n", p.x, p.y,
-        kRadius, shadowed ? "#ddd" : "#ffd");
+    out +=
+        fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{}\" fill=\"{}\" stroke=\"#333\"/>\n",
+                    p.x, p.y, kRadius, shadowed ? "#ddd" : "#ffd");
     out += text_at(p.x, p.y + 4, n.label, " font-weight=\"bold\"");
     out += text_at(p.x, p.y + kRadius + 14,
                    fmt::format("{}, t = {}", scene.objects[n.object].name, format_number(n.t)));
@@ -130,7 +131,8 @@ std::string tree_svg(const RayTree& tree, const Scene& scene) {
           "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.0f}\" height=\"22\" fill=\"#fff\" "
           "stroke=\"{}\" stroke-dasharray=\"5,4\"/>\n",
           q.x - kColumn / 2 + 8, q.y - 11, kColumn - 16, color);
-      out += text_at(q.x, q.y + 4, shadow_caption(scene, s), fmt::format(" fill=\"{}\"", color).c_str());
+      out += text_at(q.x, q.y + 4, shadow_caption(scene, s),
+                     fmt::format(" fill=\"{}\"", color).c_str());
     }
   }
   return out + "</svg>\n";
