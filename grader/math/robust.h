@@ -7,12 +7,19 @@
 
 namespace raygrade {
 
+// The customisation point of the compensated formulas: number types for which FMA and
+// TwoSum give error-free transformations (the built-in floating types). Other number types
+// (DoubleDouble, Mpfr, Interval) carry enough precision or rigour of their own and take the
+// plain expression.
+template <typename T>
+inline constexpr bool kErrorFree = std::is_floating_point_v<T>;
+
 // a*b - c*d with one rounding, by Kahan's algorithm with FMA (Muller et al., Handbook of
 // Floating-Point Arithmetic, 2nd ed., sec. 5.3). For number types without a native FMA the
 // plain expression is used: they carry enough precision of their own.
 template <typename T>
 T difference_of_products(T a, T b, T c, T d) {
-  if constexpr (std::is_floating_point_v<T>) {
+  if constexpr (kErrorFree<T>) {
     T cd = c * d;
     T err = std::fma(-c, d, cd);
     T dop = std::fma(a, b, -cd);
@@ -27,6 +34,41 @@ template <typename T>
 Vec3<T> cross_accurate(const Vec3<T>& a, const Vec3<T>& b) {
   return {difference_of_products(a.y, b.z, a.z, b.y), difference_of_products(a.z, b.x, a.x, b.z),
           difference_of_products(a.x, b.y, a.y, b.x)};
+}
+
+// a·b + c·d + e·f (a dot product) with the products split exactly by FMA and summed with
+// their errors (Ogita, Rump and Oishi's Dot2): as if computed in twice the precision.
+template <typename T>
+T dot_accurate(const Vec3<T>& u, const Vec3<T>& v) {
+  if constexpr (kErrorFree<T>) {
+    T sum = 0, err = 0;
+    for (int i = 0; i < 3; ++i) {
+      T p = u[i] * v[i];
+      T pe = std::fma(u[i], v[i], -p);
+      T s = sum + p;
+      T bb = s - sum;
+      err += ((sum - (s - bb)) + (p - bb)) + pe;
+      sum = s;
+    }
+    return sum + err;
+  } else {
+    return dot(u, v);
+  }
+}
+
+// o − c as an unevaluated sum hi + lo (exact for floating types, by Knuth's TwoSum).
+template <typename T>
+void difference_exact(const Vec3<T>& o, const Vec3<T>& c, Vec3<T>& hi, Vec3<T>& lo) {
+  for (int i = 0; i < 3; ++i) {
+    T s = o[i] - c[i];
+    if constexpr (kErrorFree<T>) {
+      T bb = s - o[i];
+      lo[i] = (o[i] - (s - bb)) + (-c[i] - bb);
+    } else {
+      lo[i] = T(0);
+    }
+    hi[i] = s;
+  }
 }
 
 // Sign of x as a number of the same type (+1 for zero, so that q below never vanishes

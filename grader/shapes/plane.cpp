@@ -55,9 +55,14 @@ Intersection Plane::intersect(const Ray& ray) const {
                                                       std::abs(*d_));
     return out;
   }
-  double numerator =
-      point_ ? dot(normal_, *point_ - ray.origin) : -(dot(normal_, ray.origin) + *d_);
-  double t = numerator / dot(normal_, ray.direction);
+  double t = 0;
+  if (point_) {
+    std::optional<double> tp = plane_t(ray.origin, ray.direction, normal_, *point_);
+    if (!tp) return out;
+    t = *tp;
+  } else {
+    t = -(dot_accurate(normal_, ray.origin) + *d_) / dot_accurate(normal_, ray.direction);
+  }
   if (ray.accepts(t)) {
     Hit h;
     h.t = t;

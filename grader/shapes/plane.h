@@ -3,9 +3,23 @@
 
 #include <optional>
 
+#include "math/robust.h"
 #include "shapes/shape.h"
 
 namespace raygrade {
+
+// The parameter t where the ray meets the plane through p with normal n: n·(p − o) / (n·d),
+// with p − o split exactly and both dot products compensated, so that a ray nearly parallel
+// to the plane (n·d around 1e-12) keeps the digits of its denominator. No value when n·d = 0.
+template <typename T>
+std::optional<T> plane_t(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& n, const Vec3<T>& p) {
+  T den = dot_accurate(n, d);
+  if (den == T(0)) return std::nullopt;
+  Vec3<T> f, f_lo;
+  difference_exact(p, o, f, f_lo);
+  T num = dot_accurate(n, f) + dot(n, f_lo);
+  return num / den;
+}
 
 class Plane final : public Shape {
  public:

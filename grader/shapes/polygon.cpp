@@ -6,6 +6,7 @@
 
 #include "shapes/describe.h"
 #include "shapes/flat.h"
+#include "shapes/plane.h"
 
 namespace raygrade {
 namespace {
@@ -99,13 +100,12 @@ Intersection Polygon::intersect(const Ray& ray) const {
         in_plane(normal_, v_[0], ray.origin) && ray_in_plane_meets_polygon(ray, v_, normal_);
     return out;
   }
-  double t = dot(normal_, v_[0] - ray.origin) / dot(normal_, ray.direction);
-  if (!ray.accepts(t)) return out;
-  Vec3d q = ray.at(t);
+  std::optional<double> t = plane_t(ray.origin, ray.direction, normal_, v_[0]);
+  if (!t || !ray.accepts(*t)) return out;
   if (!ray_pierces_polygon(ray, v_)) return out;
   Hit h;
-  h.t = t;
-  h.point = q;
+  h.t = *t;
+  h.point = ray.at(*t);
   h.normal = normalized(normal_);
   out.hits.push_back(h);
   return out;

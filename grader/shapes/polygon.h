@@ -1,9 +1,51 @@
 // Polygon: planar vertices, convex or not (a simple polygon).
 #pragma once
 
+#include <array>
+
+#include "math/robust.h"
 #include "shapes/shape.h"
 
 namespace raygrade {
+
+// Does the ray pass through the closed polygon? The watertight test of the triangle, for any
+// simple polygon: the vertices are sheared so that the ray runs along +z through (0, 0), and
+// (0, 0) is tested against the projected polygon by crossing number, where each edge's
+// crossing is decided by the sign of its edge function alone (no division). An edge shared
+// by two polygons gets the same edge function up to sign, so a ray through it never misses
+// both. A zero edge function with the origin between the edge's ends is on the boundary: hit.
+template <typename T>
+bool watertight_polygon(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& v) {
+  int kz = max_dimension(d);
+  int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+  if (d[kz] < T(0)) std::swap(kx, ky);
+  T sx = d[kx] / d[kz], sy = d[ky] / d[kz];
+  std::vector<std::array<T, 2>> p;
+  p.reserve(v.size());
+  for (const auto& vertex : v) {
+    Vec3<T> a = vertex - o;
+    p.push_back({a[kx] - sx * a[kz], a[ky] - sy * a[kz]});
+  }
+  bool inside = false;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const auto& a = p[i];
+    const auto& b = p[(i + 1) % p.size()];
+    T e = a[0] * b[1] - a[1] * b[0];
+    if (e == T(0)) e = difference_of_products(a[0], b[1], a[1], b[0]);
+    if (e == T(0)) {
+      // (0, 0) is on the edge's line: on the edge itself when between its ends.
+      bool between_x = (a[0] <= T(0) && T(0) <= b[0]) || (b[0] <= T(0) && T(0) <= a[0]);
+      bool between_y = (a[1] <= T(0) && T(0) <= b[1]) || (b[1] <= T(0) && T(0) <= a[1]);
+      if (between_x && between_y) return true;
+      continue;
+    }
+    bool a_up = a[1] > T(0), b_up = b[1] > T(0);
+    if (a_up == b_up) continue;
+    // The edge crosses the x axis at e / (b_y − a_y): on the +x side when the signs agree.
+    if ((e > T(0)) == b_up) inside = !inside;
+  }
+  return inside;
+}
 
 class Polygon final : public Shape {
  public:

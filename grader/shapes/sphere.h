@@ -20,7 +20,7 @@ struct Roots {
 // the digits of its (small) distance to the surface.
 template <typename T>
 T sum_of_squares_minus_square(const Vec3<T>& f_hi, const Vec3<T>& f_lo, T r) {
-  if constexpr (std::is_floating_point_v<T>) {
+  if constexpr (kErrorFree<T>) {
     T sum = 0, compensation = 0;
     auto add = [&](T x) {
       T s = sum + x;
@@ -41,21 +41,6 @@ T sum_of_squares_minus_square(const Vec3<T>& f_hi, const Vec3<T>& f_lo, T r) {
   } else {
     Vec3<T> f = f_hi + f_lo;
     return dot(f, f) - r * r;
-  }
-}
-
-// o − c as an unevaluated sum hi + lo (exact for floating types, by Knuth's TwoSum).
-template <typename T>
-void difference_exact(const Vec3<T>& o, const Vec3<T>& c, Vec3<T>& hi, Vec3<T>& lo) {
-  for (int i = 0; i < 3; ++i) {
-    T s = o[i] - c[i];
-    if constexpr (std::is_floating_point_v<T>) {
-      T bb = s - o[i];
-      lo[i] = (o[i] - (s - bb)) + (-c[i] - bb);
-    } else {
-      lo[i] = T(0);
-    }
-    hi[i] = s;
   }
 }
 

@@ -75,10 +75,23 @@ TriangleHit<T> watertight_triangle(const Vec3<T>& o, const Vec3<T>& d, const Vec
   if ((u < T(0) || v < T(0) || w < T(0)) && (u > T(0) || v > T(0) || w > T(0))) return out;
   T det = u + v + w;
   if (det == T(0)) return out;
-  T az = sz * A[kz], bz = sz * B[kz], cz = sz * C[kz];
-  T tt = u * az + v * bz + w * cz;
   out.hit = true;
-  out.t = tt / det;
+  // t from the plane, with compensated products: the sheared formula (u·az + v·bz + w·cz)/det
+  // loses digits in proportion to how thin the triangle is (a needle's det is tiny), the
+  // plane's does not. The sheared one remains for a plane the rounding makes parallel.
+  Vec3<T> ab_hi, ab_lo, ac_hi, ac_lo;
+  difference_exact(b, a, ab_hi, ab_lo);
+  difference_exact(c, a, ac_hi, ac_lo);
+  Vec3<T> n = cross_accurate(ab_hi, ac_hi) + (cross(ab_lo, ac_hi) + cross(ab_hi, ac_lo));
+  T den = dot_accurate(n, d);
+  if (den == T(0)) {
+    T az = sz * A[kz], bz = sz * B[kz], cz = sz * C[kz];
+    out.t = (u * az + v * bz + w * cz) / det;
+  } else {
+    Vec3<T> f, f_lo;
+    difference_exact(a, o, f, f_lo);
+    out.t = (dot_accurate(n, f) + dot(n, f_lo)) / den;
+  }
   out.barycentric = {u / det, v / det, w / det};
   return out;
 }

@@ -1,0 +1,61 @@
+// The certified and adaptive answers: the reference nearest hit computed in interval
+// arithmetic, so that it is known whether the hit-or-miss decision is certain, and recomputed
+// up the ladder (double, double-double, MPFR) until it is; MPFR ground truth.
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+#include "accuracy/accuracy_case.h"
+
+namespace raygrade {
+
+// The levels of the adaptive answer, in the order they are tried.
+enum class Level { kDouble, kDoubleDouble, kMpfr, kExactBoundary };
+std::string_view level_name(Level level);
+
+// The reference nearest hit in interval arithmetic: `decided` when every comparison it made
+// (discriminant sign, edge signs, t ≥ 0, which root is first) was certain; `hit` and the
+// enclosure [t_lo, t_hi] of the true t (rounded outward to doubles) are then rigorous.
+struct Certified {
+  bool decided = false;
+  bool hit = false;
+  double t_lo = 0, t_hi = 0;
+  double t = 0;  // the enclosure's midpoint, rounded
+};
+
+Certified certified_double(const AccuracyCase& c);
+Certified certified_double_double(const AccuracyCase& c);
+Certified certified_mpfr(const AccuracyCase& c, int bits);
+
+// The adaptive answer (Shewchuk's plan): the certified double answer when it decides, else
+// double-double, else MPFR at kMpfrBits, then kMpfrBoundaryBits; when even that cannot decide,
+// the true input lies on the boundary itself (a ray exactly tangent, through an edge, at
+// t = 0) and the level is kExactBoundary, with the decision of the last level.
+struct Adaptive {
+  Level level = Level::kDouble;
+  bool hit = false;
+  double t = 0;
+  double t_lo = 0, t_hi = 0;
+};
+Adaptive adaptive_nearest(const AccuracyCase& c);
+
+// MPFR precisions of the ladder's top: 256 bits decides all but inputs within about 2^-200 of
+// the boundary; 4096 bits exceeds the exponent range of double products of the inputs (their
+// exact values need at most 2·2098 + 106 bits), so a case it cannot decide is, for the
+// polynomial tests (discriminants, edge functions), exactly on the boundary.
+constexpr int kMpfrBits = 256;
+constexpr int kMpfrBoundaryBits = 4096;
+
+// Ground truth: the certified MPFR answer; `boundary` when even kMpfrBoundaryBits cannot
+// decide. `condition` is the relative condition number of t with respect to relative
+// perturbations of every input coordinate (∞ at a tangent), by differences at MPFR precision.
+struct Truth {
+  bool hit = false;
+  double t = 0;
+  bool boundary = false;
+  double condition = 0;
+};
+Truth compute_truth(const AccuracyCase& c, bool with_condition = true);
+
+}  // namespace raygrade
