@@ -122,6 +122,14 @@ void grazing(std::vector<AccuracyCase>& out, SplitMix& rng) {
                      {{0, 0, 0}, {0, 0, 1}}, 1));
   out.push_back(make("tangent-4", "tangent", Primitive::kCylinder, {3, -7, 2}, {0, 1, 0},
                      {{0, 0, 0}, {0, 0, 2}}, 3));
+  // Beyond double-double: the discriminant is about 1e-32 of its terms, below the 2^-100
+  // double-double can vouch for: only MPFR decides. With f = (−5, 1 − 2^-53, z):
+  // Δ = 1 − (1 − 2^-53)² − z², which is −2^-106 for z = 2^-26 (a miss) and 3·2^-106 − 2^-158
+  // for z = 2^-26 − 2^-79 (a hit; 53 bits, so exactly a double).
+  out.push_back(make("beyond-double-double-0", "tangent", Primitive::kSphere,
+                     {-5, 1 - 0x1p-53, 0x1p-26}, {1, 0, 0}, {{0, 0, 0}}, 1));
+  out.push_back(make("beyond-double-double-1", "tangent", Primitive::kSphere,
+                     {-5, 1 - 0x1p-53, 0x1p-26 - 0x1p-79}, {1, 0, 0}, {{0, 0, 0}}, 1));
   // Origins on the surface: exactly (t = 0) and to the nearest double.
   out.push_back(make("on-surface-0", "on-surface", Primitive::kSphere, {1, 0, 0}, {-1, 0.5, 0}, {{0, 0, 0}}, 1));
   out.push_back(make("on-surface-1", "on-surface", Primitive::kSphere, {1, 0, 0}, {1, 0.3, 0}, {{0, 0, 0}}, 1));
@@ -153,13 +161,32 @@ void shared_edges(std::vector<AccuracyCase>& out, SplitMix& rng) {
   for (int i = 0; i < 60; ++i) {
     double scale = i % 4 == 3 ? 1e8 : 1;  // some far from the origin
     Vec3d shift = scale == 1 ? Vec3d{} : scale * rng.unit_vector();
-    Vec3d q[4];
-    for (auto& v : q) v = shift + Vec3d{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-0.2, 0.2)};
-    Vec3d o = shift + Vec3d{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(2, 4)};
-    bool vertex = i % 3 == 0;
-    Vec3d target = vertex ? q[0] : q[0] + rng.uniform(0.05, 0.95) * (q[2] - q[0]);
+    // A quad folded along its diagonal q0 q2, q1 and q3 on either side of it as seen from
+    // above, where the rays come from.
+    auto jitter = [&](double x, double y) {
+      return shift + Vec3d{x + rng.uniform(-0.3, 0.3), y + rng.uniform(-0.3, 0.3),
+                           rng.uniform(-0.2, 0.2)};
+    };
+    Vec3d q[4] = {jitter(-1, -1), jitter(1, -1), jitter(1, 1), jitter(-1, 1)};
+    Vec3d o = shift + Vec3d{rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5), rng.uniform(2, 4)};
+    if (i % 3 == 0) {
+      // A fan of five triangles around a vertex, each ray exactly at the vertex.
+      Vec3d center = jitter(0, 0), d = center - o;
+      std::vector<Vec3d> rim;
+      for (int k = 0; k < 5; ++k) {
+        double a = 2 * M_PI * k / 5 + rng.uniform(-0.3, 0.3);
+        rim.push_back(center + Vec3d{std::cos(a), std::sin(a), rng.uniform(-0.3, 0.3)});
+      }
+      for (int k = 0; k < 5; ++k) {
+        out.push_back(make(fmt::format("shared-vertex-{}/{}", i, static_cast<char>('a' + k)),
+                           "shared-edge", Primitive::kTriangle, o, d,
+                           {center, rim[k], rim[(k + 1) % 5]}));
+      }
+      continue;
+    }
+    Vec3d target = q[0] + rng.uniform(0.05, 0.95) * (q[2] - q[0]);
     Vec3d d = target - o;
-    std::string id = fmt::format("shared-{}-{}", vertex ? "vertex" : "edge", i);
+    std::string id = fmt::format("shared-edge-{}", i);
     out.push_back(make(id + "/a", "shared-edge", Primitive::kTriangle, o, d, {q[0], q[1], q[2]}));
     out.push_back(make(id + "/b", "shared-edge", Primitive::kTriangle, o, d, {q[0], q[2], q[3]}));
   }

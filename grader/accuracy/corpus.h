@@ -28,8 +28,8 @@ class SplitMix {
 // The hard cases: every kind of input the accuracy study names (far and huge spheres, grazing
 // and tangent rays, origins on the surface, rays nearly parallel to a plane, shared edges and
 // vertices, needle triangles, huge coordinates, tiny and huge direction scales, box slab
-// planes, rays along a cylinder's axis). Pairs of triangles or polygons that share an edge
-// have ids ending in "/a" and "/b".
+// planes, rays along a cylinder's axis). Triangles or polygons that share an edge (pairs) or
+// a vertex (fans of five) have ids ending in "/a", "/b", ...
 std::vector<AccuracyCase> hard_cases();
 
 // The part of hard_cases() about scales and slab or axis boundaries: huge coordinates, tiny

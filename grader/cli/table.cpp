@@ -6,6 +6,7 @@ namespace raygrade::cli {
 Runner setup_solve(CLI::App& sub);
 Runner setup_run(CLI::App& sub);
 Runner setup_solutions(CLI::App& sub);
+Runner setup_bench(CLI::App& sub);
 
 const std::vector<Command>& command_table() {
   static const std::vector<Command> table = {
@@ -14,6 +15,7 @@ const std::vector<Command>& command_table() {
       {"solve", "print the reference answers (and worked solutions) of problems", &setup_solve},
       {"solutions", "write (or --check) the worked solutions of a bank, one file per problem",
        &setup_solutions},
+      {"bench", "time and judge every intersection formula against MPFR truth", &setup_bench},
   };
   return table;
 }

@@ -1,0 +1,76 @@
+// Measuring the ladder, and the Markdown page of the accuracy report.
+#include "accuracy/report.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace raygrade {
+namespace {
+
+// Each timing runs the set repeatedly for at least this long, so that a cheap formula is timed
+// over many thousands of calls; the clock's resolution (about 1e-8 s) is then negligible.
+constexpr double kMinTimingSeconds = 0.05;
+
+double time_per_call(const NearestFunction& f, const std::vector<AccuracyCase>& cases) {
+  if (cases.empty()) return 0;
+  using Clock = std::chrono::steady_clock;
+  long long calls = 0;
+  double sink = 0;
+  auto start = Clock::now();
+  double elapsed = 0;
+  do {
+    for (const auto& c : cases) {
+      std::optional<double> t = f.nearest(c);
+      sink += t ? *t : 1;
+    }
+    calls += static_cast<long long>(cases.size());
+    elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+  } while (elapsed < kMinTimingSeconds);
+  volatile double keep = sink;
+  (void)keep;
+  return elapsed * 1e9 / static_cast<double>(calls);
+}
+
+std::vector<AccuracyCase> inputs(const std::vector<TruthCase>& cases) {
+  std::vector<AccuracyCase> out;
+  for (const auto& c : cases) out.push_back(c.input);
+  return out;
+}
+
+}  // namespace
+
+AccuracyReport measure_accuracy(const std::vector<NearestFunction>& functions, int random_count,
+                                const std::vector<TruthCase>& hard,
+                                const std::function<void(int, int)>& progress) {
+  AccuracyReport report;
+  report.random_per_primitive = random_count;
+  int total = 0, done = 0;
+  for (Primitive p : kAllPrimitives) {
+    for (const auto& f : functions) total += !f.only || *f.only == p;
+  }
+  for (Primitive p : kAllPrimitives) {
+    std::vector<TruthCase> random;
+    for (auto& c : random_cases(p, random_count, 1000 + static_cast<int>(p))) {
+      Truth t = compute_truth(c, false);
+      random.push_back({std::move(c), t});
+    }
+    std::vector<TruthCase> hard_p;
+    for (const auto& c : hard) {
+      if (c.input.primitive == p) hard_p.push_back(c);
+    }
+    report.hard_per_primitive[p] = static_cast<int>(hard_p.size());
+    std::vector<AccuracyCase> random_in = inputs(random), hard_in = inputs(hard_p);
+    for (const auto& f : functions) {
+      if (f.only && *f.only != p) continue;
+      LadderLevel level{f.name, "", f.nearest};
+      ReportRow row{f.name, p, f.peer, time_per_call(f, random_in), time_per_call(f, hard_in),
+                    level_error(level, random), level_error(level, hard_p)};
+      report.rows.push_back(std::move(row));
+      if (progress) progress(++done, total);
+    }
+    for (const auto& c : hard_in) ++report.adaptive_levels_hard[std::string(level_name(adaptive_nearest(c).level))];
+  }
+  return report;
+}
+
+}  // namespace raygrade

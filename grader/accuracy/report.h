@@ -1,0 +1,49 @@
+// The accuracy report: every level of the ladder (and the peers) timed and judged against
+// MPFR truth on a random set and on the hard set, rendered as docs/accuracy.md and an SVG plot.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "accuracy/ladder.h"
+
+namespace raygrade {
+
+struct ReportRow {
+  std::string level;  // a ladder level or a peer's name
+  Primitive primitive = Primitive::kSphere;
+  bool peer = false;
+  double ns_random = 0, ns_hard = 0;  // nanoseconds per intersection (hard: 0 if no cases)
+  LevelError random, hard;
+};
+
+struct AccuracyReport {
+  std::vector<ReportRow> rows;
+  int random_per_primitive = 0;
+  std::map<Primitive, int> hard_per_primitive;
+  std::map<std::string, int> adaptive_levels_hard;  // level name → cases of the hard set
+  std::string command;                              // the command that regenerates it
+  std::optional<long long> stress_rays, stress_misses, spawn_rays, spawn_failures;
+};
+
+struct NearestFunction {
+  std::string name;
+  bool peer = false;
+  std::function<std::optional<double>(const AccuracyCase&)> nearest;
+  std::optional<Primitive> only;  // peers serve one primitive
+};
+
+// Times and judges every function on every primitive's random set (`random_count` cases) and
+// hard cases. `progress` gets (done, total) after each measurement.
+AccuracyReport measure_accuracy(const std::vector<NearestFunction>& functions, int random_count,
+                                const std::vector<TruthCase>& hard,
+                                const std::function<void(int, int)>& progress = {});
+
+// The Markdown page (its first line says it is generated, and by which command) and the plot.
+std::string render_accuracy_markdown(const AccuracyReport& report, const std::string& svg_name);
+std::string render_accuracy_svg(const AccuracyReport& report);
+
+}  // namespace raygrade
