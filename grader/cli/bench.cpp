@@ -5,13 +5,13 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "accuracy/mesh.h"
 #include "accuracy/report.h"
 #include "bench/peers.h"
 #include "cli/command.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 
 namespace raygrade::cli {
@@ -26,16 +26,6 @@ struct BenchOptions {
   long long spawn = 0;
 };
 
-// Writes through a temporary file and a rename, so that no half-written file is left.
-void write_file(const std::string& path, const std::string& text) {
-  std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    if (!out) throw Error(Diagnostic{path, "", 0, 0, Severity::kError, "cannot write", "io"});
-  }
-  std::filesystem::rename(tmp, path);
-}
 
 // A progress bar on standard error, only when it is a terminal.
 void progress_bar(const char* what, double fraction) {
@@ -52,7 +42,7 @@ int write_corpus(const std::string& path) {
     cases.push_back({inputs[i], compute_truth(inputs[i])});
     progress_bar("truth", static_cast<double>(i + 1) / static_cast<double>(inputs.size()));
   }
-  write_file(path, corpus_json(cases).dump(1) + "\n");
+  write_file_atomically(path, corpus_json(cases).dump(1) + "\n");
   fmt::print("wrote {} cases to {}\n", cases.size(), path);
   return kExitOk;
 }
@@ -81,8 +71,8 @@ int run_bench(const BenchOptions& o) {
   report.command = fmt::format("raygrade bench --out {}", o.out);
   std::filesystem::path md(o.out);
   std::string svg_name = md.stem().string() + ".svg";
-  write_file((md.parent_path() / svg_name).string(), render_accuracy_svg(report));
-  write_file(o.out, render_accuracy_markdown(report, svg_name));
+  write_file_atomically((md.parent_path() / svg_name).string(), render_accuracy_svg(report));
+  write_file_atomically(o.out, render_accuracy_markdown(report, svg_name));
   fmt::print("wrote {} and {}\n", o.out, (md.parent_path() / svg_name).string());
   return kExitOk;
 }
