@@ -5,6 +5,7 @@
 #include <map>
 
 #include "accuracy/corpus.h"
+#include "scenes/offset.h"
 #include "shapes/triangle.h"
 
 namespace raygrade {
@@ -106,23 +107,9 @@ StressResult stress_edge_rays(const TriangleMesh& mesh, long long rays, std::uin
   return out;
 }
 
-Vec3d offset_ray_origin(const Vec3d& p, const Vec3d& error, const Vec3d& n, const Vec3d& w) {
-  double d = dot(Vec3d{std::abs(n.x), std::abs(n.y), std::abs(n.z)}, error);
-  Vec3d offset = d * n;
-  if (dot(w, n) < 0) offset = -offset;
-  Vec3d po = p + offset;
-  // Round away from p, so that the offset survives the addition (pbrt-v4, sec. 6.8.6).
-  for (int i = 0; i < 3; ++i) {
-    if (offset[i] > 0) po[i] = std::nextafter(po[i], kInfinity);
-    if (offset[i] < 0) po[i] = std::nextafter(po[i], -kInfinity);
-  }
-  return po;
-}
-
 StressResult stress_spawned_rays(const TriangleMesh& mesh, long long rays, std::uint64_t seed) {
-  // The rounding of a point from barycentric weights: γ(7)·Σ|w_i p_i| (pbrt-v4, sec. 6.8.5),
-  // γ(n) = n·u/(1 − n·u) with u = 2^-53.
-  const double gamma7 = 7 * 0x1p-53 / (1 - 7 * 0x1p-53);
+  // The rounding of a point from barycentric weights: γ(7)·Σ|w_i p_i| (pbrt-v4, sec. 6.8.5).
+  const double gamma7 = gamma_bound(7);
   SplitMix rng(seed);
   auto bounds = bounding_spheres(mesh);
   StressResult out;

@@ -38,8 +38,4 @@ StressResult stress_edge_rays(const TriangleMesh& mesh, long long rays, std::uin
 // through another triangle, never the one they start on. Each violation is a failure.
 StressResult stress_spawned_rays(const TriangleMesh& mesh, long long rays, std::uint64_t seed);
 
-// The origin of a ray leaving point p (rounding bound `error` per coordinate) of a surface
-// with normal n towards w: p moved along n, to the side of w, by the error's projection.
-Vec3d offset_ray_origin(const Vec3d& p, const Vec3d& error, const Vec3d& n, const Vec3d& w);
-
 }  // namespace raygrade

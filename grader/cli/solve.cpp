@@ -30,6 +30,7 @@ int run_solve(const SolveOptions& o) {
     try {
       if (o.format == "json") {
         nlohmann::json s = {{"id", p.id}, {"kind", p.kind}, {"answer", p.task->answer()}};
+        if (auto level = p.task->level()) s["level"] = *level;
         if (o.steps) {
           nlohmann::json all = nlohmann::json::array();
           for (const auto& m : make_solution(p, o.method, numbers).methods) {

@@ -3,6 +3,7 @@
 
 #include <set>
 
+#include "accuracy/settle.h"
 #include "derivation/number_format.h"
 #include "kinds/sketch.h"
 
@@ -14,7 +15,16 @@ std::unique_ptr<Task> IntersectTask::read(const Cursor& problem) {
                                          problem.string_or("method", ""));
 }
 
-nlohmann::json IntersectTask::answer() const { return intersection_json(object_->intersect(ray_)); }
+nlohmann::json IntersectTask::answer() const {
+  Intersection x = object_->intersect(ray_);
+  settle_nearest(*object_, ray_, x);
+  return intersection_json(x);
+}
+
+std::optional<std::string> IntersectTask::level() const {
+  Intersection x = object_->intersect(ray_);
+  return settle_nearest(*object_, ray_, x);
+}
 
 std::vector<SolutionPart> IntersectTask::derive(std::string_view method,
                                                 const Overrides* overrides) const {

@@ -14,6 +14,7 @@ class IntersectTask final : public Task {
 
   std::string_view kind() const override { return "intersect"; }
   nlohmann::json answer() const override;
+  std::optional<std::string> level() const override;
   std::vector<std::string> methods() const override { return object_->methods(); }
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;

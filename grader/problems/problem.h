@@ -53,6 +53,9 @@ class Task {
   // The sketch of the worked solution: the objects, the ray, the hit points. Empty (no
   // sketch) unless the kind draws one.
   virtual Sketch sketch() const { return {}; }
+  // The precision the answer's hit-or-miss decision needed ("double", "double-double", "mpfr",
+  // "exact-boundary"), for kinds that know it.
+  virtual std::optional<std::string> level() const { return std::nullopt; }
 };
 
 struct Problem {

@@ -1,0 +1,73 @@
+// Shapes as accuracy cases, and the solver's adaptive decision.
+#include "accuracy/settle.h"
+
+#include "accuracy/certified.h"
+
+namespace raygrade {
+namespace {
+
+// How far before a hit double missed (in units of the direction) the ray starts that asks
+// the object for its normal there: far beyond rounding (1e-16), close enough that the probe
+// meets the same part of the surface.
+constexpr double kNormalProbeBack = 1e-6;
+
+Vec3d vec(const nlohmann::json& j) { return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()}; }
+
+}  // namespace
+
+std::optional<AccuracyCase> accuracy_case_of(const Shape& object, const Ray& ray) {
+  if (ray.t_min != 0 || ray.t_max != kInfinity) return std::nullopt;
+  nlohmann::json j = object.to_json();
+  AccuracyCase c;
+  c.id = "problem";
+  c.group = "problem";
+  c.origin = ray.origin;
+  c.direction = ray.direction;
+  std::string_view type = object.type();
+  if (type == "sphere") {
+    c.primitive = Primitive::kSphere;
+    c.points = {vec(j["center"])};
+    c.radius = j["radius"].get<double>();
+  } else if (type == "plane" && j.contains("point")) {
+    c.primitive = Primitive::kPlane;
+    c.points = {vec(j["normal"]), vec(j["point"])};
+  } else if (type == "triangle" || type == "polygon") {
+    c.primitive = type == "triangle" ? Primitive::kTriangle : Primitive::kPolygon;
+    for (const auto& v : j["vertices"]) c.points.push_back(vec(v));
+  } else if (type == "cylinder" && !j.contains("height")) {
+    c.primitive = Primitive::kCylinder;
+    c.points = {vec(j["base"]), vec(j["axis"])};
+    c.radius = j["radius"].get<double>();
+  } else if (type == "box") {
+    c.primitive = Primitive::kBox;
+    c.points = {vec(j["min"]), vec(j["max"])};
+  } else {
+    return std::nullopt;
+  }
+  return c;
+}
+
+std::optional<std::string> settle_nearest(const Shape& object, const Ray& ray, Intersection& x) {
+  if (x.contained) return std::nullopt;
+  std::optional<AccuracyCase> c = accuracy_case_of(object, ray);
+  if (!c) return std::nullopt;
+  Adaptive a = adaptive_nearest(*c);
+  if (a.level != Level::kDouble && a.level != Level::kExactBoundary &&
+      a.hit != !x.hits.empty()) {
+    if (!a.hit) {
+      x.hits.clear();
+    } else {
+      Hit h;
+      h.t = a.t;
+      h.point = ray.at(a.t);
+      // The normal: the object's own, from a ray that starts a little before the hit.
+      Intersection near =
+          object.intersect(Ray{ray.at(a.t) - kNormalProbeBack * ray.direction, ray.direction});
+      if (!near.hits.empty()) h.normal = near.hits.front().normal;
+      x.hits.insert(x.hits.begin(), h);
+    }
+  }
+  return std::string(level_name(a.level));
+}
+
+}  // namespace raygrade
