@@ -237,5 +237,35 @@ TEST(RayTree, IntensityAddsTheReflectionWeighted) {
   EXPECT_NEAR(p.task->answer()["intensity"].get<double>(), floor_local + 0.5 * ball, 1e-13);
 }
 
+// Ten panes that reflect and transmit inside a mirror room branch at nearly every hit: the
+// tree would grow toward 2^16 nodes by depth alone, and stops at the node limit instead,
+// saying so (a spawn in progress may add its second child, one per generation at most).
+TEST(RayTree, NodeLimitCutsABranchingTree) {
+  std::string objects =
+      R"({"name": "room", "type": "box", "min": [-9, -9, -9], "max": [9, 9, 9],
+          "material": {"reflectivity": 0.5}})";
+  for (int x : {-6, -3, 0, 3, 6}) {
+    for (const char* axis : {"[1, 0, 0]", "[0, 1, 0]"}) {
+      objects += fmt::format(
+          R"(, {{"type": "plane", "point": [{0}, {0}, 0], "normal": {1},
+               "material": {{"reflectivity": 0.3, "transparency": 0.6,
+                             "refractive_index": 1.5}}}})",
+          x, axis);
+    }
+  }
+  Problem p = testing::problem(R"({"id": "many", "kind": "ray-tree",
+    "ray": {"origin": [0.3, 0.2, -3], "direction": [0.7, 0.5, 1]},
+    "scene": {"max_depth": 16, "lights": [{"position": [4, 4, -4]}], "objects": [)" +
+                               objects + "]}}");
+  const RayTree& t = tree_task(p).tree();
+  EXPECT_GE(static_cast<int>(t.nodes.size()), kMaxTreeNodes);
+  EXPECT_LE(static_cast<int>(t.nodes.size()), kMaxTreeNodes + kMaxTreeDepth);
+  int cut = 0;
+  for (const auto& n : t.nodes) {
+    for (const auto& note : n.notes) cut += note.find("the most one problem") != std::string::npos;
+  }
+  EXPECT_GT(cut, 0);
+}
+
 }  // namespace
 }  // namespace raygrade

@@ -168,6 +168,13 @@ class Tracer {
     auto note = [&](std::string s) { tree_.nodes[index].notes.push_back(std::move(s)); };
     TreeNode node = tree_.nodes[index];  // a copy: children are appended to the vector
     if (!m.reflects() && !m.transmits()) return;
+    if (static_cast<int>(tree_.nodes.size()) >= kMaxTreeNodes) {
+      note(
+          fmt::format("No further rays: the tree has reached {} nodes, the most one problem may "
+                      "have.",
+                      kMaxTreeNodes));
+      return;
+    }
     if (depth >= scene_.max_depth) {
       note(fmt::format("No {} ray: the depth limit is reached (max_depth {}).",
                        m.reflects() && m.transmits() ? "reflection or refraction"

@@ -12,6 +12,11 @@
 
 namespace raygrade {
 
+// The most ray nodes one tree may hold. max_depth 16 alone allows 65,535 hit nodes; a tree of
+// thousands of nodes is no exercise, and its worked solution would run to hundreds of
+// megabytes. Past this, no more secondary rays are spawned and the nodes that stop say so.
+constexpr int kMaxTreeNodes = 2000;
+
 enum class RayKind { kPrimary, kReflection, kRefraction, kShadow };
 const char* to_string(RayKind k);
 
