@@ -6,7 +6,7 @@ packages=(
   build-essential cmake ninja-build python3
   nlohmann-json3-dev libfmt-dev libcli11-dev libgtest-dev libgmock-dev
   libbenchmark-dev libmpfr-dev libglm-dev
-  python3-jsonschema
+  python3-jsonschema pkg-config clang-format
 )
 # Extra groups, asked for by name: RAYGRADE_EXTRA="browser fuzz".
 for extra in ${RAYGRADE_EXTRA:-}; do
@@ -19,7 +19,9 @@ done
 
 missing=()
 for p in "${packages[@]}"; do
-  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
+  # Captured, not piped into grep -q: with pipefail an early exit of grep could fail the pipe.
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  if [ "$status" != "install ok installed" ]; then
     missing+=("$p")
   fi
 done
