@@ -60,6 +60,9 @@ const BadCase kCases[] = {
      "/problems/1/object/max", "degenerate box"},
 };
 
+// Test names and failure messages show the case's name, not its bytes.
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+
 class BadInput : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(BadInput, ExitsTwoNamingFilePathAndFaultAndSolvesTheRest) {
