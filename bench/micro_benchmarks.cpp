@@ -11,8 +11,8 @@ namespace {
 // Cases per primitive: enough to defeat the branch predictor, few enough to stay in cache.
 constexpr int kCases = 512;
 
-void run(benchmark::State& state, const std::function<std::optional<double>(const AccuracyCase&)>& f,
-         Primitive p) {
+void run(benchmark::State& state,
+         const std::function<std::optional<double>(const AccuracyCase&)>& f, Primitive p) {
   std::vector<AccuracyCase> cases = random_cases(p, kCases, 7);
   std::size_t i = 0;
   for (auto _ : state) {
@@ -25,12 +25,14 @@ int register_all() {
   for (Primitive p : kAllPrimitives) {
     for (const auto& level : ladder_levels()) {
       std::string name = fmt::format("{}/{}", primitive_name(p), level.name);
-      benchmark::RegisterBenchmark(name.c_str(), [f = level.nearest, p](benchmark::State& s) { run(s, f, p); });
+      benchmark::RegisterBenchmark(name.c_str(),
+                                   [f = level.nearest, p](benchmark::State& s) { run(s, f, p); });
     }
   }
   for (const auto& peer : peers()) {
     std::string name = fmt::format("{}/{}", primitive_name(peer.primitive), peer.name);
-    benchmark::RegisterBenchmark(name.c_str(), [f = peer.nearest, p = peer.primitive](benchmark::State& s) { run(s, f, p); });
+    benchmark::RegisterBenchmark(name.c_str(), [f = peer.nearest, p = peer.primitive](
+                                                   benchmark::State& s) { run(s, f, p); });
   }
   return 0;
 }

@@ -85,7 +85,8 @@ TEST(HardCases, ReferenceTIsWithinUlpsTimesCondition) {
     if (c.truth.boundary || !c.truth.hit || !certified_double(c.input).decided) continue;
     std::optional<double> t = reference_nearest<double>(c.input);
     ASSERT_TRUE(t) << c.input.id;
-    double bound = kUlpsPerCondition * kUnitRoundoff * (c.truth.condition + 1) * std::abs(c.truth.t);
+    double bound =
+        kUlpsPerCondition * kUnitRoundoff * (c.truth.condition + 1) * std::abs(c.truth.t);
     EXPECT_LE(std::abs(*t - c.truth.t), bound) << c.input.id << " condition " << c.truth.condition;
   }
 }

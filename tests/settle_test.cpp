@@ -1,8 +1,9 @@
 // The solver's adaptive decision: the level a problem needed, and answers corrected where
 // double could not decide.
+#include "accuracy/settle.h"
+
 #include <gtest/gtest.h>
 
-#include "accuracy/settle.h"
 #include "test_util.h"
 
 namespace raygrade {
@@ -33,12 +34,14 @@ TEST(Settle, ExactTangentIsDecidedInDouble) {
 // y = 1 − 2^-53, z = 2^-26 − 2^-79: Δ = 3·2^-106 − 2^-158 > 0, a hit near t = 5 that only
 // MPFR can vouch for; z = 2^-26 gives Δ = −2^-106, a miss.
 TEST(Settle, MpfrDecidesWhatDoubleDoubleCannot) {
-  Problem hit = testing::problem(sphere_problem("[-5, 0.9999999999999999, 1.4901161193847655e-08]"));
+  Problem hit =
+      testing::problem(sphere_problem("[-5, 0.9999999999999999, 1.4901161193847655e-08]"));
   EXPECT_EQ(hit.task->level(), "mpfr");
   nlohmann::json a = hit.task->answer();
   ASSERT_GE(a["hits"].size(), 1u);
   EXPECT_NEAR(a["hits"][0]["t"].get<double>(), 5, 1e-6);
-  Problem miss = testing::problem(sphere_problem("[-5, 0.9999999999999999, 1.4901161193847656e-08]"));
+  Problem miss =
+      testing::problem(sphere_problem("[-5, 0.9999999999999999, 1.4901161193847656e-08]"));
   EXPECT_EQ(miss.task->level(), "mpfr");
   EXPECT_EQ(miss.task->answer()["hits"].size(), 0u);
 }

@@ -9,13 +9,10 @@ nlohmann::json vec_json(const Vec3d& v) { return {v.x, v.y, v.z}; }
 // How many points each primitive takes; polygons take 3 or more.
 std::size_t points_needed(Primitive p) {
   switch (p) {
-    case Primitive::kSphere:
-      return 1;
+    case Primitive::kSphere: return 1;
     case Primitive::kTriangle:
-    case Primitive::kPolygon:
-      return 3;
-    default:
-      return 2;
+    case Primitive::kPolygon: return 3;
+    default: return 2;
   }
 }
 
@@ -23,18 +20,12 @@ std::size_t points_needed(Primitive p) {
 
 std::string_view primitive_name(Primitive p) {
   switch (p) {
-    case Primitive::kSphere:
-      return "sphere";
-    case Primitive::kPlane:
-      return "plane";
-    case Primitive::kTriangle:
-      return "triangle";
-    case Primitive::kPolygon:
-      return "polygon";
-    case Primitive::kCylinder:
-      return "cylinder";
-    case Primitive::kBox:
-      return "box";
+    case Primitive::kSphere: return "sphere";
+    case Primitive::kPlane: return "plane";
+    case Primitive::kTriangle: return "triangle";
+    case Primitive::kPolygon: return "polygon";
+    case Primitive::kCylinder: return "cylinder";
+    case Primitive::kBox: return "box";
   }
   return "?";
 }
@@ -74,8 +65,8 @@ AccuracyCase read_case(const Cursor& c) {
   std::size_t need = points_needed(out.primitive);
   bool fixed = out.primitive != Primitive::kPolygon;
   if (out.points.size() < need || (fixed && out.points.size() != need)) {
-    c.at("points").fail(fmt::format("a {} takes {}{} points, found {}", name, fixed ? "" : "at least ",
-                                    need, out.points.size()));
+    c.at("points").fail(fmt::format("a {} takes {}{} points, found {}", name,
+                                    fixed ? "" : "at least ", need, out.points.size()));
   }
   if (out.primitive == Primitive::kSphere || out.primitive == Primitive::kCylinder) {
     out.radius = c.at("radius").positive_number();

@@ -38,14 +38,10 @@ Certified certify(const AccuracyCase& c) {
 
 std::string_view level_name(Level level) {
   switch (level) {
-    case Level::kDouble:
-      return "double";
-    case Level::kDoubleDouble:
-      return "double-double";
-    case Level::kMpfr:
-      return "mpfr";
-    case Level::kExactBoundary:
-      return "exact-boundary";
+    case Level::kDouble: return "double";
+    case Level::kDoubleDouble: return "double-double";
+    case Level::kMpfr: return "mpfr";
+    case Level::kExactBoundary: return "exact-boundary";
   }
   return "?";
 }

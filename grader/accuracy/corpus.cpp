@@ -79,20 +79,13 @@ void huge_spheres(std::vector<AccuracyCase>& out, SplitMix& rng) {
     double horizon = std::sqrt(2 * h / r);
     Vec3d d;
     switch (i % 4) {
-      case 0:
-        d = w - (horizon * (1 + offset(rng, 1, 6))) * u;
-        break;
-      case 1:
-        d = w - (horizon * (1 - std::abs(offset(rng, 1, 6)))) * u;
-        break;
-      case 2:
-        d = -1.0 * u + 0.3 * w;
-        break;
-      default:
-        d = u + w;
+      case 0: d = w - (horizon * (1 + offset(rng, 1, 6))) * u; break;
+      case 1: d = w - (horizon * (1 - std::abs(offset(rng, 1, 6)))) * u; break;
+      case 2: d = -1.0 * u + 0.3 * w; break;
+      default: d = u + w;
     }
-    out.push_back(make(fmt::format("huge-sphere-{}", i), "huge-sphere", Primitive::kSphere, o, d,
-                       {c}, r));
+    out.push_back(
+        make(fmt::format("huge-sphere-{}", i), "huge-sphere", Primitive::kSphere, o, d, {c}, r));
   }
 }
 
@@ -111,13 +104,16 @@ void grazing(std::vector<AccuracyCase>& out, SplitMix& rng) {
     double z0 = rng.uniform(-2, 2), z1 = rng.uniform(-2, 2);
     Vec3d o = base + p * e2 + 5.0 * e1 + z0 * axis;
     Vec3d d = -5.0 * e1 + (z1 - z0) * axis;
-    out.push_back(make(fmt::format("grazing-cylinder-{}", i), "grazing", Primitive::kCylinder, o,
-                       d, {base, axis}, r));
+    out.push_back(make(fmt::format("grazing-cylinder-{}", i), "grazing", Primitive::kCylinder, o, d,
+                       {base, axis}, r));
   }
   // Exact tangents: integer data, the discriminant is exactly zero.
-  out.push_back(make("tangent-0", "tangent", Primitive::kSphere, {-5, 1, 0}, {1, 0, 0}, {{0, 0, 0}}, 1));
-  out.push_back(make("tangent-1", "tangent", Primitive::kSphere, {-4, 6, 5}, {2, 0, 0}, {{3, 4, 5}}, 2));
-  out.push_back(make("tangent-2", "tangent", Primitive::kSphere, {0, 0, 10}, {3, 4, 0}, {{0, 0, 15}}, 5));
+  out.push_back(
+      make("tangent-0", "tangent", Primitive::kSphere, {-5, 1, 0}, {1, 0, 0}, {{0, 0, 0}}, 1));
+  out.push_back(
+      make("tangent-1", "tangent", Primitive::kSphere, {-4, 6, 5}, {2, 0, 0}, {{3, 4, 5}}, 2));
+  out.push_back(
+      make("tangent-2", "tangent", Primitive::kSphere, {0, 0, 10}, {3, 4, 0}, {{0, 0, 15}}, 5));
   out.push_back(make("tangent-3", "tangent", Primitive::kCylinder, {-5, 1, 0}, {1, 0, 0.5},
                      {{0, 0, 0}, {0, 0, 1}}, 1));
   out.push_back(make("tangent-4", "tangent", Primitive::kCylinder, {3, -7, 2}, {0, 1, 0},
@@ -131,8 +127,10 @@ void grazing(std::vector<AccuracyCase>& out, SplitMix& rng) {
   out.push_back(make("beyond-double-double-1", "tangent", Primitive::kSphere,
                      {-5, 1 - 0x1p-53, 0x1p-26 - 0x1p-79}, {1, 0, 0}, {{0, 0, 0}}, 1));
   // Origins on the surface: exactly (t = 0) and to the nearest double.
-  out.push_back(make("on-surface-0", "on-surface", Primitive::kSphere, {1, 0, 0}, {-1, 0.5, 0}, {{0, 0, 0}}, 1));
-  out.push_back(make("on-surface-1", "on-surface", Primitive::kSphere, {1, 0, 0}, {1, 0.3, 0}, {{0, 0, 0}}, 1));
+  out.push_back(make("on-surface-0", "on-surface", Primitive::kSphere, {1, 0, 0}, {-1, 0.5, 0},
+                     {{0, 0, 0}}, 1));
+  out.push_back(make("on-surface-1", "on-surface", Primitive::kSphere, {1, 0, 0}, {1, 0.3, 0},
+                     {{0, 0, 0}}, 1));
   out.push_back(make("on-surface-2", "on-surface", Primitive::kCylinder, {0, 2, 7}, {0, -1, 1},
                      {{0, 0, 0}, {0, 0, 1}}, 2));
   for (int i = 0; i < 30; ++i) {
@@ -152,8 +150,8 @@ void near_parallel_planes(std::vector<AccuracyCase>& out, SplitMix& rng) {
     Vec3d o = p + rng.uniform(-2, 2) * normalized(n) + 0.5 * rng.unit_vector();
     Vec3d along = perpendicular(normalized(n), rng);
     Vec3d d = along + offset(rng, 10, 16) * normalized(n);
-    out.push_back(make(fmt::format("near-parallel-{}", i), "near-parallel", Primitive::kPlane, o,
-                       d, {n, p}));
+    out.push_back(
+        make(fmt::format("near-parallel-{}", i), "near-parallel", Primitive::kPlane, o, d, {n, p}));
   }
 }
 
@@ -164,8 +162,8 @@ void shared_edges(std::vector<AccuracyCase>& out, SplitMix& rng) {
     // A quad folded along its diagonal q0 q2, q1 and q3 on either side of it as seen from
     // above, where the rays come from.
     auto jitter = [&](double x, double y) {
-      return shift + Vec3d{x + rng.uniform(-0.3, 0.3), y + rng.uniform(-0.3, 0.3),
-                           rng.uniform(-0.2, 0.2)};
+      return shift +
+             Vec3d{x + rng.uniform(-0.3, 0.3), y + rng.uniform(-0.3, 0.3), rng.uniform(-0.2, 0.2)};
     };
     Vec3d q[4] = {jitter(-1, -1), jitter(1, -1), jitter(1, 1), jitter(-1, 1)};
     Vec3d o = shift + Vec3d{rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5), rng.uniform(2, 4)};
@@ -224,7 +222,9 @@ void needles(std::vector<AccuracyCase>& out, SplitMix& rng) {
 std::vector<AccuracyCase> random_cases(Primitive primitive, int count, std::uint64_t seed) {
   SplitMix rng(seed);
   std::vector<AccuracyCase> out;
-  auto point = [&](double s) { return Vec3d{rng.uniform(-s, s), rng.uniform(-s, s), rng.uniform(-s, s)}; };
+  auto point = [&](double s) {
+    return Vec3d{rng.uniform(-s, s), rng.uniform(-s, s), rng.uniform(-s, s)};
+  };
   for (int i = 0; i < count; ++i) {
     Vec3d o = 4.0 * rng.unit_vector();
     Vec3d target = point(1);
@@ -235,12 +235,8 @@ std::vector<AccuracyCase> random_cases(Primitive primitive, int count, std::uint
         p = {point(0.5)};
         r = rng.uniform(0.3, 1.2);
         break;
-      case Primitive::kPlane:
-        p = {rng.unit_vector(), point(0.5)};
-        break;
-      case Primitive::kTriangle:
-        p = {point(1), point(1), point(1)};
-        break;
+      case Primitive::kPlane: p = {rng.unit_vector(), point(0.5)}; break;
+      case Primitive::kTriangle: p = {point(1), point(1), point(1)}; break;
       case Primitive::kPolygon: {
         Vec3d c = point(0.3), e1 = rng.unit_vector(), e2 = perpendicular(e1, rng);
         for (int k = 0; k < 5; ++k) {
@@ -254,7 +250,8 @@ std::vector<AccuracyCase> random_cases(Primitive primitive, int count, std::uint
         r = rng.uniform(0.3, 1);
         break;
       case Primitive::kBox: {
-        Vec3d lo = point(1), size{rng.uniform(0.2, 1.5), rng.uniform(0.2, 1.5), rng.uniform(0.2, 1.5)};
+        Vec3d lo = point(1),
+              size{rng.uniform(0.2, 1.5), rng.uniform(0.2, 1.5), rng.uniform(0.2, 1.5)};
         p = {lo, lo + size};
         break;
       }

@@ -16,10 +16,10 @@ class SplitMix {
  public:
   explicit SplitMix(std::uint64_t seed) : state_(seed) {}
   std::uint64_t next();
-  double uniform();                        // in [0, 1)
-  double uniform(double lo, double hi);    // in [lo, hi)
-  Vec3d unit_vector();                     // uniform on the sphere
-  int integer(int lo, int hi);             // in [lo, hi]
+  double uniform();                      // in [0, 1)
+  double uniform(double lo, double hi);  // in [lo, hi)
+  Vec3d unit_vector();                   // uniform on the sphere
+  int integer(int lo, int hi);           // in [lo, hi]
 
  private:
   std::uint64_t state_;

@@ -66,8 +66,8 @@ void box_slabs(std::vector<AccuracyCase>& out, SplitMix& rng) {
     Vec3d b = a + Vec3d{rng.uniform(0.5, 2), rng.uniform(0.5, 2), rng.uniform(0.5, 2)};
     Vec3d target{a.x, i % 2 ? b.y : rng.uniform(a.y, b.y), a.z};
     Vec3d o = target + Vec3d{rng.uniform(-3, -1), rng.uniform(-2, 2), rng.uniform(-3, -1)};
-    out.push_back(make(fmt::format("box-edge-{}", i), "box-slab", Primitive::kBox, o, target - o,
-                       {a, b}));
+    out.push_back(
+        make(fmt::format("box-edge-{}", i), "box-slab", Primitive::kBox, o, target - o, {a, b}));
   }
 }
 
@@ -81,8 +81,8 @@ void cylinder_axes(std::vector<AccuracyCase>& out, SplitMix& rng) {
     Vec3d o = base + (where * r) * side;
     double tilt = i % 5 < 2 ? 0 : std::pow(10.0, -rng.uniform(6, 12));
     Vec3d d = axis + tilt * side;
-    out.push_back(make(fmt::format("cylinder-axis-{}", i), "cylinder-axis", Primitive::kCylinder,
-                       o, d, {base, axis}, r));
+    out.push_back(make(fmt::format("cylinder-axis-{}", i), "cylinder-axis", Primitive::kCylinder, o,
+                       d, {base, axis}, r));
   }
 }
 
@@ -90,7 +90,9 @@ nlohmann::json truth_json(const Truth& t) {
   nlohmann::json j = {{"hit", t.hit}};
   if (t.hit) j["t"] = t.t;
   if (t.boundary) j["boundary"] = true;
-  if (t.hit && !t.boundary) j["condition"] = std::isfinite(t.condition) ? nlohmann::json(t.condition) : nlohmann::json("inf");
+  if (t.hit && !t.boundary)
+    j["condition"] =
+        std::isfinite(t.condition) ? nlohmann::json(t.condition) : nlohmann::json("inf");
   return j;
 }
 
@@ -119,7 +121,8 @@ nlohmann::json corpus_json(const std::vector<TruthCase>& cases) {
 
 std::vector<TruthCase> read_corpus(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw Error(Diagnostic{path, "", 0, 0, Severity::kError, "cannot read the corpus", "io"});
+  if (!in)
+    throw Error(Diagnostic{path, "", 0, 0, Severity::kError, "cannot read the corpus", "io"});
   std::stringstream text;
   text << in.rdbuf();
   JsonLimits limits;

@@ -52,8 +52,7 @@ std::optional<T> reference_nearest_at(Primitive primitive, const Vec3<T>& o, con
                                       const std::vector<Vec3<T>>& p, const T& radius) {
   using std::sqrt;
   switch (primitive) {
-    case Primitive::kSphere:
-      return nearest_of(sphere_roots(o, d, p[0], radius));
+    case Primitive::kSphere: return nearest_of(sphere_roots(o, d, p[0], radius));
     case Primitive::kPlane: {
       std::optional<T> t = plane_t(o, d, p[0], p[1]);
       if (t && *t >= T(0)) return t;
@@ -87,8 +86,8 @@ std::optional<T> reference_nearest_at(Primitive primitive, const Vec3<T>& o, con
 // The reference nearest hit of a case, computed in T.
 template <typename T>
 std::optional<T> reference_nearest(const AccuracyCase& c) {
-  return reference_nearest_at(c.primitive, Vec3<T>(c.origin), Vec3<T>(c.direction),
-                              points_as<T>(c), T(c.radius));
+  return reference_nearest_at(c.primitive, Vec3<T>(c.origin), Vec3<T>(c.direction), points_as<T>(c),
+                              T(c.radius));
 }
 
 // The naive textbook formulation of the same question.
@@ -98,18 +97,13 @@ std::optional<T> naive_nearest(const AccuracyCase& c) {
   Vec3<T> o(c.origin), d(c.direction);
   std::vector<Vec3<T>> p = points_as<T>(c);
   switch (c.primitive) {
-    case Primitive::kSphere:
-      return naive::sphere(o, d, p[0], T(c.radius));
-    case Primitive::kPlane:
-      return naive::plane(o, d, p[0], p[1]);
-    case Primitive::kTriangle:
-      return naive::triangle(o, d, p[0], p[1], p[2]);
-    case Primitive::kPolygon:
-      return naive::polygon(o, d, p);
+    case Primitive::kSphere: return naive::sphere(o, d, p[0], T(c.radius));
+    case Primitive::kPlane: return naive::plane(o, d, p[0], p[1]);
+    case Primitive::kTriangle: return naive::triangle(o, d, p[0], p[1], p[2]);
+    case Primitive::kPolygon: return naive::polygon(o, d, p);
     case Primitive::kCylinder:
       return naive::cylinder(o, d, p[0], p[1] / sqrt(dot(p[1], p[1])), T(c.radius));
-    case Primitive::kBox:
-      return naive::box(o, d, p[0], p[1]);
+    case Primitive::kBox: return naive::box(o, d, p[0], p[1]);
   }
   return std::nullopt;
 }

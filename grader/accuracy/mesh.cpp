@@ -13,8 +13,8 @@ namespace raygrade {
 TriangleMesh subdivided_sphere(int levels) {
   double p = (1 + std::sqrt(5.0)) / 2;
   TriangleMesh m;
-  m.vertices = {{-1, p, 0}, {1, p, 0}, {-1, -p, 0}, {1, -p, 0}, {0, -1, p}, {0, 1, p},
-                {0, -1, -p}, {0, 1, -p}, {p, 0, -1}, {p, 0, 1}, {-p, 0, -1}, {-p, 0, 1}};
+  m.vertices = {{-1, p, 0},  {1, p, 0},  {-1, -p, 0}, {1, -p, 0}, {0, -1, p},  {0, 1, p},
+                {0, -1, -p}, {0, 1, -p}, {p, 0, -1},  {p, 0, 1},  {-p, 0, -1}, {-p, 0, 1}};
   for (auto& v : m.vertices) v = normalized(v);
   m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
                  {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
@@ -98,7 +98,8 @@ StressResult stress_edge_rays(const TriangleMesh& mesh, long long rays, std::uin
     const Vec3d &a = mesh.vertices[tri[k]], &b = mesh.vertices[tri[(k + 1) % 3]];
     Vec3d target = i % 3 == 0 ? a : a + rng.uniform() * (b - a);
     // From the side the surface faces, at a random slant.
-    Vec3d o = target + rng.uniform(0.5, 4) * normalized(normalized(target) + 0.6 * rng.unit_vector());
+    Vec3d o =
+        target + rng.uniform(0.5, 4) * normalized(normalized(target) + 0.6 * rng.unit_vector());
     if (dot(o - target, target) <= 0) o = target + 2.0 * target;
     ++out.rays;
     if (!nearest(mesh, bounds, o, target - o, -kInfinity).hit) ++out.failures;

@@ -63,12 +63,18 @@ AccuracyReport measure_accuracy(const std::vector<NearestFunction>& functions, i
     for (const auto& f : functions) {
       if (f.only && *f.only != p) continue;
       LadderLevel level{f.name, "", f.nearest};
-      ReportRow row{f.name, p, f.peer, time_per_call(f, random_in), time_per_call(f, hard_in),
-                    level_error(level, random), level_error(level, hard_p)};
+      ReportRow row{f.name,
+                    p,
+                    f.peer,
+                    time_per_call(f, random_in),
+                    time_per_call(f, hard_in),
+                    level_error(level, random),
+                    level_error(level, hard_p)};
       report.rows.push_back(std::move(row));
       if (progress) progress(++done, total);
     }
-    for (const auto& c : hard_in) ++report.adaptive_levels_hard[std::string(level_name(adaptive_nearest(c).level))];
+    for (const auto& c : hard_in)
+      ++report.adaptive_levels_hard[std::string(level_name(adaptive_nearest(c).level))];
   }
   return report;
 }

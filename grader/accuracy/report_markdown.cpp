@@ -52,10 +52,11 @@ double max_error(const AccuracyReport& r, const std::string& level, bool hard) {
 }
 
 std::string summary(const AccuracyReport& r, const std::string& level) {
-  return fmt::format("{} wrong hit/miss decisions on the hard set, {} on the random set; largest "
-                     "relative error in t {} (hard) and {} (random)",
-                     wrong_total(r, level, true), wrong_total(r, level, false),
-                     err(max_error(r, level, true)), err(max_error(r, level, false)));
+  return fmt::format(
+      "{} wrong hit/miss decisions on the hard set, {} on the random set; largest "
+      "relative error in t {} (hard) and {} (random)",
+      wrong_total(r, level, true), wrong_total(r, level, false), err(max_error(r, level, true)),
+      err(max_error(r, level, false)));
 }
 
 }  // namespace
@@ -81,17 +82,20 @@ std::string render_accuracy_markdown(const AccuracyReport& r, const std::string&
       r.random_per_primitive, hard_total);
   md += "## The ladder\n\n";
   md += "| level | what it is |\n| --- | --- |\n";
-  for (const auto& level : ladder_levels()) md += fmt::format("| {} | {} |\n", level.name, level.summary);
-  md += "| peers | GLM 0.9.9's intersectRaySphere, intersectRayPlane, intersectRayTriangle (double), "
-        "and a plain Möller–Trumbore without epsilon |\n\n";
+  for (const auto& level : ladder_levels())
+    md += fmt::format("| {} | {} |\n", level.name, level.summary);
+  md +=
+      "| peers | GLM 0.9.9's intersectRaySphere, intersectRayPlane, intersectRayTriangle (double), "
+      "and a plain Möller–Trumbore without epsilon |\n\n";
   md += "## Error against time\n\n";
   md += fmt::format(
       "![Largest relative error in t on the hard set (a wrong hit/miss decision counts as 1) "
       "against nanoseconds per intersection, log-log]({})\n\n",
       svg_name);
   md += "## Table\n\n";
-  md += "| primitive | level | ns (random) | ns (hard) | random: median err | random: max err | "
-        "random: wrong | hard: median err | hard: max err | hard: wrong / judged |\n";
+  md +=
+      "| primitive | level | ns (random) | ns (hard) | random: median err | random: max err | "
+      "random: wrong | hard: median err | hard: max err | hard: wrong / judged |\n";
   md += "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
   for (Primitive p : kAllPrimitives) {
     for (const auto& row : r.rows) {
@@ -114,9 +118,10 @@ std::string render_accuracy_markdown(const AccuracyReport& r, const std::string&
       "hard rays: {}. It buys: {}.\n",
       ratios(r, "reference double", "naive double"),
       ratios(r, "reference double", "naive double", true), summary(r, "reference double"));
-  md += fmt::format("- **reference float** shows the formulation alone does not save a short "
-                    "significand: {}.\n",
-                    summary(r, "reference float"));
+  md += fmt::format(
+      "- **reference float** shows the formulation alone does not save a short "
+      "significand: {}.\n",
+      summary(r, "reference float"));
   md += fmt::format(
       "- **reference double → long double, double-double, MPFR.** Cost relative to reference "
       "double: long double {}; double-double {}; MPFR {}. They buy t to more digits (largest "
@@ -125,9 +130,11 @@ std::string render_accuracy_markdown(const AccuracyReport& r, const std::string&
       ratios(r, "reference double-double", "reference double"),
       ratios(r, "reference MPFR", "reference double"),
       err(max_error(r, "reference long double", true)),
-      err(max_error(r, "reference double-double", true)), err(max_error(r, "reference MPFR", true)));
+      err(max_error(r, "reference double-double", true)),
+      err(max_error(r, "reference MPFR", true)));
   std::vector<std::string> used;
-  for (const auto& [name, n] : r.adaptive_levels_hard) used.push_back(fmt::format("{} {}", name, n));
+  for (const auto& [name, n] : r.adaptive_levels_hard)
+    used.push_back(fmt::format("{} {}", name, n));
   md += fmt::format(
       "- **certified double** (interval arithmetic with outward rounding) costs, relative to "
       "reference double, {} on random rays. It knows when it cannot decide, and its enclosure "
@@ -142,9 +149,10 @@ std::string render_accuracy_markdown(const AccuracyReport& r, const std::string&
   md += "- **peers.** ";
   for (const auto& row : r.rows) {
     if (!row.peer) continue;
-    md += fmt::format("{} ({}): {} ns, {} wrong decisions of {} hard cases, largest hard error {}. ",
-                      row.level, primitive_name(row.primitive), ns(row.ns_random),
-                      row.hard.wrong_decisions, row.hard.judged, err(row.hard.max_relative));
+    md +=
+        fmt::format("{} ({}): {} ns, {} wrong decisions of {} hard cases, largest hard error {}. ",
+                    row.level, primitive_name(row.primitive), ns(row.ns_random),
+                    row.hard.wrong_decisions, row.hard.judged, err(row.hard.max_relative));
   }
   md += "\n\n";
   if (r.stress_rays) {

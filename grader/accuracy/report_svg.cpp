@@ -18,12 +18,14 @@ constexpr double kWidth = 900, kHeight = 560, kLeft = 70, kRight = 260, kTop = 2
 
 double x_of(double ns) {
   double d = std::log10(std::clamp(ns, 1.0, 1e6));
-  return kLeft + (d - kTimeDecadeLow) / (kTimeDecadeHigh - kTimeDecadeLow) * (kWidth - kLeft - kRight);
+  return kLeft +
+         (d - kTimeDecadeLow) / (kTimeDecadeHigh - kTimeDecadeLow) * (kWidth - kLeft - kRight);
 }
 
 double y_of(double e) {
   double d = std::log10(std::clamp(e, kErrorFloor, 10.0));
-  return kTop + (kErrorDecadeHigh - d) / (kErrorDecadeHigh - kErrorDecadeLow) * (kHeight - kTop - kBottom);
+  return kTop +
+         (kErrorDecadeHigh - d) / (kErrorDecadeHigh - kErrorDecadeLow) * (kHeight - kTop - kBottom);
 }
 
 std::string marker(Primitive p, double x, double y, const std::string& color) {
@@ -31,22 +33,28 @@ std::string marker(Primitive p, double x, double y, const std::string& color) {
     case Primitive::kSphere:
       return fmt::format("<circle cx='{:.1f}' cy='{:.1f}' r='4' fill='{}'/>", x, y, color);
     case Primitive::kPlane:
-      return fmt::format("<rect x='{:.1f}' y='{:.1f}' width='8' height='8' fill='{}'/>", x - 4, y - 4, color);
+      return fmt::format("<rect x='{:.1f}' y='{:.1f}' width='8' height='8' fill='{}'/>", x - 4,
+                         y - 4, color);
     case Primitive::kTriangle:
       return fmt::format("<path d='M{:.1f} {:.1f}l5 9h-10z' fill='{}'/>", x, y - 5, color);
     case Primitive::kPolygon:
       return fmt::format("<path d='M{:.1f} {:.1f}l5 5l-5 5l-5 -5z' fill='{}'/>", x, y - 5, color);
     case Primitive::kCylinder:
-      return fmt::format("<circle cx='{:.1f}' cy='{:.1f}' r='4' fill='none' stroke='{}' stroke-width='2'/>", x, y, color);
+      return fmt::format(
+          "<circle cx='{:.1f}' cy='{:.1f}' r='4' fill='none' stroke='{}' stroke-width='2'/>", x, y,
+          color);
     case Primitive::kBox:
-      return fmt::format("<rect x='{:.1f}' y='{:.1f}' width='8' height='8' fill='none' stroke='{}' stroke-width='2'/>", x - 4, y - 4, color);
+      return fmt::format(
+          "<rect x='{:.1f}' y='{:.1f}' width='8' height='8' fill='none' stroke='{}' "
+          "stroke-width='2'/>",
+          x - 4, y - 4, color);
   }
   return "";
 }
 
-const char* kColors[] = {"#9e9e9e", "#e53935", "#fb8c00", "#1e88e5", "#3949ab", "#8e24aa",
-                         "#00897b", "#6d4c41", "#43a047", "#000000", "#f06292", "#c0ca33",
-                         "#26c6da"};
+const char* kColors[] = {"#9e9e9e", "#e53935", "#fb8c00", "#1e88e5", "#3949ab",
+                         "#8e24aa", "#00897b", "#6d4c41", "#43a047", "#000000",
+                         "#f06292", "#c0ca33", "#26c6da"};
 
 }  // namespace
 
@@ -65,32 +73,38 @@ std::string render_accuracy_svg(const AccuracyReport& r) {
       kWidth, kHeight);
   for (int d = kTimeDecadeLow; d <= kTimeDecadeHigh; ++d) {
     double x = x_of(std::pow(10.0, d));
-    s += fmt::format("<line x1='{0:.1f}' x2='{0:.1f}' y1='{1}' y2='{2}' stroke='#ddd'/>"
-                     "<text x='{0:.1f}' y='{3}' text-anchor='middle'>1e{4}</text>\n",
-                     x, kTop, kHeight - kBottom, kHeight - kBottom + 15, d);
+    s += fmt::format(
+        "<line x1='{0:.1f}' x2='{0:.1f}' y1='{1}' y2='{2}' stroke='#ddd'/>"
+        "<text x='{0:.1f}' y='{3}' text-anchor='middle'>1e{4}</text>\n",
+        x, kTop, kHeight - kBottom, kHeight - kBottom + 15, d);
   }
   for (int d = kErrorDecadeLow; d <= kErrorDecadeHigh; d += 2) {
     double y = y_of(std::pow(10.0, d));
-    s += fmt::format("<line x1='{0}' x2='{1}' y1='{2:.1f}' y2='{2:.1f}' stroke='#ddd'/>"
-                     "<text x='{3}' y='{4:.1f}' text-anchor='end'>1e{5}</text>\n",
-                     kLeft, kWidth - kRight, y, kLeft - 5, y + 4, d);
+    s += fmt::format(
+        "<line x1='{0}' x2='{1}' y1='{2:.1f}' y2='{2:.1f}' stroke='#ddd'/>"
+        "<text x='{3}' y='{4:.1f}' text-anchor='end'>1e{5}</text>\n",
+        kLeft, kWidth - kRight, y, kLeft - 5, y + 4, d);
   }
-  s += fmt::format("<text x='{}' y='{}' text-anchor='middle'>nanoseconds per intersection "
-                   "(random set)</text>\n",
-                   (kLeft + kWidth - kRight) / 2, kHeight - 12);
-  s += fmt::format("<text transform='translate(16 {}) rotate(-90)' text-anchor='middle'>largest "
-                   "relative error in t, hard set (wrong decision = 1; exact at the floor)</text>\n",
-                   (kTop + kHeight - kBottom) / 2);
+  s += fmt::format(
+      "<text x='{}' y='{}' text-anchor='middle'>nanoseconds per intersection "
+      "(random set)</text>\n",
+      (kLeft + kWidth - kRight) / 2, kHeight - 12);
+  s += fmt::format(
+      "<text transform='translate(16 {}) rotate(-90)' text-anchor='middle'>largest "
+      "relative error in t, hard set (wrong decision = 1; exact at the floor)</text>\n",
+      (kTop + kHeight - kBottom) / 2);
   for (const auto& row : r.rows) {
     double e = row.hard.wrong_decisions > 0 ? 1.0 : row.hard.max_relative;
     if (row.hard.judged == 0) e = row.random.wrong_decisions > 0 ? 1.0 : row.random.max_relative;
     s += marker(row.primitive, x_of(row.ns_random), y_of(e), color(row.level));
-    s += fmt::format("<title>{} {}</title>\n", xml_escape(row.level), primitive_name(row.primitive));
+    s +=
+        fmt::format("<title>{} {}</title>\n", xml_escape(row.level), primitive_name(row.primitive));
   }
   double lx = kWidth - kRight + 15, ly = kTop + 10;
   for (const auto& name : names) {
-    s += fmt::format("<rect x='{}' y='{}' width='10' height='10' fill='{}'/><text x='{}' y='{}'>{}</text>\n",
-                     lx, ly - 9, color(name), lx + 15, ly, xml_escape(name));
+    s += fmt::format(
+        "<rect x='{}' y='{}' width='10' height='10' fill='{}'/><text x='{}' y='{}'>{}</text>\n", lx,
+        ly - 9, color(name), lx + 15, ly, xml_escape(name));
     ly += 16;
   }
   ly += 10;

@@ -11,7 +11,9 @@ namespace {
 // meets the same part of the surface.
 constexpr double kNormalProbeBack = 1e-6;
 
-Vec3d vec(const nlohmann::json& j) { return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()}; }
+Vec3d vec(const nlohmann::json& j) {
+  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
+}
 
 }  // namespace
 
@@ -52,8 +54,7 @@ std::optional<std::string> settle_nearest(const Shape& object, const Ray& ray, I
   std::optional<AccuracyCase> c = accuracy_case_of(object, ray);
   if (!c) return std::nullopt;
   Adaptive a = adaptive_nearest(*c);
-  if (a.level != Level::kDouble && a.level != Level::kExactBoundary &&
-      a.hit != !x.hits.empty()) {
+  if (a.level != Level::kDouble && a.level != Level::kExactBoundary && a.hit != !x.hits.empty()) {
     if (!a.hit) {
       x.hits.clear();
     } else {

@@ -26,7 +26,6 @@ struct BenchOptions {
   long long spawn = 0;
 };
 
-
 // A progress bar on standard error, only when it is a terminal.
 void progress_bar(const char* what, double fraction) {
   if (!isatty(fileno(stderr))) return;
@@ -53,17 +52,21 @@ int run_bench(const BenchOptions& o) {
   if (o.stress > 0 || o.spawn > 0) {
     TriangleMesh mesh = subdivided_sphere(3);
     auto start = std::chrono::steady_clock::now();
-    StressResult edges = stress_edge_rays(mesh, o.stress, 1, [](double f) { progress_bar("edge rays", f); });
+    StressResult edges =
+        stress_edge_rays(mesh, o.stress, 1, [](double f) { progress_bar("edge rays", f); });
     progress_bar("edge rays", 1);
     StressResult spawn = stress_spawned_rays(mesh, o.spawn, 2);
     double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    fmt::print("edge and vertex rays: {} misses in {}\nspawned rays: {} failures in {}\n({:.1f} s)\n",
-               edges.failures, edges.rays, spawn.failures, spawn.rays, s);
+    fmt::print(
+        "edge and vertex rays: {} misses in {}\nspawned rays: {} failures in {}\n({:.1f} s)\n",
+        edges.failures, edges.rays, spawn.failures, spawn.rays, s);
     return edges.failures == 0 && spawn.failures == 0 ? kExitOk : kExitFailed;
   }
   std::vector<NearestFunction> functions;
-  for (const auto& level : ladder_levels()) functions.push_back({level.name, false, level.nearest, std::nullopt});
-  for (const auto& peer : peers()) functions.push_back({peer.name, true, peer.nearest, peer.primitive});
+  for (const auto& level : ladder_levels())
+    functions.push_back({level.name, false, level.nearest, std::nullopt});
+  for (const auto& peer : peers())
+    functions.push_back({peer.name, true, peer.nearest, peer.primitive});
   std::vector<TruthCase> hard = read_corpus(o.corpus);
   report = measure_accuracy(functions, o.random, hard, [](int done, int total) {
     progress_bar("measuring", static_cast<double>(done) / total);
@@ -83,7 +86,8 @@ Runner setup_bench(CLI::App& sub) {
   auto o = std::make_shared<BenchOptions>();
   sub.add_option("--out", o->out, "the Markdown report to write (the SVG plot goes beside it)");
   sub.add_option("--corpus", o->corpus, "the hard-case corpus to judge on");
-  sub.add_option("--random", o->random, "random cases per primitive")->check(CLI::Range(10, 1000000));
+  sub.add_option("--random", o->random, "random cases per primitive")
+      ->check(CLI::Range(10, 1000000));
   sub.add_option("--write-corpus", o->write_corpus,
                  "generate the hard cases, compute their MPFR truth, write them here, and stop");
   sub.add_option("--stress", o->stress,

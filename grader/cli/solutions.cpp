@@ -24,7 +24,8 @@ int run_solutions(const SolutionsOptions& o) {
   Bank bank = load_bank(o.paths);
   std::vector<Format> formats;
   for (const auto& f : o.formats) formats.push_back(*parse_format(f));
-  std::vector<GeneratedFile> files = solution_files(bank.problems, formats, command_line(o), bank.errors);
+  std::vector<GeneratedFile> files =
+      solution_files(bank.problems, formats, command_line(o), bank.errors);
   for (const auto& e : bank.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   if (o.check) {
     FolderSync s = check_solution_folder(o.out, files);

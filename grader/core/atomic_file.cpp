@@ -43,8 +43,7 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
   // mkstemp needs a writable template: "<folder>/.<name>.tmp-XXXXXX", hidden and in the same
   // folder so that the rename stays on one file system.
   std::filesystem::path folder = path.parent_path();
-  std::string pattern =
-      (folder / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
+  std::string pattern = (folder / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   int fd = ::mkstemp(name.data());

@@ -97,7 +97,8 @@ Sentence& Sentence::value(const Value& v) {
 
 std::string Sentence::plain(const NumberFormat& f) const {
   std::string out;
-  for (const auto& p : parts_) out += p.value.kind == Value::Kind::kNone ? p.text : format_value(p.value, f);
+  for (const auto& p : parts_)
+    out += p.value.kind == Value::Kind::kNone ? p.text : format_value(p.value, f);
   return out;
 }
 

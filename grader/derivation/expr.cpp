@@ -227,8 +227,7 @@ std::string render_number(double v, const Dialect& d, const RenderOptions& o, bo
   return v < 0 && !leading ? d.paren(s) : s;
 }
 
-std::string render_value(const Value& v, const Dialect& d, const RenderOptions& o,
-                         bool leading) {
+std::string render_value(const Value& v, const Dialect& d, const RenderOptions& o, bool leading) {
   switch (v.kind) {
     case Value::Kind::kScalar: return render_number(v.scalar, d, o, leading);
     case Value::Kind::kVector:
@@ -354,9 +353,9 @@ std::string text_part(const std::string& s) {
 
 const std::string& latex_op(const std::string& t) {
   static const std::map<std::string, std::string> ops = {
-      {"+", " + "},       {"−", " - "}, {"-", "-"},     {"·", " \\cdot "},
-      {"×", " \\times "}, {"<", " < "}, {">", " > "},   {"≤", " \\le "},
-      {"≥", " \\ge "},    {"=", " = "}, {"≠", " \\ne "},    {"≈", " \\approx "}};
+      {"+", " + "},       {"−", " - "}, {"-", "-"},      {"·", " \\cdot "},
+      {"×", " \\times "}, {"<", " < "}, {">", " > "},    {"≤", " \\le "},
+      {"≥", " \\ge "},    {"=", " = "}, {"≠", " \\ne "}, {"≈", " \\approx "}};
   auto it = ops.find(t);
   return it == ops.end() ? t : it->second;
 }

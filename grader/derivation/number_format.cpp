@@ -74,7 +74,8 @@ constexpr double kExactSnap = 1e-11;
 constexpr double kShortDecimalScale = 1e6;
 constexpr long long kMaxP = 10000;
 
-constexpr long long kSquareFree[] = {2, 3, 5, 6, 7, 10, 11, 13, 14, 15, 17, 19, 21, 22, 23, 26, 29, 30};
+constexpr long long kSquareFree[] = {2,  3,  5,  6,  7,  10, 11, 13, 14,
+                                     15, 17, 19, 21, 22, 23, 26, 29, 30};
 constexpr long long kRootDenominators[] = {1, 2, 3, 4, 6};
 constexpr long long kMaxRootCoefficient = 12;
 constexpr long long kMaxFractionDenominator = 12;

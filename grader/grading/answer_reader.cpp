@@ -41,9 +41,9 @@ void AnswerReader::allow_only(const std::vector<std::string>& allowed) const {
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     std::string hint = closest_match(key, allowed);
     AnswerReader(v, file_, path_ + "/" + pointer_token(key))
-        .fail(hint.empty() ? fmt::format("unknown key '{}' (known: {})", key,
-                                         fmt::join(allowed, ", "))
-                           : fmt::format("unknown key '{}' (did you mean '{}'?)", key, hint),
+        .fail(hint.empty()
+                  ? fmt::format("unknown key '{}' (known: {})", key, fmt::join(allowed, ", "))
+                  : fmt::format("unknown key '{}' (did you mean '{}'?)", key, hint),
               "unknown-key");
   }
 }

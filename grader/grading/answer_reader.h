@@ -20,9 +20,9 @@ class AnswerReader {
   const nlohmann::json& json() const { return *value_; }
   const std::string& path() const { return path_; }
   bool has(std::string_view key) const;
-  AnswerReader at(std::string_view key) const;   // the key must exist
-  std::vector<AnswerReader> items() const;       // must be an array
-  std::string string() const;                    // must be a string
+  AnswerReader at(std::string_view key) const;  // the key must exist
+  std::vector<AnswerReader> items() const;      // must be an array
+  std::string string() const;                   // must be a string
   // The object's keys must be among `allowed`; the first other one is an error.
   void allow_only(const std::vector<std::string>& allowed) const;
   [[noreturn]] void fail(const std::string& message, const std::string& code = "invalid") const;

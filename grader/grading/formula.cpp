@@ -42,11 +42,26 @@ double Formula::evaluate(const std::vector<double>& values) const {
                        ? values[static_cast<std::size_t>(in.slot)]
                        : std::numeric_limits<double>::quiet_NaN();
         break;
-      case Op::kAdd: --top; s[top - 1] += s[top]; break;
-      case Op::kSub: --top; s[top - 1] -= s[top]; break;
-      case Op::kMul: --top; s[top - 1] *= s[top]; break;
-      case Op::kDiv: --top; s[top - 1] /= s[top]; break;
-      case Op::kPow: --top; s[top - 1] = std::pow(s[top - 1], s[top]); break;
+      case Op::kAdd:
+        --top;
+        s[top - 1] += s[top];
+        break;
+      case Op::kSub:
+        --top;
+        s[top - 1] -= s[top];
+        break;
+      case Op::kMul:
+        --top;
+        s[top - 1] *= s[top];
+        break;
+      case Op::kDiv:
+        --top;
+        s[top - 1] /= s[top];
+        break;
+      case Op::kPow:
+        --top;
+        s[top - 1] = std::pow(s[top - 1], s[top]);
+        break;
       case Op::kNeg: s[top - 1] = -s[top - 1]; break;
       case Op::kSqrt: s[top - 1] = std::sqrt(s[top - 1]); break;
       case Op::kAbs: s[top - 1] = std::abs(s[top - 1]); break;
@@ -69,9 +84,9 @@ struct Glyph {
   std::string_view utf8;
   char ascii;  // '*', '-', '/', '2' (for ²), '3' (for ³), 'r' (for √), 'p' (for π)
 };
-constexpr Glyph kGlyphs[] = {{"\u2212", '-'}, {"\u00b7", '*'}, {"\u22c5", '*'}, {"\u00d7", '*'},
-                             {"\u00f7", '/'}, {"\u00b2", '2'}, {"\u00b3", '3'}, {"\u221a", 'r'},
-                             {"\u03c0", 'p'}};
+constexpr Glyph kGlyphs[] = {{"\u2212", '-'}, {"\u00b7", '*'}, {"\u22c5", '*'},
+                             {"\u00d7", '*'}, {"\u00f7", '/'}, {"\u00b2", '2'},
+                             {"\u00b3", '3'}, {"\u221a", 'r'}, {"\u03c0", 'p'}};
 
 struct Function {
   std::string_view name;
@@ -88,8 +103,8 @@ class Parser {
   FormulaParse run() {
     FormulaParse out;
     if (text_.size() > kMaxFormulaLength) {
-      fail(kMaxFormulaLength, fmt::format("the answer is too long (more than {} characters)",
-                                          kMaxFormulaLength));
+      fail(kMaxFormulaLength,
+           fmt::format("the answer is too long (more than {} characters)", kMaxFormulaLength));
     } else {
       skip_space();
       if (pos_ == text_.size()) {
@@ -125,8 +140,11 @@ class Parser {
       if (text_.substr(pos_, g.utf8.size()) == g.utf8) {
         if (width) *width = g.utf8.size();
         // ², ³, √ and π are told apart from the ASCII characters by a leading marker.
-        return g.ascii == '2' ? '\x02' : g.ascii == '3' ? '\x03' : g.ascii == 'r' ? '\x01'
-               : g.ascii == 'p' ? '\x04' : g.ascii;
+        return g.ascii == '2'   ? '\x02'
+               : g.ascii == '3' ? '\x03'
+               : g.ascii == 'r' ? '\x01'
+               : g.ascii == 'p' ? '\x04'
+                                : g.ascii;
       }
     }
     if (width) *width = 1;
@@ -141,9 +159,12 @@ class Parser {
     if (pos_ >= text_.size()) return "end";
     std::size_t w = 1;
     unsigned char c = static_cast<unsigned char>(text_[pos_]);
-    if (c >= 0xF0) w = 4;
-    else if (c >= 0xE0) w = 3;
-    else if (c >= 0xC0) w = 2;
+    if (c >= 0xF0)
+      w = 4;
+    else if (c >= 0xE0)
+      w = 3;
+    else if (c >= 0xC0)
+      w = 2;
     return std::string(text_.substr(pos_, w));
   }
   std::size_t column_of(std::size_t byte) const {
@@ -194,8 +215,8 @@ class Parser {
   }
 
   bool starts_primary(char c) const {
-    return c == '(' || c == '\x01' || c == '\x04' ||
-           std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+    return c == '(' || c == '\x01' || c == '\x04' || std::isalpha(static_cast<unsigned char>(c)) ||
+           c == '_';
   }
 
   void term(int depth) {
@@ -266,9 +287,9 @@ class Parser {
       skip_space();
       if (failed_) return;
       if (peek() != ')') {
-        fail(pos_, pos_ >= text_.size() ? "missing ')'"
-                                        : fmt::format("expected ')' but found '{}'",
-                                                      current_glyph()));
+        fail(pos_, pos_ >= text_.size()
+                       ? "missing ')'"
+                       : fmt::format("expected ')' but found '{}'", current_glyph()));
         return;
       }
       advance();
@@ -282,8 +303,8 @@ class Parser {
     } else if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
       number();
     } else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
-      while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) ||
-                                     text_[pos_] == '_')) {
+      while (pos_ < text_.size() &&
+             (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_')) {
         ++pos_;
       }
       identifier(text_.substr(start, pos_ - start), start, depth);
@@ -304,8 +325,7 @@ class Parser {
       if (e < text_.size() && (text_[e] == '+' || text_[e] == '-')) ++e;
       if (e < text_.size() && std::isdigit(static_cast<unsigned char>(text_[e]))) {
         pos_ = e;
-        while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_])))
-          ++pos_;
+        while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
       }
     }
     double v = 0;

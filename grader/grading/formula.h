@@ -29,8 +29,21 @@ class SymbolTable {
 // A parsed formula: a postfix program over a small stack.
 struct Formula {
   enum class Op : unsigned char {
-    kNumber, kSymbol, kAdd, kSub, kMul, kDiv, kPow, kNeg,
-    kSqrt, kAbs, kSin, kCos, kTan, kExp, kLog,
+    kNumber,
+    kSymbol,
+    kAdd,
+    kSub,
+    kMul,
+    kDiv,
+    kPow,
+    kNeg,
+    kSqrt,
+    kAbs,
+    kSin,
+    kCos,
+    kTan,
+    kExp,
+    kLog,
   };
   struct Instruction {
     Op op;

@@ -59,8 +59,9 @@ PartResult make_part(const GradingContext& c, const std::string& name, double cr
   p.max_points = c.points.of(name);
   credit = std::clamp(credit, 0.0, 1.0);
   p.points = p.max_points * credit;
-  p.status = credit >= 1 ? PartStatus::kRight : credit > 0 ? PartStatus::kPartial
-                                                           : PartStatus::kWrong;
+  p.status = credit >= 1  ? PartStatus::kRight
+             : credit > 0 ? PartStatus::kPartial
+                          : PartStatus::kWrong;
   p.feedback = std::move(feedback);
   return p;
 }

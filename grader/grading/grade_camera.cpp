@@ -23,8 +23,8 @@ class CameraGrader final : public KindGrader {
     context_.tolerance = read_tolerance_policy(p);
     context_.points = read_points_policy(p, {{"ray", 1}, {"steps", 0}});
     if (p.precision >= 0) numbers_.decimals = p.precision;
-    direction_ = camera_ray_direction(task_.camera(), task_.pixel_x(), task_.pixel_y(),
-                                      task_.convention());
+    direction_ =
+        camera_ray_direction(task_.camera(), task_.pixel_x(), task_.pixel_y(), task_.convention());
     methods_ = solutions_by_method(task_);
     mistaken_ = mistaken_solutions(task_);
     // The mistakes of this kind, recomputed through the derivation with a changed formula.
@@ -76,9 +76,8 @@ class CameraGrader final : public KindGrader {
             v.id, "ray",
             fmt::format("your direction {} is what that gives; the ray through pixel ({}, {}) "
                         "has direction {}.",
-                        format_vector(direction->value(), numbers_),
-                        format_number(task_.pixel_x()), format_number(task_.pixel_y()),
-                        format_vector(direction_, numbers_))));
+                        format_vector(direction->value(), numbers_), format_number(task_.pixel_x()),
+                        format_number(task_.pixel_y()), format_vector(direction_, numbers_))));
         credit = mistake_info(v.id).credit;
         named = true;
         break;

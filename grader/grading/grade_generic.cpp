@@ -48,8 +48,8 @@ class GenericGrader final : public KindGrader {
       if (s.json().is_number() || s.json().is_string()) {
         auto n = s.number();
         double ref = r.get<double>();
-        if (n.value && compare_number(*n.value, ref, ref, context_.tolerance.base).match ==
-                           Match::kRight) {
+        if (n.value &&
+            compare_number(*n.value, ref, ref, context_.tolerance.base).match == Match::kRight) {
           ++right;
         } else if (!n.value) {
           fb.push_back(fmt::format("{}: {}", s.path(), n.fault));

@@ -79,8 +79,7 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()) {
   } else {
     auto& fh = dynamic_cast<const FirstHitTask&>(*task_);
     first_hit_ = true;
-    context_.points =
-        read_points_policy(p, {{"object", 2}, {"t", 1}, {"point", 1}, {"normal", 0}});
+    context_.points = read_points_policy(p, {{"object", 2}, {"t", 1}, {"point", 1}, {"normal", 0}});
     ray_ = fh.ray();
     FirstHit f = first_hit(ray_, fh.objects());
     for (const auto& o : fh.objects()) {
@@ -165,7 +164,10 @@ void HitsGrader::grade(const AnswerReader& a, GradeResult& out) const {
   if (!first_hit_ && contained_) {
     bool says = a.has("contained") && a.at("contained").json() == true;
     out.parts.push_back(make_part(
-        context_, "t", says && hits.empty() ? 1 : hits.empty() ? 0.5 : 0,
+        context_, "t",
+        says && hits.empty() ? 1
+        : hits.empty()       ? 0.5
+                             : 0,
         {says && hits.empty()
              ? "Right: the ray lies in the plane and meets it along a whole line."
              : "The ray lies in the plane (N·R = 0 and its origin is on the plane): it meets "
@@ -183,18 +185,18 @@ void HitsGrader::grade_object(const AnswerReader& a, GradeResult& out) const {
   const auto& v = a.at("object").json();
   std::string right = ref_object_ >= 0 ? names_[static_cast<std::size_t>(ref_object_)] : "";
   if (v.is_null() || (v.is_string() && norm_name(v.get<std::string>()) == "none")) {
-    out.parts.push_back(make_part(context_, "object", ref_object_ < 0 ? 1 : 0,
-                                  {ref_object_ < 0 ? "Right: no object is hit."
-                                                   : fmt::format("{} is hit.", right)}));
+    out.parts.push_back(make_part(
+        context_, "object", ref_object_ < 0 ? 1 : 0,
+        {ref_object_ < 0 ? "Right: no object is hit." : fmt::format("{} is hit.", right)}));
     return;
   }
   std::string name = a.at("object").string();
   bool ok = ref_object_ >= 0 && norm_name(name) == norm_name(right);
   out.parts.push_back(make_part(
       context_, "object", ok ? 1 : 0,
-      {ok ? fmt::format("Right: {} is hit first.", right)
-          : ref_object_ < 0 ? "No object is hit."
-                            : fmt::format("The first object hit is {}, not {}.", right, name)}));
+      {ok                ? fmt::format("Right: {} is hit first.", right)
+       : ref_object_ < 0 ? "No object is hit."
+                         : fmt::format("The first object hit is {}, not {}.", right, name)}));
 }
 
 void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrade* steps,
@@ -285,7 +287,8 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
       for (const auto& part : ms.parts) {
         for (double r : derivation_roots(part.derivation)) {
           if (explained || !near(r)) continue;
-          out.mistakes.push_back(make_mistake(ms.id, "t", fmt::format("your t = {} is what it gives.", typed)));
+          out.mistakes.push_back(
+              make_mistake(ms.id, "t", fmt::format("your t = {} is what it gives.", typed)));
           explained = true;
         }
       }
@@ -295,8 +298,9 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
   std::size_t denom = std::max(n_ref, n_stu);
   for (std::size_t j = 0; j < n_ref; ++j) {
     if (!used[j] && any_t) {
-      t_feedback.push_back(first_hit_ ? fmt::format("The first hit is at t = {}.", fmt_t(ref_[j].t))
-                                      : fmt::format("The ray also hits at t = {}.", fmt_t(ref_[j].t)));
+      t_feedback.push_back(first_hit_
+                               ? fmt::format("The first hit is at t = {}.", fmt_t(ref_[j].t))
+                               : fmt::format("The ray also hits at t = {}.", fmt_t(ref_[j].t)));
     }
   }
   if (n_ref == 0 && n_stu == 0) {
@@ -308,7 +312,8 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
       t_feedback.push_back(n_ref == 1 ? "Right." : "Right: every hit, in any order.");
     }
     if (n_ref == 0) t_feedback.push_back("The ray does not hit this object.");
-    out.parts.push_back(make_part(context_, "t", t_credit / static_cast<double>(denom), t_feedback));
+    out.parts.push_back(
+        make_part(context_, "t", t_credit / static_cast<double>(denom), t_feedback));
   }
   // Points and normals of the hits the student found; when no t was given, matched by point.
   if (!any_t) {
@@ -353,8 +358,7 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
           p_credit += context_.points.carried_forward;
           out.carried_forward = true;
           p_feedback.push_back(fmt::format(
-              "The point follows correctly from your t = {} (error carried forward).",
-              h.t->text));
+              "The point follows correctly from your t = {} (error carried forward).", h.t->text));
         }
       }
     }
@@ -387,14 +391,16 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
         bool flat = type == "triangle" || type == "polygon";
         if (flat || type == "sphere" || type == "cylinder" || type == "box") {
           const char* id = flat ? "cross-order" : "inward-normal";
-          out.mistakes.push_back(make_mistake(
-              id, "normal",
-              fmt::format("your normal {} points the opposite way to {}.",
-                          format_vector(mine, numbers_), format_vector(r, numbers_))));
+          out.mistakes.push_back(
+              make_mistake(id, "normal",
+                           fmt::format("your normal {} points the opposite way to {}.",
+                                       format_vector(mine, numbers_), format_vector(r, numbers_))));
           n_credit += mistake_info(id).credit;
         } else {
-          n_feedback.push_back(fmt::format("Your normal points the opposite way to the plane's "
-                                           "normal {}.", format_vector(r, numbers_)));
+          n_feedback.push_back(
+              fmt::format("Your normal points the opposite way to the plane's "
+                          "normal {}.",
+                          format_vector(r, numbers_)));
         }
       } else {
         n_feedback.push_back(fmt::format("The normal at t = {} is {}.", fmt_t(ref_[j].t),

@@ -51,9 +51,9 @@ class KindGrader {
 // The grader for a problem's kind (a generic leaf-by-leaf comparison for kinds without one).
 std::shared_ptr<const KindGrader> make_kind_grader(const Problem& p);
 
-std::shared_ptr<const KindGrader> make_hits_grader(const Problem& p);    // intersect, first-hit
-std::shared_ptr<const KindGrader> make_camera_grader(const Problem& p);  // camera-ray
-std::shared_ptr<const KindGrader> make_formula_grader(const Problem& p);  // derive
+std::shared_ptr<const KindGrader> make_hits_grader(const Problem& p);      // intersect, first-hit
+std::shared_ptr<const KindGrader> make_camera_grader(const Problem& p);    // camera-ray
+std::shared_ptr<const KindGrader> make_formula_grader(const Problem& p);   // derive
 std::shared_ptr<const KindGrader> make_ray_tree_grader(const Problem& p);  // ray-tree
 std::shared_ptr<const KindGrader> make_generic_grader(const Problem& p);
 

@@ -18,8 +18,7 @@ const std::vector<MistakeInfo>& mistake_catalogue() {
        "roots.",
        0},
       {"plane-d-sign", "sign", "Sign slip in the plane's D",
-       "In N·P + D = 0 a point V0 of the plane gives N·V0 + D = 0, so D = −N·V0 (not +N·V0).",
-       0},
+       "In N·P + D = 0 a point V0 of the plane gives N·V0 + D = 0, so D = −N·V0 (not +N·V0).", 0},
       {"far-root", "root-choice", "Far root given as the first hit",
        "Of two roots, the ray meets the surface first at the smaller t ≥ 0; the larger is "
        "where it leaves.",
@@ -168,10 +167,8 @@ bool same_parts(const std::vector<SolutionPart>& a, const std::vector<SolutionPa
 
 const std::vector<FormulaMistake>& formula_mistakes() {
   static const std::vector<FormulaMistake> m = {
-      {"discriminant-sign", &discriminant_sign},
-      {"b-sign", &b_sign},
-      {"plane-d-sign", &plane_d_sign},
-      {"cylinder-b-no-origin", &cylinder_b_no_origin},
+      {"discriminant-sign", &discriminant_sign}, {"b-sign", &b_sign},
+      {"plane-d-sign", &plane_d_sign},           {"cylinder-b-no-origin", &cylinder_b_no_origin},
       {"r-not-squared", &r_not_squared},
   };
   return m;
@@ -203,8 +200,7 @@ std::vector<MistakenSolution> mistaken_solutions(const Task& task) {
 }
 
 std::vector<double> derivation_roots(const Derivation& d) {
-  static const char* const kNames[] = {"t0",      "t1",     "t",    "t_enter",
-                                       "t_exit",  "t_bottom", "t_top"};
+  static const char* const kNames[] = {"t0", "t1", "t", "t_enter", "t_exit", "t_bottom", "t_top"};
   std::vector<double> out;
   for (const auto& s : d.steps) {
     if (s.given || !s.value.is_scalar() || !std::isfinite(s.value.scalar)) continue;

@@ -39,13 +39,12 @@ nlohmann::json result_json(const GradeResult& r) {
   }
   nlohmann::json mistakes = nlohmann::json::array();
   for (const auto& m : r.mistakes) {
-    mistakes.push_back(
-        {{"id", m.id}, {"kind", m.kind}, {"part", m.part}, {"message", m.message}});
+    mistakes.push_back({{"id", m.id}, {"kind", m.kind}, {"part", m.part}, {"message", m.message}});
   }
-  return {{"problem", r.problem_id},   {"title", r.title},       {"score", r.score},
-          {"max_score", r.max_score},  {"answered", r.answered}, {"parts", parts},
-          {"mistakes", mistakes},      {"notes", r.notes},
-          {"carried_forward", r.carried_forward}};
+  return {
+      {"problem", r.problem_id},  {"title", r.title},       {"score", r.score},
+      {"max_score", r.max_score}, {"answered", r.answered}, {"parts", parts},
+      {"mistakes", mistakes},     {"notes", r.notes},       {"carried_forward", r.carried_forward}};
 }
 
 }  // namespace raygrade

@@ -91,9 +91,9 @@ StepsGrade grade_steps(const GradingContext& c, const Task& task,
   for (const auto& [name, v] : steps.json().items()) {
     if (best->derivation.find(name)) continue;
     std::string hint = closest_match(name, known);
-    feedback.push_back(hint.empty() ? fmt::format("There is no step '{}' in this solution.", name)
-                                    : fmt::format("There is no step '{}' (did you mean '{}'?).",
-                                                  name, hint));
+    feedback.push_back(
+        hint.empty() ? fmt::format("There is no step '{}' in this solution.", name)
+                     : fmt::format("There is no step '{}' (did you mean '{}'?).", name, hint));
   }
   Overrides own;  // the student's values of the wrong steps so far
   double credit = 0;

@@ -23,9 +23,9 @@ std::vector<MethodDerivation> solutions_by_method(const Task& task);
 struct StepsGrade {
   PartResult part;  // "steps"
   std::vector<FoundMistake> mistakes;
-  std::string method;                   // the method whose steps the student followed
-  std::vector<std::string> wrong;       // names of the wrong steps, in order
-  std::optional<Derivation> carried;    // recomputed from the student's values, when some are wrong
+  std::string method;                 // the method whose steps the student followed
+  std::vector<std::string> wrong;     // names of the wrong steps, in order
+  std::optional<Derivation> carried;  // recomputed from the student's values, when some are wrong
 };
 
 // Grades `steps` (an object: step name → number or [x, y, z]).

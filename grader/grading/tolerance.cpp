@@ -90,8 +90,7 @@ NumberVerdict compare_vector(const StudentNumber (&s)[3], const Vec3d& reference
 
 std::string describe(const Tolerance& t) {
   switch (t.mode) {
-    case ToleranceMode::kDecimals:
-      return plural(t.digits, "decimal place", "decimal places");
+    case ToleranceMode::kDecimals: return plural(t.digits, "decimal place", "decimal places");
     case ToleranceMode::kSigFigs:
       return plural(t.digits, "significant figure", "significant figures");
     case ToleranceMode::kRelAbs: break;
@@ -138,8 +137,7 @@ Tolerance read_modes(const Cursor& c, Tolerance t) {
     int d = c.at(key).integer();
     bool sig = std::string_view(key) == "sigfigs";
     if (d < (sig ? 1 : 0) || d > 15) {
-      c.at(key).fail(fmt::format("{} must be an integer from {} to 15", key, sig ? 1 : 0),
-                     "range");
+      c.at(key).fail(fmt::format("{} must be an integer from {} to 15", key, sig ? 1 : 0), "range");
     }
     t.mode = sig ? ToleranceMode::kSigFigs : ToleranceMode::kDecimals;
     t.digits = d;

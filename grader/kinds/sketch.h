@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "shapes/sketch.h"
 #include "shapes/shape.h"
+#include "shapes/sketch.h"
 
 namespace raygrade {
 

@@ -9,8 +9,8 @@
 
 #include "derivation/derivation.h"
 #include "json/cursor.h"
-#include "shapes/sketch.h"
 #include "shapes/ray.h"
+#include "shapes/sketch.h"
 
 namespace raygrade {
 

@@ -84,11 +84,11 @@ void render_part(std::string& out, const SolutionPart& part, const NumberFormat&
       in_steps = false;
       out += "<div class=\"given\"><h4>Given</h4><ul>\n";
       for (const auto& v : group.steps) {
-        out += "<li>" +
-               math(to_mathml(v.step->symbol, plain) + "<mo>=</mo>" +
-                        value_mathml(v.step->value, plain),
-                    false);
-        if (!v.step->note.empty()) out += " <span class=\"note\">" + text_html(v.step->note) + "</span>";
+        out += "<li>" + math(to_mathml(v.step->symbol, plain) + "<mo>=</mo>" +
+                                 value_mathml(v.step->value, plain),
+                             false);
+        if (!v.step->note.empty())
+          out += " <span class=\"note\">" + text_html(v.step->note) + "</span>";
         out += "</li>\n";
       }
       out += "</ul></div>\n";
@@ -97,8 +97,10 @@ void render_part(std::string& out, const SolutionPart& part, const NumberFormat&
     if (!in_steps) out += "<ol class=\"steps\">\n";
     in_steps = true;
     for (const auto& v : group.steps) {
-      out += "<li><p class=\"step-head\"><code class=\"name\">" + html_escape(v.step->name) + "</code>";
-      if (!v.step->note.empty()) out += " <span class=\"note\">" + text_html(v.step->note) + "</span>";
+      out += "<li><p class=\"step-head\"><code class=\"name\">" + html_escape(v.step->name) +
+             "</code>";
+      if (!v.step->note.empty())
+        out += " <span class=\"note\">" + text_html(v.step->note) + "</span>";
       out += "</p>\n" + step_math(v, numbers) + "</li>\n";
     }
   }
@@ -131,7 +133,8 @@ void render_article(std::string& out, const Solution& solution) {
     bool heading = several || m.parts.size() > 1;
     out += "<section class=\"method\">\n";
     if (heading) out += "<h2>Method: " + html_escape(m.method) + "</h2>\n";
-    for (const auto& part : m.parts) render_part(out, part, solution.numbers, heading ? "h3" : "h2");
+    for (const auto& part : m.parts)
+      render_part(out, part, solution.numbers, heading ? "h3" : "h2");
     out += "</section>\n";
   }
   out += "</article>\n";
@@ -148,10 +151,12 @@ std::string render_html(const std::vector<const Solution*>& solutions,
     const Problem& p = *solutions[0]->problem;
     title = (p.title.empty() ? p.id : p.title) + " — worked solution";
   }
-  out += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-         "<meta name=\"generator\" content=\"raygrade\">\n<title>" +
-         html_escape(text_escape(title)) + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n<main>\n";
+  out +=
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+      "<meta name=\"generator\" content=\"raygrade\">\n<title>" +
+      html_escape(text_escape(title)) + "</title>\n<style>" + kStyle +
+      "</style>\n</head>\n<body>\n<main>\n";
   for (const Solution* s : solutions) render_article(out, *s);
   out += "</main>\n</body>\n</html>\n";
   return out;

@@ -56,8 +56,8 @@ void render_part(std::string& out, const SolutionPart& part, const NumberFormat&
         bare.clear();
       };
       for (const auto& v : group.steps) {
-        std::string g = "$" + to_latex(v.step->symbol, plain) + " = " +
-                        value_latex(v.step->value, plain) + "$";
+        std::string g =
+            "$" + to_latex(v.step->symbol, plain) + " = " + value_latex(v.step->value, plain) + "$";
         if (v.step->note.empty()) {
           bare.push_back(g);
         } else {
@@ -87,7 +87,8 @@ void render_part(std::string& out, const SolutionPart& part, const NumberFormat&
 std::string render_markdown(const Solution& solution, const DocumentOptions& options) {
   const Problem& p = *solution.problem;
   std::string out;
-  if (!options.generated.empty()) out += "<!-- " + html_escape(one_line(options.generated)) + " -->\n";
+  if (!options.generated.empty())
+    out += "<!-- " + html_escape(one_line(options.generated)) + " -->\n";
   out += "# " + markdown_escape(one_line(p.title.empty() ? p.id : p.title)) + "\n\n";
   out += "Problem " + markdown_escape(p.id) + " (" + markdown_escape(p.kind) + ")\n";
   if (!p.statement.empty()) out += "\n" + markdown_escape(p.statement) + "\n";
@@ -99,7 +100,8 @@ std::string render_markdown(const Solution& solution, const DocumentOptions& opt
   for (const auto& m : solution.methods) {
     bool heading = several || m.parts.size() > 1;
     if (heading) out += "\n## Method: " + markdown_escape(m.method) + "\n";
-    for (const auto& part : m.parts) render_part(out, part, solution.numbers, heading ? "###" : "##");
+    for (const auto& part : m.parts)
+      render_part(out, part, solution.numbers, heading ? "###" : "##");
   }
   return out;
 }

@@ -67,9 +67,7 @@ std::vector<StepGroup> step_groups(const Derivation& d, const NumberFormat& numb
   return groups;
 }
 
-bool name_differs_from_symbol(const Step& s) {
-  return squeeze(to_text(s.symbol)) != s.name;
-}
+bool name_differs_from_symbol(const Step& s) { return squeeze(to_text(s.symbol)) != s.name; }
 
 std::string text_number(double v, const NumberFormat& numbers) {
   std::string s = format_number(v, numbers);

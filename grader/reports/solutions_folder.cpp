@@ -20,9 +20,10 @@ namespace fs = std::filesystem;
 std::string index_file(const std::vector<std::pair<const Problem*, std::string>>& problems,
                        const std::vector<Format>& formats, const std::string& note) {
   std::string out = "<!-- " + html_escape(note) + " -->\n# Worked solutions\n\n";
-  out += "One worked solution per problem of the bank, in each format: Markdown with LaTeX math, "
-         "a self-contained HTML page (MathML and a sketch), plain text and JSON. Step names are "
-         "listed in docs/steps.md.\n\n| problem | kind | title | files |\n| --- | --- | --- | --- |\n";
+  out +=
+      "One worked solution per problem of the bank, in each format: Markdown with LaTeX math, "
+      "a self-contained HTML page (MathML and a sketch), plain text and JSON. Step names are "
+      "listed in docs/steps.md.\n\n| problem | kind | title | files |\n| --- | --- | --- | --- |\n";
   for (const auto& [p, base] : problems) {
     std::string links;
     for (Format f : formats) {
@@ -118,7 +119,8 @@ std::vector<GeneratedFile> solution_files(const std::vector<Problem>& problems,
             std::find(formats.begin(), formats.end(), Format::kHtml) != formats.end()) {
           o.html_link = base + ".html";
         }
-        mine.push_back({base + "." + std::string(format_extension(f)), render_document(f, {&s}, o)});
+        mine.push_back(
+            {base + "." + std::string(format_extension(f)), render_document(f, {&s}, o)});
       }
       files.insert(files.end(), mine.begin(), mine.end());
       done.emplace_back(&p, base);

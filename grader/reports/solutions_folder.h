@@ -27,16 +27,18 @@ std::vector<GeneratedFile> solution_files(const std::vector<Problem>& problems,
                                           std::vector<Diagnostic>& errors);
 
 struct FolderSync {
-  std::vector<std::string> written;    // new or changed (write) / stale or missing (check)
-  std::vector<std::string> removed;    // generated files no longer produced
+  std::vector<std::string> written;  // new or changed (write) / stale or missing (check)
+  std::vector<std::string> removed;  // generated files no longer produced
   std::size_t unchanged = 0;
 };
 
 // Brings the folder up to date: writes new and changed files (atomically), removes generated
 // files that are no longer produced. Creates the folder. Throws Error when it cannot write.
-FolderSync write_solution_folder(const std::string& folder, const std::vector<GeneratedFile>& files);
+FolderSync write_solution_folder(const std::string& folder,
+                                 const std::vector<GeneratedFile>& files);
 
 // What write_solution_folder would change, without changing anything.
-FolderSync check_solution_folder(const std::string& folder, const std::vector<GeneratedFile>& files);
+FolderSync check_solution_folder(const std::string& folder,
+                                 const std::vector<GeneratedFile>& files);
 
 }  // namespace raygrade

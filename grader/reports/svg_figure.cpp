@@ -53,7 +53,8 @@ std::vector<Vec3d> rim(const Vec3d& center, const Vec3d& axis, double r) {
 }
 
 // The points that decide the view and the frame (lines and planes have no extent).
-void samples(const SketchItem& item, std::vector<Vec3d>& pts, std::vector<std::pair<Vec3d, double>>& balls) {
+void samples(const SketchItem& item, std::vector<Vec3d>& pts,
+             std::vector<std::pair<Vec3d, double>>& balls) {
   using T = SketchItem::Type;
   switch (item.type) {
     case T::kPath:
@@ -100,7 +101,8 @@ View choose_view(const Sketch& f, const std::vector<Vec3d>& pts,
   Vec3d middle{};
   for (const auto& p : pts) middle = middle + p;
   for (const auto& b : balls) middle = middle + b.first;
-  if (!pts.empty() || !balls.empty()) middle = middle / static_cast<double>(pts.size() + balls.size());
+  if (!pts.empty() || !balls.empty())
+    middle = middle / static_cast<double>(pts.size() + balls.size());
   std::vector<Vec3d> candidates = {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}, middle - view.ref};
   double best = -1;
   for (const auto& c : candidates) {
@@ -177,8 +179,8 @@ class Canvas {
   }
   void circle(P2 c, double r, const char* cls) {
     P2 q = px(c);
-    body_ += fmt::format("<circle class=\"{}\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{:.1f}\"/>\n", cls, q.x,
-                         q.y, r * scale_);
+    body_ += fmt::format("<circle class=\"{}\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{:.1f}\"/>\n", cls,
+                         q.x, q.y, r * scale_);
   }
   void arrow(P2 a, P2 b, const char* cls) {
     polyline({a, b}, false, cls);
@@ -190,12 +192,14 @@ class Canvas {
     const double size = 10, half = 4.5;
     P2 l{qb.x - size * dx - half * dy, qb.y - size * dy + half * dx};
     P2 r{qb.x - size * dx + half * dy, qb.y - size * dy - half * dx};
-    body_ += fmt::format("<path class=\"{}-head\" d=\"M{:.1f} {:.1f} L{:.1f} {:.1f} L{:.1f} {:.1f} Z\"/>\n",
-                         cls, qb.x, qb.y, l.x, l.y, r.x, r.y);
+    body_ += fmt::format(
+        "<path class=\"{}-head\" d=\"M{:.1f} {:.1f} L{:.1f} {:.1f} L{:.1f} {:.1f} Z\"/>\n", cls,
+        qb.x, qb.y, l.x, l.y, r.x, r.y);
   }
   void marker(P2 c, const char* cls) {
     P2 q = px(c);
-    body_ += fmt::format("<circle class=\"mark-{}\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4\"/>\n", cls, q.x, q.y);
+    body_ += fmt::format("<circle class=\"mark-{}\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4\"/>\n", cls,
+                         q.x, q.y);
   }
   // A label near a point (in pixels), moved down while it would overlap an earlier one.
   void label(P2 at_px, const std::string& text, const char* cls) {
@@ -212,8 +216,8 @@ class Canvas {
       y += h;
     }
     placed_.push_back({x, y, w});
-    labels_ += fmt::format("<text class=\"label-{}\" x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n", cls, x, y,
-                           html_escape(text));
+    labels_ += fmt::format("<text class=\"label-{}\" x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n", cls, x,
+                           y, html_escape(text));
   }
   std::string body() const { return body_ + labels_; }
 

@@ -35,7 +35,8 @@ void render_part(std::string& out, const SolutionPart& part, const NumberFormat&
       out += std::string(kIndent) + "Given:\n";
       std::vector<std::string> bare;  // givens without a note share a line
       auto flush = [&] {
-        if (!bare.empty()) out += std::string(kIndent) + kIndent + fmt::format("{}\n", fmt::join(bare, ", "));
+        if (!bare.empty())
+          out += std::string(kIndent) + kIndent + fmt::format("{}\n", fmt::join(bare, ", "));
         bare.clear();
       };
       for (const auto& v : group.steps) {

@@ -21,12 +21,12 @@ enum class Ink {
 
 struct SketchItem {
   enum class Type {
-    kPath,    // a polyline through `points`, closed when `closed`
-    kCircle,  // a sphere's outline: centre points[0], radius `radius` (a circle in any view)
-    kLine,    // an infinite line through points[0] along points[1], clipped to the frame
-    kArrow,   // from points[0] to points[1]
-    kPoint,   // a marker at points[0]
-    kPlane,   // a plane through points[0] with normal points[1]: drawn as its trace in the view
+    kPath,      // a polyline through `points`, closed when `closed`
+    kCircle,    // a sphere's outline: centre points[0], radius `radius` (a circle in any view)
+    kLine,      // an infinite line through points[0] along points[1], clipped to the frame
+    kArrow,     // from points[0] to points[1]
+    kPoint,     // a marker at points[0]
+    kPlane,     // a plane through points[0] with normal points[1]: drawn as its trace in the view
     kCylinder,  // axis from points[0] along the unit points[1], `radius`; `height` 0: infinite
   };
   Type type = Type::kPath;
@@ -48,13 +48,15 @@ struct Sketch {
 
   bool empty() const { return items.empty(); }
   void path(std::vector<Vec3d> points, bool closed, Ink ink, std::string label = "") {
-    items.push_back({SketchItem::Type::kPath, std::move(points), 0, 0, closed, ink, std::move(label)});
+    items.push_back(
+        {SketchItem::Type::kPath, std::move(points), 0, 0, closed, ink, std::move(label)});
   }
   void circle(const Vec3d& center, double radius, Ink ink, std::string label = "") {
     items.push_back({SketchItem::Type::kCircle, {center}, radius, 0, true, ink, std::move(label)});
   }
   void line(const Vec3d& point, const Vec3d& direction, Ink ink, std::string label = "") {
-    items.push_back({SketchItem::Type::kLine, {point, direction}, 0, 0, false, ink, std::move(label)});
+    items.push_back(
+        {SketchItem::Type::kLine, {point, direction}, 0, 0, false, ink, std::move(label)});
   }
   void arrow(const Vec3d& from, const Vec3d& to, Ink ink, std::string label = "") {
     items.push_back({SketchItem::Type::kArrow, {from, to}, 0, 0, false, ink, std::move(label)});
@@ -65,7 +67,12 @@ struct Sketch {
   }
   void cylinder(const Vec3d& base, const Vec3d& unit_axis, double radius, double height, Ink ink,
                 std::string label = "") {
-    items.push_back({SketchItem::Type::kCylinder, {base, unit_axis}, radius, height, false, ink,
+    items.push_back({SketchItem::Type::kCylinder,
+                     {base, unit_axis},
+                     radius,
+                     height,
+                     false,
+                     ink,
                      std::move(label)});
   }
   void point(const Vec3d& at, Ink ink, std::string label = "") {
