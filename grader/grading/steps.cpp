@@ -143,6 +143,7 @@ StepsGrade grade_steps(const GradingContext& c, const Task& task,
             fmt::format("you have {} = {}; the right value is {}.", step.name,
                         format_value(*mine, fmt_numbers), format_value(step.value, fmt_numbers))));
         named = true;
+        feedback.push_back(fmt::format("{} is wrong: see the named mistake.", step.name));
         break;
       }
       if (!named) {
