@@ -164,8 +164,13 @@ void HitsGrader::grade(const AnswerReader& a, GradeResult& out) const {
   }
   if (!first_hit_ && contained_) {
     bool says = a.has("contained") && a.at("contained").json() == true;
+    double credit = says && hits.empty() ? 1 : hits.empty() ? 0.5 : 0;
+    // No single point to give: the point part follows the verdict on the line.
+    if (context_.points.of("point") > 0) {
+      out.parts.push_back(make_part(context_, "point", credit, {}));
+    }
     out.parts.push_back(make_part(
-        context_, "t", says && hits.empty() ? 1 : hits.empty() ? 0.5 : 0,
+        context_, "t", credit,
         {says && hits.empty()
              ? "Right: the ray lies in the plane and meets it along a whole line."
              : "The ray lies in the plane (N·R = 0 and its origin is on the plane): it meets "
