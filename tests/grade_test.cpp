@@ -143,6 +143,15 @@ TEST(Grade, ErrorCarriedForward) {
   EXPECT_FALSE(bare.carried_forward);
 }
 
+// Steps of the wrong shape or a yes/no are feedback, never an error or a crash.
+TEST(Grade, StepsOfTheWrongShapeAreFeedback) {
+  auto r = grade(kSphere1, R"({"steps": {"t_ca": [1, 2, 3], "L": 2, "d2": true, "x": 1},
+      "hits": [{"t": 1}, {"t": 3}]})");
+  EXPECT_DOUBLE_EQ(part(r, "t")->points, 2);
+  EXPECT_EQ(part(r, "steps")->status, PartStatus::kWrong);
+  EXPECT_GE(part(r, "steps")->feedback.size(), 3u);
+}
+
 TEST(Grade, CarriedForwardCreditFromProblem) {
   auto r = grade(R"({"id": "s1", "method": "geometric", "points": {"carried_forward": 1},
       "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},

@@ -97,7 +97,13 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()) {
   for (const Shape* s : shapes) {
     Intersection x = s->intersect(ray_);
     for (const auto& m : s->methods()) {
-      for (double t : derivation_roots(s->derive(ray_, m))) {
+      Derivation d;
+      try {
+        d = s->derive(ray_, m);
+      } catch (const Error&) {
+        continue;  // a method that does not apply to this ray
+      }
+      for (double t : derivation_roots(d)) {
         if (t < ray_.t_min) behind_.push_back(t);
         if (first_hit_ && !x.hits.empty() && t > x.hits.front().t + 1e-9 * (1 + std::abs(t))) {
           far_.push_back(t);
@@ -112,7 +118,11 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()) {
     std::string m = std::find(methods.begin(), methods.end(), "algebraic") != methods.end()
                         ? "algebraic"
                         : methods.front();
-    Derivation d = shape_->derive(ray_, m);
+    Derivation d;
+    try {
+      d = shape_->derive(ray_, m);
+    } catch (const Error&) {
+    }
     const Step *a = d.find("a"), *b = d.find("b"), *c = d.find("c");
     if (a && b && c && a->value.is_scalar() && a->value.scalar != 0) {
       double A = a->value.scalar, B = b->value.scalar, C = c->value.scalar;
