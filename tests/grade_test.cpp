@@ -1,4 +1,5 @@
-// Grading: seed answers graded as an instructor would, by values derived by hand.
+// Grading answers: parts, roots in either order, no-hit answers, the tangent's tolerance and
+// error carried forward, by values derived by hand.
 #include "grading/grade.h"
 
 #include <gtest/gtest.h>
@@ -10,38 +11,206 @@ namespace {
 
 using nlohmann::json;
 
+// Seed 000, sphere case 1: t = 1 and 3, P = (1,0,0) and (3,0,0).
 const char* kSphere1 = R"({"id": "s1", "method": "geometric",
   "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
   "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}})";
 
-// Seed 000, sphere case 1: t = 1 and 3, P = (1,0,0) and (3,0,0); L = (2,0,0), t_ca = 2,
-// d² = 0, t_hc = 1.
-TEST(Grade, SeedSphereCase1IsRight) {
-  Problem p = testing::problem(kSphere1);
-  auto r = grade_answer(p, json::parse(R"({"hits": [{"t": 1, "point": [1, 0, 0]},
-      {"t": 3, "point": [3, 0, 0]}], "steps": {"L": [2, 0, 0], "t_ca": 2, "d2": 0, "t_hc": 1}})"));
-  EXPECT_DOUBLE_EQ(r.score, r.max_score);
+// Seed 000, sphere case 2: the sphere lies behind the origin (roots −3 and −1).
+const char* kSphere2 = R"({"id": "s2", "method": "geometric",
+  "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+  "object": {"type": "sphere", "center": [-2, 0, 0], "radius": 1}})";
+
+const PartResult* part(const GradeResult& r, const std::string& name) {
+  for (const auto& p : r.parts) {
+    if (p.name == name) return &p;
+  }
+  return nullptr;
+}
+
+GradeResult grade(const char* problem, const char* answer) {
+  Problem p = testing::problem(problem);
+  return grade_answer(p, json::parse(answer));
+}
+
+TEST(Grade, SeedSphereCase1WithStepsIsRight) {
+  auto r = grade(kSphere1, R"({"hits": [{"t": 1, "point": [1, 0, 0]},
+      {"t": 3, "point": [3, 0, 0]}], "steps": {"L": [2, 0, 0], "t_ca": 2, "d2": 0, "t_hc": 1}})");
   EXPECT_DOUBLE_EQ(r.max_score, 3);  // t 2 + point 1 by default
+  EXPECT_DOUBLE_EQ(r.score, 3);
   EXPECT_TRUE(r.mistakes.empty());
+  ASSERT_NE(part(r, "steps"), nullptr);
+  EXPECT_EQ(part(r, "steps")->status, PartStatus::kRight);
 }
 
 TEST(Grade, RootsMatchInEitherOrder) {
+  for (const char* answer : {R"({"hits": [{"t": "3"}, {"t": 1}]})",
+                             R"({"hits": [{"t": 1}, {"t": 3}]})"}) {
+    auto r = grade(kSphere1, answer);
+    ASSERT_NE(part(r, "t"), nullptr);
+    EXPECT_DOUBLE_EQ(part(r, "t")->points, 2) << answer;
+  }
+}
+
+TEST(Grade, OneOfTwoRootsEarnsHalf) {
+  auto r = grade(kSphere1, R"({"hits": [{"t": 1}]})");
+  EXPECT_DOUBLE_EQ(part(r, "t")->points, 1);
+  EXPECT_EQ(part(r, "t")->status, PartStatus::kPartial);
+}
+
+TEST(Grade, ExtraHitCostsItsShare) {
+  auto r = grade(kSphere1, R"({"hits": [{"t": 1}, {"t": 3}, {"t": 5}]})");
+  EXPECT_NEAR(part(r, "t")->points, 2.0 * 2 / 3, 1e-12);
+}
+
+TEST(Grade, NoIntersectionIsGradable) {
+  auto r = grade(kSphere2, R"({"hits": []})");
+  EXPECT_DOUBLE_EQ(r.score, r.max_score);
+  EXPECT_GT(r.max_score, 0);
+  auto wrong = grade(kSphere1, R"({"hits": []})");
+  EXPECT_DOUBLE_EQ(part(wrong, "t")->points, 0);
+}
+
+TEST(Grade, MissingPartsEarnNothing) {
+  auto r = grade(kSphere1, R"({})");
+  EXPECT_DOUBLE_EQ(r.score, 0);
+  EXPECT_DOUBLE_EQ(r.max_score, 3);
+  EXPECT_EQ(part(r, "t")->status, PartStatus::kMissing);
+}
+
+TEST(Grade, UnparsableNumberIsFeedbackNotError) {
+  auto r = grade(kSphere1, R"({"hits": [{"t": "7.2.7"}, {"t": 3}]})");
+  EXPECT_DOUBLE_EQ(part(r, "t")->points, 1);
+  bool told = false;
+  for (const auto& f : part(r, "t")->feedback) told |= f.find("character 4") != std::string::npos;
+  EXPECT_TRUE(told);
+}
+
+TEST(Grade, WrongJsonTypeThrowsWithPath) {
   Problem p = testing::problem(kSphere1);
-  auto r = grade_answer(p, json::parse(R"({"hits": [{"t": "3"}, {"t": 1}]})"));
-  ASSERT_FALSE(r.parts.empty());
-  EXPECT_EQ(r.parts[0].name, "t");
-  EXPECT_DOUBLE_EQ(r.parts[0].points, 2);
+  GradeOptions o{"alice.json", "/answers/s1"};
+  try {
+    grade_answer(p, json::parse(R"({"hits": {"t": 1}})"), o);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.diagnostic().file, "alice.json");
+    EXPECT_EQ(e.diagnostic().path, "/answers/s1/hits");
+  }
+}
+
+TEST(Grade, PointsFromTheProblem) {
+  Problem p = testing::problem(R"({"id": "s", "points": {"t": 4, "point": 0, "normal": 2},
+    "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+    "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}})");
+  auto r = grade_answer(p, json::parse(
+      R"({"hits": [{"t": 1, "normal": [-1, 0, 0]}, {"t": 3, "normal": [2, 0, 0]}]})"));
+  EXPECT_DOUBLE_EQ(r.max_score, 6);
+  EXPECT_DOUBLE_EQ(r.score, 6);  // a normal of length 2 is right as a direction
+  Problem total = testing::problem(R"({"id": "s", "points": 9,
+    "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+    "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}})");
+  EXPECT_DOUBLE_EQ(Grader(total).max_score(), 9);  // t 6, point 3
+}
+
+// A ray along z at x = 1 grazes the unit sphere at (1, 0, 5): a = 1, b = −10, c = 25, Δ = 0.
+// δΔ = 1e-4 (b² + 4|ac|) = 0.02, so t may be off by √0.02 / 2 = 0.0707.
+TEST(Grade, TangentToleranceFollowsConditioning) {
+  const char* tangent = R"({"id": "g", "ray": {"origin": [1, 0, 0], "direction": [0, 0, 1]},
+    "object": {"type": "sphere", "center": [0, 0, 5], "radius": 1}})";
+  EXPECT_DOUBLE_EQ(part(grade(tangent, R"({"hits": [{"t": 5.07}]})"), "t")->points, 2);
+  EXPECT_DOUBLE_EQ(part(grade(tangent, R"({"hits": [{"t": 5.072}]})"), "t")->points, 0);
+  // Far from a tangent the usual 0.1% holds.
+  EXPECT_DOUBLE_EQ(part(grade(kSphere1, R"({"hits": [{"t": 1.07}, {"t": 3}]})"), "t")->points, 1);
+}
+
+// d² given as 0.75 instead of 0: t_hc = √(1 − 0.75) = 0.5 follows from it, and so do
+// t = 2 ∓ 0.5 = 1.5 and 2.5 and the points (1.5, 0, 0) and (2.5, 0, 0).
+TEST(Grade, ErrorCarriedForward) {
+  auto r = grade(kSphere1, R"({"steps": {"t_ca": 2, "d2": 0.75, "t_hc": 0.5},
+      "hits": [{"t": 1.5, "point": [1.5, 0, 0]}, {"t": 2.5, "point": [2.5, 0, 0]}]})");
+  EXPECT_TRUE(r.carried_forward);
+  EXPECT_DOUBLE_EQ(part(r, "t")->points, 1);        // half of 2
+  EXPECT_DOUBLE_EQ(part(r, "point")->points, 0.5);  // half of 1
+  bool said = false;
+  for (const auto& f : part(r, "t")->feedback) said |= f.find("carried forward") != std::string::npos;
+  EXPECT_TRUE(said);
+  // Steps: t_ca right, d2 wrong, t_hc carried forward.
+  EXPECT_NEAR(part(r, "steps")->max_points, 0, 0);
+  EXPECT_EQ(part(r, "steps")->status, PartStatus::kPartial);
+  // Without the wrong step the same t values earn nothing.
+  auto bare = grade(kSphere1, R"({"hits": [{"t": 1.5}, {"t": 2.5}]})");
+  EXPECT_DOUBLE_EQ(part(bare, "t")->points, 0);
+  EXPECT_FALSE(bare.carried_forward);
+}
+
+// Steps of the wrong shape or a yes/no are feedback, never an error or a crash.
+TEST(Grade, StepsOfTheWrongShapeAreFeedback) {
+  auto r = grade(kSphere1, R"({"steps": {"t_ca": [1, 2, 3], "L": 2, "d2": true, "x": 1},
+      "hits": [{"t": 1}, {"t": 3}]})");
+  EXPECT_DOUBLE_EQ(part(r, "t")->points, 2);
+  EXPECT_EQ(part(r, "steps")->status, PartStatus::kWrong);
+  EXPECT_GE(part(r, "steps")->feedback.size(), 3u);
+}
+
+TEST(Grade, CarriedForwardCreditFromProblem) {
+  auto r = grade(R"({"id": "s1", "method": "geometric", "points": {"carried_forward": 1},
+      "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+      "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}})",
+                 R"({"steps": {"d2": 0.75}, "hits": [{"t": 1.5}, {"t": 2.5}]})");
+  EXPECT_DOUBLE_EQ(part(r, "t")->points, 2);
 }
 
 // Seed 000 plane case 1: the student's D = −2 (they took D = N·V0), t = 2 right.
 TEST(Grade, SeedPlaneDSignSlipFlaggedWhileTIsRight) {
-  Problem p = testing::problem(R"({"id": "p1", "method": "implicit",
+  auto r = grade(R"({"id": "p1", "method": "implicit",
     "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
-    "object": {"type": "plane", "point": [2, 0, 0], "normal": [-1, 0, 0]}})");
-  auto r = grade_answer(p, json::parse(R"({"hits": [{"t": 2, "point": [2, 0, 0]}],
-      "steps": {"D": -2}})"));
+    "object": {"type": "plane", "point": [2, 0, 0], "normal": [-1, 0, 0]}})",
+                 R"({"hits": [{"t": 2, "point": [2, 0, 0]}], "steps": {"D": -2}})");
   EXPECT_TRUE(r.has_mistake("plane-d-sign"));
   EXPECT_DOUBLE_EQ(r.score, 3);
+}
+
+TEST(Grade, FirstHitSeed001AtTwoDecimals) {
+  const char* p = R"({"id": "f", "kind": "first-hit", "precision": 2,
+    "ray": {"origin": [0, 0, 0], "direction": [0, 0, 1]},
+    "objects": [{"name": "sphere 1", "type": "sphere", "center": [0, 0, 10], "radius": 2},
+                {"name": "sphere 2", "type": "sphere", "center": [0, 3, 8], "radius": 2},
+                {"name": "sphere 3", "type": "sphere", "center": [0, 1, 9], "radius": 2}]})";
+  auto r = grade(p, R"({"object": "Sphere 3", "hits": [{"t": 7.27, "point": [0, 0, 7.27]}]})");
+  EXPECT_DOUBLE_EQ(r.score, r.max_score);
+  EXPECT_TRUE(r.mistakes.empty());
+  auto coarse = grade(p, R"({"object": "sphere 3", "hits": [{"t": 7.3}]})");
+  EXPECT_EQ(part(coarse, "t")->status, PartStatus::kWrong);
+  EXPECT_NE(part(coarse, "t")->feedback.front().find("2 decimal places"), std::string::npos);
+  auto wrong = grade(p, R"({"object": "sphere 1", "hits": [{"t": 8}]})");
+  EXPECT_DOUBLE_EQ(part(wrong, "object")->points, 0);
+  EXPECT_DOUBLE_EQ(part(wrong, "t")->points, 0);
+}
+
+TEST(Grade, FormulaAnswers) {
+  const char* p = R"({"id": "d", "kind": "derive", "find": ["a", "b", "c"],
+    "ray": {"origin": [-3, 0, 0.5], "direction": [1, 0, 0]},
+    "object": {"type": "cylinder", "base": [0, 0, 0], "axis": [0, 0, 1], "radius": 1}})";
+  for (const char* b : {"2*(px*vx + py*vy)", "2px vx + 2 py vy", "2\u00b7(p_x\u00b7v_x + p_y\u00b7v_y)",
+                        "(px + vx)^2 - px^2 - vx^2 + 2*py*vy"}) {
+    auto r = grade(p, fmt::format(R"({{"b": "{}"}})", b).c_str());
+    EXPECT_EQ(part(r, "b")->status, PartStatus::kRight) << b;
+  }
+  auto wrong = grade(p, R"({"a": "vx^2 + vy", "b": "2*px*vx"})");
+  EXPECT_EQ(part(wrong, "a")->status, PartStatus::kWrong);
+  EXPECT_EQ(part(wrong, "b")->status, PartStatus::kWrong);
+  EXPECT_TRUE(wrong.mistakes.empty());
+  auto bad = grade(p, R"({"b": "2*(px*vx + py*vy"})");
+  EXPECT_EQ(part(bad, "b")->status, PartStatus::kWrong);
+  EXPECT_NE(part(bad, "b")->feedback.front().find("at character 17"), std::string::npos);
+  auto unknown = grade(p, R"({"c": "px^2 + pz^2 - r^2"})");
+  EXPECT_NE(part(unknown, "c")->feedback.front().find("'pz'"), std::string::npos);
+  // The offset case uses cx, cy for the axis (the seed's a, b).
+  auto off = grade(R"({"id": "o", "kind": "derive", "find": ["b", "c"],
+    "ray": {"origin": [0, 0, 0], "direction": [1, 1, 0.2]},
+    "object": {"type": "cylinder", "base": [2, 3, 0], "axis": [0, 0, 1], "radius": 2}})",
+                   R"j({"b": "2*((px - cx)*vx + (py - cy)*vy)", "c": "(px-cx)^2 + (py-cy)^2 - r^2"})j");
+  EXPECT_DOUBLE_EQ(off.score, 2);
 }
 
 }  // namespace

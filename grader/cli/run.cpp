@@ -7,6 +7,10 @@
 #include "problems/problem.h"
 
 namespace raygrade::cli {
+
+// In grade.cpp: grades the sample submissions and prints a summary line; the exit code.
+int grade_sample_submissions(const Bank& bank, const std::string& folder);
+
 namespace {
 
 struct RunOptions {
@@ -34,11 +38,12 @@ int run_main_job(const RunOptions& o) {
   for (const auto& [k, n] : by_kind) kinds.push_back(fmt::format("{} {}", n, k));
   fmt::print("Solved {} problems from {} files ({}).\n", solved, bank.files.size(),
              fmt::join(kinds, ", "));
+  int graded = grade_sample_submissions(bank, o.submissions);
   if (!bank.errors.empty() || failed) {
     fmt::print("{} problems could not be read or solved.\n", bank.errors.size() + failed);
     return kExitBadInput;
   }
-  return kExitOk;
+  return graded;
 }
 
 }  // namespace

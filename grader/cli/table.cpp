@@ -7,11 +7,13 @@ Runner setup_solve(CLI::App& sub);
 Runner setup_run(CLI::App& sub);
 Runner setup_solutions(CLI::App& sub);
 Runner setup_bench(CLI::App& sub);
+Runner setup_grade(CLI::App& sub);
 
 const std::vector<Command>& command_table() {
   static const std::vector<Command> table = {
       {"run", "the main job: solve the bank, write worked solutions, grade submissions",
        &setup_run},
+      {"grade", "grade submissions: text, json, gradescope, prairielearn, csv, html", &setup_grade},
       {"solve", "print the reference answers (and worked solutions) of problems", &setup_solve},
       {"solutions", "write (or --check) the worked solutions of a bank, one file per problem",
        &setup_solutions},

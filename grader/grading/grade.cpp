@@ -104,6 +104,15 @@ GradeResult Grader::grade(const nlohmann::json& answer, const GradeOptions& opti
   AnswerReader reader(answer, &options.file, options.path);
   if (!answer.is_object()) reader.fail("an answer is a JSON object", "type");
   kind_->grade(reader, r);
+  // A mistake found in several values of one part is reported once.
+  std::vector<FoundMistake> unique;
+  for (auto& m : r.mistakes) {
+    bool seen = std::any_of(unique.begin(), unique.end(), [&](const FoundMistake& u) {
+      return u.id == m.id && u.part == m.part;
+    });
+    if (!seen) unique.push_back(std::move(m));
+  }
+  r.mistakes = std::move(unique);
   for (const auto& part : r.parts) {
     r.score += part.points;
     r.max_score += part.max_points;

@@ -77,8 +77,4 @@ std::shared_ptr<const KindGrader> make_generic_grader(const Problem& p) {
   return std::make_shared<GenericGrader>(p);
 }
 
-std::shared_ptr<const KindGrader> make_formula_grader(const Problem& p) {
-  return make_generic_grader(p);
-}
-
 }  // namespace raygrade

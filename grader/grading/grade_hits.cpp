@@ -96,7 +96,13 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()) {
   for (const Shape* s : shapes) {
     Intersection x = s->intersect(ray_);
     for (const auto& m : s->methods()) {
-      for (double t : derivation_roots(s->derive(ray_, m))) {
+      Derivation d;
+      try {
+        d = s->derive(ray_, m);
+      } catch (const Error&) {
+        continue;  // a method that does not apply to this ray
+      }
+      for (double t : derivation_roots(d)) {
         if (t < ray_.t_min) behind_.push_back(t);
         if (first_hit_ && !x.hits.empty() && t > x.hits.front().t + 1e-9 * (1 + std::abs(t))) {
           far_.push_back(t);
@@ -111,7 +117,11 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()) {
     std::string m = std::find(methods.begin(), methods.end(), "algebraic") != methods.end()
                         ? "algebraic"
                         : methods.front();
-    Derivation d = shape_->derive(ray_, m);
+    Derivation d;
+    try {
+      d = shape_->derive(ray_, m);
+    } catch (const Error&) {
+    }
     const Step *a = d.find("a"), *b = d.find("b"), *c = d.find("c");
     if (a && b && c && a->value.is_scalar() && a->value.scalar != 0) {
       double A = a->value.scalar, B = b->value.scalar, C = c->value.scalar;
@@ -163,11 +173,13 @@ void HitsGrader::grade(const AnswerReader& a, GradeResult& out) const {
   }
   if (!first_hit_ && contained_) {
     bool says = a.has("contained") && a.at("contained").json() == true;
+    double credit = says && hits.empty() ? 1 : hits.empty() ? 0.5 : 0;
+    // No single point to give: the point part follows the verdict on the line.
+    if (context_.points.of("point") > 0) {
+      out.parts.push_back(make_part(context_, "point", credit, {}));
+    }
     out.parts.push_back(make_part(
-        context_, "t",
-        says && hits.empty() ? 1
-        : hits.empty()       ? 0.5
-                             : 0,
+        context_, "t", credit,
         {says && hits.empty()
              ? "Right: the ray lies in the plane and meets it along a whole line."
              : "The ray lies in the plane (N·R = 0 and its origin is on the plane): it meets "

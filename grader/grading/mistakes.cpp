@@ -128,6 +128,18 @@ std::optional<E> cylinder_b_no_origin(std::string_view step, const E& f) {
   return 2 * sym("vx", "v_x") + 2 * sym("vy", "v_y");
 }
 
+// a × b written b × a: every cross product in the step's formula with its factors swapped.
+std::optional<E> cross_order(std::string_view /*step*/, const E& f) {
+  bool changed = false;
+  E g = rewrite_tree(f, [&](const E& x) -> std::optional<E> {
+    if (x.node().op != Op::kCross) return std::nullopt;
+    changed = true;
+    return cross(x.node().args[1], x.node().args[0]);
+  });
+  if (!changed) return std::nullopt;
+  return g;
+}
+
 std::optional<E> r_not_squared(std::string_view /*step*/, const E& f) {
   bool changed = false;
   E g = rewrite_tree(f, [&](const E& x) -> std::optional<E> {
@@ -170,6 +182,7 @@ const std::vector<FormulaMistake>& formula_mistakes() {
       {"discriminant-sign", &discriminant_sign}, {"b-sign", &b_sign},
       {"plane-d-sign", &plane_d_sign},           {"cylinder-b-no-origin", &cylinder_b_no_origin},
       {"r-not-squared", &r_not_squared},
+      {"cross-order", &cross_order},
   };
   return m;
 }

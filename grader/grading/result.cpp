@@ -1,6 +1,10 @@
 // GradeResult helpers and its JSON form.
 #include "grading/result.h"
 
+#include <fmt/format.h>
+
+#include <cmath>
+
 namespace raygrade {
 
 const char* to_string(PartStatus s) {
@@ -45,6 +49,93 @@ nlohmann::json result_json(const GradeResult& r) {
       {"problem", r.problem_id},  {"title", r.title},       {"score", r.score},
       {"max_score", r.max_score}, {"answered", r.answered}, {"parts", parts},
       {"mistakes", mistakes},     {"notes", r.notes},       {"carried_forward", r.carried_forward}};
+}
+
+namespace {
+
+void append_string(std::string& out, std::string_view s) {
+  out += '"';
+  for (char ch : s) {
+    auto c = static_cast<unsigned char>(ch);
+    switch (ch) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\r': out += "\\r"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (c < 0x20) {
+          out += fmt::format("\\u{:04x}", c);
+        } else {
+          out += ch;
+        }
+    }
+  }
+  out += '"';
+}
+
+void append_number(std::string& out, double v) {
+  if (!std::isfinite(v)) {
+    out += "null";
+    return;
+  }
+  fmt::format_to(std::back_inserter(out), "{}", v);
+}
+
+void append_strings(std::string& out, const std::vector<std::string>& v) {
+  out += '[';
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (i) out += ',';
+    append_string(out, v[i]);
+  }
+  out += ']';
+}
+
+}  // namespace
+
+void append_result_json(std::string& out, const GradeResult& r) {
+  out += "{\"problem\":";
+  append_string(out, r.problem_id);
+  out += ",\"title\":";
+  append_string(out, r.title);
+  out += ",\"score\":";
+  append_number(out, r.score);
+  out += ",\"max_score\":";
+  append_number(out, r.max_score);
+  out += r.answered ? ",\"answered\":true" : ",\"answered\":false";
+  out += ",\"parts\":[";
+  for (std::size_t i = 0; i < r.parts.size(); ++i) {
+    const PartResult& p = r.parts[i];
+    if (i) out += ',';
+    out += "{\"name\":";
+    append_string(out, p.name);
+    out += ",\"points\":";
+    append_number(out, p.points);
+    out += ",\"max_points\":";
+    append_number(out, p.max_points);
+    out += ",\"status\":";
+    append_string(out, to_string(p.status));
+    out += ",\"feedback\":";
+    append_strings(out, p.feedback);
+    out += '}';
+  }
+  out += "],\"mistakes\":[";
+  for (std::size_t i = 0; i < r.mistakes.size(); ++i) {
+    const FoundMistake& m = r.mistakes[i];
+    if (i) out += ',';
+    out += "{\"id\":";
+    append_string(out, m.id);
+    out += ",\"kind\":";
+    append_string(out, m.kind);
+    out += ",\"part\":";
+    append_string(out, m.part);
+    out += ",\"message\":";
+    append_string(out, m.message);
+    out += '}';
+  }
+  out += "],\"notes\":";
+  append_strings(out, r.notes);
+  out += r.carried_forward ? ",\"carried_forward\":true}" : ",\"carried_forward\":false}";
 }
 
 }  // namespace raygrade

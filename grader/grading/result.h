@@ -48,4 +48,8 @@ struct GradeResult {
 
 nlohmann::json result_json(const GradeResult& r);
 
+// The same JSON as compact text, written directly: several times faster than building the
+// nlohmann::json value and dumping it, for classes of thousands.
+void append_result_json(std::string& out, const GradeResult& r);
+
 }  // namespace raygrade

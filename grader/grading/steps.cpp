@@ -41,6 +41,16 @@ std::optional<Value> student_value(const AnswerReader& s, std::string* fault) {
   return Value(n.value->value);
 }
 
+// The derivation from the student's own values; nothing when they make it meaningless.
+std::vector<SolutionPart> derive_or_nothing(const Task& task, const std::string& method,
+                                            const Overrides& own) {
+  try {
+    return task.derive(method, &own);
+  } catch (const Error&) {
+    return {};
+  }
+}
+
 }  // namespace
 
 Match match_value(const AnswerReader& student, const Value& reference, const Tolerance& t,
@@ -103,9 +113,21 @@ StepsGrade grade_steps(const GradingContext& c, const Task& task,
     AnswerReader s = steps.at(step.name);
     ++graded;
     std::string fault, precision;
+    if (s.json().is_boolean()) {  // a yes/no step (a comparison)
+      bool right = step.value.is_bool() && step.value.truth == s.json().get<bool>();
+      credit += right ? 1 : 0;
+      if (!right) feedback.push_back(fmt::format("{} is not right.", step.name));
+      continue;
+    }
     std::optional<Value> mine = student_value(s, &fault);
     if (!mine) {
       feedback.push_back(fmt::format("{}: {}", step.name, fault));
+      continue;
+    }
+    if (mine->kind != step.value.kind) {
+      feedback.push_back(fmt::format("{} is {}, not {}.", step.name,
+                                     step.value.is_vector() ? "a vector [x, y, z]" : "a number",
+                                     mine->is_vector() ? "a vector" : "a number"));
       continue;
     }
     Match m = match_value(s, step.value, tol, &precision);
@@ -121,7 +143,7 @@ StepsGrade grade_steps(const GradingContext& c, const Task& task,
     // Wrong by the right solution: does it follow from the student's own earlier values?
     bool carried = false;
     if (!own.values.empty()) {
-      auto parts = task.derive(best->method, &own);
+      auto parts = derive_or_nothing(task, best->method, own);
       const Step* ecf = parts.empty() ? nullptr : parts.front().derivation.find(step.name);
       if (ecf && match_value(s, ecf->value, tol) == Match::kRight) {
         carried = true;
@@ -143,6 +165,7 @@ StepsGrade grade_steps(const GradingContext& c, const Task& task,
             fmt::format("you have {} = {}; the right value is {}.", step.name,
                         format_value(*mine, fmt_numbers), format_value(step.value, fmt_numbers))));
         named = true;
+        feedback.push_back(fmt::format("{} is wrong: see the named mistake.", step.name));
         break;
       }
       if (!named) {
@@ -155,7 +178,7 @@ StepsGrade grade_steps(const GradingContext& c, const Task& task,
     own.values[step.name] = *mine;
   }
   if (!out.wrong.empty()) {
-    auto parts = task.derive(best->method, &own);
+    auto parts = derive_or_nothing(task, best->method, own);
     if (!parts.empty()) out.carried = std::move(parts.front().derivation);
   }
   if (graded > 0 && out.wrong.empty() && feedback.empty()) {

@@ -1,5 +1,6 @@
 // The table of problem kinds: adding one is one line here plus its own file pair.
 #include "kinds/camera_ray.h"
+#include "kinds/derive.h"
 #include "kinds/intersect.h"
 #include "kinds/ray_tree.h"
 #include "kinds/reflect.h"
@@ -33,6 +34,10 @@ const std::vector<KindEntry>& kind_table() {
        "the Phong intensity at a point, term by term",
        {"point", "normal", "eye", "material", "lights", "ambient_light"},
        &ShadeTask::read},
+      {"derive",
+       "quantities of a derivation as formulas",
+       {"ray", "object", "find"},
+       &DeriveTask::read},
   };
   return table;
 }

@@ -1,0 +1,65 @@
+// Text and JSON forms of graded submissions.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "grading/outputs.h"
+
+namespace raygrade {
+
+std::string format_points(double p) {
+  double r = std::round(p * 100) / 100;
+  if (r == 0) r = 0;  // no "-0"
+  return fmt::format("{:g}", r);
+}
+
+std::vector<std::string> feedback_lines(const GradeResult& r) {
+  std::vector<std::string> out;
+  for (const auto& n : r.notes) out.push_back(n);
+  for (const auto& p : r.parts) {
+    std::string head = fmt::format("{} ({}/{}, {})", p.name, format_points(p.points),
+                                   format_points(p.max_points), to_string(p.status));
+    if (p.feedback.empty()) {
+      out.push_back(head);
+    } else {
+      out.push_back(fmt::format("{}: {}", head, p.feedback.front()));
+      for (std::size_t i = 1; i < p.feedback.size(); ++i) out.push_back("  " + p.feedback[i]);
+    }
+  }
+  for (const auto& m : r.mistakes) {
+    out.push_back(fmt::format("Mistake [{}] in {}: {}", m.id, m.part, m.message));
+  }
+  return out;
+}
+
+std::string text_report(const SubmissionGrade& g) {
+  std::string s = fmt::format("{} ({})", g.student, g.file);
+  if (!g.gradable) {
+    return s + fmt::format(": not gradable\n  {}\n", g.fault ? format_diagnostic(*g.fault) : "");
+  }
+  s += fmt::format(": {} / {}\n", format_points(g.score), format_points(g.max_score));
+  for (const auto& r : g.results) {
+    s += fmt::format("  {}{}: {} / {}\n", r.problem_id, r.title.empty() ? "" : " — " + r.title,
+                     format_points(r.score), format_points(r.max_score));
+    for (const auto& line : feedback_lines(r)) s += "    " + line + "\n";
+  }
+  return s;
+}
+
+nlohmann::json submission_json(const SubmissionGrade& g) {
+  nlohmann::json j = {{"file", g.file}, {"student", g.student}, {"gradable", g.gradable}};
+  if (!g.gradable) {
+    const Diagnostic& d = *g.fault;
+    j["fault"] = {{"file", d.file},     {"path", d.path}, {"line", d.line},
+                  {"column", d.column}, {"code", d.code}, {"message", d.message}};
+    return j;
+  }
+  j["score"] = g.score;
+  j["max_score"] = g.max_score;
+  nlohmann::json results = nlohmann::json::array();
+  for (const auto& r : g.results) results.push_back(result_json(r));
+  j["problems"] = results;
+  return j;
+}
+
+}  // namespace raygrade

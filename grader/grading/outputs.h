@@ -1,0 +1,38 @@
+// The forms graded submissions are written in: text for a terminal, raygrade's own JSON,
+// Gradescope's and PrairieLearn's results.json, a CSV gradebook and an HTML feedback page.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "grading/submission.h"
+
+namespace raygrade {
+
+// Points as people read them: 2, 1.5, 0.33.
+std::string format_points(double p);
+
+// The feedback of one graded problem as plain lines (parts, then mistakes, then notes).
+std::vector<std::string> feedback_lines(const GradeResult& r);
+
+std::string text_report(const SubmissionGrade& g);
+nlohmann::json submission_json(const SubmissionGrade& g);
+
+// Gradescope's autograder results.json: score, execution_time, output, visibility and one
+// test per problem (name, score, max_score, status, output, visibility).
+nlohmann::json gradescope_json(const SubmissionGrade& g, double execution_seconds);
+
+// PrairieLearn's external grader results.json: gradable, score in [0, 1], message, output
+// and one test per problem (name, description, points, max_points, message, output).
+nlohmann::json prairielearn_json(const SubmissionGrade& g);
+
+// One row per submission, one column per problem (its points), then the total; every cell
+// escaped with csv_cell.
+std::string gradebook_csv(const std::vector<SubmissionGrade>& grades,
+                          const std::vector<std::string>& problem_ids);
+
+// A self-contained HTML feedback page for one student; all text escaped.
+std::string feedback_html(const SubmissionGrade& g);
+
+}  // namespace raygrade

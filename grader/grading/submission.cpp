@@ -1,0 +1,140 @@
+// Reading and grading submissions.
+#include "grading/submission.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "json/cursor.h"
+
+namespace raygrade {
+
+std::size_t SubmissionGrade::mistakes() const {
+  std::size_t n = 0;
+  for (const auto& r : results) n += r.mistakes.size();
+  return n;
+}
+
+Assignment::Assignment(const std::vector<Problem>& problems, AssignmentOptions options)
+    : options_(options) {
+  graders_.reserve(problems.size());
+  for (const auto& p : problems) {
+    try {
+      graders_.emplace_back(p);
+      by_id_[p.id] = graders_.size() - 1;
+    } catch (const Error& e) {
+      Diagnostic d = e.diagnostic();
+      if (d.file.empty()) d.file = p.file;
+      if (d.path.empty()) d.path = p.path;
+      errors_.push_back(d);
+    }
+  }
+}
+
+SubmissionGrade Assignment::grade_file(const std::string& path) const {
+  try {
+    return grade(load_json_file(path));
+  } catch (const Error& e) {
+    SubmissionGrade g;
+    g.file = path;
+    g.student = std::filesystem::path(path).stem().string();
+    g.gradable = false;
+    g.fault = e.diagnostic();
+    return g;
+  }
+}
+
+namespace {
+
+std::string student_name(const Cursor& root, const std::string& file) {
+  if (!root.has("student")) return std::filesystem::path(file).stem().string();
+  Cursor s = root.at("student");
+  if (s.json().is_string()) return s.string();
+  if (s.is_object()) {
+    s.allow_only({"name", "id", "email"});
+    for (const char* key : {"name", "id", "email"}) {
+      if (s.has(key)) return s.at(key).string();
+    }
+  }
+  s.fail("student is a name, or an object with a name, id or email", "type");
+}
+
+}  // namespace
+
+SubmissionGrade Assignment::grade(const std::shared_ptr<const SourceFile>& file) const {
+  SubmissionGrade g;
+  g.file = file->name;
+  g.student = std::filesystem::path(file->name).stem().string();
+  Cursor root(file);
+  try {
+    if (!root.is_object()) root.fail("a submission is a JSON object", "type");
+    root.allow_only({"student", "answers", "$schema", "submitted"});
+    g.student = student_name(root, file->name);
+    Cursor answers = root.at("answers");
+    if (!answers.is_object()) answers.fail("answers is an object: problem id → answer", "type");
+    std::vector<std::string> ids;
+    for (const auto& [id, i] : by_id_) ids.push_back(id);
+    for (const auto& [id, v] : answers.json().items()) {
+      if (by_id_.count(id)) continue;
+      std::string hint = closest_match(id, ids);
+      answers.at(id).fail(hint.empty() ? fmt::format("no problem '{}' in this assignment", id)
+                                       : fmt::format("no problem '{}' in this assignment (did "
+                                                     "you mean '{}'?)",
+                                                     id, hint),
+                          "unknown-problem");
+    }
+    for (const auto& grader : graders_) {
+      const std::string& id = grader.problem().id;
+      auto it = answers.json().find(id);
+      if (it == answers.json().end()) {
+        if (!options_.answered_only) g.results.push_back(grader.unanswered());
+        continue;
+      }
+      GradeOptions o{file->name, "/answers/" + pointer_token(id)};
+      g.results.push_back(grader.grade(*it, o));
+    }
+  } catch (const Error& e) {
+    g.gradable = false;
+    g.results.clear();
+    Diagnostic d = e.diagnostic();
+    if (d.file.empty()) d.file = file->name;
+    if (d.line == 0 && !d.path.empty()) {
+      auto [line, column] = locate(file->text, d.path);
+      d.line = line;
+      d.column = column;
+    }
+    g.fault = d;
+    return g;
+  }
+  for (const auto& r : g.results) {
+    g.score += r.score;
+    g.max_score += r.max_score;
+  }
+  return g;
+}
+
+std::vector<std::string> submission_files(const std::vector<std::string>& paths,
+                                          std::vector<Diagnostic>& errors) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> out;
+  for (const auto& p : paths) {
+    std::error_code ec;
+    if (fs::is_directory(p, ec)) {
+      std::vector<std::string> found;
+      for (fs::recursive_directory_iterator it(p, ec), end; !ec && it != end; it.increment(ec)) {
+        if (it->is_regular_file(ec) && it->path().extension() == ".json") {
+          found.push_back(it->path().string());
+        }
+      }
+      std::sort(found.begin(), found.end());
+      out.insert(out.end(), found.begin(), found.end());
+    } else if (fs::exists(p, ec)) {
+      out.push_back(p);
+    } else {
+      errors.push_back(
+          Diagnostic{p, "", 0, 0, Severity::kError, "no such file or folder", "unreadable"});
+    }
+  }
+  return out;
+}
+
+}  // namespace raygrade

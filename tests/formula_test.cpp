@@ -1,0 +1,117 @@
+// Formula: typed numbers and formulas, their digits, and faults pointing at the character.
+#include "grading/formula.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace raygrade {
+namespace {
+
+double value_of(const char* text) {
+  FormulaParse p = parse_formula(text);
+  EXPECT_TRUE(p.ok) << text << ": " << p.message;
+  return p.formula.evaluate();
+}
+
+TEST(Formula, NumbersAsStudentsTypeThem) {
+  EXPECT_DOUBLE_EQ(value_of("7.27"), 7.27);
+  EXPECT_DOUBLE_EQ(value_of("1/3"), 1.0 / 3);
+  EXPECT_DOUBLE_EQ(value_of("sqrt(3)"), std::sqrt(3.0));
+  EXPECT_DOUBLE_EQ(value_of("9 - sqrt(3)"), 9 - std::sqrt(3.0));
+  EXPECT_DOUBLE_EQ(value_of("2*sqrt(2)"), 2 * std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(value_of("2sqrt(2)"), 2 * std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(value_of("-2^2"), -4);  // the power binds tighter than the sign
+  EXPECT_DOUBLE_EQ(value_of("2^3^2"), 512);  // right-associative
+  EXPECT_DOUBLE_EQ(value_of("2**-1"), 0.5);
+  EXPECT_DOUBLE_EQ(value_of("1.5e-3"), 0.0015);
+  EXPECT_DOUBLE_EQ(value_of("(1 + 2) * 3"), 9);
+}
+
+// Worked solutions print −, ·, ², √ and π; pasted back they read the same.
+TEST(Formula, GlyphsFromWorkedSolutions) {
+  EXPECT_DOUBLE_EQ(value_of("2\u00b7\u221a3"), 2 * std::sqrt(3.0));
+  EXPECT_DOUBLE_EQ(value_of("\u22121 + 3\u00b2"), 8);
+  EXPECT_DOUBLE_EQ(value_of("\u03c0"), std::acos(-1.0));
+  EXPECT_DOUBLE_EQ(value_of("6 \u00f7 4"), 1.5);
+}
+
+TEST(Formula, FaultsPointAtTheCharacter) {
+  FormulaParse p = parse_formula("7.2.7");
+  ASSERT_FALSE(p.ok);
+  EXPECT_EQ(p.column, 4u);
+  EXPECT_NE(p.message.find("decimal point"), std::string::npos);
+  p = parse_formula("2*(3 + 1");
+  ASSERT_FALSE(p.ok);
+  EXPECT_EQ(p.column, 9u);
+  EXPECT_NE(p.message.find("missing ')'"), std::string::npos);
+  p = parse_formula("9 - sqrt 3");
+  ASSERT_FALSE(p.ok);
+  EXPECT_EQ(p.column, 10u);
+  p = parse_formula("1 +");
+  ASSERT_FALSE(p.ok);
+  EXPECT_EQ(p.column, 4u);
+  p = parse_formula("");
+  ASSERT_FALSE(p.ok);
+  // Columns count characters, not bytes: "−" is three bytes but one character.
+  p = parse_formula("\u22121 $");
+  ASSERT_FALSE(p.ok);
+  EXPECT_EQ(p.column, 4u);
+}
+
+TEST(Formula, NestingBombIsRefusedNotRecursed) {
+  std::string deep(100000, '(');
+  deep += "1";
+  FormulaParse p = parse_formula(deep);
+  EXPECT_FALSE(p.ok);
+  std::string bomb(900, '-');
+  bomb += "1";
+  p = parse_formula(bomb);
+  EXPECT_FALSE(p.ok);
+  EXPECT_NE(p.message.find("levels deep"), std::string::npos);
+  // Each parenthesis is two grammar levels: ten nested ones are well inside the limit.
+  std::string ok(10, '(');
+  ok += "1" + std::string(10, ')');
+  EXPECT_TRUE(parse_formula(ok).ok);
+}
+
+TEST(Formula, TooLongIsRefused) {
+  std::string s = "1";
+  for (int i = 0; i < 600; ++i) s += "+1";
+  FormulaParse p = parse_formula(s);
+  EXPECT_FALSE(p.ok);
+  EXPECT_NE(p.message.find("too long"), std::string::npos);
+}
+
+TEST(Formula, TypedDigits) {
+  TypedDigits d = typed_digits("7.27");
+  EXPECT_TRUE(d.literal);
+  EXPECT_EQ(d.decimals, 2);
+  EXPECT_EQ(d.significant, 3);
+  d = typed_digits("-0.0050");
+  EXPECT_EQ(d.decimals, 4);
+  EXPECT_EQ(d.significant, 2);
+  d = typed_digits("1.5e-3");
+  EXPECT_EQ(d.decimals, 4);
+  EXPECT_EQ(d.significant, 2);
+  EXPECT_FALSE(typed_digits("1/3").literal);
+  EXPECT_FALSE(typed_digits("sqrt(2)").literal);
+}
+
+TEST(Formula, SymbolsAndAliases) {
+  SymbolTable t;
+  t.add("px", {"p_x"});
+  t.add("vx", {"v_x"});
+  FormulaParse p = parse_formula("2*(p_x*vx) + px vx", &t);
+  ASSERT_TRUE(p.ok) << p.message;
+  EXPECT_DOUBLE_EQ(p.formula.evaluate({2, 5}), 30);
+  p = parse_formula("2*pz", &t);
+  ASSERT_FALSE(p.ok);
+  EXPECT_EQ(p.column, 3u);
+  EXPECT_NE(p.message.find("did you mean 'px'"), std::string::npos);
+  // Without symbols a name is not a number.
+  EXPECT_FALSE(parse_formula("px").ok);
+}
+
+}  // namespace
+}  // namespace raygrade

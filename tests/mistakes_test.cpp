@@ -1,0 +1,158 @@
+// Named mistakes: each is found when made, and never on a right answer.
+#include "grading/mistakes.h"
+
+#include <gtest/gtest.h>
+
+#include "grading/grade.h"
+#include "grading/submission.h"
+#include "test_util.h"
+
+namespace raygrade {
+namespace {
+
+using nlohmann::json;
+
+GradeResult grade(const char* problem, const char* answer) {
+  Problem p = testing::problem(problem);
+  return grade_answer(p, json::parse(answer));
+}
+
+std::vector<std::string> ids(const GradeResult& r) {
+  std::vector<std::string> out;
+  for (const auto& m : r.mistakes) out.push_back(m.id);
+  return out;
+}
+
+const char* kSphere1 = R"({"id": "s1", "method": "algebraic",
+  "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+  "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}})";
+const char* kSphere2 = R"({"id": "s2",
+  "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+  "object": {"type": "sphere", "center": [-2, 0, 0], "radius": 1}})";
+const char* kFirstHit = R"({"id": "f", "kind": "first-hit", "precision": 2,
+  "ray": {"origin": [0, 0, 0], "direction": [0, 0, 1]},
+  "objects": [{"name": "sphere 1", "type": "sphere", "center": [0, 0, 10], "radius": 2},
+              {"name": "sphere 3", "type": "sphere", "center": [0, 1, 9], "radius": 2}]})";
+const char* kCamera = R"({"id": "c", "kind": "camera-ray", "convention": "%s",
+  "camera": {"eye": [0, 0, 0], "direction": [0, 0, -1], "up": [0, 1, 0], "focal_length": 4,
+             "resolution": [8, 6]}, "pixel": [2, 5]})";
+const char* kDerive = R"({"id": "d", "kind": "derive", "find": ["a", "b", "c"],
+  "ray": {"origin": [-3, 0, 0.5], "direction": [1, 0, 0]},
+  "object": {"type": "cylinder", "base": [0, 0, 0], "axis": [0, 0, 1], "radius": 1}})";
+
+std::string camera(const char* convention) {
+  std::string s = kCamera;
+  return s.replace(s.find("%s"), 2, convention);
+}
+
+// b² + 4ac with a = 1, b = −4, c = 3: Δ = 28, t = 2 ± √7.
+TEST(Mistakes, DiscriminantSign) {
+  auto r = grade(kSphere1, R"j({"hits": [{"t": "2 + sqrt(7)"}]})j");
+  EXPECT_EQ(ids(r), std::vector<std::string>{"discriminant-sign"});
+}
+
+// Case 2 with f = C − O: b = −4 instead of 4 turns the roots −3, −1 into 1, 3.
+TEST(Mistakes, QuadraticBSign) {
+  auto r = grade(kSphere2, R"({"hits": [{"t": 1}, {"t": 3}]})");
+  EXPECT_EQ(ids(r), std::vector<std::string>{"b-sign"});
+  EXPECT_DOUBLE_EQ(r.score, 0);
+}
+
+TEST(Mistakes, NegativeTGivenAsHit) {
+  auto r = grade(kSphere2, R"({"hits": [{"t": -1}, {"t": -3}]})");
+  EXPECT_EQ(ids(r), std::vector<std::string>{"negative-t"});
+}
+
+// Sphere 3's far root is 9 + √3 = 10.73.
+TEST(Mistakes, FarRootAsFirstHit) {
+  auto r = grade(kFirstHit, R"({"object": "sphere 3", "hits": [{"t": 10.73}]})");
+  EXPECT_EQ(ids(r), std::vector<std::string>{"far-root"});
+}
+
+// D = (2, 0, 0), sphere at (6, 0, 0) with r = 1: t = 2.5 and 3.5; along D/|D| 5 and 7.
+TEST(Mistakes, TForNormalizedDirection) {
+  auto r = grade(R"({"id": "u", "ray": {"origin": [0, 0, 0], "direction": [2, 0, 0]},
+    "object": {"type": "sphere", "center": [6, 0, 0], "radius": 1}})",
+                 R"({"hits": [{"t": 5}, {"t": 7}]})");
+  EXPECT_EQ(ids(r), std::vector<std::string>{"unit-direction-t"});
+}
+
+// Seed 001: n = ac × ab = (0, 0, −16) for a = 0, b = (4,0,0), c = (0,4,0).
+TEST(Mistakes, CrossProductOrderFlipsTheNormal) {
+  auto r = grade(R"({"id": "tri", "points": {"normal": 1},
+    "ray": {"origin": [1, 1, 5], "direction": [0, 0, -1]},
+    "object": {"type": "triangle", "vertices": [[0, 0, 0], [4, 0, 0], [0, 4, 0]]}})",
+                 R"({"hits": [{"t": 5, "normal": [0, 0, -16]}], "steps": {"n": [0, 0, -16]}})");
+  EXPECT_TRUE(r.has_mistake("cross-order"));
+  EXPECT_DOUBLE_EQ(r.score, 2 + 0.5);  // t right; the normal earns the mistake's half
+}
+
+TEST(Mistakes, InwardNormal) {
+  auto r = grade(R"({"id": "s", "points": {"normal": 1},
+    "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+    "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}})",
+                 R"({"hits": [{"t": 1, "normal": [1, 0, 0]}, {"t": 3, "normal": [1, 0, 0]}]})");
+  EXPECT_EQ(ids(r), std::vector<std::string>{"inward-normal"});
+}
+
+// Seed 004's camera: d × u = (1, 0, 0); pixel (2, 5) of 8 × 6 with f = 4, d = (0, 0, −1).
+// Corner: (−2, 2, −4). Centre: (−1.5, 2.5, −4). With u × d: (2, 2, −4).
+TEST(Mistakes, PixelCornerAndCentre) {
+  auto centre = grade(camera("center").c_str(), R"({"ray": {"direction": [-2, 2, -4]}})");
+  EXPECT_EQ(ids(centre), std::vector<std::string>{"pixel-corner"});
+  EXPECT_DOUBLE_EQ(centre.score, 0.5);
+  auto corner = grade(camera("corner").c_str(), R"({"ray": {"direction": [-1.5, 2.5, -4]}})");
+  EXPECT_EQ(ids(corner), std::vector<std::string>{"pixel-centre"});
+  auto flipped = grade(camera("corner").c_str(), R"({"ray": {"direction": [2, 2, -4]}})");
+  EXPECT_EQ(ids(flipped), std::vector<std::string>{"cross-order"});
+  auto right = grade(camera("corner").c_str(), R"({"ray": {"direction": [-1, 1, -2]}})");
+  EXPECT_TRUE(right.mistakes.empty());
+  EXPECT_DOUBLE_EQ(right.score, 1);
+}
+
+TEST(Mistakes, CylinderSlipAndFormulaMistakes) {
+  auto r = grade(kDerive, R"({"a": "vx^2 + vy^2", "b": "2*vx + 2*vy", "c": "px^2 + py^2 - r"})");
+  EXPECT_TRUE(r.has_mistake("cylinder-b-no-origin"));
+  EXPECT_TRUE(r.has_mistake("r-not-squared"));
+  auto s = grade(kDerive, R"j({"b": "-2*(px*vx + py*vy)"})j");
+  EXPECT_EQ(ids(s), std::vector<std::string>{"b-sign"});
+}
+
+// Sphere at (4, 0, 0) with r = 2: t = 2 and 6; with r for r², t_hc = √2 and t = 4 ∓ √2.
+TEST(Mistakes, RadiusNotSquared) {
+  auto r = grade(R"({"id": "r", "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+    "object": {"type": "sphere", "center": [4, 0, 0], "radius": 2}})",
+                 R"j({"hits": [{"t": "4 - sqrt(2)"}, {"t": "4 + sqrt(2)"}]})j");
+  EXPECT_EQ(ids(r), std::vector<std::string>{"r-not-squared"});
+}
+
+TEST(Mistakes, PlaneDSign) {
+  auto r = grade(R"({"id": "p", "method": "implicit",
+    "ray": {"origin": [0, 0, 0], "direction": [1, 1, 1]},
+    "object": {"type": "plane", "point": [3, 3, 3], "normal": [1, 1, 0]}})",
+                 R"({"steps": {"D": 6}})");
+  EXPECT_EQ(ids(r), std::vector<std::string>{"plane-d-sign"});
+}
+
+// The reference answer of every problem of the bank earns full marks and no mistake.
+TEST(Mistakes, NeverReportedOnTheReferenceAnswer) {
+  Bank bank = load_bank({std::string(RAYGRADE_SOURCE_DIR) + "/problems"});
+  ASSERT_FALSE(bank.problems.empty());
+  for (const auto& p : bank.problems) {
+    GradeResult r = grade_answer(p, p.task->answer());
+    EXPECT_TRUE(r.mistakes.empty()) << p.id << ": " << r.mistakes.front().id;
+    EXPECT_NEAR(r.fraction(), 1, 1e-12) << p.id;
+  }
+}
+
+TEST(Mistakes, CatalogueIsComplete) {
+  for (const char* id : {"discriminant-sign", "b-sign", "plane-d-sign", "far-root", "negative-t",
+                         "unit-direction-t", "cross-order", "inward-normal", "pixel-corner",
+                         "pixel-centre", "cylinder-b-no-origin", "r-not-squared"}) {
+    EXPECT_FALSE(mistake_info(id).explanation.empty()) << id;
+  }
+  EXPECT_THROW(mistake_info("no-such-mistake"), Error);
+}
+
+}  // namespace
+}  // namespace raygrade
