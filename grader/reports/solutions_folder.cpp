@@ -96,6 +96,10 @@ FolderSync compare(const std::string& folder, const std::vector<GeneratedFile>& 
 
 }  // namespace
 
+std::string solutions_command(const std::vector<std::string>& paths, const std::string& folder) {
+  return fmt::format("raygrade solutions {} --out {}", fmt::join(paths, " "), folder);
+}
+
 std::vector<GeneratedFile> solution_files(const std::vector<Problem>& problems,
                                           const std::vector<Format>& formats,
                                           const std::string& command,
