@@ -40,10 +40,11 @@ int run_main_job(const RunOptions& o) {
                               solutions_command(o.problems, o.solutions), unsolved);
   FolderSync sync = write_solution_folder(o.solutions, files);
   for (const auto& e : unsolved) fmt::print(stderr, "{}\n", format_diagnostic(e));
-  fmt::print("Wrote the worked solutions of {} problems to {}/ ({} files new or changed, {} "
-             "unchanged, {} removed).\n",
-             bank.problems.size() - unsolved.size(), o.solutions, sync.written.size(),
-             sync.unchanged, sync.removed.size());
+  fmt::print(
+      "Wrote the worked solutions of {} problems to {}/ ({} files new or changed, {} "
+      "unchanged, {} removed).\n",
+      bank.problems.size() - unsolved.size(), o.solutions, sync.written.size(), sync.unchanged,
+      sync.removed.size());
   failed += static_cast<int>(unsolved.size());
   if (!bank.errors.empty() || failed) {
     fmt::print("{} problems could not be read or solved.\n", bank.errors.size() + failed);

@@ -38,8 +38,7 @@ class TempFile {
 
 }  // namespace
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view bytes,
-                           bool flush) {
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes, bool flush) {
   if (path.filename().empty()) fail(path, "the path names a folder", EISDIR);
   // mkstemp needs a writable template: "<folder>/.<name>.tmp-XXXXXX", hidden and in the same
   // folder so that the rename stays on one file system.

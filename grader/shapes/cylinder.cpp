@@ -111,7 +111,7 @@ Intersection Cylinder::intersect(const Ray& ray) const {
 Derivation Cylinder::derive(const Ray& ray, std::string_view /*method*/,
                             const Overrides* overrides) const {
   Deriver d("quadratic",
-            capped_    ? "Cylinder: the side's quadratic, the height test and the caps"
+            capped_   ? "Cylinder: the side's quadratic, the height test and the caps"
             : height_ ? "Cylinder: the side's quadratic, then the height test"
                       : "Infinite cylinder: the side's quadratic",
             overrides);
@@ -157,9 +157,11 @@ Derivation Cylinder::derive(const Ray& ray, std::string_view /*method*/,
       d.note("Δ < 0: the ray misses the infinite cylinder.");
     } else {
       double t0 =
-          d.step("t0", "t_0", (-d.sym("b") - sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
+          d.step("t0", "t_0", (-d.sym("b") - sqrt(d.sym("discriminant"))) / (2 * d.sym("a")))
+              .scalar;
       double t1 =
-          d.step("t1", "t_1", (-d.sym("b") + sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
+          d.step("t1", "t_1", (-d.sym("b") + sqrt(d.sym("discriminant"))) / (2 * d.sym("a")))
+              .scalar;
       std::vector<double> ts = {t0};
       if (t1 != t0) ts.push_back(t1);
       for (std::size_t k = 0; k < ts.size(); ++k) {
@@ -193,7 +195,8 @@ Derivation Cylinder::derive(const Ray& ray, std::string_view /*method*/,
         std::string p = cap == 0 ? "P_bottom" : "P_top";
         Value P = d.step(p, p, O + d.sym(t) * D);
         std::string rho = cap == 0 ? "rho2_bottom" : "rho2_top";
-        double rv = d.step(rho, cap == 0 ? "rho_bottom^2" : "rho_top^2", square(d.sym(p) - B - dot(d.sym(p) - B, A) * A),
+        double rv = d.step(rho, cap == 0 ? "rho_bottom^2" : "rho_top^2",
+                           square(d.sym(p) - B - dot(d.sym(p) - B, A) * A),
                            "squared distance from the axis: ≤ r² on the cap")
                         .scalar;
         std::string reason = range_reason(ray, tv);

@@ -69,8 +69,7 @@ Derivation Triangle::derive(const Ray& ray, std::string_view /*method*/,
   E A = d.given("a", "a", v_[0]);
   E B = d.given("b", "b", v_[1]);
   E C = d.given("c", "c", v_[2]);
-  d.step("n", "n", cross_written_out(B - A, C - A),
-         "the normal (b − a) × (c − a), by components");
+  d.step("n", "n", cross_written_out(B - A, C - A), "the normal (b − a) × (c − a), by components");
   E n = d.sym("n");
   double den = d.step("denominator", dot(n, D), dot(n, D)).scalar;
   if (den == 0) {
@@ -89,8 +88,10 @@ Derivation Triangle::derive(const Ray& ray, std::string_view /*method*/,
   E Q = d.sym("q");
   double e0 =
       d.step("e_ab", "e_ab", dot(cross(B - A, Q - A), n), "edge ab: ≥ 0 means inside").scalar;
-  double e1 = d.step("e_bc", "e_bc", dot(cross(C - B, Q - B), n), "edge bc: ≥ 0 means inside").scalar;
-  double e2 = d.step("e_ca", "e_ca", dot(cross(A - C, Q - C), n), "edge ca: ≥ 0 means inside").scalar;
+  double e1 =
+      d.step("e_bc", "e_bc", dot(cross(C - B, Q - B), n), "edge bc: ≥ 0 means inside").scalar;
+  double e2 =
+      d.step("e_ca", "e_ca", dot(cross(A - C, Q - C), n), "edge ca: ≥ 0 means inside").scalar;
   bool inside = e0 >= 0 && e1 >= 0 && e2 >= 0;
   if (inside) {
     d.step("w_a", "w_a", d.sym("e_bc") / dot(n, n), "barycentric weight of a");
@@ -101,10 +102,9 @@ Derivation Triangle::derive(const Ray& ray, std::string_view /*method*/,
   if (e0 < 0) outside.push_back("e_ab");
   if (e1 < 0) outside.push_back("e_bc");
   if (e2 < 0) outside.push_back("e_ca");
-  std::string reason =
-      inside ? range_reason(ray, t)
-             : fmt::format("the plane point q lies outside the triangle ({} < 0)",
-                           fmt::join(outside, ", "));
+  std::string reason = inside ? range_reason(ray, t)
+                              : fmt::format("the plane point q lies outside the triangle ({} < 0)",
+                                            fmt::join(outside, ", "));
   conclude_candidates(d, "triangle", ray, {{t, q.vector, reason}}, false);
   return std::move(d).finish();
 }
