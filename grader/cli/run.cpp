@@ -5,6 +5,7 @@
 
 #include "cli/command.h"
 #include "problems/problem.h"
+#include "reports/solutions_folder.h"
 
 namespace raygrade::cli {
 
@@ -38,6 +39,17 @@ int run_main_job(const RunOptions& o) {
   for (const auto& [k, n] : by_kind) kinds.push_back(fmt::format("{} {}", n, k));
   fmt::print("Solved {} problems from {} files ({}).\n", solved, bank.files.size(),
              fmt::join(kinds, ", "));
+  std::vector<Diagnostic> unsolved;
+  auto files = solution_files(bank.problems, all_formats(),
+                              solutions_command(o.problems, o.solutions), unsolved);
+  FolderSync sync = write_solution_folder(o.solutions, files);
+  for (const auto& e : unsolved) fmt::print(stderr, "{}\n", format_diagnostic(e));
+  fmt::print(
+      "Wrote the worked solutions of {} problems to {}/ ({} files new or changed, {} "
+      "unchanged, {} removed).\n",
+      bank.problems.size() - unsolved.size(), o.solutions, sync.written.size(), sync.unchanged,
+      sync.removed.size());
+  failed += static_cast<int>(unsolved.size());
   int graded = grade_sample_submissions(bank, o.submissions);
   if (!bank.errors.empty() || failed) {
     fmt::print("{} problems could not be read or solved.\n", bank.errors.size() + failed);

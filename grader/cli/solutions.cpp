@@ -14,11 +14,7 @@ struct SolutionsOptions {
   bool check = false;
 };
 
-std::string command_line(const SolutionsOptions& o) {
-  std::string c = "raygrade solutions";
-  for (const auto& p : o.paths) c += " " + p;
-  return c + " --out " + o.out;
-}
+std::string command_line(const SolutionsOptions& o) { return solutions_command(o.paths, o.out); }
 
 int run_solutions(const SolutionsOptions& o) {
   Bank bank = load_bank(o.paths);

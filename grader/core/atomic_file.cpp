@@ -38,7 +38,7 @@ class TempFile {
 
 }  // namespace
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes, bool flush) {
   if (path.filename().empty()) fail(path, "the path names a folder", EISDIR);
   // mkstemp needs a writable template: "<folder>/.<name>.tmp-XXXXXX", hidden and in the same
   // folder so that the rename stays on one file system.
@@ -61,11 +61,20 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
     }
     done += static_cast<std::size_t>(n);
   }
-  if (::fsync(fd) != 0) fail(path, "flushing to disk", errno);
+  if (flush && ::fsync(fd) != 0) fail(path, "flushing to disk", errno);
   temp.fd_ = -1;
   if (::close(fd) != 0) fail(path, "closing", errno);
   if (::rename(temp.name_.c_str(), path.c_str()) != 0) fail(path, "renaming into place", errno);
   temp.committed_ = true;
+}
+
+void flush_folder(const std::filesystem::path& folder) {
+  int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY);
+  if (fd < 0) fail(folder, "opening the folder to flush it", errno);
+  int rc = ::syncfs(fd);
+  int error = errno;
+  ::close(fd);
+  if (rc != 0) fail(folder, "flushing to disk", error);
 }
 
 }  // namespace raygrade

@@ -10,6 +10,12 @@ namespace raygrade {
 // bytes go to a temporary file in the same folder, are flushed to disk, and the temporary file
 // is then renamed over `path`. The folder must exist. Throws Error (code "unwritable", naming
 // `path`) on failure, leaving `path` as it was and no temporary file behind.
-void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+// `flush` false leaves out the fsync, for a writer of many files that flushes them all at once
+// afterwards (flush_folder); the rename still makes each file appear whole or not at all.
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes,
+                           bool flush = true);
+
+// Flushes the file system holding `folder` to disk once (after writes with flush = false).
+void flush_folder(const std::filesystem::path& folder);
 
 }  // namespace raygrade

@@ -29,6 +29,14 @@ E Deriver::given(const std::string& name, const std::string& display, const Valu
 
 Value Deriver::step(const std::string& name, const std::string& display, const E& formula,
                     std::string note) {
+  return record(name, raygrade::sym(name, display), formula, std::move(note));
+}
+
+Value Deriver::step(const std::string& name, const E& shown, const E& formula, std::string note) {
+  return record(name, raygrade::sym(name, shown), formula, std::move(note));
+}
+
+Value Deriver::record(const std::string& name, const E& s, const E& formula, std::string note) {
   E f = formula;
   if (overrides_ && overrides_->formula) {
     if (auto replaced = overrides_->formula(name, formula)) f = *replaced;
@@ -43,7 +51,6 @@ Value Deriver::step(const std::string& name, const std::string& display, const E
     }
   }
   if (!overridden) v = evaluate(f, env_);
-  E s = raygrade::sym(name, display);
   symbols_[name] = s;
   env_[name] = v;
   d_.steps.push_back(Step{name, s, f, v, std::move(note), false, overridden});

@@ -72,6 +72,8 @@ class Deriver {
   // A computed quantity: evaluates `formula` (or its override) and records the step.
   Value step(const std::string& name, const std::string& display, const E& formula,
              std::string note = "");
+  // The same, for a quantity shown as a formula of earlier symbols ("denominator" as N · R).
+  Value step(const std::string& name, const E& shown, const E& formula, std::string note = "");
   // The symbol of an earlier step or given.
   E sym(const std::string& name) const;
   const Value& value(const std::string& name) const;
@@ -85,6 +87,8 @@ class Deriver {
   Derivation finish() &&;
 
  private:
+  Value record(const std::string& name, const E& symbol, const E& formula, std::string note);
+
   Derivation d_;
   Env env_;
   std::map<std::string, E, std::less<>> symbols_;

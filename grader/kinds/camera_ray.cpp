@@ -66,7 +66,8 @@ std::vector<SolutionPart> CameraRayTask::derive(std::string_view /*method*/,
   E ry = d.given("resY", "res_Y", cam_.res_y);
   E x = d.given("x", "x", x_, "the pixel's column (0 at the left)");
   E y = d.given("y", "y", y_, "the pixel's row (0 at the bottom)");
-  d.step("v", "v", cross(dir, u), "the image plane's x direction, perpendicular to d and u");
+  d.step("v", "v", cross_written_out(dir, u),
+         "the image plane's x direction, perpendicular to d and u");
   if (corner) {
     d.step("x_diff", "x_diff", x - rx / 2, "seed 004's convention: no half-pixel shift");
     d.step("y_diff", "y_diff", y - ry / 2);

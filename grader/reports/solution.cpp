@@ -20,7 +20,7 @@ Solution make_solution(const Problem& problem, const std::string& method,
     methods = {problem.method};
   }
   for (const auto& m : methods) {
-    MethodSolution ms;
+    WorkedMethod ms;
     ms.parts = problem.task->derive(m);
     ms.method = ms.parts.empty() ? m : ms.parts.front().derivation.method;
     s.methods.push_back(std::move(ms));

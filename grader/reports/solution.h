@@ -9,14 +9,14 @@
 
 namespace raygrade {
 
-struct MethodSolution {
+struct WorkedMethod {
   std::string method;
   std::vector<SolutionPart> parts;
 };
 
 struct Solution {
   const Problem* problem = nullptr;
-  std::vector<MethodSolution> methods;
+  std::vector<WorkedMethod> methods;
   Sketch sketch;
   NumberFormat numbers;
 };

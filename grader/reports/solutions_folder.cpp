@@ -76,9 +76,12 @@ FolderSync compare(const std::string& folder, const std::vector<GeneratedFile>& 
       ++sync.unchanged;
       continue;
     }
-    if (write) write_file_atomically(path, f.bytes);
+    // Each file is renamed into place whole; the folder is flushed once at the end rather
+    // than file by file (thousands of fsyncs took 20 s for a 1,000-problem bank).
+    if (write) write_file_atomically(path, f.bytes, false);
     sync.written.push_back(f.name);
   }
+  if (write && !sync.written.empty()) flush_folder(folder);
   std::error_code ec;
   std::vector<fs::path> leftovers;
   for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
@@ -95,6 +98,10 @@ FolderSync compare(const std::string& folder, const std::vector<GeneratedFile>& 
 }
 
 }  // namespace
+
+std::string solutions_command(const std::vector<std::string>& paths, const std::string& folder) {
+  return fmt::format("raygrade solutions {} --out {}", fmt::join(paths, " "), folder);
+}
 
 std::vector<GeneratedFile> solution_files(const std::vector<Problem>& problems,
                                           const std::vector<Format>& formats,

@@ -18,6 +18,9 @@ struct GeneratedFile {
   std::string bytes;
 };
 
+// The command that regenerates a folder: "raygrade solutions problems --out solutions".
+std::string solutions_command(const std::vector<std::string>& paths, const std::string& folder);
+
 // The files of the folder for a bank: <id>.<ext> for each problem and format, and README.md
 // listing them. `command` is the command that regenerates them, quoted in every first line.
 // Problems whose solution fails are reported in `errors` and left out.

@@ -109,11 +109,11 @@ Derivation Box::derive(const Ray& ray, std::string_view /*method*/,
       continue;
     }
     bool swap = ray.direction[i] < 0;
-    d.step("t_low_" + ax, "t_low_" + ax, ((swap ? mx : mn) - o) / di,
+    d.step("t_low_" + ax, "t_low," + ax, ((swap ? mx : mn) - o) / di,
            swap ? fmt::format("d_{} < 0, so the slab's ends swap: the low end comes from max_{}",
                               ax, ax)
                 : "");
-    d.step("t_high_" + ax, "t_high_" + ax, ((swap ? mn : mx) - o) / di);
+    d.step("t_high_" + ax, "t_high," + ax, ((swap ? mn : mx) - o) / di);
     lows.push_back(d.sym("t_low_" + ax));
     highs.push_back(d.sym("t_high_" + ax));
   }

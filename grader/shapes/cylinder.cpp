@@ -110,7 +110,11 @@ Intersection Cylinder::intersect(const Ray& ray) const {
 
 Derivation Cylinder::derive(const Ray& ray, std::string_view /*method*/,
                             const Overrides* overrides) const {
-  Deriver d("quadratic", "Cylinder: the side's quadratic, then the height and the caps", overrides);
+  Deriver d("quadratic",
+            capped_   ? "Cylinder: the side's quadratic, the height test and the caps"
+            : height_ ? "Cylinder: the side's quadratic, then the height test"
+                      : "Infinite cylinder: the side's quadratic",
+            overrides);
   bool vertical = axis_given_.x == 0 && axis_given_.y == 0 && axis_given_.z > 0;
   E O = d.given("O", "O", ray.origin, "the ray's origin");
   E D = d.given("D", "D", ray.direction, "the ray's direction");
@@ -153,18 +157,20 @@ Derivation Cylinder::derive(const Ray& ray, std::string_view /*method*/,
       d.note("Δ < 0: the ray misses the infinite cylinder.");
     } else {
       double t0 =
-          d.step("t0", "t0", (-d.sym("b") - sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
+          d.step("t0", "t_0", (-d.sym("b") - sqrt(d.sym("discriminant"))) / (2 * d.sym("a")))
+              .scalar;
       double t1 =
-          d.step("t1", "t1", (-d.sym("b") + sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
+          d.step("t1", "t_1", (-d.sym("b") + sqrt(d.sym("discriminant"))) / (2 * d.sym("a")))
+              .scalar;
       std::vector<double> ts = {t0};
       if (t1 != t0) ts.push_back(t1);
       for (std::size_t k = 0; k < ts.size(); ++k) {
         std::string p = k == 0 ? "P0" : "P1";
-        Value P = d.step(p, p, O + d.sym(k == 0 ? "t0" : "t1") * D);
+        Value P = d.step(p, k == 0 ? "P_0" : "P_1", O + d.sym(k == 0 ? "t0" : "t1") * D);
         std::string reason = range_reason(ray, ts[k]);
         if (height_) {
           std::string h = k == 0 ? "h0" : "h1";
-          double hv = d.step(h, h, dot(d.sym(p) - B, A),
+          double hv = d.step(h, k == 0 ? "h_0" : "h_1", dot(d.sym(p) - B, A),
                              fmt::format("height along the axis: must lie in [0, {}]",
                                          format_number(*height_)))
                           .scalar;
@@ -178,7 +184,7 @@ Derivation Cylinder::derive(const Ray& ray, std::string_view /*method*/,
     }
   }
   if (capped_) {
-    double da = d.step("D_axis", "D·A", dot(D, A)).scalar;
+    double da = d.step("D_axis", dot(D, A), dot(D, A)).scalar;
     if (da != 0) {
       for (int cap = 0; cap < 2; ++cap) {
         std::string t = cap == 0 ? "t_bottom" : "t_top";
@@ -189,7 +195,8 @@ Derivation Cylinder::derive(const Ray& ray, std::string_view /*method*/,
         std::string p = cap == 0 ? "P_bottom" : "P_top";
         Value P = d.step(p, p, O + d.sym(t) * D);
         std::string rho = cap == 0 ? "rho2_bottom" : "rho2_top";
-        double rv = d.step(rho, rho, square(d.sym(p) - B - dot(d.sym(p) - B, A) * A),
+        double rv = d.step(rho, cap == 0 ? "rho_bottom^2" : "rho_top^2",
+                           square(d.sym(p) - B - dot(d.sym(p) - B, A) * A),
                            "squared distance from the axis: ≤ r² on the cap")
                         .scalar;
         std::string reason = range_reason(ray, tv);

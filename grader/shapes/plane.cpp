@@ -90,9 +90,9 @@ Derivation Plane::derive(const Ray& ray, std::string_view method,
     } else {
       d.given("D", "D", *d_, "the plane's constant in N·P + D = 0");
     }
-    denominator = d.step("NR", "N·R", dot(N, R)).scalar;
+    denominator = d.step("NR", dot(N, R), dot(N, R)).scalar;
     if (denominator == 0) {
-      double s = d.step("NO_D", "N·O + D", dot(N, O) + d.sym("D")).scalar;
+      double s = d.step("NO_D", dot(N, O) + d.sym("D"), dot(N, O) + d.sym("D")).scalar;
       through_origin = s == 0;
     } else {
       t = d.step("t", "t", -(dot(N, O) + d.sym("D")) / d.sym("NR"), "from N·(O + tR) + D = 0")
@@ -100,8 +100,8 @@ Derivation Plane::derive(const Ray& ray, std::string_view method,
     }
   } else {
     E P0 = d.given("P0", "P_0", *point_, "a point of the plane");
-    denominator = d.step("denominator", "N·R", dot(N, R)).scalar;
-    double numerator = d.step("numerator", "N·(P_0 − O)", dot(N, P0 - O)).scalar;
+    denominator = d.step("denominator", dot(N, R), dot(N, R)).scalar;
+    double numerator = d.step("numerator", dot(N, P0 - O), dot(N, P0 - O)).scalar;
     if (denominator == 0) {
       through_origin = numerator == 0;
     } else {

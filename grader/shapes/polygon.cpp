@@ -128,16 +128,17 @@ Derivation Polygon::derive(const Ray& ray, std::string_view method,
   for (std::size_t i = 1; i < V.size(); ++i) sum = sum + cross(V[i], V[(i + 1) % V.size()]);
   d.step("n", "n", sum, "Newell's normal: the sum of v_i × v_(i+1), by vertex order");
   E n = d.sym("n");
-  double den = d.step("denominator", "n·D", dot(n, D)).scalar;
+  double den = d.step("denominator", dot(n, D), dot(n, D)).scalar;
   if (den == 0) {
     d.note("n·D = 0: the ray is parallel to the polygon's plane.");
     d.conclude("The ray is parallel to the polygon's plane: it has no single hit point.");
     return std::move(d).finish();
   }
-  d.step("numerator", "n·(v_0 − O)", dot(n, V[0] - O));
+  d.step("numerator", dot(n, V[0] - O), dot(n, V[0] - O));
   double t = d.step("t", "t", d.sym("numerator") / d.sym("denominator")).scalar;
   Value q = d.step("q", "q", O + d.sym("t") * D, "the point where the ray meets the plane");
   bool inside = true;
+  std::vector<std::string> negative;  // the edge tests that fail
   if (edges) {
     for (std::size_t i = 0; i < V.size(); ++i) {
       std::size_t j = (i + 1) % V.size();
@@ -146,6 +147,7 @@ Derivation Polygon::derive(const Ray& ray, std::string_view method,
                         fmt::format("edge v{} v{}: ≥ 0 means inside", i, j))
                      .scalar;
       inside = inside && e >= 0;
+      if (e < 0) negative.push_back(fmt::format("e_{}", i));
     }
   } else {
     inside = point_in_polygon(q.vector, v_, normal_);
@@ -157,7 +159,12 @@ Derivation Polygon::derive(const Ray& ray, std::string_view method,
                        "inside (1 stands for odd, 0 for even; a point on an edge is inside)",
                        axes[drop], axes[(drop + 1) % 3]));
   }
-  std::string reason = inside ? range_reason(ray, t) : "the plane point q lies outside the polygon";
+  std::string reason =
+      inside ? range_reason(ray, t)
+      : negative.empty()
+          ? "the plane point q lies outside the polygon (an even number of crossings)"
+          : fmt::format("the plane point q lies outside the polygon ({} < 0)",
+                        fmt::join(negative, ", "));
   conclude_candidates(d, "polygon", ray, {{t, q.vector, reason}}, false);
   return std::move(d).finish();
 }

@@ -5,6 +5,10 @@
 
 namespace raygrade {
 
+// A direction within this of unit length is treated as a unit vector by the geometric method
+// (no normalising step): far below the 4 digits a solution shows, above double rounding.
+constexpr double kUnitLength = 1e-12;
+
 std::unique_ptr<Shape> Sphere::read(const Cursor& object) {
   std::vector<std::string> keys = common_object_keys();
   keys.insert(keys.end(), {"center", "radius"});
@@ -47,10 +51,10 @@ Derivation Sphere::derive_geometric(const Ray& ray, const Overrides* overrides) 
   E r = d.given("r", "r", radius_, "the sphere's radius");
   // Normalize the direction: the geometric method measures distances along a unit vector.
   double len = length(ray.direction);
-  bool unit = std::abs(len - 1) <= 1e-12;
+  bool unit = std::abs(len - 1) <= kUnitLength;
   E Dhat = D;
   if (!unit) {
-    d.step("D_len", "|D|", norm(D), "D is not a unit vector: the method works along D/|D|.");
+    d.step("D_len", norm(D), norm(D), "D is not a unit vector: the method works along D/‖D‖.");
     d.step("D_hat", "D_hat", D / d.sym("D_len"), "the unit direction");
     Dhat = d.sym("D_hat");
   }
@@ -80,18 +84,18 @@ Derivation Sphere::derive_geometric(const Ray& ray, const Overrides* overrides) 
   d.step("t_hc", "t_hc", sqrt(d.sym("r2") - d.sym("d2")),
          "half the length of the chord inside the sphere");
   E scale = unit ? E() : d.sym("D_len");
-  auto root = [&](const char* name, E value) {
-    return d.step(name, name, unit ? value : value / scale).scalar;
+  auto root = [&](const char* name, const char* display, E value) {
+    return d.step(name, display, unit ? value : value / scale).scalar;
   };
-  double t0 = root("t0", d.sym("t_ca") - d.sym("t_hc"));
-  double t1 = root("t1", d.sym("t_ca") + d.sym("t_hc"));
+  double t0 = root("t0", "t_0", d.sym("t_ca") - d.sym("t_hc"));
+  double t1 = root("t1", "t_1", d.sym("t_ca") + d.sym("t_hc"));
   if (!unit) d.note("Dividing by |D| turns distances along D/|D| into t for the given D.");
   std::vector<double> ts = {t0};
   if (t1 != t0) ts.push_back(t1);
   for (std::size_t k = 0; k < ts.size(); ++k) {
     std::string p = k == 0 ? "P0" : "P1", n = k == 0 ? "N0" : "N1";
-    Value P = d.step(p, p, O + d.sym(k == 0 ? "t0" : "t1") * D);
-    d.step(n, n, (d.sym(p) - C) / r, "the outward unit normal");
+    Value P = d.step(p, k == 0 ? "P_0" : "P_1", O + d.sym(k == 0 ? "t0" : "t1") * D);
+    d.step(n, k == 0 ? "N_0" : "N_1", (d.sym(p) - C) / r, "the outward unit normal");
     candidates.push_back({ts[k], P.vector, range_reason(ray, ts[k])});
   }
   conclude_candidates(d, "sphere", ray, candidates, true);
@@ -120,16 +124,16 @@ Derivation Sphere::derive_algebraic(const Ray& ray, const Overrides* overrides) 
   }
   if (disc == 0) d.note("Δ = 0: one double root, the ray is tangent to the sphere.");
   double t0 =
-      d.step("t0", "t0", (-d.sym("b") - sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
+      d.step("t0", "t_0", (-d.sym("b") - sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
   double t1 =
-      d.step("t1", "t1", (-d.sym("b") + sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
+      d.step("t1", "t_1", (-d.sym("b") + sqrt(d.sym("discriminant"))) / (2 * d.sym("a"))).scalar;
   std::vector<Candidate> candidates;
   std::vector<std::pair<std::string, double>> ts = {{"t0", t0}};
   if (t1 != t0) ts.emplace_back("t1", t1);
   for (std::size_t k = 0; k < ts.size(); ++k) {
     std::string p = k == 0 ? "P0" : "P1", n = k == 0 ? "N0" : "N1";
-    Value P = d.step(p, p, O + d.sym(ts[k].first) * D);
-    d.step(n, n, (d.sym(p) - C) / r, "the outward unit normal");
+    Value P = d.step(p, k == 0 ? "P_0" : "P_1", O + d.sym(ts[k].first) * D);
+    d.step(n, k == 0 ? "N_0" : "N_1", (d.sym(p) - C) / r, "the outward unit normal");
     candidates.push_back({ts[k].second, P.vector, range_reason(ray, ts[k].second)});
   }
   conclude_candidates(d, "sphere", ray, candidates, true);

@@ -69,18 +69,18 @@ Derivation Triangle::derive(const Ray& ray, std::string_view /*method*/,
   E A = d.given("a", "a", v_[0]);
   E B = d.given("b", "b", v_[1]);
   E C = d.given("c", "c", v_[2]);
-  d.step("n", "n", cross(B - A, C - A), "the normal (b − a) × (c − a)");
+  d.step("n", "n", cross_written_out(B - A, C - A), "the normal (b − a) × (c − a), by components");
   E n = d.sym("n");
-  double den = d.step("denominator", "n·D", dot(n, D)).scalar;
+  double den = d.step("denominator", dot(n, D), dot(n, D)).scalar;
   if (den == 0) {
-    double s = d.step("numerator", "n·(a − O)", dot(n, A - O)).scalar;
+    double s = d.step("numerator", dot(n, A - O), dot(n, A - O)).scalar;
     d.note("n·D = 0: the ray is parallel to the triangle's plane.");
     d.conclude(s == 0 ? "The ray lies in the triangle's plane: it meets the plane along a line, "
                         "not at a point, so there is no single hit point."
                       : "The ray is parallel to the triangle's plane and off it: no hit.");
     return std::move(d).finish();
   }
-  d.step("numerator", "n·(a − O)", dot(n, A - O));
+  d.step("numerator", dot(n, A - O), dot(n, A - O));
   double t = d.step("t", "t", d.sym("numerator") / d.sym("denominator"),
                     "where the ray meets the plane n·(x − a) = 0")
                  .scalar;
@@ -88,17 +88,23 @@ Derivation Triangle::derive(const Ray& ray, std::string_view /*method*/,
   E Q = d.sym("q");
   double e0 =
       d.step("e_ab", "e_ab", dot(cross(B - A, Q - A), n), "edge ab: ≥ 0 means inside").scalar;
-  double e1 = d.step("e_bc", "e_bc", dot(cross(C - B, Q - B), n), "edge bc").scalar;
-  double e2 = d.step("e_ca", "e_ca", dot(cross(A - C, Q - C), n), "edge ca").scalar;
+  double e1 =
+      d.step("e_bc", "e_bc", dot(cross(C - B, Q - B), n), "edge bc: ≥ 0 means inside").scalar;
+  double e2 =
+      d.step("e_ca", "e_ca", dot(cross(A - C, Q - C), n), "edge ca: ≥ 0 means inside").scalar;
   bool inside = e0 >= 0 && e1 >= 0 && e2 >= 0;
   if (inside) {
     d.step("w_a", "w_a", d.sym("e_bc") / dot(n, n), "barycentric weight of a");
     d.step("w_b", "w_b", d.sym("e_ca") / dot(n, n), "barycentric weight of b");
     d.step("w_c", "w_c", d.sym("e_ab") / dot(n, n), "barycentric weight of c");
   }
+  std::vector<std::string> outside;
+  if (e0 < 0) outside.push_back("e_ab");
+  if (e1 < 0) outside.push_back("e_bc");
+  if (e2 < 0) outside.push_back("e_ca");
   std::string reason = inside ? range_reason(ray, t)
-                              : "the plane point q lies outside the triangle (an edge test is "
-                                "negative)";
+                              : fmt::format("the plane point q lies outside the triangle ({} < 0)",
+                                            fmt::join(outside, ", "));
   conclude_candidates(d, "triangle", ray, {{t, q.vector, reason}}, false);
   return std::move(d).finish();
 }

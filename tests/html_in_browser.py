@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""Opens the HTML worked solution of every kind and method in headless Chromium.
+
+For one problem of each (kind, method) of the bank it renders the page, loads it in Chromium,
+checks in the resulting DOM that the formulas are MathML (<math> with <mrow>), that the
+sketch is an inline SVG and that nothing refers to a script or the network, and saves a
+screenshot. Exit 77 (skipped) when Chromium is not installed.
+
+usage: html_in_browser.py RAYGRADE_BINARY BANK_FOLDER OUTPUT_FOLDER
+"""
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+         "--disable-background-networking", "--disable-component-update", "--disable-sync"]
+
+
+def chromium():
+    for name in ("chromium", "chromium-browser"):
+        path = shutil.which(name)
+        if path:
+            return path
+    return None
+
+
+def run_browser(browser, args, page):
+    with tempfile.TemporaryDirectory(prefix="raygrade-chromium-") as profile:
+        cmd = [browser, *FLAGS, f"--user-data-dir={profile}", *args, "file://" + page]
+        return subprocess.run(cmd, capture_output=True, text=True, timeout=120)
+
+
+def main():
+    binary, bank, out = sys.argv[1:4]
+    browser = chromium()
+    if not browser:
+        print("chromium is not installed (scripts/install-deps.sh installs it): skipped")
+        return 77
+    pages = os.path.join(out, "pages")
+    shots = os.path.join(out, "screenshots")
+    os.makedirs(shots, exist_ok=True)
+    subprocess.run([binary, "solutions", bank, "--out", pages, "--format", "html,json"],
+                   check=True, capture_output=True)
+    # The object's type of each problem, from the bank itself (a triangle and a convex
+    # polygon share the method name "edge-tests").
+    types = {}
+    for root, _, files in os.walk(bank):
+        for name in files:
+            if name.endswith(".json"):
+                with open(os.path.join(root, name), encoding="utf-8") as f:
+                    data = json.load(f)
+                for p in data.get("problems", [data]) if isinstance(data, dict) else []:
+                    if isinstance(p, dict) and isinstance(p.get("object"), dict):
+                        types[p.get("id")] = p["object"].get("type", "")
+    chosen = {}
+    for name in sorted(os.listdir(pages)):
+        if not name.endswith(".json"):
+            continue
+        with open(os.path.join(pages, name), encoding="utf-8") as f:
+            solution = json.load(f)
+        kind = solution["kind"]
+        if solution["id"] in types:
+            kind += " " + types[solution["id"]]
+        chosen.setdefault((kind, solution["methods"][0]["method"]), name[:-5])
+    failures = []
+    for (kind, method), base in sorted(chosen.items()):
+        page = os.path.abspath(os.path.join(pages, base + ".html"))
+        with open(page, encoding="utf-8") as f:
+            source = f.read()
+        dom = run_browser(browser, ["--dump-dom"], page).stdout
+        problems = []
+        if not re.search(r"<math[^>]*>\s*<mrow>", dom):
+            problems.append("no MathML formulas in the DOM")
+        if "<svg" not in dom:
+            problems.append("no SVG sketch in the DOM")
+        if re.search(r"<script|<link|<img|<iframe|\bsrc=|url\(", source):
+            problems.append("refers to a script or an external resource")
+        if re.search(r"https?://(?!www\.w3\.org/2000/svg)", source):
+            problems.append("names a network address")
+        shot = os.path.join(shots, base + ".png")
+        run_browser(browser, ["--hide-scrollbars", "--window-size=1000,1600",
+                              f"--screenshot={shot}"], page)
+        if not os.path.exists(shot) or os.path.getsize(shot) < 1000:
+            problems.append("no screenshot")
+        status = "ok" if not problems else "; ".join(problems)
+        print(f"{kind} / {method}: {base}.html: {status}")
+        if problems:
+            failures.append(base)
+    print(f"screenshots in {shots}")
+    return 1 if failures or not chosen else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,185 @@
+// Worked solutions as rendered: the seeds' numbers (acceptance), every kind in every format,
+// escaping of user text, determinism and the solutions folder.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "reports/json_report.h"
+#include "reports/render.h"
+#include "reports/solutions_folder.h"
+#include "test_util.h"
+
+namespace raygrade {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kSource = RAYGRADE_SOURCE_DIR;
+
+const Problem& find(const Bank& bank, const std::string& id) {
+  for (const auto& p : bank.problems) {
+    if (p.id == id) return p;
+  }
+  throw std::runtime_error("no problem " + id);
+}
+
+std::string render(const Problem& p, Format f, const std::string& method = "") {
+  Solution s = make_solution(p, method, number_format_for(p));
+  return render_document(f, {&s});
+}
+
+bool has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// Seed 000, sphere case 1, as the seed works it: L = ⟨2, 0, 0⟩, t_ca = 2, d² = 0, t_hc = 1,
+// t0 = 1, t1 = 3.
+TEST(WorkedSolution, SeedSphereCase1MatchesTheSeed) {
+  Bank bank = load_bank({kSource + "/problems/seeds/seed000-spheres.json"});
+  const Problem& p = find(bank, "seed000-sphere-1");
+  std::string txt = render(p, Format::kText);
+  EXPECT_TRUE(has(txt, "L = C − O = ⟨2, 0, 0⟩ − ⟨0, 0, 0⟩ = ⟨2, 0, 0⟩\n")) << txt;
+  EXPECT_TRUE(has(txt, "t_ca = L · D = ⟨2, 0, 0⟩ · ⟨1, 0, 0⟩ = 2\n")) << txt;
+  EXPECT_TRUE(has(txt, "d² = L² − t_ca² = 4 − 2² = 0\n")) << txt;
+  EXPECT_TRUE(has(txt, "t_hc = √(r² − d²) = √(1 − 0) = 1\n")) << txt;
+  EXPECT_TRUE(has(txt, "t_0 = t_ca − t_hc = 2 − 1 = 1\n")) << txt;
+  EXPECT_TRUE(has(txt, "t_1 = t_ca + t_hc = 2 + 1 = 3\n")) << txt;
+  EXPECT_TRUE(has(txt, "enters the sphere at t = 1, at P = (1, 0, 0), and leaves at t = 3")) << txt;
+  std::string md = render(p, Format::kMarkdown);
+  EXPECT_TRUE(has(md,
+                  "$$L = C - O = \\langle 2, 0, 0 \\rangle - \\langle 0, 0, 0 \\rangle = "
+                  "\\langle 2, 0, 0 \\rangle$$"))
+      << md;
+  EXPECT_TRUE(has(md, "$$d^{2} = L^{2} - {t_{\\text{ca}}}^2 = 4 - {2}^2 = 0$$")) << md;
+  std::string html = render(p, Format::kHtml);
+  EXPECT_TRUE(has(html, "<msub><mi>t</mi><mi mathvariant=\"normal\">hc</mi></msub><mo>=</mo>"))
+      << html;
+  EXPECT_TRUE(has(html, "<mo>=</mo><mn>1</mn></mrow></math>")) << html;
+}
+
+// Seed 000, plane case 1 in the D form: D = −N·V0 = −(−1·2) = 2 and t = −(N·O + D)/(N·R)
+// = −2/(−1) = 2. (The seed writes D = −2; two sign slips cancel there.)
+TEST(WorkedSolution, SeedPlaneCase1InTheDForm) {
+  Bank bank = load_bank({kSource + "/problems/seeds/seed000-planes.json"});
+  const Problem& p = find(bank, "seed000-plane-1");
+  ASSERT_EQ(p.method, "implicit");
+  std::string txt = render(p, Format::kText);
+  EXPECT_TRUE(has(txt, "D = −(N · V_0) = −(⟨−1, 0, 0⟩ · ⟨2, 0, 0⟩) = 2\n")) << txt;
+  EXPECT_TRUE(
+      has(txt, "t = (−(N · O + D)) / (N · R) = (−(⟨−1, 0, 0⟩ · ⟨0, 0, 0⟩ + 2)) / (−1) = 2\n"))
+      << txt;
+  EXPECT_FALSE(has(txt, "D = −2")) << txt;
+  std::string md = render(p, Format::kMarkdown);
+  EXPECT_TRUE(has(md, "= 2$$")) << md;
+}
+
+// Seed 001's third sphere: t_hc = √3 and t0 = 9 − √3 ≈ 7.27 (the problem asks for 2 decimals).
+TEST(WorkedSolution, ExactFormsBesideDecimals) {
+  Bank bank = load_bank({kSource + "/problems/seeds/seed001-first-hit.json"});
+  const Problem& p = find(bank, "seed001-first-hit");
+  std::string txt = render(p, Format::kText, "geometric");
+  EXPECT_TRUE(has(txt, "t_hc = √(r² − d²) = √(4 − 1) = √3 ≈ 1.73\n")) << txt;
+  EXPECT_TRUE(has(txt, "t_0 = t_ca − t_hc = 9 − 1.73 = 9 − √3 ≈ 7.27\n")) << txt;
+  EXPECT_TRUE(has(txt, "The ray first hits sphere 3 at t = 9 − √3 ≈ 7.27")) << txt;
+}
+
+// Acceptance 3, in the library: every kind of the bank renders in every format, with its
+// formulas (LaTeX, MathML) and, in HTML, a sketch.
+TEST(WorkedSolution, EveryKindInEveryFormat) {
+  Bank bank = load_bank({kSource + "/problems"});
+  ASSERT_TRUE(bank.errors.empty());
+  std::map<std::string, const Problem*> by_kind;
+  for (const auto& p : bank.problems) by_kind.emplace(p.kind, &p);
+  for (const auto& p : bank.problems) by_kind.emplace(p.kind + " " + p.task->methods().front(), &p);
+  for (const char* kind : {"intersect", "first-hit", "camera-ray"}) {
+    EXPECT_TRUE(by_kind.count(kind)) << "the bank has no " << kind << " problem";
+  }
+  for (const char* method : {"geometric", "point-normal", "implicit", "edge-tests",
+                             "crossing-number", "quadratic", "slab"}) {
+    EXPECT_TRUE(by_kind.count(std::string("intersect ") + method)) << method;
+  }
+  for (const auto& [kind, p] : by_kind) {
+    SCOPED_TRACE(kind);
+    EXPECT_TRUE(has(render(*p, Format::kMarkdown), "$$")) << p->id;
+    std::string html = render(*p, Format::kHtml);
+    EXPECT_TRUE(has(html, "<math display=\"block\">")) << p->id;
+    EXPECT_TRUE(has(html, "<svg")) << p->id;
+    EXPECT_FALSE(has(html, "<script")) << p->id;
+    EXPECT_TRUE(has(render(*p, Format::kText), " = ")) << p->id;
+    auto j = nlohmann::json::parse(render(*p, Format::kJson));
+    EXPECT_EQ(j["id"], p->id);
+    std::size_t steps = 0;
+    for (const auto& part : j["methods"][0]["parts"]) steps += part["steps"].size();
+    EXPECT_GT(steps, 0u) << p->id;
+  }
+}
+
+TEST(WorkedSolution, UserTextIsEscapedInEveryFormat) {
+  Problem p = testing::problem(R"({
+    "id": "x<1>", "kind": "first-hit", "title": "<script>alert(1)</script> *bold* \u001b[31m",
+    "statement": "a & b",
+    "ray": {"origin": [0, 0, 0], "direction": [0, 0, 1]},
+    "objects": [{"name": "<b>ball</b> $x$", "type": "sphere", "center": [0, 0, 5], "radius": 1}]})");
+  std::string html = render(p, Format::kHtml);
+  EXPECT_FALSE(has(html, "<script>"));
+  EXPECT_FALSE(has(html, "<b>ball"));
+  EXPECT_TRUE(has(html, "&lt;b&gt;ball&lt;/b&gt;"));
+  EXPECT_TRUE(has(html, "a &amp; b"));
+  std::string md = render(p, Format::kMarkdown);
+  EXPECT_TRUE(has(md, "\\<script\\>"));
+  EXPECT_TRUE(has(md, "\\<b\\>ball\\</b\\> \\$x\\$"));
+  EXPECT_FALSE(has(render(p, Format::kText), "\x1b"));
+  auto j = nlohmann::json::parse(render(p, Format::kJson));
+  EXPECT_EQ(j["title"], "<script>alert(1)</script> *bold* \x1b[31m");  // data, kept as written
+}
+
+class SolutionsFolder : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           fmt::format("raygrade-solutions-{}", ::testing::UnitTest::GetInstance()->random_seed());
+    fs::remove_all(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+TEST_F(SolutionsFolder, WritesChecksAndRemovesOnlyGeneratedFiles) {
+  Bank bank = load_bank({kSource + "/problems/seeds/seed000-spheres.json"});
+  std::vector<Diagnostic> errors;
+  auto files = solution_files(bank.problems, all_formats(), "raygrade solutions x --out y", errors);
+  ASSERT_TRUE(errors.empty());
+  ASSERT_EQ(files.size(), 5u * 4u + 1u);  // five problems, four formats, the index
+  // Deterministic: the same bytes from a second run.
+  auto again = solution_files(bank.problems, all_formats(), "raygrade solutions x --out y", errors);
+  for (std::size_t i = 0; i < files.size(); ++i) EXPECT_EQ(files[i].bytes, again[i].bytes);
+  for (const auto& f : files) {
+    EXPECT_NE(f.bytes.substr(0, f.bytes.find('\n'))
+                  .find("Generated by raygrade with `raygrade solutions x --out y`"),
+              std::string::npos)
+        << f.name;
+  }
+
+  EXPECT_EQ(check_solution_folder(dir_.string(), files).written.size(), files.size());
+  FolderSync first = write_solution_folder(dir_.string(), files);
+  EXPECT_EQ(first.written.size(), files.size());
+  EXPECT_TRUE(check_solution_folder(dir_.string(), files).written.empty());
+
+  std::ofstream(dir_ / "seed000-sphere-1.md") << "edited by hand\n";
+  std::ofstream(dir_ / "old.md") << "<!-- Generated by raygrade with `...` -->\n";
+  std::ofstream(dir_ / "notes.md") << "a person's notes\n";
+  FolderSync stale = check_solution_folder(dir_.string(), files);
+  EXPECT_EQ(stale.written, std::vector<std::string>{"seed000-sphere-1.md"});
+  EXPECT_EQ(stale.removed, std::vector<std::string>{"old.md"});
+
+  FolderSync second = write_solution_folder(dir_.string(), files);
+  EXPECT_EQ(second.written.size(), 1u);
+  EXPECT_EQ(second.unchanged, files.size() - 1);
+  EXPECT_FALSE(fs::exists(dir_ / "old.md"));
+  EXPECT_TRUE(fs::exists(dir_ / "notes.md"));
+  EXPECT_TRUE(check_solution_folder(dir_.string(), files).written.empty());
+}
+
+}  // namespace
+}  // namespace raygrade
