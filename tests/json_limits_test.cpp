@@ -131,6 +131,15 @@ TEST(JsonLimits, BigNumberThenASyntaxErrorIsASyntaxError) {
   EXPECT_EQ(rejection("-1e400\"").code, "bad-json");
 }
 
+// nlohmann reads a NUL byte as the end of the text: what follows must not pass unseen.
+TEST(JsonLimits, NulByteIsRejectedWhereItIs) {
+  Diagnostic d = rejection(std::string("{\"a\": 1}\n\0{\"a\": 2}", 18));
+  EXPECT_EQ(d.code, "bad-json");
+  EXPECT_EQ(d.line, 2);
+  EXPECT_EQ(d.column, 1);
+  EXPECT_NO_THROW(parse_json_text("in.json", R"({"a": "\u0000"})"));
+}
+
 // 1e-400 underflows to zero, which is a fine double: accepted as 0.
 TEST(JsonLimits, UnderflowingNumberIsZero) {
   auto f = parse_json_text("in.json", "[1e-400]");

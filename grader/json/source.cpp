@@ -102,6 +102,12 @@ std::shared_ptr<const SourceFile> parse_json_text(std::string name, std::string 
     throw Error(Diagnostic{name, f.path, line, column, Severity::kError, f.message, f.code});
   };
   if (auto fault = check_limits(text, limits)) report(*fault);
+  // nlohmann stops at a NUL byte as if the text ended there, so "{...}\0anything" would pass.
+  // JSON has no raw NUL anywhere (inside a string it is written \u0000).
+  if (auto nul = text.find('\0'); nul != std::string::npos) {
+    auto [line, column] = line_column_of(text, nul);
+    fail(name, "invalid JSON: a NUL byte (is this a text file?)", line, column);
+  }
   auto file = std::make_shared<SourceFile>();
   try {
     try {
