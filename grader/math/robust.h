@@ -14,6 +14,12 @@ namespace raygrade {
 template <typename T>
 inline constexpr bool kErrorFree = std::is_floating_point_v<T>;
 
+// The fast paths of the reference formulas run in plain arithmetic when no step cancels by more
+// than this factor: a result at least 1/16 of the magnitudes it is computed from has lost at
+// most 4 bits to rounding, so the plain result is within a few tens of ulps. Below it, the
+// compensated formulas run.
+constexpr double kNoCancellation = 1.0 / 16;
+
 // a*b - c*d with one rounding, by Kahan's algorithm with FMA (Muller et al., Handbook of
 // Floating-Point Arithmetic, 2nd ed., sec. 5.3). For number types without a native FMA the
 // plain expression is used: they carry enough precision of their own.

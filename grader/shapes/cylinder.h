@@ -22,6 +22,24 @@ Roots<T> cylinder_side_roots(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& 
   Roots<T> out;
   if (a == T(0)) return out;
   T b = dot(fp, dp);
+  if constexpr (kErrorFree<T>) {
+    // Fast path: plain arithmetic when neither the cross product, nor the discriminant, nor
+    // c = |f⊥|² − r² cancels (see kNoCancellation).
+    using std::abs;
+    Vec3<T> fxd = cross(f, d);
+    T s = dot(fxd, axis), rr = r * r, ff = dot(fp, fp);
+    T disc = a * rr - s * s, c = ff - rr;
+    T k = T(kNoCancellation);
+    if (s * s >= k * ff * a && abs(disc) >= k * (a * rr + s * s) && abs(c) >= k * (ff + rr)) {
+      if (disc < T(0)) return out;
+      T q = -(b + sign_of(b) * sqrt(disc));
+      out.count = 2;
+      out.t0 = c / q;
+      out.t1 = q / a;
+      if (out.t1 < out.t0) std::swap(out.t0, out.t1);
+      return out;
+    }
+  }
   T s = dot(cross_accurate(f, d), axis);
   T disc = a * (r * r) - s * s;
   if (disc < T(0)) return out;

@@ -13,6 +13,18 @@ namespace raygrade {
 // to the plane (n·d around 1e-12) keeps the digits of its denominator. No value when n·d = 0.
 template <typename T>
 std::optional<T> plane_t(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& n, const Vec3<T>& p) {
+  if constexpr (kErrorFree<T>) {
+    // Fast path: plain dot products when neither cancels (see kNoCancellation); p − o is then
+    // only needed to rounding, since the numerator is large next to its terms.
+    using std::abs;
+    Vec3<T> f = p - o;
+    T den = dot(n, d), num = dot(n, f);
+    T den_size = abs(n.x * d.x) + abs(n.y * d.y) + abs(n.z * d.z);
+    T num_size = abs(n.x) * (abs(p.x) + abs(o.x)) + abs(n.y) * (abs(p.y) + abs(o.y)) +
+                 abs(n.z) * (abs(p.z) + abs(o.z));
+    T k = T(kNoCancellation);
+    if (abs(den) >= k * den_size && abs(num) >= k * num_size) return num / den;
+  }
   T den = dot_accurate(n, d);
   if (den == T(0)) return std::nullopt;
   Vec3<T> f, f_lo;

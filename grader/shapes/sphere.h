@@ -50,6 +50,27 @@ T sum_of_squares_minus_square(const Vec3<T>& f_hi, const Vec3<T>& f_lo, T r) {
 template <typename T>
 Roots<T> sphere_roots(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& center, T r) {
   using std::sqrt;
+  if constexpr (kErrorFree<T>) {
+    // Fast path: the same formulas in plain arithmetic, taken only when neither the cross
+    // product, nor the discriminant, nor c = f·f − r² cancels (see kNoCancellation).
+    using std::abs;
+    Vec3<T> f = o - center;
+    T a = dot(d, d), ff = dot(f, f), rr = r * r;
+    Vec3<T> fxd = cross(f, d);
+    T s2 = dot(fxd, fxd), disc = a * rr - s2, c = ff - rr;
+    T k = T(kNoCancellation);
+    if (s2 >= k * ff * a && abs(disc) >= k * (a * rr + s2) && abs(c) >= k * (ff + rr)) {
+      Roots<T> out;
+      if (disc < T(0)) return out;
+      T b = dot(f, d);
+      T q = -(b + sign_of(b) * sqrt(disc));
+      out.count = 2;
+      out.t0 = c / q;
+      out.t1 = q / a;
+      if (out.t1 < out.t0) std::swap(out.t0, out.t1);
+      return out;
+    }
+  }
   Vec3<T> f, f_lo;
   difference_exact(o, center, f, f_lo);
   T a = dot(d, d);

@@ -76,6 +76,19 @@ TriangleHit<T> watertight_triangle(const Vec3<T>& o, const Vec3<T>& d, const Vec
   T det = u + v + w;
   if (det == T(0)) return out;
   out.hit = true;
+  out.barycentric = {u / det, v / det, w / det};
+  if constexpr (kErrorFree<T>) {
+    // Fast path: the sheared t is as accurate as its edge functions, which lose nothing when
+    // det = u + v + w is not small next to their products (see kNoCancellation).
+    using std::abs;
+    T size = abs(cx * by) + abs(cy * bx) + abs(ax * cy) + abs(ay * cx) + abs(bx * ay) +
+             abs(by * ax);
+    if (abs(det) >= T(kNoCancellation) * size) {
+      T az = sz * A[kz], bz = sz * B[kz], cz = sz * C[kz];
+      out.t = (u * az + v * bz + w * cz) / det;
+      return out;
+    }
+  }
   // t from the plane, with compensated products: the sheared formula (u·az + v·bz + w·cz)/det
   // loses digits in proportion to how thin the triangle is (a needle's det is tiny), the
   // plane's does not. The sheared one remains for a plane the rounding makes parallel.
@@ -92,7 +105,6 @@ TriangleHit<T> watertight_triangle(const Vec3<T>& o, const Vec3<T>& d, const Vec
     difference_exact(a, o, f, f_lo);
     out.t = (dot_accurate(n, f) + dot(n, f_lo)) / den;
   }
-  out.barycentric = {u / det, v / det, w / det};
   return out;
 }
 
