@@ -1,0 +1,54 @@
+// The checks of one problem that `raygrade check` runs after reading it: the stated answer,
+// the ill-posed cases, and the self-tests.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "check/compare.h"
+#include "check/literals.h"
+#include "core/error.h"
+#include "problems/problem.h"
+
+namespace raygrade {
+
+// The tolerance a grader allows on t when the problem sets none: two decimals, the precision
+// the seeds' answers are given to (seed 001: t = 7.27).
+constexpr double kDefaultTTolerance = 0.01;
+
+// The problem's own tolerance as written ({"abs": x, "rel": y} or a number), or none.
+Tolerance stated_tolerance(const Problem& p);
+
+// The tolerance on t a grader applies to this problem: its absolute tolerance, else the default.
+double t_tolerance(const Problem& p);
+
+// A diagnostic at `relative_path` inside the problem (the problem itself when empty), with
+// its line and column when the file text has it.
+Diagnostic problem_diagnostic(const Problem& p, std::string_view relative_path, Severity severity,
+                              std::string message, std::string code);
+
+// The stated `expected` answer against the reference: each difference, and a hit listed
+// behind the origin (t < t_min) or beyond t_max.
+std::vector<Diagnostic> check_expected(const Problem& p, const nlohmann::json& reference,
+                                       const NumberLiterals& literals);
+
+// What the boundary probes found about a problem.
+struct BoundaryProbe {
+  // The outcome changes under a shift far below any rounding a person does: a designed
+  // tangent, edge or vertex case, exact in the printed numbers.
+  bool exact_boundary = false;
+  std::vector<Diagnostic> diagnostics;
+};
+
+// Nearly tangent rays (and rays nearly through an edge or vertex): the outcome changes when
+// the ray moves sideways by the tolerance; two hits closer together than the tolerance; a
+// first hit that another object nearly ties.
+BoundaryProbe probe_boundaries(const Problem& p);
+
+// The conditioning check: every non-integer input moved by half a unit in its last printed
+// digit, and the problem solved again.
+std::vector<Diagnostic> check_conditioning(const Problem& p, const nlohmann::json& reference,
+                                           const NumberLiterals& literals, bool exact_boundary);
+
+}  // namespace raygrade
