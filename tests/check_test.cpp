@@ -10,6 +10,7 @@
 #include "check/compare.h"
 #include "check/literals.h"
 #include "check/problem_checks.h"
+#include "check/self_tests.h"
 #include "test_util.h"
 
 namespace raygrade {
@@ -177,16 +178,19 @@ TEST(ProbeBoundaries, ExactTangentIsADesignedCase) {
   EXPECT_TRUE(probe.diagnostics.empty());
 }
 
+// The default tolerance on t is 0.1% (docs/grading.md): 0.005 at t = 5, where the ray passes
+// the sphere. A ray 0.003 above it misses by less than that.
 TEST(ProbeBoundaries, MissByLessThanTheToleranceIsNearlyTangent) {
-  BoundaryProbe probe = probe_boundaries(sphere_at_height("1.005"));
+  BoundaryProbe probe = probe_boundaries(sphere_at_height("1.003"));
   EXPECT_FALSE(probe.exact_boundary);
   ASSERT_EQ(probe.diagnostics.size(), 1u);
   EXPECT_EQ(probe.diagnostics[0].code, "nearly-tangent");
 }
 
 TEST(ProbeBoundaries, HitsCloserThanTwiceTheToleranceAreNearlyTangent) {
-  // y = 0.99995: the half chord is √(1 − 0.99995²) ≈ 0.0100, so the hits are 0.02 apart.
-  BoundaryProbe probe = probe_boundaries(sphere_at_height("0.99995"));
+  // y = 0.99999: the half chord is √(1 − 0.99999²) ≈ 0.0045, so the hits are 0.009 apart,
+  // within twice the tolerance 0.005.
+  BoundaryProbe probe = probe_boundaries(sphere_at_height("0.99999"));
   ASSERT_EQ(probe.diagnostics.size(), 1u);
   EXPECT_EQ(probe.diagnostics[0].code, "nearly-tangent");
 }
@@ -214,6 +218,37 @@ TEST(Conditioning, OutcomeFlipWithinPrintedDigitsIsFlagged) {
   ASSERT_EQ(d.size(), 1u);
   EXPECT_EQ(d[0].code, "ill-conditioned");
   EXPECT_EQ(d[0].path, "/object/radius");
+}
+
+Problem with_tests(const std::string& tests) {
+  return testing::problem(R"({"id": "st", "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+    "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}, "tests": )" +
+                          tests + "}");
+}
+
+TEST(SelfTests, RightAndEmptyAnswersGetTheScoresTheyState) {
+  Problem p = with_tests(R"([
+    {"answer": {"hits": [{"t": 1, "point": [1, 0, 0]}, {"t": 3, "point": [3, 0, 0]}]}, "score": 1},
+    {"answer": {"hits": []}, "score": 0}])");
+  for (const auto& d : run_self_tests(p, p.task->answer())) ADD_FAILURE() << format_diagnostic(d);
+}
+
+TEST(SelfTests, WrongScoreAndAbsentMistakeFail) {
+  // A right answer scores 1, not 0.5, and has no mistake in it.
+  Problem p = with_tests(R"([
+    {"answer": {"hits": [{"t": 1, "point": [1, 0, 0]}, {"t": 3, "point": [3, 0, 0]}]},
+     "score": 0.5},
+    {"answer": {"hits": [{"t": 1, "point": [1, 0, 0]}, {"t": 3, "point": [3, 0, 0]}]},
+     "score": 1, "mistake": "far-root"},
+    {"answer": {"hits": []}, "scor": 0}])");
+  auto d = run_self_tests(p, p.task->answer());
+  ASSERT_EQ(d.size(), 4u);
+  EXPECT_EQ(d[0].code, "self-test");
+  EXPECT_EQ(d[0].path, "/tests/0/score");
+  EXPECT_EQ(d[1].code, "self-test");
+  EXPECT_EQ(d[1].path, "/tests/1/mistake");
+  EXPECT_EQ(d[2].code, "unknown-key");  // 'scor' (did you mean 'score'?)
+  EXPECT_EQ(d[3].code, "missing-key");
 }
 
 }  // namespace

@@ -10,6 +10,11 @@
 namespace raygrade {
 namespace {
 
+// The sideways probe never moves the ray by more than this fraction of the object's size:
+// grazing happens at the object's scale, and a relative tolerance on a far hit (0.1% of
+// t = 1000) would otherwise move the ray by whole units, onto another problem.
+constexpr double kMaxProbeFraction = 0.01;
+
 // Sideways shifts probe the ray at this many evenly spaced angles around its direction.
 constexpr int kProbeAngles = 8;
 
@@ -117,6 +122,24 @@ void check_near_tie(const Problem& p, const FirstHitTask& f, double tol, Boundar
   }
 }
 
+// The t at which the tolerance is taken: the first hit's, or for a miss the t where the ray
+// passes closest to the object's centre (the first object's, for a first-hit problem).
+double typical_t(const Problem& p, const Ray& ray) {
+  const Shape* shape = nullptr;
+  if (auto* t = dynamic_cast<const IntersectTask*>(p.task.get())) {
+    Intersection x = t->object().intersect(ray);
+    if (!x.hits.empty()) return x.hits.front().t;
+    shape = &t->object();
+  } else if (auto* f = dynamic_cast<const FirstHitTask*>(p.task.get())) {
+    FirstHit h = first_hit(ray, f->objects());
+    if (h.index >= 0) return h.hit.t;
+    shape = f->objects().front().shape.get();
+  }
+  if (!shape) return 1;
+  return std::max(0.0,
+                  dot(shape->center() - ray.origin, ray.direction) / length_squared(ray.direction));
+}
+
 }  // namespace
 
 BoundaryProbe probe_boundaries(const Problem& p) {
@@ -125,9 +148,15 @@ BoundaryProbe probe_boundaries(const Problem& p) {
   auto* first = dynamic_cast<const FirstHitTask*>(p.task.get());
   if (!inter && !first) return out;
   const Ray& ray = inter ? inter->ray() : first->ray();
-  double tol = t_tolerance(p);
-  // A t error of `tol` is a distance of tol·|d| along the ray: probe sideways by as much.
-  double distance = tol * length(ray.direction);
+  double tol = t_tolerance(p, typical_t(p, ray));
+  // A t error of `tol` is a distance of tol·|d| along the ray: probe sideways by as much,
+  // up to a small fraction of the (smallest) object.
+  double size = kInfinity;
+  if (inter) size = inter->object().extent();
+  if (first) {
+    for (const auto& o : first->objects()) size = std::min(size, o.shape->extent());
+  }
+  double distance = std::min(tol * length(ray.direction), kMaxProbeFraction * size);
   Outcome base = outcome_of(p, ray);
   out.exact_boundary = shifted_outcome(p, ray, base, distance * kExactBoundaryFraction).has_value();
   if (first) check_near_tie(p, *first, tol, out);
@@ -138,8 +167,8 @@ BoundaryProbe probe_boundaries(const Problem& p) {
       out.diagnostics.push_back(problem_diagnostic(
           p, "/ray", Severity::kError,
           fmt::format("nearly tangent: the ray passes within {} of the object's boundary; moved "
-                      "sideways by that much (the tolerance {} on t) it gives {} instead of {}, so "
-                      "a student's rounding can turn the answer around",
+                      "sideways by that much (the tolerance on t is {}) it gives {} instead of {}, "
+                      "so a student's rounding can turn the answer around",
                       format_number(distance), format_number(tol), describe(*moved, first),
                       describe(base, first)),
           "nearly-tangent"));

@@ -10,6 +10,7 @@
 #include "check/problem_checks.h"
 #include "check/self_tests.h"
 #include "core/escape.h"
+#include "grading/tolerance.h"
 #include "kinds/intersect.h"
 
 namespace raygrade {
@@ -107,6 +108,7 @@ class BankChecker {
     try {
       p = read_problem(item);
       r.kind = p.kind;
+      (void)read_tolerance_policy(p);  // a faulty tolerance is reported like any other fault
       reference = p.task->answer();
     } catch (const Error& e) {
       r.diagnostics.push_back(e.diagnostic());

@@ -35,7 +35,7 @@ const char* json_type(const json& v) {
 }
 
 struct Comparer {
-  const Tolerance& tolerance;
+  const CompareTolerance& tolerance;
   const std::function<double(const std::string&)>& half_unit;
   std::vector<Mismatch> out;
 
@@ -141,12 +141,12 @@ void outcome_into(const json& a, std::string& out) {
 
 }  // namespace
 
-double Tolerance::at(double reference) const {
+double CompareTolerance::at(double reference) const {
   return std::max(absolute, relative * std::abs(reference));
 }
 
 std::vector<Mismatch> compare_stated(const json& stated, const json& reference,
-                                     const Tolerance& tolerance,
+                                     const CompareTolerance& tolerance,
                                      const std::function<double(const std::string&)>& half_unit) {
   Comparer c{tolerance, half_unit, {}};
   c.compare(stated, reference, "");

@@ -21,7 +21,7 @@ struct Mismatch {
 
 // How far a stated number may lie from the reference: the larger of an absolute bound and a
 // relative one.
-struct Tolerance {
+struct CompareTolerance {
   double absolute = 0;
   double relative = 0;
   double at(double reference) const;
@@ -37,7 +37,8 @@ constexpr double kRoundingSlack = 1e-9;
 // last digit the stated number at `path` is printed with (0 for an integer literal): a stated
 // 7.2679 accepts a reference in [7.26785, 7.26795].
 std::vector<Mismatch> compare_stated(
-    const nlohmann::json& stated, const nlohmann::json& reference, const Tolerance& tolerance,
+    const nlohmann::json& stated, const nlohmann::json& reference,
+    const CompareTolerance& tolerance,
     const std::function<double(const std::string&)>& printed_half_unit);
 
 // The shape of an answer with its numbers blanked out: two answers with the same outcome

@@ -13,23 +13,20 @@
 
 namespace raygrade {
 
-// The tolerance a grader allows on t when the problem sets none: two decimals, the precision
-// the seeds' answers are given to (seed 001: t = 7.27).
-constexpr double kDefaultTTolerance = 0.01;
-
-// The problem's own tolerance as written ({"abs": x, "rel": y} or a number), or none.
-Tolerance stated_tolerance(const Problem& p);
-
-// The tolerance on t a grader applies to this problem: its absolute tolerance, else the default.
-double t_tolerance(const Problem& p);
+// The error a grader accepts in a t near `t`: the problem's tolerance for the field "t"
+// (docs/grading.md), without the widening the grader adds near a tangent, since the check
+// asks whether the plain tolerance can tell the cases apart. Throws Error for a faulty
+// tolerance.
+double t_tolerance(const Problem& p, double t);
 
 // A diagnostic at `relative_path` inside the problem (the problem itself when empty), with
 // its line and column when the file text has it.
 Diagnostic problem_diagnostic(const Problem& p, std::string_view relative_path, Severity severity,
                               std::string message, std::string code);
 
-// The stated `expected` answer against the reference: each difference, and a hit listed
-// behind the origin (t < t_min) or beyond t_max.
+// The stated `expected` answer graded against the reference with the problem's own
+// tolerance: each part the grader does not accept in full, each unknown key or wrong type,
+// and a hit listed behind the origin (t < t_min) or beyond t_max.
 std::vector<Diagnostic> check_expected(const Problem& p, const nlohmann::json& reference,
                                        const NumberLiterals& literals);
 
