@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <set>
+#include <sstream>
 
 #include "check/compare.h"
 #include "check/literals.h"
@@ -110,6 +112,16 @@ TEST(CheckBank, MissingPathIsUnreadable) {
   EXPECT_TRUE(report.unreadable);
 }
 
+// docs/check.md documents every code the check reports.
+TEST(CheckBank, DocsListEveryCode) {
+  std::ifstream f(kSource + "/docs/check.md");
+  std::stringstream text;
+  text << f.rdbuf();
+  for (const auto& c : check_codes()) {
+    EXPECT_NE(text.str().find(fmt::format("| `{}` |", c.code)), std::string::npos) << c.code;
+  }
+}
+
 int run_command(const std::string& args) {
   int status =
       std::system((std::string(RAYGRADE_BINARY) + " " + args + " > /dev/null 2>&1").c_str());
@@ -128,6 +140,10 @@ TEST(Literals, PrintedDecimalsAndHalfUnits) {
   EXPECT_EQ(printed_decimals("1e-3"), 3);
   EXPECT_EQ(printed_decimals("1.5e2"), -1);
   EXPECT_EQ(printed_decimals("-2.50"), 2);
+  EXPECT_EQ(significant_digits("0.8"), 1);
+  EXPECT_EQ(significant_digits("0.00125"), 3);
+  EXPECT_EQ(significant_digits("1.50"), 3);
+  EXPECT_EQ(significant_digits("-7.2679e2"), 5);
   EXPECT_DOUBLE_EQ(half_unit("0.8"), 0.05);
   EXPECT_DOUBLE_EQ(half_unit("7.2679"), 0.00005);
 }
@@ -200,24 +216,40 @@ TEST(ProbeBoundaries, ClearMissAndClearHitPass) {
   EXPECT_TRUE(probe_boundaries(sphere_at_height("0.5")).diagnostics.empty());
 }
 
-TEST(Conditioning, ShortExactDecimalsAreWellConditioned) {
-  // Seed 000's sphere case 4 has a centre at z = 0.8: moving it by 0.05 moves t by about as much.
-  Problem p = testing::problem(R"({"id": "s4", "ray": {"origin": [0, 0, 0], "direction": [1, 1, 1]},
-    "object": {"type": "sphere", "center": [1, 1, 0.8], "radius": 1}})");
-  auto literals = scan_number_literals(p.source_file->text);
-  EXPECT_TRUE(check_conditioning(p, p.task->answer(), literals, false).empty());
+TEST(Conditioning, ShortDecimalsAreExactAndWellPosedInputsPass) {
+  // Seed 000's sphere case 4 has its centre at z = 0.8: exact, not perturbed. Printed as 0.800
+  // it is perturbed by 0.0005, and t moves by about as much: well-conditioned.
+  for (const char* z : {"0.8", "0.800"}) {
+    Problem p = testing::problem(std::string(R"({"id": "s4", "ray": {"origin": [0, 0, 0],
+      "direction": [1, 1, 1]}, "object": {"type": "sphere", "center": [1, 1, )") +
+                                 z + R"(], "radius": 1}})");
+    auto literals = scan_number_literals(p.source_file->text);
+    EXPECT_TRUE(check_conditioning(p, p.task->answer(), literals, false).empty()) << z;
+  }
 }
 
 TEST(Conditioning, OutcomeFlipWithinPrintedDigitsIsFlagged) {
-  // A unit sphere 0.95 above the ray, printed to two decimals: still a hit at 0.95 ± 0.005,
-  // but a radius printed as 1.0 may be 0.95, where the ray only touches it.
+  // A unit sphere 0.996 above the ray: a hit. Its radius printed as 1.00 may be 0.995, where
+  // the ray misses it.
   Problem p = testing::problem(R"({"id": "c", "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
-    "object": {"type": "sphere", "center": [5, 0.95, 0], "radius": 1.0}})");
+    "object": {"type": "sphere", "center": [5, 0.996, 0], "radius": 1.00}})");
   auto literals = scan_number_literals(p.source_file->text);
   auto d = check_conditioning(p, p.task->answer(), literals, false);
   ASSERT_EQ(d.size(), 1u);
   EXPECT_EQ(d[0].code, "ill-conditioned");
   EXPECT_EQ(d[0].path, "/object/radius");
+}
+
+TEST(Conditioning, AmplifiedAnswerIsFlagged) {
+  // Nearly parallel to the plane z = 1: t = 1/0.00125 = 800. The direction's z printed to
+  // 5e-6 moves t by 3.2, 800 times its relative share of the direction.
+  Problem p = testing::problem(R"({"id": "c", "ray": {"origin": [0, 0, 0],
+    "direction": [1, 0, 0.00125]}, "object": {"type": "plane", "point": [0, 0, 1],
+    "normal": [0, 0, 1]}})");
+  auto literals = scan_number_literals(p.source_file->text);
+  auto d = check_conditioning(p, p.task->answer(), literals, false);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].path, "/ray/direction/2");
 }
 
 Problem with_tests(const std::string& tests) {

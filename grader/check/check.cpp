@@ -2,6 +2,7 @@
 // across problems (unique ids, repeated geometry, worked solutions present).
 #include "check/check.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -9,6 +10,7 @@
 #include "check/geometry_key.h"
 #include "check/problem_checks.h"
 #include "check/self_tests.h"
+#include "check/spans.h"
 #include "core/escape.h"
 #include "grading/tolerance.h"
 #include "kinds/intersect.h"
@@ -88,10 +90,38 @@ class BankChecker {
  private:
   Diagnostic at(const ProblemResult& r, const std::string& relative, Severity s, std::string msg,
                 std::string code) {
-    auto it = sources_.find(r.file);
-    auto [line, column] = it == sources_.end() ? std::pair{r.line, r.column}
-                                               : locate(it->second->text, r.path + relative);
-    return Diagnostic{r.file, r.path + relative, line, column, s, std::move(msg), std::move(code)};
+    Diagnostic d{r.file, r.path + relative, 0, 0, s, std::move(msg), std::move(code)};
+    locate_in(r, d);
+    return d;
+  }
+
+  const std::vector<TextPlace>& places_of(const std::string& file, const std::string& text) {
+    auto [it, fresh] = places_.try_emplace(file);
+    if (fresh) it->second = problem_places(text);
+    return it->second;
+  }
+
+  // Fills in the line and column of a finding inside problem `r`, scanning from the
+  // problem's own start.
+  void locate_in(const ProblemResult& r, Diagnostic& d) {
+    if (d.line > 0 || d.file != r.file) return;
+    auto src = sources_.find(r.file);
+    if (src == sources_.end()) return;
+    const std::string& text = src->second->text;
+    if (r.path.empty()) {
+      std::tie(d.line, d.column) = locate(text, d.path);
+      if (d.line == 0) std::tie(d.line, d.column) = locate(text, "");
+      return;
+    }
+    const std::string prefix = "/problems/";
+    if (r.path.compare(0, prefix.size(), prefix) != 0) return;
+    std::size_t index = std::stoul(r.path.substr(prefix.size()));
+    const auto& places = places_of(r.file, text);
+    if (index >= places.size()) return;
+    std::string relative =
+        d.path.compare(0, r.path.size(), r.path) == 0 ? d.path.substr(r.path.size()) : "";
+    std::tie(d.line, d.column) = locate_from(text, places[index], relative);
+    if (d.line == 0) std::tie(d.line, d.column) = locate_from(text, places[index], "");
   }
 
   ProblemResult check_item(const Cursor& item, const NumberLiterals& literals) {
@@ -134,13 +164,25 @@ class BankChecker {
     auto add = [&r](std::vector<Diagnostic> ds) {
       for (auto& d : ds) r.diagnostics.push_back(std::move(d));
     };
-    add(check_expected(p, reference, literals));
+    auto stated = check_expected(p, reference, literals);
     BoundaryProbe probe = probe_boundaries(p);
+    bool wrong = std::any_of(stated.begin(), stated.end(),
+                             [](const Diagnostic& d) { return d.code == "wrong-expected"; });
+    add(std::move(stated));
+    if (wrong && probe.exact_boundary) {
+      r.diagnostics.push_back(problem_diagnostic(
+          p, "/ray", Severity::kNote,
+          "the ray passes within a billionth of the object's boundary: a tangent or edge case "
+          "exact in decimal numbers may be a near miss (or two hits) in the binary numbers of "
+          "the reference; write such cases with integers or binary fractions (0.5, 0.25)",
+          "inexact-boundary"));
+    }
     add(std::move(probe.diagnostics));
     if (options_.conditioning) {
       add(check_conditioning(p, reference, literals, probe.exact_boundary));
     }
     add(run_self_tests(p, reference));
+    for (auto& d : r.diagnostics) locate_in(r, d);
     return r;
   }
 
@@ -148,6 +190,7 @@ class BankChecker {
   std::map<std::string, std::string> ids_;       // id -> where first used
   std::map<std::string, std::string> geometry_;  // geometry key -> id
   std::map<std::string, std::shared_ptr<const SourceFile>> sources_;
+  std::map<std::string, std::vector<TextPlace>> places_;  // file -> where its problems start
 };
 
 }  // namespace

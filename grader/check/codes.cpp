@@ -33,6 +33,9 @@ const std::vector<DiagnosticCode>& check_codes() {
       {"ill-conditioned",
        "moving an input by half a unit in its last printed digit changes the outcome, or moves "
        "the answer over 100 times as much as the input"},
+      {"inexact-boundary",
+       "a note beside wrong-expected: the ray passes within 1e-9 of a boundary, so a tangent "
+       "exact in decimals may not be exact in binary"},
       {"duplicate-geometry", "the same ray, object and method as another problem"},
       {"no-solution", "no worked solution for the problem in the solutions folder"},
       {"no-solutions-folder",

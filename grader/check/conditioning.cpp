@@ -16,6 +16,12 @@ namespace {
 // factor runs into the hundreds and thousands.
 constexpr double kMaxAmplification = 100;
 
+// Literals printed with fewer significant digits are exact values: exercises are written
+// with 0.8, 1.5 and 0.25 meaning exactly that, and a student computes with them as printed.
+// From three digits on (0.333, 1.414, 7.2679) a literal may be a rounded value, and half a
+// unit in its last digit is the uncertainty it carries.
+constexpr int kMinRoundedDigits = 3;
+
 // The problem object with the number at `relative` (a JSON pointer inside it) replaced.
 std::shared_ptr<const SourceFile> with_input(const Problem& p, const std::string& relative,
                                              double value) {
@@ -49,6 +55,7 @@ std::vector<Diagnostic> check_conditioning(const Problem& p, const nlohmann::jso
     for (auto it = literals.lower_bound(prefix); it != literals.end(); ++it) {
       if (it->first.compare(0, prefix.size(), prefix) != 0) break;
       if (it->first.size() > prefix.size() && it->first[prefix.size()] != '/') continue;
+      if (significant_digits(it->second) < kMinRoundedDigits) continue;
       std::string relative = it->first.substr(p.path.size());
       double x = p.source[nlohmann::json::json_pointer(relative)].get<double>();
       double h = half_unit(it->second);

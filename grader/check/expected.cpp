@@ -64,10 +64,9 @@ double t_tolerance(const Problem& p, double t) {
 
 Diagnostic problem_diagnostic(const Problem& p, std::string_view relative_path, Severity severity,
                               std::string message, std::string code) {
-  std::string path = p.path + std::string(relative_path);
-  auto [line, column] = p.source_file ? locate(p.source_file->text, path) : std::pair{0, 0};
-  if (line == 0 && p.source_file) std::tie(line, column) = locate(p.source_file->text, p.path);
-  return Diagnostic{p.file, path, line, column, severity, std::move(message), std::move(code)};
+  return Diagnostic{
+      p.file,         p.path + std::string(relative_path), 0, 0, severity, std::move(message),
+      std::move(code)};
 }
 
 std::vector<Diagnostic> check_expected(const Problem& p, const nlohmann::json& reference,

@@ -1,6 +1,7 @@
 // Collecting number literals with their JSON pointers, by a SAX pass over the text.
 #include "check/literals.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
@@ -95,6 +96,19 @@ int printed_decimals(std::string_view literal) {
     decimals -= std::atoi(std::string(literal.substr(e + 1)).c_str());
   }
   return decimals;
+}
+
+int significant_digits(std::string_view literal) {
+  std::string_view mantissa = literal.substr(0, literal.find_first_of("eE"));
+  int digits = 0;
+  bool leading = true;
+  for (char c : mantissa) {
+    if (c < '0' || c > '9') continue;
+    if (leading && c == '0') continue;
+    leading = false;
+    ++digits;
+  }
+  return std::max(digits, 1);
 }
 
 double half_unit(std::string_view literal) {

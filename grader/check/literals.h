@@ -19,6 +19,10 @@ NumberLiterals scan_number_literals(std::string_view text);
 // "1e-3", -1 for "1.5e2" (printed to the tens), 0 for an integer.
 int printed_decimals(std::string_view literal);
 
+// The significant digits a literal is printed with: 1 for "0.8", 3 for "0.00125" and "1.50",
+// 5 for "7.2679".
+int significant_digits(std::string_view literal);
+
 // Half a unit in the last printed digit: 0.05 for "0.8", 0.00005 for "7.2679".
 double half_unit(std::string_view literal);
 

@@ -19,8 +19,9 @@ namespace raygrade {
 // tolerance.
 double t_tolerance(const Problem& p, double t);
 
-// A diagnostic at `relative_path` inside the problem (the problem itself when empty), with
-// its line and column when the file text has it.
+// A diagnostic at `relative_path` inside the problem (the problem itself when empty). Its
+// line and column are left for the caller to find (check_bank does, from the problem's own
+// place in the file, so that findings in a large bank file cost no scan of the whole file).
 Diagnostic problem_diagnostic(const Problem& p, std::string_view relative_path, Severity severity,
                               std::string message, std::string code);
 
