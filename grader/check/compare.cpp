@@ -200,7 +200,8 @@ std::string describe_answer(const json& answer) {
   if (answer.contains("ray") && answer["ray"].is_object() && answer["ray"].contains("direction")) {
     return "direction " + show(answer["ray"]["direction"]);
   }
-  return answer.dump();
+  std::string text = answer.dump();
+  return text.size() <= 60 ? text : "(see raygrade solve)";
 }
 
 }  // namespace raygrade
