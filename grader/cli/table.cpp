@@ -8,6 +8,8 @@ Runner setup_run(CLI::App& sub);
 Runner setup_solutions(CLI::App& sub);
 Runner setup_bench(CLI::App& sub);
 Runner setup_grade(CLI::App& sub);
+Runner setup_check(CLI::App& sub);
+Runner setup_generate(CLI::App& sub);
 
 const std::vector<Command>& command_table() {
   static const std::vector<Command> table = {
@@ -18,6 +20,10 @@ const std::vector<Command>& command_table() {
       {"solutions", "write (or --check) the worked solutions of a bank, one file per problem",
        &setup_solutions},
       {"bench", "time and judge every intersection formula against MPFR truth", &setup_bench},
+      {"check", "validate a problem bank: stated answers, ill-posed problems, self-tests",
+       &setup_check},
+      {"generate", "seeded problem variants with nice numbers, and their solutions",
+       &setup_generate},
   };
   return table;
 }

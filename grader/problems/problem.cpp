@@ -126,9 +126,24 @@ void collect_files(const std::filesystem::path& path, std::vector<std::string>& 
 
 }  // namespace
 
+std::vector<std::string> list_bank_files(const std::vector<std::string>& paths,
+                                         std::vector<Diagnostic>& errors) {
+  std::vector<std::string> files;
+  for (const auto& p : paths) collect_files(p, files, errors);
+  return files;
+}
+
+std::vector<Cursor> problem_items(const Cursor& root) {
+  if (root.is_object() && root.has("problems")) {
+    root.allow_only({"problems", "$schema", "title", "description"});
+    return root.at("problems").items();
+  }
+  return {root};
+}
+
 Bank load_bank(const std::vector<std::string>& paths) {
   Bank bank;
-  for (const auto& p : paths) collect_files(p, bank.files, bank.errors);
+  bank.files = list_bank_files(paths, bank.errors);
   std::map<std::string, std::string> seen;  // id -> where
   for (const auto& name : bank.files) {
     std::shared_ptr<const SourceFile> file;
@@ -141,12 +156,7 @@ Bank load_bank(const std::vector<std::string>& paths) {
     Cursor root(file);
     std::vector<Cursor> items;
     try {
-      if (root.is_object() && root.has("problems")) {
-        root.allow_only({"problems", "$schema", "title", "description"});
-        items = root.at("problems").items();
-      } else {
-        items.push_back(root);
-      }
+      items = problem_items(root);
     } catch (const Error& e) {
       bank.errors.push_back(e.diagnostic());
       continue;

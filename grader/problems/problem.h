@@ -105,6 +105,15 @@ struct Bank {
 };
 Bank load_bank(const std::vector<std::string>& paths);
 
+// The files a set of files and folders names, as load_bank reads them; a missing path is
+// reported in `errors` (code "unreadable").
+std::vector<std::string> list_bank_files(const std::vector<std::string>& paths,
+                                         std::vector<Diagnostic>& errors);
+
+// The problem objects of a file: the items of its "problems" list, or the root itself.
+// Throws Error when the list is malformed or the wrapper has unknown keys.
+std::vector<Cursor> problem_items(const Cursor& root);
+
 nlohmann::json vec_json(const Vec3d& v);
 nlohmann::json hit_json(const Hit& h);
 nlohmann::json intersection_json(const Intersection& x);

@@ -1,0 +1,182 @@
+// Nearly tangent rays, rays nearly through an edge, and near ties: outcomes a tolerance
+// cannot tell apart.
+#include <cmath>
+#include <numbers>
+
+#include "check/problem_checks.h"
+#include "derivation/number_format.h"
+#include "kinds/intersect.h"
+
+namespace raygrade {
+namespace {
+
+// The sideways probe never moves the ray by more than this fraction of the object's size:
+// grazing happens at the object's scale, and a relative tolerance on a far hit (0.1% of
+// t = 1000) would otherwise move the ray by whole units, onto another problem.
+constexpr double kMaxProbeFraction = 0.01;
+
+// Sideways shifts probe the ray at this many evenly spaced angles around its direction.
+constexpr int kProbeAngles = 8;
+
+// The exact-boundary probe is this fraction of the tolerance probe. With the default
+// tolerance and a unit direction it moves the ray by 1e-9: far below any digit a person
+// prints or rounds to, far above the 1e-16 relative rounding of the solve itself. A boundary
+// this close is the designed tangent, edge or vertex case, exact in the printed numbers.
+constexpr double kExactBoundaryFraction = 1e-7;
+
+// What a grader must tell apart: how many hits, and which object is hit first.
+struct Outcome {
+  int object = -1;
+  std::size_t hits = 0;
+  bool contained = false;
+  bool operator==(const Outcome&) const = default;
+};
+
+std::string describe(const Outcome& o, const FirstHitTask* first) {
+  if (first) {
+    return o.object < 0 ? "no object hit" : "a hit on " + first->objects()[o.object].name;
+  }
+  if (o.contained) return "the ray contained in the plane";
+  if (o.hits == 0) return "no hit";
+  return o.hits == 1 ? "1 hit" : fmt::format("{} hits", o.hits);
+}
+
+Outcome outcome_of(const Problem& p, const Ray& ray) {
+  Outcome o;
+  if (auto* t = dynamic_cast<const IntersectTask*>(p.task.get())) {
+    Intersection x = t->object().intersect(ray);
+    o.hits = x.hits.size();
+    o.contained = x.contained;
+  } else if (auto* f = dynamic_cast<const FirstHitTask*>(p.task.get())) {
+    FirstHit h = first_hit(ray, f->objects());
+    o.object = h.index;
+    o.hits = h.index >= 0 ? 1 : 0;
+  }
+  return o;
+}
+
+// Two unit vectors perpendicular to d and to each other.
+std::pair<Vec3d, Vec3d> sideways(const Vec3d& d) {
+  Vec3d n = normalized(d);
+  Vec3d axis = std::abs(n.x) <= std::abs(n.y) && std::abs(n.x) <= std::abs(n.z) ? Vec3d{1, 0, 0}
+               : std::abs(n.y) <= std::abs(n.z)                                 ? Vec3d{0, 1, 0}
+                                                                                : Vec3d{0, 0, 1};
+  Vec3d u = normalized(cross(n, axis));
+  return {u, cross(n, u)};
+}
+
+// The first outcome, among rays shifted sideways by `distance`, that differs from `base`.
+std::optional<Outcome> shifted_outcome(const Problem& p, const Ray& ray, const Outcome& base,
+                                       double distance) {
+  auto [u, v] = sideways(ray.direction);
+  for (int k = 0; k < kProbeAngles; ++k) {
+    double angle = 2 * std::numbers::pi * k / kProbeAngles;
+    Ray shifted = ray;
+    shifted.origin = ray.origin + distance * (std::cos(angle) * u + std::sin(angle) * v);
+    Outcome o = outcome_of(p, shifted);
+    if (!(o == base)) return o;
+  }
+  return std::nullopt;
+}
+
+void check_close_hits(const Problem& p, const IntersectTask& t, double tol, BoundaryProbe& out) {
+  Intersection x = t.object().intersect(t.ray());
+  for (std::size_t i = 0; i + 1 < x.hits.size(); ++i) {
+    double gap = x.hits[i + 1].t - x.hits[i].t;
+    if (gap <= 2 * tol) {
+      out.diagnostics.push_back(problem_diagnostic(
+          p, "/ray", Severity::kError,
+          fmt::format("nearly tangent: the hits at t = {} and t = {} are {} apart, within twice "
+                      "the tolerance {}: a single touching hit between them would be graded "
+                      "right too",
+                      format_number(x.hits[i].t), format_number(x.hits[i + 1].t),
+                      format_number(gap), format_number(tol)),
+          "nearly-tangent"));
+      return;
+    }
+  }
+}
+
+void check_near_tie(const Problem& p, const FirstHitTask& f, double tol, BoundaryProbe& out) {
+  FirstHit h = first_hit(f.ray(), f.objects());
+  if (h.index < 0) return;
+  for (std::size_t i = 0; i < h.nearest.size(); ++i) {
+    if (static_cast<int>(i) == h.index || !h.nearest[i]) continue;
+    double gap = h.nearest[i]->t - h.hit.t;
+    if (gap == 0) {
+      out.diagnostics.push_back(problem_diagnostic(
+          p, "/objects", Severity::kWarning,
+          fmt::format("{} and {} are both first hit at t = {}: the answer names the first in the "
+                      "list, which students cannot know",
+                      f.objects()[h.index].name, f.objects()[i].name, format_number(h.hit.t)),
+          "tie"));
+    } else if (gap <= tol) {
+      out.diagnostics.push_back(problem_diagnostic(
+          p, "/objects", Severity::kError,
+          fmt::format("near tie: {} is hit at t = {} and {} at t = {}, closer than the tolerance "
+                      "{}: either could be graded as the first hit",
+                      f.objects()[h.index].name, format_number(h.hit.t), f.objects()[i].name,
+                      format_number(h.nearest[i]->t), format_number(tol)),
+          "near-tie"));
+    }
+  }
+}
+
+// The t at which the tolerance is taken: the first hit's, or for a miss the t where the ray
+// passes closest to the object's centre (the first object's, for a first-hit problem).
+double typical_t(const Problem& p, const Ray& ray) {
+  const Shape* shape = nullptr;
+  if (auto* t = dynamic_cast<const IntersectTask*>(p.task.get())) {
+    Intersection x = t->object().intersect(ray);
+    if (!x.hits.empty()) return x.hits.front().t;
+    shape = &t->object();
+  } else if (auto* f = dynamic_cast<const FirstHitTask*>(p.task.get())) {
+    FirstHit h = first_hit(ray, f->objects());
+    if (h.index >= 0) return h.hit.t;
+    shape = f->objects().front().shape.get();
+  }
+  if (!shape) return 1;
+  return std::max(0.0,
+                  dot(shape->center() - ray.origin, ray.direction) / length_squared(ray.direction));
+}
+
+}  // namespace
+
+BoundaryProbe probe_boundaries(const Problem& p) {
+  BoundaryProbe out;
+  auto* inter = dynamic_cast<const IntersectTask*>(p.task.get());
+  auto* first = dynamic_cast<const FirstHitTask*>(p.task.get());
+  if (!inter && !first) return out;
+  const Ray& ray = inter ? inter->ray() : first->ray();
+  double tol = t_tolerance(p, typical_t(p, ray));
+  // A t error of `tol` is a distance of tol·|d| along the ray: probe sideways by as much,
+  // up to a small fraction of the (smallest) object.
+  double size = kInfinity;
+  if (inter) size = inter->object().extent();
+  if (first) {
+    for (const auto& o : first->objects()) size = std::min(size, o.shape->extent());
+  }
+  double distance = std::min(tol * length(ray.direction), kMaxProbeFraction * size);
+  Outcome base = outcome_of(p, ray);
+  out.exact_boundary = shifted_outcome(p, ray, base, distance * kExactBoundaryFraction).has_value();
+  if (first) check_near_tie(p, *first, tol, out);
+  // A near tie is itself a boundary between two outcomes: reported once, as a near tie.
+  bool reported = !out.diagnostics.empty();
+  if (!out.exact_boundary && !reported) {
+    if (auto moved = shifted_outcome(p, ray, base, distance)) {
+      out.diagnostics.push_back(problem_diagnostic(
+          p, "/ray", Severity::kError,
+          fmt::format("nearly tangent: the ray passes within {} of the object's boundary; moved "
+                      "sideways by that much (the tolerance on t is {}) it gives {} instead of {}, "
+                      "so a student's rounding can turn the answer around",
+                      format_number(distance), format_number(tol), describe(*moved, first),
+                      describe(base, first)),
+          "nearly-tangent"));
+    } else if (inter) {
+      check_close_hits(p, *inter, tol, out);
+    }
+  }
+  return out;
+}
+
+}  // namespace raygrade

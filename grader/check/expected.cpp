@@ -1,0 +1,140 @@
+// The stated answer of a problem graded against the reference, and the helpers every
+// problem check shares.
+#include <cmath>
+#include <limits>
+
+#include "check/problem_checks.h"
+#include "derivation/number_format.h"
+#include "grading/grade.h"
+#include "grading/tolerance.h"
+#include "kinds/intersect.h"
+
+namespace raygrade {
+namespace {
+
+// A stated answer must earn full marks; scores are sums of fractions of points, so allow
+// their rounding.
+constexpr double kFullMarks = 1 - 1e-9;
+
+const Ray* ray_of(const Problem& p) {
+  if (auto* t = dynamic_cast<const IntersectTask*>(p.task.get())) return &t->ray();
+  if (auto* t = dynamic_cast<const FirstHitTask*>(p.task.get())) return &t->ray();
+  return nullptr;
+}
+
+// Where in the stated answer a graded part lives.
+std::string part_path(const nlohmann::json& stated, const std::string& part) {
+  if ((part == "t" || part == "point" || part == "normal") && stated.contains("hits")) {
+    return "/expected/hits";
+  }
+  if (stated.contains(part)) return "/expected/" + pointer_token(part);
+  return "/expected";
+}
+
+void check_range(const Problem& p, const nlohmann::json& stated, std::vector<Diagnostic>& out) {
+  const Ray* ray = ray_of(p);
+  if (!ray || !stated.contains("hits") || !stated["hits"].is_array()) return;
+  for (std::size_t i = 0; i < stated["hits"].size(); ++i) {
+    const auto& h = stated["hits"][i];
+    if (!h.is_object() || !h.contains("t") || !h["t"].is_number()) continue;
+    double t = h["t"].get<double>();
+    std::string where = fmt::format("/expected/hits/{}/t", i);
+    if (t < ray->t_min) {
+      out.push_back(problem_diagnostic(
+          p, where, Severity::kError,
+          fmt::format("a hit at t = {} is listed, but t < t_min = {}: the point lies behind the "
+                      "ray's origin and is not a hit",
+                      format_number(t), format_number(ray->t_min)),
+          "negative-t"));
+    } else if (t > ray->t_max) {
+      out.push_back(problem_diagnostic(p, where, Severity::kError,
+                                       fmt::format("a hit at t = {} is listed, but t > t_max = {}",
+                                                   format_number(t), format_number(ray->t_max)),
+                                       "beyond-t-max"));
+    }
+  }
+}
+
+}  // namespace
+
+double t_tolerance(const Problem& p, double t) {
+  TolerancePolicy policy = read_tolerance_policy(p);
+  return allowed_error(t, std::abs(t), policy.for_field("t"));
+}
+
+Diagnostic problem_diagnostic(const Problem& p, std::string_view relative_path, Severity severity,
+                              std::string message, std::string code) {
+  return Diagnostic{
+      p.file,         p.path + std::string(relative_path), 0, 0, severity, std::move(message),
+      std::move(code)};
+}
+
+std::vector<Diagnostic> check_expected(const Problem& p, const nlohmann::json& reference,
+                                       const NumberLiterals& /*literals*/) {
+  std::vector<Diagnostic> out;
+  if (!p.expected) return out;
+  const nlohmann::json& stated = *p.expected;
+  if (!stated.is_object()) {
+    out.push_back(problem_diagnostic(p, "/expected", Severity::kError,
+                                     "the expected answer must be an object, like the answer",
+                                     "type"));
+    return out;
+  }
+  // The shape first: keys the answer does not have, values of the wrong type.
+  CompareTolerance any{std::numeric_limits<double>::infinity(), 0};
+  auto no_digits = [](const std::string&) { return 0.0; };
+  for (const auto& m : compare_stated(stated, reference, any, no_digits)) {
+    if (m.code == "wrong-expected") continue;
+    out.push_back(problem_diagnostic(p, "/expected" + m.path, Severity::kError, m.message, m.code));
+  }
+  check_range(p, stated, out);
+  if (!out.empty()) return out;
+  // Then the values, graded as a student's answer with the problem's own tolerance.
+  GradeResult r;
+  try {
+    r = grade_answer(p, stated, GradeOptions{p.file, p.path + "/expected"});
+  } catch (const Error& e) {
+    out.push_back(e.diagnostic());
+    return out;
+  }
+  if (r.fraction() >= kFullMarks) return out;
+  // Kinds without a grader of their own are graded leaf by leaf as one part, "answer", in
+  // which every leaf the stated answer leaves out counts as missed. A stated answer gives
+  // only what the exercise asks, so compare those leaves alone, with the same tolerance.
+  if (r.parts.size() == 1 && r.parts[0].name == "answer") {
+    const Tolerance& t = read_tolerance_policy(p).base;
+    CompareTolerance tol{t.mode == ToleranceMode::kRelAbs ? t.atol : kDefaultAbsolute,
+                         t.mode == ToleranceMode::kRelAbs ? t.rtol : kDefaultRelative};
+    for (const auto& m : compare_stated(stated, reference, tol, no_digits)) {
+      out.push_back(problem_diagnostic(p, "/expected" + m.path, Severity::kError,
+                                       "the stated answer is wrong: " + m.message, m.code));
+    }
+    return out;
+  }
+  // A stated answer may leave parts out (the seeds give t and the point, not the normal):
+  // it is right when every part it gives is right.
+  bool all_right = !r.parts.empty();
+  for (const auto& part : r.parts) {
+    if (part.status == PartStatus::kMissing) continue;
+    if (part.status == PartStatus::kRight) continue;
+    all_right = false;
+    std::string feedback = fmt::format("{}", fmt::join(part.feedback, " "));
+    out.push_back(problem_diagnostic(
+        p, part_path(stated, part.name), Severity::kError,
+        fmt::format("the stated answer is wrong: {} scores {} of {} against the reference {}{}",
+                    part.name, format_number(part.points), format_number(part.max_points),
+                    describe_answer(reference), feedback.empty() ? "" : ": " + feedback),
+        "wrong-expected"));
+  }
+  if (all_right) return out;
+  if (out.empty()) {
+    out.push_back(problem_diagnostic(
+        p, "/expected", Severity::kError,
+        fmt::format("the stated answer scores {} of {} against the reference {}",
+                    format_number(r.score), format_number(r.max_score), describe_answer(reference)),
+        "wrong-expected"));
+  }
+  return out;
+}
+
+}  // namespace raygrade

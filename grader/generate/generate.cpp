@@ -1,0 +1,128 @@
+// The generator's driver: the table of generators, and each draft read back and checked
+// before it is kept.
+#include "generate/generate.h"
+
+#include <set>
+
+#include "check/geometry_key.h"
+#include "check/problem_checks.h"
+#include "core/error.h"
+#include "generate/solids.h"
+#include "json/cursor.h"
+
+namespace raygrade {
+namespace {
+
+// Drafts tried per problem before giving up. A draft is rejected only when it repeats an
+// earlier problem's geometry or fails a check; with the generators' ranges that is rare, so
+// this bound is never reached in practice.
+constexpr int kMaxAttempts = 200;
+
+const std::vector<Outcome> kAllOutcomes = {Outcome::kHit, Outcome::kMiss, Outcome::kTangent,
+                                           Outcome::kInside, Outcome::kBehind};
+
+// Every finding of the checks a bank check runs on one problem (those across problems,
+// unique ids and geometry, are the caller's).
+std::vector<Diagnostic> findings(const std::shared_ptr<const SourceFile>& file, Problem& p) {
+  nlohmann::json reference = p.task->answer();
+  NumberLiterals literals = scan_number_literals(file->text);
+  std::vector<Diagnostic> out = check_expected(p, reference, literals);
+  BoundaryProbe probe = probe_boundaries(p);
+  out.insert(out.end(), probe.diagnostics.begin(), probe.diagnostics.end());
+  auto c = check_conditioning(p, reference, literals, probe.exact_boundary);
+  out.insert(out.end(), c.begin(), c.end());
+  return out;
+}
+
+}  // namespace
+
+const char* outcome_name(Outcome o) {
+  switch (o) {
+    case Outcome::kHit: return "hit";
+    case Outcome::kMiss: return "miss";
+    case Outcome::kTangent: return "tangent";
+    case Outcome::kInside: return "inside";
+    case Outcome::kBehind: return "behind";
+  }
+  return "hit";
+}
+
+std::optional<Outcome> parse_outcome(std::string_view name) {
+  for (Outcome o : kAllOutcomes) {
+    if (name == outcome_name(o)) return o;
+  }
+  return std::nullopt;
+}
+
+const std::vector<GeneratorEntry>& generator_table() {
+  static const std::vector<GeneratorEntry> table = {
+      {"sphere", kAllOutcomes, &make_sphere},
+      {"plane", kFlatOutcomes, &make_plane},
+      {"triangle", kFlatOutcomes, &make_triangle},
+      {"polygon", kFlatOutcomes, &make_polygon},
+      {"cylinder", kAllOutcomes, &make_cylinder},
+      {"box", kBoxOutcomes, &make_box},
+      {"first-hit", {Outcome::kHit, Outcome::kMiss}, &make_first_hit},
+      {"camera-ray", {}, &make_camera_ray},
+  };
+  return table;
+}
+
+std::vector<GeneratedProblem> generate_problems(const GenerateOptions& options) {
+  auto usage = [](std::string message) {
+    throw Error(Diagnostic{"", "", 0, 0, Severity::kError, std::move(message), "usage"});
+  };
+  // The generators to cycle through: those named (all by default) that can build the outcome.
+  std::vector<const GeneratorEntry*> chosen;
+  std::vector<std::string> names;
+  for (const auto& g : generator_table()) names.emplace_back(g.name);
+  for (const auto& k : options.kinds) {
+    if (std::find(names.begin(), names.end(), k) == names.end()) {
+      std::string hint = closest_match(k, names);
+      usage(hint.empty() ? fmt::format("unknown kind '{}' (known: {})", k, fmt::join(names, ", "))
+                         : fmt::format("unknown kind '{}' (did you mean '{}'?)", k, hint));
+    }
+  }
+  for (const auto& g : generator_table()) {
+    bool named = options.kinds.empty() || std::find(options.kinds.begin(), options.kinds.end(),
+                                                    g.name) != options.kinds.end();
+    bool fits = !options.outcome || std::find(g.outcomes.begin(), g.outcomes.end(),
+                                              *options.outcome) != g.outcomes.end();
+    if (named && fits) chosen.push_back(&g);
+  }
+  if (chosen.empty()) {
+    usage(fmt::format("no chosen kind can build the outcome '{}'", outcome_name(*options.outcome)));
+  }
+  Prng rng(options.seed);
+  std::set<std::string> geometries;
+  std::vector<GeneratedProblem> out;
+  for (int i = 0; i < options.count; ++i) {
+    const GeneratorEntry& g = *chosen[static_cast<std::size_t>(i) % chosen.size()];
+    std::string id = fmt::format("{}{}-{:04}-{}", options.id_prefix, options.seed, i + 1, g.name);
+    bool kept = false;
+    for (int attempt = 0; attempt < kMaxAttempts && !kept; ++attempt) {
+      Draft draft = g.make(rng, options.outcome);
+      nlohmann::ordered_json problem;
+      problem["id"] = id;
+      problem["title"] =
+          fmt::format("Generated {} problem {} (seed {})", g.name, i + 1, options.seed);
+      for (auto& [key, value] : draft.fields.items()) problem[key] = value;
+      auto file = parse_json_text(id + ".json", problem.dump(2));
+      std::string key;
+      try {
+        Problem p = read_problem(Cursor(file));
+        key = geometry_key(p);
+        if (geometries.count(key) || !findings(file, p).empty()) continue;
+      } catch (const Error&) {
+        continue;  // a draft the format rejects is discarded like any other failed draft
+      }
+      geometries.insert(key);
+      out.push_back(GeneratedProblem{id, std::move(problem)});
+      kept = true;
+    }
+    if (!kept) usage(fmt::format("could not build a valid {} problem for {}", g.name, id));
+  }
+  return out;
+}
+
+}  // namespace raygrade

@@ -1,0 +1,55 @@
+// Seeded, reproducible problem variants with "nice" numbers: hits at integer points and
+// integer t, built backwards from lattice points on spheres and circles.
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "generate/prng.h"
+
+namespace raygrade {
+
+// What the ray does: hits the object from outside, misses it, touches it (a tangent; for
+// flat objects a ray through an edge, or lying in the plane), starts inside it, or has the
+// object behind its origin.
+enum class Outcome { kHit, kMiss, kTangent, kInside, kBehind };
+
+const char* outcome_name(Outcome o);
+std::optional<Outcome> parse_outcome(std::string_view name);
+
+// A problem as a generator builds it: everything but the id and title.
+struct Draft {
+  nlohmann::ordered_json fields;  // kind, statement, ray, object(s) or camera, expected
+};
+
+// One row of the table of generators: a primitive ("sphere") or a kind ("first-hit").
+struct GeneratorEntry {
+  std::string_view name;
+  std::vector<Outcome> outcomes;  // the outcomes it can build; empty: outcome does not apply
+  Draft (*make)(Prng& rng, std::optional<Outcome> outcome);
+};
+const std::vector<GeneratorEntry>& generator_table();
+
+struct GenerateOptions {
+  std::uint64_t seed = 1;
+  int count = 10;
+  std::vector<std::string> kinds;  // names from the generator table; empty for all
+  std::optional<Outcome> outcome;  // empty for a mix
+  std::string id_prefix = "gen";
+};
+
+struct GeneratedProblem {
+  std::string id;
+  nlohmann::ordered_json json;  // the problem object, ready to write
+};
+
+// Generates `count` problems, each read back and checked (stated answer, boundaries,
+// conditioning, unique geometry) before it is kept. Throws Error for an unknown kind or an
+// outcome that none of the chosen kinds can build.
+std::vector<GeneratedProblem> generate_problems(const GenerateOptions& options);
+
+}  // namespace raygrade
