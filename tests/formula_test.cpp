@@ -21,7 +21,7 @@ TEST(Formula, NumbersAsStudentsTypeThem) {
   EXPECT_DOUBLE_EQ(value_of("9 - sqrt(3)"), 9 - std::sqrt(3.0));
   EXPECT_DOUBLE_EQ(value_of("2*sqrt(2)"), 2 * std::sqrt(2.0));
   EXPECT_DOUBLE_EQ(value_of("2sqrt(2)"), 2 * std::sqrt(2.0));
-  EXPECT_DOUBLE_EQ(value_of("-2^2"), -4);  // the power binds tighter than the sign
+  EXPECT_DOUBLE_EQ(value_of("-2^2"), -4);    // the power binds tighter than the sign
   EXPECT_DOUBLE_EQ(value_of("2^3^2"), 512);  // right-associative
   EXPECT_DOUBLE_EQ(value_of("2**-1"), 0.5);
   EXPECT_DOUBLE_EQ(value_of("1.5e-3"), 0.0015);

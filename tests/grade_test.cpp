@@ -44,8 +44,8 @@ TEST(Grade, SeedSphereCase1WithStepsIsRight) {
 }
 
 TEST(Grade, RootsMatchInEitherOrder) {
-  for (const char* answer : {R"({"hits": [{"t": "3"}, {"t": 1}]})",
-                             R"({"hits": [{"t": 1}, {"t": 3}]})"}) {
+  for (const char* answer :
+       {R"({"hits": [{"t": "3"}, {"t": 1}]})", R"({"hits": [{"t": 1}, {"t": 3}]})"}) {
     auto r = grade(kSphere1, answer);
     ASSERT_NE(part(r, "t"), nullptr);
     EXPECT_DOUBLE_EQ(part(r, "t")->points, 2) << answer;
@@ -102,8 +102,9 @@ TEST(Grade, PointsFromTheProblem) {
   Problem p = testing::problem(R"({"id": "s", "points": {"t": 4, "point": 0, "normal": 2},
     "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
     "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}})");
-  auto r = grade_answer(p, json::parse(
-      R"({"hits": [{"t": 1, "normal": [-1, 0, 0]}, {"t": 3, "normal": [2, 0, 0]}]})"));
+  auto r = grade_answer(
+      p,
+      json::parse(R"({"hits": [{"t": 1, "normal": [-1, 0, 0]}, {"t": 3, "normal": [2, 0, 0]}]})"));
   EXPECT_DOUBLE_EQ(r.max_score, 6);
   EXPECT_DOUBLE_EQ(r.score, 6);  // a normal of length 2 is right as a direction
   Problem total = testing::problem(R"({"id": "s", "points": 9,
@@ -132,7 +133,8 @@ TEST(Grade, ErrorCarriedForward) {
   EXPECT_DOUBLE_EQ(part(r, "t")->points, 1);        // half of 2
   EXPECT_DOUBLE_EQ(part(r, "point")->points, 0.5);  // half of 1
   bool said = false;
-  for (const auto& f : part(r, "t")->feedback) said |= f.find("carried forward") != std::string::npos;
+  for (const auto& f : part(r, "t")->feedback)
+    said |= f.find("carried forward") != std::string::npos;
   EXPECT_TRUE(said);
   // Steps: t_ca right, d2 wrong, t_hc carried forward.
   EXPECT_NEAR(part(r, "steps")->max_points, 0, 0);
@@ -191,8 +193,9 @@ TEST(Grade, FormulaAnswers) {
   const char* p = R"({"id": "d", "kind": "derive", "find": ["a", "b", "c"],
     "ray": {"origin": [-3, 0, 0.5], "direction": [1, 0, 0]},
     "object": {"type": "cylinder", "base": [0, 0, 0], "axis": [0, 0, 1], "radius": 1}})";
-  for (const char* b : {"2*(px*vx + py*vy)", "2px vx + 2 py vy", "2\u00b7(p_x\u00b7v_x + p_y\u00b7v_y)",
-                        "(px + vx)^2 - px^2 - vx^2 + 2*py*vy"}) {
+  for (const char* b :
+       {"2*(px*vx + py*vy)", "2px vx + 2 py vy", "2\u00b7(p_x\u00b7v_x + p_y\u00b7v_y)",
+        "(px + vx)^2 - px^2 - vx^2 + 2*py*vy"}) {
     auto r = grade(p, fmt::format(R"({{"b": "{}"}})", b).c_str());
     EXPECT_EQ(part(r, "b")->status, PartStatus::kRight) << b;
   }
@@ -206,10 +209,11 @@ TEST(Grade, FormulaAnswers) {
   auto unknown = grade(p, R"({"c": "px^2 + pz^2 - r^2"})");
   EXPECT_NE(part(unknown, "c")->feedback.front().find("'pz'"), std::string::npos);
   // The offset case uses cx, cy for the axis (the seed's a, b).
-  auto off = grade(R"({"id": "o", "kind": "derive", "find": ["b", "c"],
+  auto off =
+      grade(R"({"id": "o", "kind": "derive", "find": ["b", "c"],
     "ray": {"origin": [0, 0, 0], "direction": [1, 1, 0.2]},
     "object": {"type": "cylinder", "base": [2, 3, 0], "axis": [0, 0, 1], "radius": 2}})",
-                   R"j({"b": "2*((px - cx)*vx + (py - cy)*vy)", "c": "(px-cx)^2 + (py-cy)^2 - r^2"})j");
+            R"j({"b": "2*((px - cx)*vx + (py - cy)*vy)", "c": "(px-cx)^2 + (py-cy)^2 - r^2"})j");
   EXPECT_DOUBLE_EQ(off.score, 2);
 }
 

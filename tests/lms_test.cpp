@@ -28,7 +28,8 @@ SubmissionGrade rejected() {
   g.file = "bad.json";
   g.student = "bad";
   g.gradable = false;
-  g.fault = Diagnostic{"bad.json", "/answers", 3, 5, Severity::kError, "expected an object", "type"};
+  g.fault =
+      Diagnostic{"bad.json", "/answers", 3, 5, Severity::kError, "expected an object", "type"};
   return g;
 }
 
@@ -57,8 +58,8 @@ TEST(Lms, GradescopeFieldList) {
                   vis == "visible");
       for (const auto& [key, v] : t.items()) {
         static const std::vector<std::string> known = {
-            "score", "max_score", "status", "name", "name_format", "number", "output",
-            "output_format", "tags", "visibility", "extra_data"};
+            "score",  "max_score",     "status", "name",       "name_format", "number",
+            "output", "output_format", "tags",   "visibility", "extra_data"};
         EXPECT_NE(std::find(known.begin(), known.end(), key), known.end()) << key;
       }
     }
@@ -74,7 +75,8 @@ TEST(Lms, GradescopeFieldList) {
 // (string), points and max_points (numbers), message and output (strings).
 TEST(Lms, PrairieLearnFieldList) {
   for (const SubmissionGrade& g : {sample("ada", R"({"hits": [{"t": 1, "point": [1,0,0]},
-      {"t": 3, "point": [3,0,0]}]})"), sample("bob", R"({"hits": []})"), rejected()}) {
+      {"t": 3, "point": [3,0,0]}]})"),
+                                   sample("bob", R"({"hits": []})"), rejected()}) {
     json j = prairielearn_json(g);
     EXPECT_TRUE(j.at("gradable").is_boolean());
     ASSERT_TRUE(j.at("score").is_number());
@@ -100,9 +102,8 @@ TEST(Lms, PrairieLearnFieldList) {
 }
 
 TEST(Lms, GradebookRowsAndEscaping) {
-  std::string csv = gradebook_csv({sample("=cmd|' /C calc'!A0", R"({"hits": [{"t": 1}]})"),
-                                   rejected()},
-                                  {"s1", "other"});
+  std::string csv = gradebook_csv(
+      {sample("=cmd|' /C calc'!A0", R"({"hits": [{"t": 1}]})"), rejected()}, {"s1", "other"});
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "student,file,s1,other,total,max,status");
   EXPECT_NE(csv.find("'=cmd|"), std::string::npos);  // a formula neutralised
   EXPECT_EQ(csv.find("\n=cmd"), std::string::npos);

@@ -94,13 +94,15 @@ std::string write_temp(const std::string& name, const std::string& text) {
 
 TEST(Submission, MalformedIsReportedWithPath) {
   const Assignment& a = samples().assignment;
-  SubmissionGrade bad = a.grade_file(write_temp("bad.json", "{\"answers\": {\n"
-                                                            "  \"seed000-sphere-1\": {\"hits\": 3}}}"));
+  SubmissionGrade bad = a.grade_file(write_temp("bad.json",
+                                                "{\"answers\": {\n"
+                                                "  \"seed000-sphere-1\": {\"hits\": 3}}}"));
   EXPECT_FALSE(bad.gradable);
   ASSERT_TRUE(bad.fault);
   EXPECT_EQ(bad.fault->path, "/answers/seed000-sphere-1/hits");
   EXPECT_EQ(bad.fault->line, 2);
-  SubmissionGrade typo = a.grade_file(write_temp("typo.json", R"({"answers": {"seed000-sphere-9x": {}}})"));
+  SubmissionGrade typo =
+      a.grade_file(write_temp("typo.json", R"({"answers": {"seed000-sphere-9x": {}}})"));
   EXPECT_FALSE(typo.gradable);
   EXPECT_EQ(typo.fault->code, "unknown-problem");
   SubmissionGrade broken = a.grade_file(write_temp("broken.json", "{\"answers\": "));
@@ -118,10 +120,12 @@ TEST(Submission, GradeCommandGoesOnAfterABadFile) {
   auto dir = std::filesystem::temp_directory_path() / "raygrade_grade_cli_test";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir / "in");
-  std::ofstream(dir / "in" / "a.json") << R"({"student": "A", "answers": {"seed000-sphere-2": {"hits": []}}})";
+  std::ofstream(dir / "in" / "a.json")
+      << R"({"student": "A", "answers": {"seed000-sphere-2": {"hits": []}}})";
   std::ofstream(dir / "in" / "b.json") << R"({"student": "B", "answers": [1, 2]})";
-  std::string cmd = fmt::format("{} grade --problems {}/problems {} --format csv --out {} 2>/dev/null",
-                                RAYGRADE_BINARY, kSource, (dir / "in").string(), (dir / "out").string());
+  std::string cmd =
+      fmt::format("{} grade --problems {}/problems {} --format csv --out {} 2>/dev/null",
+                  RAYGRADE_BINARY, kSource, (dir / "in").string(), (dir / "out").string());
   int status = std::system(cmd.c_str());
   EXPECT_EQ(WEXITSTATUS(status), 2);
   std::ifstream csv(dir / "out" / "gradebook.csv");
@@ -130,9 +134,9 @@ TEST(Submission, GradeCommandGoesOnAfterABadFile) {
   EXPECT_NE(text.find("\nB,"), std::string::npos);
   EXPECT_NE(text.find("rejected"), std::string::npos);
   // One submission in PrairieLearn's form goes to standard output.
-  std::string one = fmt::format("{} grade --problems {}/problems {} --format prairielearn > {}",
-                                RAYGRADE_BINARY, kSource, (dir / "in" / "a.json").string(),
-                                (dir / "pl.json").string());
+  std::string one =
+      fmt::format("{} grade --problems {}/problems {} --format prairielearn > {}", RAYGRADE_BINARY,
+                  kSource, (dir / "in" / "a.json").string(), (dir / "pl.json").string());
   EXPECT_EQ(WEXITSTATUS(std::system(one.c_str())), 0);
   std::ifstream pl(dir / "pl.json");
   nlohmann::json j = nlohmann::json::parse(pl);

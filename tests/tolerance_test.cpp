@@ -40,9 +40,9 @@ TEST(Tolerance, DecimalsBoundary) {
   t.digits = 2;
   double ref = 9 - std::sqrt(3.0) - 0;  // 7.26795 (seed 001, sphere 3)
   EXPECT_EQ(match("7.27", ref, t), Match::kRight);
-  EXPECT_EQ(match("7.2730", ref, t), Match::kRight);   // 0.00505 off
-  EXPECT_EQ(match("7.2732", ref, t), Match::kWrong);   // 0.00525 off
-  EXPECT_EQ(match("7.26", ref, t), Match::kWrong);     // truncated, not rounded
+  EXPECT_EQ(match("7.2730", ref, t), Match::kRight);  // 0.00505 off
+  EXPECT_EQ(match("7.2732", ref, t), Match::kWrong);  // 0.00525 off
+  EXPECT_EQ(match("7.26", ref, t), Match::kWrong);    // truncated, not rounded
 }
 
 // Three significant figures of 123.456: within 0.51.

@@ -188,7 +188,8 @@ std::string render_accuracy_markdown(const AccuracyReport& r, const std::string&
       "formulations, and checks the decision with the adaptive ladder, recording in each "
       "solution the level it needed.\n\n",
       wrong_total(r, "naive double", true), wrong_total(r, "naive float", true),
-      wrong_total(r, "reference double", true), mean_ratio(r, "reference double", "naive double", false),
+      wrong_total(r, "reference double", true),
+      mean_ratio(r, "reference double", "naive double", false),
       mean_ratio(r, "reference long double", "reference double", false),
       mean_ratio(r, "reference double-double", "reference double", false),
       mean_ratio(r, "reference MPFR", "reference double", false),

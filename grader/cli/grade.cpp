@@ -51,8 +51,13 @@ std::string extension(const std::string& format) {
 std::string render(const SubmissionGrade& g, const std::string& format, double seconds) {
   if (format == "text") return text_report(g);
   if (format == "html") return feedback_html(g);
-  if (format == "gradescope") return gradescope_json(g, seconds).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
-  if (format == "prairielearn") return prairielearn_json(g).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  if (format == "gradescope")
+    return gradescope_json(g, seconds)
+               .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
+           "\n";
+  if (format == "prairielearn")
+    return prairielearn_json(g).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
+           "\n";
   return submission_json(g).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
@@ -121,7 +126,10 @@ int run_grade(const GradeCliOptions& o) {
       write_file_atomically(std::filesystem::path(o.out) / "gradebook.csv", csv);
     }
   }
-  if (o.format == "json" && o.out.empty()) stream = nlohmann::json{{"submissions", all}}.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  if (o.format == "json" && o.out.empty())
+    stream = nlohmann::json{{"submissions", all}}.dump(2, ' ', false,
+                                                       nlohmann::json::error_handler_t::replace) +
+             "\n";
   std::cout << stream;
   if (!o.out.empty()) {
     fmt::print(stderr, "Graded {} submissions into {}{}.\n", grades.size() - rejected, o.out,

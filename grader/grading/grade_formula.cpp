@@ -103,9 +103,9 @@ class FormulaGrader final : public KindGrader {
       std::string text = s.json().is_number() ? s.json().dump() : s.string();
       FormulaParse parsed = parse_formula(text, &symbols_);
       if (!parsed.ok) {
-        out.parts.push_back(make_part(
-            context_, q.name, 0,
-            {fmt::format("Could not read {} = {}: {}.", q.name, text, parsed.message)}));
+        out.parts.push_back(
+            make_part(context_, q.name, 0,
+                      {fmt::format("Could not read {} = {}: {}.", q.name, text, parsed.message)}));
         continue;
       }
       std::vector<double> mine;
@@ -117,19 +117,19 @@ class FormulaGrader final : public KindGrader {
       bool named = false;
       for (const auto& [id, values] : q.mistakes) {
         if (!agree(mine, values)) continue;
-        out.mistakes.push_back(make_mistake(
-            id, q.name, fmt::format("{} = {} is what it gives.", q.name, text)));
-        out.parts.push_back(make_part(context_, q.name, mistake_info(id).credit,
-                                      {fmt::format("{} = {}.", q.name,
-                                                   task_.quantities()[i].display)}));
+        out.mistakes.push_back(
+            make_mistake(id, q.name, fmt::format("{} = {} is what it gives.", q.name, text)));
+        out.parts.push_back(
+            make_part(context_, q.name, mistake_info(id).credit,
+                      {fmt::format("{} = {}.", q.name, task_.quantities()[i].display)}));
         named = true;
         break;
       }
       if (!named) {
-        out.parts.push_back(make_part(
-            context_, q.name, 0,
-            {fmt::format("{} = {} is not equivalent to the right formula, {} = {}.", q.name, text,
-                         q.name, task_.quantities()[i].display)}));
+        out.parts.push_back(
+            make_part(context_, q.name, 0,
+                      {fmt::format("{} = {} is not equivalent to the right formula, {} = {}.",
+                                   q.name, text, q.name, task_.quantities()[i].display)}));
       }
     }
   }

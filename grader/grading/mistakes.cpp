@@ -181,8 +181,7 @@ const std::vector<FormulaMistake>& formula_mistakes() {
   static const std::vector<FormulaMistake> m = {
       {"discriminant-sign", &discriminant_sign}, {"b-sign", &b_sign},
       {"plane-d-sign", &plane_d_sign},           {"cylinder-b-no-origin", &cylinder_b_no_origin},
-      {"r-not-squared", &r_not_squared},
-      {"cross-order", &cross_order},
+      {"r-not-squared", &r_not_squared},         {"cross-order", &cross_order},
   };
   return m;
 }

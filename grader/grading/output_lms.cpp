@@ -52,7 +52,9 @@ nlohmann::json prairielearn_json(const SubmissionGrade& g) {
                      {"description", r.problem_id},
                      {"points", r.score},
                      {"max_points", r.max_score},
-                     {"message", r.score >= r.max_score ? "Right." : lines.empty() ? "" : lines.front()},
+                     {"message", r.score >= r.max_score ? "Right."
+                                 : lines.empty()        ? ""
+                                                        : lines.front()},
                      {"output", joined(lines)}});
   }
   return {{"gradable", g.gradable},

@@ -49,8 +49,7 @@ std::unique_ptr<Task> DeriveTask::read(const Cursor& problem) {
                 "unknown-step");
     }
     if (!s->value.is_scalar()) {
-      item.fail(fmt::format("'{}' is not a number; formula answers are scalar", name),
-                "invalid");
+      item.fail(fmt::format("'{}' is not a number; formula answers are scalar", name), "invalid");
     }
     std::vector<std::string> syms;
     collect_symbols(s->formula, syms);

@@ -81,8 +81,8 @@ TriangleHit<T> watertight_triangle(const Vec3<T>& o, const Vec3<T>& d, const Vec
     // Fast path: the sheared t is as accurate as its edge functions, which lose nothing when
     // det = u + v + w is not small next to their products (see kNoCancellation).
     using std::abs;
-    T size = abs(cx * by) + abs(cy * bx) + abs(ax * cy) + abs(ay * cx) + abs(bx * ay) +
-             abs(by * ax);
+    T size =
+        abs(cx * by) + abs(cy * bx) + abs(ax * cy) + abs(ay * cx) + abs(bx * ay) + abs(by * ax);
     if (abs(det) >= T(kNoCancellation) * size) {
       T az = sz * A[kz], bz = sz * B[kz], cz = sz * C[kz];
       out.t = (u * az + v * bz + w * cz) / det;
