@@ -11,6 +11,7 @@ TEST(Escape, HtmlTurnsMarkupIntoText) {
   EXPECT_EQ(html_escape("<script>alert(1)</script>"), "&lt;script&gt;alert(1)&lt;/script&gt;");
   EXPECT_EQ(html_escape(R"(" onload='x' & y)"), "&quot; onload=&#39;x&#39; &amp; y");
   EXPECT_EQ(html_escape("Zoë √3"), "Zoë √3");
+  EXPECT_EQ(html_escape("Eve\x1b[2J\x07 \x7f\tx\n"), "Eve[2J \tx\n");
 }
 
 TEST(Escape, XmlDropsControlsAndRepairsUtf8) {

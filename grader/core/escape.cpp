@@ -48,7 +48,13 @@ std::string html_escape(std::string_view s) {
       case '>': out += "&gt;"; break;
       case '"': out += "&quot;"; break;
       case '\'': out += "&#39;"; break;
-      default: out += c;
+      default: {
+        // C0 controls other than tab and line breaks, and DEL, are not allowed in HTML
+        // text (a terminal escape sequence typed into a name): dropped, as in XML.
+        auto u = static_cast<unsigned char>(c);
+        if ((u < 0x20 && c != '\t' && c != '\n' && c != '\r') || u == 0x7F) break;
+        out += c;
+      }
     }
   }
   return out;

@@ -7,7 +7,8 @@
 
 namespace raygrade {
 
-// &, <, >, " and ' as entities: safe in HTML and XML text and attribute values.
+// &, <, >, " and ' as entities, control characters other than tab and line breaks dropped:
+// safe in HTML and XML text and attribute values.
 std::string html_escape(std::string_view s);
 // The same for XML (JUnit); control characters other than tab and newline are dropped, and
 // ill-formed UTF-8 becomes U+FFFD, so the document always parses.

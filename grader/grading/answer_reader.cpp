@@ -3,8 +3,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "core/escape.h"
+#include "grading/formula.h"
 #include "json/cursor.h"
 
 namespace raygrade {
@@ -56,12 +59,12 @@ AnswerReader::Number parse_student_number(std::string_view text) {
   AnswerReader::Number out;
   FormulaParse p = parse_formula(text);
   if (!p.ok) {
-    out.fault = fmt::format("could not read '{}': {}", text, p.message);
+    out.fault = fmt::format("could not read '{}': {}", printable(text, 60), p.message);
     return out;
   }
   double v = p.formula.evaluate();
   if (!std::isfinite(v)) {
-    out.fault = fmt::format("'{}' has no finite value", text);
+    out.fault = fmt::format("'{}' has no finite value", printable(text, 60));
     return out;
   }
   out.value = StudentNumber{v, p.digits, std::string(text)};
@@ -71,11 +74,32 @@ AnswerReader::Number parse_student_number(std::string_view text) {
 AnswerReader::Number AnswerReader::number() const {
   if (value_->is_number()) {
     double v = value_->get<double>();
+    // 1e400, or an integer of 400 digits: JSON allows it, a double does not hold it.
+    if (!std::isfinite(v))
+      fail("number out of range: beyond what a double holds (about ±1.8e308)", "range");
     // The shortest text that reads back as v is what the student typed, up to trailing zeros.
     std::string text = value_->is_number_float() ? fmt::format("{}", v) : value_->dump();
     return Number{StudentNumber{v, typed_digits(text), text}, ""};
   }
-  if (value_->is_string()) return parse_student_number(value_->get_ref<const std::string&>());
+  if (value_->is_string()) {
+    const std::string& text = value_->get_ref<const std::string&>();
+    // A typed number longer or deeper than any real one is hostile input, not a slip to
+    // give feedback on: the submission is rejected, as for a string over the file's limit.
+    if (text.size() > kMaxFormulaLength)
+      fail(fmt::format("a typed number is at most {} characters; this one has {}",
+                       kMaxFormulaLength, text.size()),
+           "limit");
+    int depth = 0, deepest = 0;
+    for (char ch : text) {
+      depth += ch == '(' ? 1 : ch == ')' ? -1 : 0;
+      deepest = std::max(deepest, depth);
+    }
+    if (deepest > kMaxFormulaDepth)
+      fail(fmt::format("a typed number nests at most {} parentheses deep; this one {}",
+                       kMaxFormulaDepth, deepest),
+           "limit");
+    return parse_student_number(text);
+  }
   fail("expected a number (or a number typed as a string, like \"1/3\")", "type");
 }
 

@@ -32,7 +32,7 @@ Assignment::Assignment(const std::vector<Problem>& problems, AssignmentOptions o
 
 SubmissionGrade Assignment::grade_file(const std::string& path) const {
   try {
-    return grade(load_json_file(path));
+    return grade(load_json_file(path, JsonLimits::submission()));
   } catch (const Error& e) {
     SubmissionGrade g;
     g.file = path;

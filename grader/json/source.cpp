@@ -120,9 +120,11 @@ std::shared_ptr<const SourceFile> parse_json_text(std::string name, std::string 
   } catch (const nlohmann::json::parse_error& e) {
     std::size_t offset = e.byte > 0 ? std::min<std::size_t>(e.byte - 1, text.size()) : 0;
     auto [line, column] = line_column_of(text, offset);
-    std::string code = e.id == 101 && std::string_view(e.what()).find("UTF-8") != std::string::npos
-                           ? "bad-encoding"
-                           : "bad-json";
+    std::string_view what = e.what();
+    // Ill-formed UTF-8, and a \u escape naming half a surrogate pair (no character at all).
+    bool encoding = e.id == 101 && (what.find("UTF-8") != std::string_view::npos ||
+                                    what.find("surrogate") != std::string_view::npos);
+    std::string code = encoding ? "bad-encoding" : "bad-json";
     fail(name, parse_error_message(text, offset, e.what()), line, column, code);
   } catch (const nlohmann::json::out_of_range&) {
     // Beyond even a long double (1e5000): the error has no position, so find the number.

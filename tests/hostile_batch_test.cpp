@@ -1,0 +1,181 @@
+// A batch of hostile submissions graded in one run of `raygrade grade` together with good
+// ones (tests/fixtures/hostile): every hostile file is rejected with a clean error that names
+// it and says what is wrong, every good one is graded right, the exit code says some inputs
+// were rejected, and text a student controls comes out escaped in every format.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+
+#include "run_binary.h"
+
+namespace raygrade {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using testing::read_text;
+using testing::run_raygrade;
+using testing::TempDir;
+using testing::write_text;
+
+const fs::path kFixtures = fs::path(RAYGRADE_SOURCE_DIR) / "tests/fixtures/hostile";
+
+// The fault each hostile file must be rejected with (docs/hardening.md lists the codes).
+const std::map<std::string, std::string> kExpectedFault = {
+    {"bad-answers-is-array.json", "type"},
+    {"bad-binary.json", "bad-json"},  // a NUL byte: "is this a text file?"
+    {"bad-comment.json", "bad-json"},
+    {"bad-deep-nesting.json", "limit"},
+    {"bad-duplicate-answer.json", "duplicate-key"},
+    {"bad-duplicate-key-in-hit.json", "duplicate-key"},
+    {"bad-empty.json", "bad-json"},
+    {"bad-formula-too-deep.json", "limit"},
+    {"bad-formula-too-long.json", "limit"},
+    {"bad-hits-is-string.json", "type"},
+    {"bad-huge-string.json", "limit"},
+    {"bad-infinity-token.json", "bad-json"},
+    {"bad-invalid-utf8.json", "bad-encoding"},
+    {"bad-lone-surrogate.json", "bad-encoding"},
+    {"bad-missing-answers.json", "missing-key"},
+    {"bad-nan-token.json", "bad-json"},
+    {"bad-nul-byte.json", "bad-json"},
+    {"bad-number-1e400.json", "range"},
+    {"bad-number-1e99999.json", "range"},
+    {"bad-number-huge-integer.json", "range"},
+    {"bad-path-traversal-problem.json", "unknown-problem"},
+    {"bad-raw-control-character.json", "bad-json"},
+    {"bad-root-array.json", "type"},
+    {"bad-root-null.json", "type"},
+    {"bad-root-string.json", "type"},
+    {"bad-student-is-number.json", "type"},
+    {"bad-t-is-boolean.json", "type"},
+    {"bad-t-is-object.json", "type"},
+    {"bad-trailing-garbage.json", "bad-json"},
+    {"bad-truncated.json", "bad-json"},
+    {"bad-unknown-key.json", "unknown-key"},
+    {"bad-unknown-problem.json", "unknown-problem"},
+    {"bad-utf16.json", "bad-encoding"},
+    {"bad-whitespace-only.json", "bad-json"},
+    // Made by the test: too large or too odd to keep as files.
+    {"bad-over-1-mib.json", "limit"},
+    {"bad-10001-answers.json", "limit"},
+};
+
+// A right answer to both problems of problems.json: the ray along +x meets the unit sphere at
+// (2, 0, 0) at t = 1 and 3, and the plane x = 2 at t = 2.
+const char* kRightAnswers =
+    R"({"sphere-1": {"hits": [{"t": 1, "point": [1, 0, 0]}, {"t": 3, "point": [3, 0, 0]}]},
+        "plane-1": {"hits": [{"t": 2, "point": [2, 0, 0]}]}})";
+
+// The fixtures copied beside the cases the test makes, in a fresh folder.
+class HostileBatch : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    fs::copy(kFixtures / "submissions", subs_);
+    // 1 MiB and a little more, in one long run of spaces: valid JSON, too large.
+    write_text(subs_ / "bad-over-1-mib.json", std::string(R"({"student": "big", "answers": {}})") +
+                                                  std::string((1u << 20) + 10, ' '));
+    std::string many = R"({"student": "many", "answers": {)";
+    for (int i = 0; i < 10001; ++i) {
+      many += (i ? ", " : "") + ("\"p" + std::to_string(i) + "\": {\"hits\": []}");
+    }
+    write_text(subs_ / "bad-10001-answers.json", many + "}}");
+    // A right submission whose file name is Latin-1, not UTF-8.
+    write_text(subs_ / std::string("good-latin1-name-\xe9t\xe9.json"),
+               std::string(R"({"student": "latin1", "answers": )") + kRightAnswers + "}");
+  }
+
+  testing::RunResult grade(const std::string& args) {
+    return run_raygrade("grade --problems '" + (kFixtures / "problems.json").string() + "' '" +
+                            subs_.string() + "' " + args,
+                        dir_.path());
+  }
+
+  TempDir dir_{"hostile"};
+  fs::path subs_ = dir_.path() / "submissions";
+};
+
+TEST_F(HostileBatch, EveryHostileFileRejectedEveryGoodOneGradedRight) {
+  auto r = grade("--format json");
+  EXPECT_EQ(r.exit_code, 2) << "some inputs were rejected";
+  json report = json::parse(r.out);
+  std::set<std::string> seen;
+  std::size_t good = 0;
+  for (const json& s : report.at("submissions")) {
+    std::string name = fs::path(s.at("file").get<std::string>()).filename().string();
+    seen.insert(name);
+    if (name.rfind("bad-", 0) == 0) {
+      ASSERT_TRUE(kExpectedFault.count(name)) << "an unlisted fixture: " << name;
+      EXPECT_FALSE(s.at("gradable").get<bool>()) << name;
+      if (!s.contains("fault")) continue;
+      const json& f = s["fault"];
+      EXPECT_EQ(f.at("code"), kExpectedFault.at(name)) << name << ": " << f.dump();
+      EXPECT_NE(f.at("file").get<std::string>().find(name), std::string::npos) << name;
+      EXPECT_FALSE(f.at("message").get<std::string>().empty()) << name;
+      // Where the fault is inside a well-formed document, the JSON path is named.
+      static const std::set<std::string> kInside = {"duplicate-key", "range", "unknown-key",
+                                                    "unknown-problem"};
+      bool inside = kInside.count(f["code"].get<std::string>()) ||
+                    (f["code"] == "type" && name.rfind("bad-root-", 0) != 0) ||
+                    name.rfind("bad-formula-", 0) == 0;
+      if (inside) {
+        EXPECT_FALSE(f.at("path").get<std::string>().empty()) << name;
+      }
+      // The message speaks of the input, not of the parser's internals.
+      EXPECT_EQ(f["message"].get<std::string>().find("nlohmann"), std::string::npos) << name;
+      EXPECT_EQ(f["message"].get<std::string>().find("[json.exception"), std::string::npos) << name;
+    } else {
+      ++good;
+      ASSERT_TRUE(s.at("gradable").get<bool>()) << name << ": " << s.dump();
+      // Every problem the file answers earns full marks.
+      int answered = 0;
+      for (const json& result : s.at("problems")) {
+        if (!result.at("answered").get<bool>()) continue;
+        ++answered;
+        EXPECT_DOUBLE_EQ(result.at("score").get<double>(), result.at("max_score").get<double>())
+            << name << " " << result["problem"];
+      }
+      EXPECT_GE(answered, 1) << name;
+    }
+  }
+  EXPECT_EQ(good, 11u);  // ten fixtures and the Latin-1 file name
+  for (const auto& [name, code] : kExpectedFault) EXPECT_TRUE(seen.count(name)) << name;
+  // Each rejection is also on standard error, one line naming the file.
+  for (const auto& [name, code] : kExpectedFault)
+    EXPECT_NE(r.err.find(name), std::string::npos) << name;
+}
+
+TEST_F(HostileBatch, FilesStayInTheOutputFolderAndTextIsEscaped) {
+  fs::path out = dir_.path() / "out";
+  auto r = grade("--format html --out '" + out.string() + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_FALSE(fs::exists("/tmp/raygrade-escape.html"));
+  std::size_t pages = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(dir_.path())) {
+    if (entry.path().extension() != ".html") continue;
+    EXPECT_EQ(entry.path().parent_path(), out) << entry.path();
+    ++pages;
+    std::string html = read_text(entry.path());
+    EXPECT_EQ(html.find("<script"), std::string::npos) << entry.path();
+    EXPECT_EQ(html.find("\x1b"), std::string::npos) << entry.path();
+  }
+  EXPECT_EQ(pages, kExpectedFault.size() + 11);  // one page per file, a rejection included
+}
+
+TEST_F(HostileBatch, GradebookNeutralisesFormulas) {
+  auto r = grade("--format csv");
+  EXPECT_EQ(r.exit_code, 2);
+  // The student named =HYPERLINK(...) with id @s006: neither cell starts a formula.
+  EXPECT_EQ(r.out.find("\n=HYPERLINK"), std::string::npos);
+  EXPECT_EQ(r.out.find(",=HYPERLINK"), std::string::npos);
+  EXPECT_EQ(r.out.find(",@s006"), std::string::npos);
+  EXPECT_EQ(r.out.find("\n@s006"), std::string::npos);
+  EXPECT_NE(r.out.find("HYPERLINK"), std::string::npos);  // the name is still there
+}
+
+}  // namespace
+}  // namespace raygrade
