@@ -53,6 +53,48 @@ TEST(FirstHit, TieUpToRoundingIsATie) {
   EXPECT_EQ(a["tie"], true);
 }
 
+// A plane x = 1 and a sphere of centre (1 + 2^-7, 0, 0) and radius 2^-7 − 2^-60 (both exact
+// doubles), met from the origin along +x: the plane at t = 1, the sphere at t = c − r =
+// 1 + 2^-60, which is distinct but rounds to 1 in double. Double sees a tie and would name the
+// sphere, listed first; double-double orders them: the plane is first, and there is no tie.
+TEST(FirstHit, OrderDoubleCannotResolveIsSettledHigher) {
+  Problem p = first_hit_problem(R"({"origin": [0, 0, 0], "direction": [1, 0, 0]})",
+                                R"([{"name": "ball", "type": "sphere", "center": [1.0078125, 0, 0],
+           "radius": 0.0078124999999999991326382620115964},
+          {"name": "wall", "type": "plane", "point": [1, 0, 0], "normal": [-1, 0, 0]}])");
+  ASSERT_EQ(0x1p-7 - 0x1p-60, 0.0078124999999999991326382620115964);
+  auto a = p.task->answer();
+  EXPECT_EQ(a["object"], "wall");
+  EXPECT_FALSE(a.contains("tie"));
+  EXPECT_EQ(a["hits"][0]["t"], 1.0);
+  EXPECT_EQ(p.task->level(), "double-double");
+}
+
+// A plane x = 1 and a sphere of centre (2, 0, 0) and radius 1, met from the origin along
+// (3, 0, 0): both at t = 1/3 exactly, which no binary precision represents, so no level's
+// enclosures separate them: an exact tie, reported at the top of the ladder.
+TEST(FirstHit, ExactTieIsReportedAsATie) {
+  Problem p =
+      first_hit_problem(R"({"origin": [0, 0, 0], "direction": [3, 0, 0]})",
+                        R"([{"name": "ball", "type": "sphere", "center": [2, 0, 0], "radius": 1},
+          {"name": "wall", "type": "plane", "point": [1, 0, 0], "normal": [-1, 0, 0]}])");
+  auto a = p.task->answer();
+  EXPECT_EQ(a["object"], "ball");
+  EXPECT_EQ(a["tie"], true);
+  EXPECT_NEAR(a["hits"][0]["t"].get<double>(), 1.0 / 3, 1e-16);
+  EXPECT_EQ(p.task->level(), "exact-boundary");
+}
+
+// Objects far apart in t are ordered in double.
+TEST(FirstHit, DistinctObjectsAreOrderedInDouble) {
+  Problem p = first_hit_problem(
+      R"({"origin": [0, 0, 0], "direction": [0, 0, 1]})",
+      R"([{"name": "sphere 1", "type": "sphere", "center": [0, 0, 10], "radius": 2},
+      {"name": "sphere 3", "type": "sphere", "center": [0, 1, 9], "radius": 2}])");
+  EXPECT_EQ(p.task->answer()["object"], "sphere 3");
+  EXPECT_EQ(p.task->level(), "double");
+}
+
 // A nearer object behind the origin does not count; t_max cuts off a farther one.
 TEST(FirstHit, OnlyHitsInTheIntervalCount) {
   std::string objects = R"([{"name": "behind", "type": "sphere", "center": [0, 0, -5], "radius": 1},

@@ -34,6 +34,22 @@ Certified certify(const AccuracyCase& c) {
   return out;
 }
 
+// The order of a's and b's nearest t at precision T, when both hit with every comparison
+// certain and their enclosures are disjoint, or are the same point.
+template <typename T>
+std::optional<int> order_at(const AccuracyCase& a, const AccuracyCase& b) {
+  int before = interval_undecided_count();
+  std::optional<Interval<T>> ta = reference_nearest<Interval<T>>(a);
+  std::optional<Interval<T>> tb = reference_nearest<Interval<T>>(b);
+  bool decided = interval_undecided_count() == before;
+  interval_undecided_count() = before;
+  if (!decided || !ta || !tb) return std::nullopt;
+  if (ta->hi < tb->lo) return -1;
+  if (tb->hi < ta->lo) return 1;
+  if (ta->is_point() && tb->is_point() && ta->lo == tb->lo) return 0;
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::string_view level_name(Level level) {
@@ -72,6 +88,16 @@ Adaptive adaptive_nearest(const AccuracyCase& c) {
   if (x.decided) return from(Level::kMpfr, x);
   x = certified_mpfr(c, kMpfrBoundaryBits);
   return from(x.decided ? Level::kMpfr : Level::kExactBoundary, x);
+}
+
+Order order_nearest(const AccuracyCase& a, const AccuracyCase& b) {
+  if (std::optional<int> s = order_at<double>(a, b)) return {*s, Level::kDouble};
+  if (std::optional<int> s = order_at<DoubleDouble>(a, b)) return {*s, Level::kDoubleDouble};
+  for (int bits : {kMpfrBits, kMpfrBoundaryBits}) {
+    MpfrPrecision precision(bits);
+    if (std::optional<int> s = order_at<Mpfr>(a, b)) return {*s, Level::kMpfr};
+  }
+  return {0, Level::kExactBoundary};
 }
 
 namespace {

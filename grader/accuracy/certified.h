@@ -40,6 +40,17 @@ struct Adaptive {
 };
 Adaptive adaptive_nearest(const AccuracyCase& c);
 
+// The order of two cases' nearest hits, both of which hit: `sign` −1 when a's t is smaller, 1
+// when b's is, 0 for an exact tie; `level` is the first level of the ladder whose certified
+// enclosures of the two t values are disjoint (computed and compared at that level's own
+// precision, not rounded to double). Enclosures that still overlap at kMpfrBoundaryBits are an
+// exact tie, at kExactBoundary, by the same argument as for a decision on a boundary.
+struct Order {
+  int sign = 0;
+  Level level = Level::kDouble;
+};
+Order order_nearest(const AccuracyCase& a, const AccuracyCase& b);
+
 // MPFR precisions of the ladder's top: 256 bits decides all but inputs within about 2^-200 of
 // the boundary; 4096 bits exceeds the exponent range of double products of the inputs (their
 // exact values need at most 2·2098 + 106 bits), so a case it cannot decide is, for the

@@ -1,6 +1,8 @@
 // Shapes as accuracy cases, and the solver's adaptive decision.
 #include "accuracy/settle.h"
 
+#include <algorithm>
+
 #include "accuracy/certified.h"
 
 namespace raygrade {
@@ -49,11 +51,11 @@ std::optional<AccuracyCase> accuracy_case_of(const Shape& object, const Ray& ray
   return c;
 }
 
-std::optional<std::string> settle_nearest(const Shape& object, const Ray& ray, Intersection& x) {
-  if (x.contained) return std::nullopt;
-  std::optional<AccuracyCase> c = accuracy_case_of(object, ray);
-  if (!c) return std::nullopt;
-  Adaptive a = adaptive_nearest(*c);
+namespace {
+
+// settle_nearest on the object's accuracy case `c`, returning the level itself.
+Level settle_case(const AccuracyCase& c, const Shape& object, const Ray& ray, Intersection& x) {
+  Adaptive a = adaptive_nearest(c);
   if (a.level != Level::kDouble && a.level != Level::kExactBoundary && a.hit != !x.hits.empty()) {
     if (!a.hit) {
       x.hits.clear();
@@ -68,7 +70,57 @@ std::optional<std::string> settle_nearest(const Shape& object, const Ray& ray, I
       x.hits.insert(x.hits.begin(), h);
     }
   }
-  return std::string(level_name(a.level));
+  return a.level;
+}
+
+}  // namespace
+
+std::optional<std::string> settle_nearest(const Shape& object, const Ray& ray, Intersection& x) {
+  if (x.contained) return std::nullopt;
+  std::optional<AccuracyCase> c = accuracy_case_of(object, ray);
+  if (!c) return std::nullopt;
+  return std::string(level_name(settle_case(*c, object, ray, x)));
+}
+
+std::optional<std::string> settle_first(const std::vector<const Shape*>& objects, const Ray& ray,
+                                        std::vector<Intersection>& hits, int& index, bool& tie) {
+  std::vector<AccuracyCase> cases;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    std::optional<AccuracyCase> c = accuracy_case_of(*objects[i], ray);
+    if (!c || hits[i].contained) return std::nullopt;
+    cases.push_back(std::move(*c));
+  }
+  Level level = Level::kDouble;
+  std::vector<Level> levels;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    levels.push_back(settle_case(cases[i], *objects[i], ray, hits[i]));
+    level = std::max(level, levels.back());
+  }
+  index = -1;
+  tie = false;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    if (hits[i].hits.empty()) continue;
+    if (index < 0) {
+      index = static_cast<int>(i);
+      continue;
+    }
+    Order order;
+    if (levels[index] == Level::kExactBoundary || levels[i] == Level::kExactBoundary) {
+      // A hit on a boundary has no certified enclosure to compare: its answered t orders it.
+      double ta = hits[index].hits.front().t, tb = hits[i].hits.front().t;
+      order = {ta < tb ? -1 : tb < ta ? 1 : 0, Level::kExactBoundary};
+    } else {
+      order = order_nearest(cases[index], cases[i]);
+    }
+    level = std::max(level, order.level);
+    if (order.sign == 0) {
+      tie = true;
+    } else if (order.sign > 0) {
+      index = static_cast<int>(i);
+      tie = false;
+    }
+  }
+  return std::string(level_name(level));
 }
 
 }  // namespace raygrade

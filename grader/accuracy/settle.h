@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "accuracy/accuracy_case.h"
 #include "shapes/shape.h"
@@ -20,5 +21,15 @@ std::optional<AccuracyCase> accuracy_case_of(const Shape& object, const Ray& ray
 // double, `x` is corrected: a miss clears the hits; a hit double missed is added with its t and
 // point (and the normal of the object's intersection at that t when it reports one).
 std::optional<std::string> settle_nearest(const Shape& object, const Ray& ray, Intersection& x);
+
+// The first hit among several objects, settled: each object's hit-or-miss decision as
+// settle_nearest settles it (correcting `hits`, one Intersection per object), then the order of
+// the nearest hits, compared at the first level whose certified enclosures of the two t values
+// separate them (an exact tie when even 4096-bit MPFR cannot). Sets `index` (−1 when nothing is
+// hit) and `tie` (another object is hit at exactly the same t; the first in the list keeps the
+// name) and returns the highest level any of these decisions needed, or nothing (leaving `index`
+// and `tie` alone) when some object is outside the study.
+std::optional<std::string> settle_first(const std::vector<const Shape*>& objects, const Ray& ray,
+                                        std::vector<Intersection>& hits, int& index, bool& tie);
 
 }  // namespace raygrade

@@ -69,14 +69,22 @@ constexpr double kTieRelative = 8 * 2.220446049250313e-16;
 
 FirstHit first_hit(const Ray& ray, const std::vector<NamedShape>& objects) {
   FirstHit out;
+  std::vector<Intersection> xs;
+  std::vector<const Shape*> shapes;
+  for (const auto& o : objects) {
+    xs.push_back(o.shape->intersect(ray));
+    shapes.push_back(o.shape.get());
+  }
+  // The adaptive ladder settles each decision and the order where the study covers every object.
+  out.level = settle_first(shapes, ray, xs, out.index, out.tie);
   for (std::size_t i = 0; i < objects.size(); ++i) {
-    Intersection x = objects[i].shape->intersect(ray);
-    if (x.hits.empty()) {
+    if (xs[i].hits.empty()) {
       out.nearest.push_back(std::nullopt);
       continue;
     }
-    const Hit& h = x.hits.front();
+    const Hit& h = xs[i].hits.front();
     out.nearest.push_back(h);
+    if (out.level) continue;
     double tie = kTieRelative * std::max(1.0, std::abs(h.t));
     if (out.index >= 0 && std::abs(h.t - out.hit.t) <= tie) {
       out.tie = true;  // the first in the list keeps the name
@@ -86,8 +94,11 @@ FirstHit first_hit(const Ray& ray, const std::vector<NamedShape>& objects) {
       out.tie = false;
     }
   }
+  if (out.level && out.index >= 0) out.hit = *out.nearest[out.index];
   return out;
 }
+
+std::optional<std::string> FirstHitTask::level() const { return first_hit(ray_, objects_).level; }
 
 nlohmann::json FirstHitTask::answer() const {
   FirstHit f = first_hit(ray_, objects_);

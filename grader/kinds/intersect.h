@@ -40,6 +40,9 @@ struct FirstHit {
   Hit hit;
   bool tie = false;                         // another object is hit at the same t
   std::vector<std::optional<Hit>> nearest;  // per object
+  // The highest level of the adaptive ladder the decisions needed (docs/precision.md), when the
+  // study covers every object.
+  std::optional<std::string> level;
 };
 FirstHit first_hit(const Ray& ray, const std::vector<NamedShape>& objects);
 
@@ -51,6 +54,7 @@ class FirstHitTask final : public Task {
 
   std::string_view kind() const override { return "first-hit"; }
   nlohmann::json answer() const override;
+  std::optional<std::string> level() const override;
   std::vector<std::string> methods() const override;
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;

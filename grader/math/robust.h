@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 #include "math/vec3.h"
 
@@ -14,11 +15,42 @@ namespace raygrade {
 template <typename T>
 inline constexpr bool kErrorFree = std::is_floating_point_v<T>;
 
-// The fast paths of the reference formulas run in plain arithmetic when no step cancels by more
-// than this factor: a result at least 1/16 of the magnitudes it is computed from has lost at
-// most 4 bits to rounding, so the plain result is within a few tens of ulps. Below it, the
-// compensated formulas run.
+// The unit roundoff u of a floating type (2^-53 for double): every correctly rounded operation
+// has a relative error of at most u.
+template <typename T>
+inline constexpr T kUnitRoundoff = std::numeric_limits<T>::epsilon() / 2;
+
+// The fast paths of the reference formulas run in plain arithmetic and keep their result when an
+// a-posteriori bound on its rounding error, computed from magnitudes the formula has at hand, is
+// at most kFastPathUlps·u of each quantity the answer depends on (Shewchuk's filtered predicates;
+// pbrt-v4's error bounds). The sign of every such quantity is then certain, and its relative
+// error at most 32u (2^-48 in double) in the worst case. Otherwise the compensated formulas run.
+// The bounds are derived in docs/precision.md.
+constexpr int kFastPathUlps = 32;
+template <typename T>
+inline constexpr T kFastPathTolerance = kFastPathUlps* kUnitRoundoff<T>;
+
+// The triangle's fast path runs in plain arithmetic when its barycentric denominator does not
+// cancel by more than this factor: a result at least 1/16 of the magnitudes it is computed from
+// has lost at most 4 bits to rounding, so the plain result is within a few tens of ulps.
 constexpr double kNoCancellation = 1.0 / 16;
+
+// The fast paths run only on inputs whose squared magnitudes lie in [1/kFastPathRange,
+// kFastPathRange]: the products of up to four such magnitudes in their error bounds then neither
+// overflow nor underflow by more than the bounds' own slack. 2^(max_exponent/4 − 2): 2^254 for
+// double.
+template <typename T>
+inline constexpr T kFastPathRange = [] {
+  T x = 1;
+  for (int i = 0; i < std::numeric_limits<T>::max_exponent / 4 - 2; ++i) x *= 2;
+  return x;
+}();
+
+// Is x a squared magnitude the fast paths' bounds can take (see kFastPathRange)?
+template <typename T>
+bool in_fast_path_range(T x) {
+  return x >= T(1) / kFastPathRange<T> && x <= kFastPathRange<T>;
+}
 
 // a*b - c*d with one rounding, by Kahan's algorithm with FMA (Muller et al., Handbook of
 // Floating-Point Arithmetic, 2nd ed., sec. 5.3). For number types without a native FMA the

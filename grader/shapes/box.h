@@ -19,24 +19,22 @@ template <typename T>
 SlabInterval<T> slab_interval(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& lo,
                               const Vec3<T>& hi) {
   SlabInterval<T> s;
-  bool bounded_low = false, bounded_high = false;
   for (int i = 0; i < 3; ++i) {
     if (d[i] == T(0)) {
       if (o[i] < lo[i] || o[i] > hi[i]) return s;
       continue;
     }
+    // Selections rather than branches: the signs of d and the order of the slabs are as
+    // random as the rays, and a mispredicted branch costs more than the arithmetic.
     T t_low = (lo[i] - o[i]) / d[i], t_high = (hi[i] - o[i]) / d[i];
-    if (d[i] < T(0)) std::swap(t_low, t_high);
-    if (!bounded_low || t_low > s.t_enter) {
-      s.t_enter = t_low;
-      s.enter_axis = i;
-      bounded_low = true;
-    }
-    if (!bounded_high || t_high < s.t_exit) {
-      s.t_exit = t_high;
-      s.exit_axis = i;
-      bounded_high = true;
-    }
+    bool backward = d[i] < T(0);
+    T t_near = backward ? t_high : t_low, t_far = backward ? t_low : t_high;
+    bool later = s.enter_axis < 0 || t_near > s.t_enter;
+    bool sooner = s.exit_axis < 0 || t_far < s.t_exit;
+    s.t_enter = later ? t_near : s.t_enter;
+    s.enter_axis = later ? i : s.enter_axis;
+    s.t_exit = sooner ? t_far : s.t_exit;
+    s.exit_axis = sooner ? i : s.exit_axis;
   }
   s.hit = s.t_enter <= s.t_exit;
   return s;

@@ -23,21 +23,35 @@ Roots<T> cylinder_side_roots(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& 
   if (a == T(0)) return out;
   T b = dot(fp, dp);
   if constexpr (kErrorFree<T>) {
-    // Fast path: plain arithmetic when neither the cross product, nor the discriminant, nor
-    // c = |f⊥|² − r² cancels (see kNoCancellation).
+    // Fast path: plain arithmetic, kept when the error bounds of s = (f × d)·â, of the quarter
+    // discriminant and of c = |f⊥|² − r² show the decision certain and the roots within the
+    // tolerance (docs/precision.md, "Fast paths"; the sphere's bounds, with s for |f × d|).
     using std::abs;
-    Vec3<T> fxd = cross(f, d);
-    T s = dot(fxd, axis), rr = r * r, ff = dot(fp, fp);
-    T disc = a * rr - s * s, c = ff - rr;
-    T k = T(kNoCancellation);
-    if (s * s >= k * ff * a && abs(disc) >= k * (a * rr + s * s) && abs(c) >= k * (ff + rr)) {
+    constexpr T u = kUnitRoundoff<T>, tolerance = kFastPathTolerance<T>;
+    T rr = r * r, ff = dot(fp, fp);
+    bool in_range = in_fast_path_range(a) && in_fast_path_range(rr) && ff <= kFastPathRange<T> &&
+                    dot(f, f) <= kFastPathRange<T>;
+    T px = f.y * d.z, qx = f.z * d.y, py = f.z * d.x, qy = f.x * d.z, pz = f.x * d.y,
+      qz = f.y * d.x;
+    Vec3<T> fxd{px - qx, py - qy, pz - qz};
+    T s = dot(fxd, axis);
+    T s_error = T(3) * u *
+                (abs(axis.x) * (abs(px) + abs(qx) + abs(fxd.x)) +
+                 abs(axis.y) * (abs(py) + abs(qy) + abs(fxd.y)) +
+                 abs(axis.z) * (abs(pz) + abs(qz) + abs(fxd.z)));
+    T ar = a * rr, disc = ar - s * s, c = ff - rr;
+    T e = T(7) * u * (ar + s * s) + T(2) * abs(s) * s_error + s_error * s_error;
+    if (in_range && abs(c) * tolerance >= T(7) * u * (ff + rr) && abs(disc) > e) {
       if (disc < T(0)) return out;
-      T q = -(b + sign_of(b) * sqrt(disc));
-      out.count = 2;
-      out.t0 = c / q;
-      out.t1 = q / a;
-      if (out.t1 < out.t0) std::swap(out.t0, out.t1);
-      return out;
+      T root = sqrt(disc);
+      if (e <= tolerance * (disc + abs(b) * root)) {
+        T q = -(b + sign_of(b) * root);
+        out.count = 2;
+        out.t0 = c / q;
+        out.t1 = q / a;
+        if (out.t1 < out.t0) std::swap(out.t0, out.t1);
+        return out;
+      }
     }
   }
   T s = dot(cross_accurate(f, d), axis);

@@ -14,16 +14,21 @@ namespace raygrade {
 template <typename T>
 std::optional<T> plane_t(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& n, const Vec3<T>& p) {
   if constexpr (kErrorFree<T>) {
-    // Fast path: plain dot products when neither cancels (see kNoCancellation); p − o is then
-    // only needed to rounding, since the numerator is large next to its terms.
+    // Fast path: plain dot products, kept when their error bounds show t = num/den within the
+    // tolerance (docs/precision.md, "Fast paths"): |den − den*| ≤ 4u·Σ|n_i d_i| and, counting
+    // the rounding of p − o, |num − num*| ≤ 5u·Σ|n_i f_i|.
     using std::abs;
+    constexpr T u = kUnitRoundoff<T>;
     Vec3<T> f = p - o;
-    T den = dot(n, d), num = dot(n, f);
-    T den_size = abs(n.x * d.x) + abs(n.y * d.y) + abs(n.z * d.z);
-    T num_size = abs(n.x) * (abs(p.x) + abs(o.x)) + abs(n.y) * (abs(p.y) + abs(o.y)) +
-                 abs(n.z) * (abs(p.z) + abs(o.z));
-    T k = T(kNoCancellation);
-    if (abs(den) >= k * den_size && abs(num) >= k * num_size) return num / den;
+    T nd_x = n.x * d.x, nd_y = n.y * d.y, nd_z = n.z * d.z;
+    T nf_x = n.x * f.x, nf_y = n.y * f.y, nf_z = n.z * f.z;
+    T den = nd_x + nd_y + nd_z, num = nf_x + nf_y + nf_z;
+    T den_error = T(4) * u * (abs(nd_x) + abs(nd_y) + abs(nd_z));
+    T num_error = T(5) * u * (abs(nf_x) + abs(nf_y) + abs(nf_z));
+    T size = abs(num) * abs(den);
+    if (num_error * abs(den) + den_error * abs(num) < kFastPathTolerance<T> * size &&
+        size >= T(1) / kFastPathRange<T>)
+      return num / den;
   }
   T den = dot_accurate(n, d);
   if (den == T(0)) return std::nullopt;

@@ -20,16 +20,16 @@ bool watertight_polygon(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Ve
   int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
   if (d[kz] < T(0)) std::swap(kx, ky);
   T sx = d[kx] / d[kz], sy = d[ky] / d[kz];
-  std::vector<std::array<T, 2>> p;
-  p.reserve(v.size());
-  for (const auto& vertex : v) {
-    Vec3<T> a = vertex - o;
-    p.push_back({a[kx] - sx * a[kz], a[ky] - sy * a[kz]});
-  }
+  // Each vertex is sheared once, as the second end of one edge and the first of the next.
+  auto sheared = [&](const Vec3<T>& vertex) {
+    Vec3<T> w = vertex - o;
+    return std::array<T, 2>{w[kx] - sx * w[kz], w[ky] - sy * w[kz]};
+  };
+  const std::array<T, 2> first = sheared(v[0]);
+  std::array<T, 2> a = first;
   bool inside = false;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const auto& a = p[i];
-    const auto& b = p[(i + 1) % p.size()];
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const std::array<T, 2> b = i + 1 < v.size() ? sheared(v[i + 1]) : first;
     T e = a[0] * b[1] - a[1] * b[0];
     if (e == T(0)) e = difference_of_products(a[0], b[1], a[1], b[0]);
     if (e == T(0)) {
@@ -37,12 +37,12 @@ bool watertight_polygon(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Ve
       bool between_x = (a[0] <= T(0) && T(0) <= b[0]) || (b[0] <= T(0) && T(0) <= a[0]);
       bool between_y = (a[1] <= T(0) && T(0) <= b[1]) || (b[1] <= T(0) && T(0) <= a[1]);
       if (between_x && between_y) return true;
-      continue;
+    } else {
+      // The edge crosses the x axis at e / (b_y − a_y): on the +x side when the signs agree.
+      bool a_up = a[1] > T(0), b_up = b[1] > T(0);
+      if (a_up != b_up && (e > T(0)) == b_up) inside = !inside;
     }
-    bool a_up = a[1] > T(0), b_up = b[1] > T(0);
-    if (a_up == b_up) continue;
-    // The edge crosses the x axis at e / (b_y − a_y): on the +x side when the signs agree.
-    if ((e > T(0)) == b_up) inside = !inside;
+    a = b;
   }
   return inside;
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <optional>
 
 #include "math/robust.h"
 #include "shapes/shape.h"
@@ -44,32 +45,54 @@ T sum_of_squares_minus_square(const Vec3<T>& f_hi, const Vec3<T>& f_lo, T r) {
   }
 }
 
+// The roots of the sphere's quadratic in plain arithmetic, when their a-posteriori error bounds
+// (docs/precision.md, "Fast paths") show that they decide hit or miss, and which root is nearest,
+// as exact arithmetic would, and that c = f·f − r² and the quarter discriminant are within
+// kFastPathTolerance of their exact values (relative to the root they make). Nothing otherwise:
+// the compensated formulas then run.
+template <typename T>
+std::optional<Roots<T>> sphere_roots_fast(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& center,
+                                          T r) {
+  using std::abs, std::sqrt;
+  constexpr T u = kUnitRoundoff<T>, tolerance = kFastPathTolerance<T>;
+  Vec3<T> f = o - center;
+  T a = dot(d, d), ff = dot(f, f), rr = r * r;
+  if (!in_fast_path_range(a) || !in_fast_path_range(rr) || !(ff <= kFastPathRange<T>))
+    return std::nullopt;
+  // The cross product f × d, and beside each component the sum of its two products' magnitudes,
+  // which bounds its rounding error: at most 3u times that sum, counting the rounding of f.
+  T px = f.y * d.z, qx = f.z * d.y, py = f.z * d.x, qy = f.x * d.z, pz = f.x * d.y, qz = f.y * d.x;
+  Vec3<T> fxd{px - qx, py - qy, pz - qz};
+  T s2 = dot(fxd, fxd), ar = a * rr, disc = ar - s2, c = ff - rr;
+  T spread = abs(fxd.x) * (abs(px) + abs(qx)) + abs(fxd.y) * (abs(py) + abs(qy)) +
+             abs(fxd.z) * (abs(pz) + abs(qz));
+  // Bounds: |c − c*| ≤ 7u(ff + rr) and |disc − disc*| ≤ e.
+  if (!(abs(c) * tolerance >= T(7) * u * (ff + rr))) return std::nullopt;
+  T e = T(7) * u * (ar + s2) + T(6) * u * spread + T(32) * u * u * (ff * a);
+  if (!(abs(disc) > e)) return std::nullopt;
+  Roots<T> out;
+  if (disc < T(0)) return out;
+  // The error of √disc, at most e/√disc, is within the tolerance of |q| = |b| + √disc.
+  T b = dot(f, d), root = sqrt(disc);
+  if (!(e <= tolerance * (disc + abs(b) * root))) return std::nullopt;
+  T q = -(b + sign_of(b) * root);
+  out.count = 2;
+  out.t0 = c / q;
+  out.t1 = q / a;
+  if (out.t1 < out.t0) std::swap(out.t0, out.t1);
+  return out;
+}
+
 // The stable reference: roots of |o + t d − c|² = r² (Ray Tracing Gems, ch. 7). The quarter
 // discriminant is a·r² − |f × d|², which does not cancel for far spheres; the roots are
-// q/a and c/q with q = −(b + sign(b)√Δ), which never subtracts nearly equal numbers.
+// q/a and c/q with q = −(b + sign(b)√Δ), which never subtracts nearly equal numbers. The plain
+// computation is kept when its error bounds allow (sphere_roots_fast); otherwise f = o − c is
+// split exactly and the cross product and c are compensated.
 template <typename T>
 Roots<T> sphere_roots(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& center, T r) {
   using std::sqrt;
   if constexpr (kErrorFree<T>) {
-    // Fast path: the same formulas in plain arithmetic, taken only when neither the cross
-    // product, nor the discriminant, nor c = f·f − r² cancels (see kNoCancellation).
-    using std::abs;
-    Vec3<T> f = o - center;
-    T a = dot(d, d), ff = dot(f, f), rr = r * r;
-    Vec3<T> fxd = cross(f, d);
-    T s2 = dot(fxd, fxd), disc = a * rr - s2, c = ff - rr;
-    T k = T(kNoCancellation);
-    if (s2 >= k * ff * a && abs(disc) >= k * (a * rr + s2) && abs(c) >= k * (ff + rr)) {
-      Roots<T> out;
-      if (disc < T(0)) return out;
-      T b = dot(f, d);
-      T q = -(b + sign_of(b) * sqrt(disc));
-      out.count = 2;
-      out.t0 = c / q;
-      out.t1 = q / a;
-      if (out.t1 < out.t0) std::swap(out.t0, out.t1);
-      return out;
-    }
+    if (std::optional<Roots<T>> fast = sphere_roots_fast(o, d, center, r)) return *fast;
   }
   Vec3<T> f, f_lo;
   difference_exact(o, center, f, f_lo);

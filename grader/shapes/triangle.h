@@ -79,10 +79,10 @@ TriangleHit<T> watertight_triangle(const Vec3<T>& o, const Vec3<T>& d, const Vec
   out.barycentric = {u / det, v / det, w / det};
   if constexpr (kErrorFree<T>) {
     // Fast path: the sheared t is as accurate as its edge functions, which lose nothing when
-    // det = u + v + w is not small next to their products (see kNoCancellation).
+    // det = u + v + w is not small next to their products (see kNoCancellation). The six
+    // products' magnitudes are bounded by one product of sums, (Σ|x|)(Σ|y|), which is cheaper.
     using std::abs;
-    T size =
-        abs(cx * by) + abs(cy * bx) + abs(ax * cy) + abs(ay * cx) + abs(bx * ay) + abs(by * ax);
+    T size = (abs(ax) + abs(bx) + abs(cx)) * (abs(ay) + abs(by) + abs(cy));
     if (abs(det) >= T(kNoCancellation) * size) {
       T az = sz * A[kz], bz = sz * B[kz], cz = sz * C[kz];
       out.t = (u * az + v * bz + w * cz) / det;
