@@ -118,5 +118,45 @@ TEST(RefractSketch, TotalInternalReflectionIsDrawnAndLabelled) {
   EXPECT_FALSE(has_label_starting(f, "t,"));
 }
 
+// The bank's two lights: V = (−3, 4, 0)/5; light A at (3, 4, 0): L_1 = (0.6, 0.8, 0),
+// N·L_1 = 0.8, R_1 = 2·0.8·(0, 1, 0) − L_1 = (−0.6, 0.8, 0) (= V: the full highlight);
+// light B at (0, 9, 0) is blocked: L_2 = (0, 1, 0), dotted, and no R_2.
+TEST(ShadeSketch, ShowsNormalViewLightsAndReflection) {
+  Problem p = testing::problem(R"({"id": "s", "kind": "shade",
+    "point": [0, 0, 0], "normal": [0, 1, 0], "eye": [-3, 4, 0], "ambient_light": 2,
+    "material": {"ambient": 0.1, "diffuse": 0.5, "specular": 0.3, "shininess": 12},
+    "lights": [{"name": "A", "position": [3, 4, 0]},
+               {"name": "B", "position": [0, 9, 0], "blocked": true}]})");
+  Sketch f = p.task->sketch();
+  item(f, Type::kPlane, "surface");
+  expect_near(item(f, Type::kPoint, "P").points[0], {0, 0, 0});
+  expect_near(item(f, Type::kArrow, "N").points[1], {0, 1, 0});
+  expect_near(item(f, Type::kArrow, "V (to the eye)").points[1], {-0.6, 0.8, 0});
+  const SketchItem& l1 = item(f, Type::kArrow, "L_1, light A");
+  EXPECT_EQ(l1.ink, Ink::kRay);
+  expect_near(l1.points[1], {0.6, 0.8, 0});
+  expect_near(item(f, Type::kArrow, "R_1").points[1], {-0.6, 0.8, 0});
+  const SketchItem& l2 = item(f, Type::kArrow, "L_2, light B: blocked");
+  EXPECT_EQ(l2.ink, Ink::kMiss);
+  expect_near(l2.points[1], {0, 1, 0});
+  EXPECT_FALSE(has_label_starting(f, "R_2"));
+  // V's part along the surface, (−0.6, 0, 0), points right.
+  expect_near(f.across, {-1, 0, 0});
+}
+
+// A light below the surface: N·L = −1 ≤ 0, drawn dotted with the reason.
+TEST(ShadeSketch, LightBehindTheSurfaceIsDotted) {
+  Problem p = testing::problem(R"({"id": "s", "kind": "shade",
+    "point": [0, 0, 0], "normal": [0, 1, 0], "eye": [0, 4, 0],
+    "lights": [{"name": "low", "position": [0, -2, 0]}]})");
+  Sketch f = p.task->sketch();
+  const SketchItem& l = item(f, Type::kArrow, "L_1, light low: behind the surface");
+  EXPECT_EQ(l.ink, Ink::kMiss);
+  expect_near(l.points[1], {0, -1, 0});
+  // V runs along the normal: the view takes a direction along the surface.
+  EXPECT_NEAR(dot(f.across, f.up), 0, 1e-15);
+  EXPECT_NEAR(length(f.across), 1, 1e-15);
+}
+
 }  // namespace
 }  // namespace raygrade
