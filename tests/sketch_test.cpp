@@ -158,5 +158,42 @@ TEST(ShadeSketch, LightBehindTheSurfaceIsDotted) {
   EXPECT_NEAR(length(f.across), 1, 1e-15);
 }
 
+// Seed 000's cylinder x² + y² = 1 and the ray (−3, 0, 0.5) + t(1, 0, 0): a = 1, b = −6,
+// c = 8, so t = 2 and t = 4, at (−1, 0, 0.5) and (1, 0, 0.5). The ray is labelled in the
+// formulas' symbols and the radius r drawn from the axis toward the ray's side.
+TEST(DeriveSketch, CylinderWithTheFormulasSymbols) {
+  Problem p = testing::problem(R"({"id": "d", "kind": "derive",
+    "ray": {"origin": [-3, 0, 0.5], "direction": [1, 0, 0]},
+    "object": {"type": "cylinder", "base": [0, 0, 0], "axis": [0, 0, 1], "radius": 1},
+    "find": ["a", "b", "c"]})");
+  Sketch f = p.task->sketch();
+  const SketchItem& cylinder = item(f, Type::kCylinder, "");
+  EXPECT_EQ(cylinder.radius, 1);
+  expect_near(cylinder.points[1], {0, 0, 1});
+  expect_near(item(f, Type::kPoint, "(0, 0): x² + y² = r²").points[0], {0, 0, 0});
+  const SketchItem& r = item(f, Type::kPath, "r");
+  expect_near(r.points[0], {-1, 0, 0});
+  expect_near(r.points[1], {0, 0, 0});
+  expect_near(item(f, Type::kPoint, "p").points[0], {-3, 0, 0.5});
+  expect_near(direction(item(f, Type::kArrow, "p + t v")), {1, 0, 0});
+  expect_near(item(f, Type::kPoint, "t = 2").points[0], {-1, 0, 0.5});
+  expect_near(item(f, Type::kPoint, "t = 4").points[0], {1, 0, 0.5});
+}
+
+// Seed 000's second cylinder, axis through (2, 3): the centre is named (c_x, c_y) and r = 2
+// points from it against the ray's direction (1, 1, 0.2), i.e. along −(1, 1, 0)/√2.
+TEST(DeriveSketch, OffsetCylinderNamesItsCentre) {
+  Problem p = testing::problem(R"({"id": "d", "kind": "derive",
+    "ray": {"origin": [0, 0, 0], "direction": [1, 1, 0.2]},
+    "object": {"type": "cylinder", "base": [2, 3, 0], "axis": [0, 0, 1], "radius": 2},
+    "find": ["a", "b", "c"]})");
+  Sketch f = p.task->sketch();
+  expect_near(item(f, Type::kPoint, "(c_x, c_y): (x − c_x)² + (y − c_y)² = r²").points[0],
+              {2, 3, 0});
+  const SketchItem& r = item(f, Type::kPath, "r");
+  expect_near(r.points[0], {2 - std::sqrt(2.0), 3 - std::sqrt(2.0), 0});
+  expect_near(r.points[1], {2, 3, 0});
+}
+
 }  // namespace
 }  // namespace raygrade
