@@ -75,8 +75,7 @@ def main():
         problems = []
         if not re.search(r"<math[^>]*>\s*<mrow>", dom):
             problems.append("no MathML formulas in the DOM")
-        # Kinds without a geometric sketch yet: formula answers and the single optics steps.
-        if "<svg" not in dom and kind.split()[0] not in ("derive", "reflect", "refract", "shade"):
+        if "<svg" not in dom:
             problems.append("no SVG sketch in the DOM")
         if re.search(r"<script|<link|<img|<iframe|\bsrc=|url\(", source):
             problems.append("refers to a script or an external resource")

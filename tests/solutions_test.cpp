@@ -4,7 +4,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <set>
 
 #include "reports/json_report.h"
 #include "reports/render.h"
@@ -93,7 +92,8 @@ TEST(WorkedSolution, EveryKindInEveryFormat) {
   std::map<std::string, const Problem*> by_kind;
   for (const auto& p : bank.problems) by_kind.emplace(p.kind, &p);
   for (const auto& p : bank.problems) by_kind.emplace(p.kind + " " + p.task->methods().front(), &p);
-  for (const char* kind : {"intersect", "first-hit", "camera-ray"}) {
+  for (const char* kind : {"intersect", "first-hit", "camera-ray", "ray-tree", "reflect", "refract",
+                           "shade", "derive"}) {
     EXPECT_TRUE(by_kind.count(kind)) << "the bank has no " << kind << " problem";
   }
   for (const char* method : {"geometric", "point-normal", "implicit", "edge-tests",
@@ -105,11 +105,7 @@ TEST(WorkedSolution, EveryKindInEveryFormat) {
     EXPECT_TRUE(has(render(*p, Format::kMarkdown), "$$")) << p->id;
     std::string html = render(*p, Format::kHtml);
     EXPECT_TRUE(has(html, "<math display=\"block\">")) << p->id;
-    // Kinds without a geometric sketch yet: formula answers and the single optics steps.
-    static const std::set<std::string> kNoSketch = {"derive", "reflect", "refract", "shade"};
-    if (!kNoSketch.count(p->kind)) {
-      EXPECT_TRUE(has(html, "<svg")) << p->id;
-    }
+    EXPECT_TRUE(has(html, "<svg")) << p->id;
     EXPECT_FALSE(has(html, "<script")) << p->id;
     EXPECT_TRUE(has(render(*p, Format::kText), " = ")) << p->id;
     auto j = nlohmann::json::parse(render(*p, Format::kJson));

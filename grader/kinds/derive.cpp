@@ -3,6 +3,8 @@
 
 #include <set>
 
+#include "kinds/sketch.h"
+
 namespace raygrade {
 namespace {
 
@@ -83,6 +85,26 @@ nlohmann::json DeriveTask::answer() const {
 std::vector<SolutionPart> DeriveTask::derive(std::string_view method,
                                              const Overrides* overrides) const {
   return {SolutionPart{"", object_->derive(ray_, method, overrides)}};
+}
+
+// The object with the parameters the answers name (its radius r, the centre (c_x, c_y)), and
+// the problem's example ray written as the formulas write it: p + t v when they use the
+// components p_x, v_x, otherwise O + t D. Its hits in the example are marked as a check.
+Sketch DeriveTask::sketch() const {
+  Sketch f;
+  std::vector<std::string> names;
+  bool components = false;
+  for (const auto& s : symbols_) {
+    names.push_back(s.name);
+    for (const char* c : {"px", "py", "pz", "vx", "vy", "vz"}) components |= s.name == c;
+  }
+  object_->sketch(f, "");
+  object_->sketch_symbols(f, ray_, names);
+  Intersection x = object_->intersect(ray_);
+  sketch_ray(f, ray_, {object_.get()}, x.hits, components ? "p" : "O",
+             components ? "p + t v" : "O + t D");
+  for (const auto& h : x.hits) sketch_hit(f, h, Ink::kHit);
+  return f;
 }
 
 }  // namespace raygrade

@@ -39,6 +39,7 @@ class DeriveTask final : public Task {
   std::vector<std::string> methods() const override { return object_->methods(); }
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
+  Sketch sketch() const override;
 
   const std::vector<DerivedQuantity>& quantities() const { return quantities_; }
   const std::vector<FormulaSymbol>& symbols() const { return symbols_; }

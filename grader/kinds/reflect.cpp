@@ -2,6 +2,7 @@
 #include "kinds/reflect.h"
 
 #include "derivation/number_format.h"
+#include "kinds/sketch.h"
 #include "scenes/optics.h"
 
 namespace raygrade {
@@ -35,6 +36,24 @@ std::vector<SolutionPart> ReflectTask::derive(std::string_view /*method*/,
                   "orientation does not matter).",
                   format_vector(r.vector)));
   return {SolutionPart{"", std::move(d).finish()}};
+}
+
+// The surface seen edge-on at the point where the ray meets it (the problem gives no place:
+// the origin stands for it), the unit normal on the side the ray comes from, the incoming
+// direction and the reflected one, each drawn one unit long.
+Sketch ReflectTask::sketch() const {
+  Sketch f;
+  Vec3d at{0, 0, 0};
+  Vec3d d = normalized(d_), n = normalized(n_);
+  bool unit = std::abs(length(n_) - 1) <= kUnitLengthTolerance;
+  std::string name = unit ? "n" : "n̂";
+  // The normal as given may point into the surface; the figure turns it to face the ray.
+  bool turned = dot(d, n) > 0;
+  sketch_surface(f, at, turned ? -n : n, d, turned ? "−" + name + " (turned to face d)" : name);
+  f.point(at, Ink::kHit);
+  sketch_incoming(f, at, d, "d = " + sketch_vector(d_));
+  f.arrow(at, at + normalized(reflect(d, n)), Ink::kRay, "r = " + sketch_vector(reflect(d_, n)));
+  return f;
 }
 
 }  // namespace raygrade

@@ -15,6 +15,7 @@ class ReflectTask final : public Task {
   std::vector<std::string> methods() const override { return {"vector"}; }
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
+  Sketch sketch() const override;
 
  private:
   Vec3d d_, n_;

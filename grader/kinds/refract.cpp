@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "derivation/number_format.h"
+#include "kinds/sketch.h"
 #include "scenes/optics.h"
 
 namespace raygrade {
@@ -80,6 +81,32 @@ std::vector<SolutionPart> RefractTask::derive(std::string_view /*method*/,
                            format_number(degrees(std::acos(std::sqrt(k.scalar))))));
   }
   return {SolutionPart{"", std::move(d).finish()}};
+}
+
+// The surface seen edge-on where the ray meets it (the origin stands for the place), the
+// unit normal facing the incoming ray and its dashed line through the surface (the angles
+// are measured from it), the two media, the incoming direction and the refracted one; past
+// the critical angle, the totally reflected direction instead.
+Sketch RefractTask::sketch() const {
+  Sketch f;
+  Vec3d at{0, 0, 0};
+  Vec3d d = normalized(d_), n = facing_normal();
+  Refraction r = refract(d, n, n1_, n2_);
+  Vec3d right = sketch_surface(f, at, n, d, "n̂");
+  f.line(at, n, Ink::kGuide);
+  f.text(at - right + 0.15 * n, Ink::kObject, "n₁ = " + format_number(n1_));
+  f.text(at - right - 0.3 * n, Ink::kObject, "n₂ = " + format_number(n2_));
+  double theta_i = degrees(std::acos(std::clamp(r.cos_i, -1.0, 1.0)));
+  f.point(at, Ink::kHit);
+  sketch_incoming(f, at, d, "d, θi = " + format_number(theta_i) + "°");
+  if (r.total_internal_reflection) {
+    f.arrow(at, at + reflect(d, n), Ink::kRay, "r: total internal reflection");
+    f.text(at + 0.5 * right - 0.5 * n, Ink::kMiss, "no refracted ray (k < 0)");
+  } else {
+    double theta_t = degrees(std::acos(std::clamp(std::sqrt(r.k), -1.0, 1.0)));
+    f.arrow(at, at + r.direction, Ink::kRay, "t, θt = " + format_number(theta_t) + "°");
+  }
+  return f;
 }
 
 }  // namespace raygrade

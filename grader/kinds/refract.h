@@ -17,6 +17,7 @@ class RefractTask final : public Task {
   std::vector<std::string> methods() const override { return {"vector"}; }
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
+  Sketch sketch() const override;
 
  private:
   Vec3d facing_normal() const;  // unit, against d

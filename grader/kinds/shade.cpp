@@ -2,6 +2,7 @@
 #include "kinds/shade.h"
 
 #include "derivation/number_format.h"
+#include "kinds/sketch.h"
 #include "scenes/optics.h"
 
 namespace raygrade {
@@ -116,6 +117,34 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
   Value t = d.step("I", "I", total, "the sum of the terms that apply");
   d.conclude(fmt::format("The intensity at P is I = {}.", format_number(t.scalar)));
   return {SolutionPart{"", std::move(d).finish()}};
+}
+
+// The point on its surface seen edge-on, the unit vectors of the Phong model drawn from it one
+// unit long: N, V toward the eye, and per light L toward it with its mirror direction R when
+// the light reaches the point; a light that does not (blocked, or behind the surface) is drawn
+// dotted with the reason. The view puts N up and V's part along the surface to the right.
+Sketch ShadeTask::sketch() const {
+  Sketch f;
+  Vec3d v = normalized(eye_ - point_);
+  sketch_surface(f, point_, normal_, v, "N");
+  f.point(point_, Ink::kHit, "P");
+  f.arrow(point_, point_ + v, Ink::kPoint, "V (to the eye)");
+  for (std::size_t k = 0; k < lights_.size(); ++k) {
+    const ShadeLight& sl = lights_[k];
+    // The names of the worked steps (L_1, R_1), with the light's own name.
+    std::string i = std::to_string(k + 1);
+    Vec3d l = to_light(sl.light, point_);
+    double n_dot_l = dot(normal_, l);
+    if (sl.blocked || n_dot_l <= 0) {
+      f.arrow(point_, point_ + l, Ink::kMiss,
+              fmt::format("L_{}, light {}: {}", i, sl.light.name,
+                          sl.blocked ? "blocked" : "behind the surface"));
+      continue;
+    }
+    f.arrow(point_, point_ + l, Ink::kRay, fmt::format("L_{}, light {}", i, sl.light.name));
+    f.arrow(point_, point_ + 2 * n_dot_l * normal_ - l, Ink::kGuide, "R_" + i);
+  }
+  return f;
 }
 
 }  // namespace raygrade

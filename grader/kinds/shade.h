@@ -29,6 +29,7 @@ class ShadeTask final : public Task {
   std::vector<std::string> methods() const override { return {"phong"}; }
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
+  Sketch sketch() const override;
 
  private:
   Vec3d point_, normal_, eye_;

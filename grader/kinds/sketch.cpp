@@ -10,11 +10,15 @@ namespace {
 
 // The ray is drawn this much past the farthest thing it meets, so its arrowhead stands clear.
 constexpr double kOvershoot = 1.2;
+// A tangential part shorter than this fraction of the vector counts as zero: the vector runs
+// along the normal (normal incidence), and the view takes any direction along the surface.
+constexpr double kAlongNormal = 1e-9;
 
 }  // namespace
 
 void sketch_ray(Sketch& figure, const Ray& ray, const std::vector<const Shape*>& objects,
-                const std::vector<Hit>& hits) {
+                const std::vector<Hit>& hits, const std::string& origin_label,
+                const std::string& ray_label) {
   figure.across = ray.direction;
   figure.across_name = "the ray's direction";
   double dd = length_squared(ray.direction);
@@ -35,12 +39,45 @@ void sketch_ray(Sketch& figure, const Ray& ray, const std::vector<const Shape*>&
   }
   if (std::isfinite(ray.t_max)) t_end = std::min(t_end, ray.t_max);
   if (t_start != 0) figure.path({ray.origin, ray.at(t_start)}, false, Ink::kGuide);
-  figure.arrow(ray.at(t_start), ray.at(t_end), Ink::kRay);
-  figure.point(ray.origin, Ink::kPoint, "O");
+  figure.arrow(ray.at(t_start), ray.at(t_end), Ink::kRay, ray_label);
+  figure.point(ray.origin, Ink::kPoint, origin_label);
 }
 
 void sketch_hit(Sketch& figure, const Hit& hit, Ink ink, const std::string& prefix) {
   figure.point(hit.point, ink, prefix + "t = " + format_number(hit.t));
+}
+
+std::string sketch_vector(const Vec3d& v) {
+  std::string text = format_vector(v), out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    // A number's sign follows "(" or a space; an exponent's follows its "e".
+    bool sign = text[i] == '-' && i > 0 && (text[i - 1] == '(' || text[i - 1] == ' ');
+    out += sign ? std::string("−") : std::string(1, text[i]);
+  }
+  return out;
+}
+
+Vec3d sketch_surface(Sketch& figure, const Vec3d& at, const Vec3d& normal, const Vec3d& along,
+                     const std::string& normal_label) {
+  Vec3d right = along - dot(along, normal) * normal;
+  if (length(right) <= kAlongNormal * length(along)) {
+    Vec3d helper = std::abs(normal.x) < 0.9 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
+    right = cross(helper, normal);
+  }
+  right = normalized(right);
+  figure.across = right;
+  figure.across_name = "along the surface";
+  figure.up = normal;
+  figure.up_name = "the normal";
+  figure.plane(at, normal, Ink::kObject, "surface");
+  figure.arrow(at, at + normal, Ink::kObject, normal_label);
+  return right;
+}
+
+void sketch_incoming(Sketch& figure, const Vec3d& at, const Vec3d& direction,
+                     const std::string& label) {
+  figure.path({at - direction, at}, false, Ink::kRay);
+  figure.arrow(at - direction, at - 0.5 * direction, Ink::kRay, label);
 }
 
 }  // namespace raygrade

@@ -59,7 +59,8 @@ void samples(const SketchItem& item, std::vector<Vec3d>& pts,
   switch (item.type) {
     case T::kPath:
     case T::kArrow:
-    case T::kPoint: pts.insert(pts.end(), item.points.begin(), item.points.end()); break;
+    case T::kPoint:
+    case T::kText: pts.insert(pts.end(), item.points.begin(), item.points.end()); break;
     case T::kCircle: balls.emplace_back(item.points[0], item.radius); break;
     case T::kCylinder:
       if (item.height > 0) {
@@ -96,8 +97,15 @@ View choose_view(const Sketch& f, const std::vector<Vec3d>& pts,
       break;
     }
   }
-  // Up: the direction across the main one along which the figure is widest; among equals,
-  // the first of +z, +y, +x and the direction toward the figure's middle.
+  // Up: the figure's own up direction when it names one (a surface's normal); otherwise the
+  // direction across the main one along which the figure is widest; among equals, the first
+  // of +z, +y, +x and the direction toward the figure's middle.
+  Vec3d own_up = f.up - dot(f.up, view.u) * view.u;
+  if (length(own_up) > kTinyDirection * std::max(1.0, length(f.up))) {
+    view.v = normalized(own_up);
+    view.m = cross(view.u, view.v);
+    return view;
+  }
   Vec3d middle{};
   for (const auto& p : pts) middle = middle + p;
   for (const auto& b : balls) middle = middle + b.first;
@@ -233,11 +241,14 @@ constexpr const char* kStyle =
     ".object{fill:#dce9f7;fill-opacity:.55;stroke:#2d5f8b;stroke-width:1.6}"
     ".guide{fill:none;stroke:#8a8a8a;stroke-width:1.1;stroke-dasharray:5 4}"
     ".ray{fill:none;stroke:#b83227;stroke-width:2}.ray-head{fill:#b83227}"
+    ".object-head{fill:#2d5f8b}.guide-head{fill:#8a8a8a}"
+    ".point{fill:none;stroke:#222;stroke-width:1.6}.point-head{fill:#222}"
+    ".miss{fill:none;stroke:#777;stroke-width:1.2;stroke-dasharray:2 3}.miss-head{fill:#777}"
     ".mark-hit{fill:#b83227;stroke:#fff;stroke-width:1.2}"
     ".mark-point{fill:#222}.mark-miss{fill:#fff;stroke:#777;stroke-width:1.2}"
     ".mark-object,.mark-guide,.mark-ray{fill:#555}"
     "text{font:12px sans-serif;fill:#222}.label-hit{fill:#8e241c;font-weight:bold}"
-    ".label-guide{fill:#666}.label-object{fill:#2d5f8b}"
+    ".label-guide{fill:#666}.label-object{fill:#2d5f8b}.label-miss{fill:#777}"
     "</style>";
 
 }  // namespace
@@ -289,7 +300,8 @@ SvgFigure render_svg(const Sketch& f, const std::string& title) {
   // Objects and guides first, then the ray, then the points, so that marks stay on top.
   for (int pass = 0; pass < 3; ++pass) {
     for (const auto& item : f.items) {
-      int layer = item.type == SketchItem::Type::kPoint ? 2 : item.ink == Ink::kRay ? 1 : 0;
+      bool on_top = item.type == SketchItem::Type::kPoint || item.type == SketchItem::Type::kText;
+      int layer = on_top ? 2 : item.ink == Ink::kRay ? 1 : 0;
       if (layer != pass) continue;
       const char* cls = ink_class(item.ink);
       using T = SketchItem::Type;
@@ -362,6 +374,7 @@ SvgFigure render_svg(const Sketch& f, const std::string& title) {
           canvas.label(canvas.px(c), item.label, cls);
           break;
         }
+        case T::kText: canvas.label(canvas.px(view.at(item.points[0])), item.label, cls); break;
       }
     }
   }
@@ -377,10 +390,14 @@ SvgFigure render_svg(const Sketch& f, const std::string& title) {
       width, height, html_escape(title), kStyle, width - 1, height - 1, canvas.body());
   std::string across = f.across_name.empty() ? direction_name(view.u)
                                              : f.across_name + " (" + direction_name(view.u) + ")";
+  bool own_up =
+      !f.up_name.empty() && length(f.up) > 0 && length(view.v - normalized(f.up)) < kTinyDirection;
+  std::string up =
+      own_up ? f.up_name + " (" + direction_name(view.v) + ")" : direction_name(view.v);
   out.caption = fmt::format(
       "Side view, drawn to scale: {} points right, {} points up; the page is the plane that "
       "holds both.",
-      across, direction_name(view.v));
+      across, up);
   return out;
 }
 

@@ -1,6 +1,8 @@
 // Cylinder: reading, reference intersection, and the quadratic derivation of seed 000.
 #include "shapes/cylinder.h"
 
+#include <algorithm>
+
 #include "shapes/describe.h"
 
 namespace raygrade {
@@ -213,6 +215,35 @@ Derivation Cylinder::derive(const Ray& ray, std::string_view /*method*/,
 
 void Cylinder::sketch(Sketch& figure, const std::string& label) const {
   figure.cylinder(base_, axis_, radius_, height_ ? *height_ : 0, Ink::kObject, label);
+}
+
+// The axis point of the base labelled with the circle's equation in the derivation's symbols
+// (seed 000: x² + y² = r², or (x − c_x)² + (y − c_y)² = r² with the centre written (c_x, c_y)),
+// and the radius r drawn from it toward the side the ray comes from, so that it stays clear of
+// the ray when the ray crosses the axis.
+void Cylinder::sketch_symbols(Sketch& figure, const Ray& ray,
+                              const std::vector<std::string>& symbols) const {
+  auto uses = [&](const char* name) {
+    return std::find(symbols.begin(), symbols.end(), name) != symbols.end();
+  };
+  bool vertical = axis_given_.x == 0 && axis_given_.y == 0 && axis_given_.z > 0;
+  std::string label = "axis";
+  if (vertical) {
+    label = uses("cx") || uses("cy") ? "(c_x, c_y): (x − c_x)² + (y − c_y)² = r²"
+                                     : "(0, 0): x² + y² = r²";
+  }
+  figure.point(base_, Ink::kGuide, label);
+  if (!uses("r")) return;
+  Vec3d toward = -(ray.direction - dot(ray.direction, axis_) * axis_);
+  if (length(toward) <= kAxisParallelRelative * length(ray.direction)) {
+    toward = ray.origin - base_;
+    toward = toward - dot(toward, axis_) * axis_;
+  }
+  if (length(toward) == 0) {
+    Vec3d helper = std::abs(axis_.x) < 0.9 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
+    toward = cross(axis_, helper);
+  }
+  figure.path({base_ + radius_ * normalized(toward), base_}, false, Ink::kGuide, "r");
 }
 
 }  // namespace raygrade

@@ -86,6 +86,8 @@ class Cylinder final : public Shape {
   Vec3d center() const override;
   double extent() const override;
   void sketch(Sketch& figure, const std::string& label) const override;
+  void sketch_symbols(Sketch& figure, const Ray& ray,
+                      const std::vector<std::string>& symbols) const override;
 
  private:
   Vec3d base_;

@@ -43,6 +43,12 @@ class Shape {
   virtual void sketch(Sketch& figure, const std::string& label) const {
     figure.circle(center(), extent(), Ink::kGuide, label);
   }
+
+  // Labels, in a sketch where `ray` meets the object, the parameters that formula answers
+  // name by their symbols (`symbols`: the derivation's scalar givens they use, "r", "cx").
+  // The default, for a primitive whose derivation has no such symbols, labels nothing.
+  virtual void sketch_symbols(Sketch& /*figure*/, const Ray& /*ray*/,
+                              const std::vector<std::string>& /*symbols*/) const {}
 };
 
 // One row of the table of primitives: the `type` key in problem files and its reader.

@@ -28,6 +28,7 @@ struct SketchItem {
     kPoint,     // a marker at points[0]
     kPlane,     // a plane through points[0] with normal points[1]: drawn as its trace in the view
     kCylinder,  // axis from points[0] along the unit points[1], `radius`; `height` 0: infinite
+    kText,      // a label alone, at points[0] (a medium's name, a note beside a construction)
   };
   Type type = Type::kPath;
   std::vector<Vec3d> points;
@@ -45,6 +46,10 @@ struct Sketch {
   // widest, so the view is the plane that shows it best.
   Vec3d across{};
   std::string across_name;  // what `across` is, for the caption: "the ray's direction"
+  // The direction drawn bottom to top (a surface's normal); zero, or parallel to `across`,
+  // when the renderer may choose.
+  Vec3d up{};
+  std::string up_name;  // what `up` is, for the caption: "the normal"
 
   bool empty() const { return items.empty(); }
   void path(std::vector<Vec3d> points, bool closed, Ink ink, std::string label = "") {
@@ -77,6 +82,9 @@ struct Sketch {
   }
   void point(const Vec3d& at, Ink ink, std::string label = "") {
     items.push_back({SketchItem::Type::kPoint, {at}, 0, 0, false, ink, std::move(label)});
+  }
+  void text(const Vec3d& at, Ink ink, std::string label) {
+    items.push_back({SketchItem::Type::kText, {at}, 0, 0, false, ink, std::move(label)});
   }
 };
 

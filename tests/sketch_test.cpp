@@ -1,0 +1,199 @@
+// The sketches of the kinds reflect, refract, shade and derive: what they draw, against values
+// worked by hand.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "reports/svg_figure.h"
+#include "test_util.h"
+
+namespace raygrade {
+namespace {
+
+using Type = SketchItem::Type;
+
+// The one item of `type` whose label is `label`; fails the test when there is none or several.
+const SketchItem& item(const Sketch& f, Type type, const std::string& label) {
+  const SketchItem* found = nullptr;
+  int count = 0;
+  for (const auto& i : f.items) {
+    if (i.type == type && i.label == label) {
+      found = &i;
+      ++count;
+    }
+  }
+  EXPECT_EQ(count, 1) << "items labelled '" << label << "'";
+  static const SketchItem kNone;
+  return found ? *found : kNone;
+}
+
+bool has_label_starting(const Sketch& f, const std::string& prefix) {
+  for (const auto& i : f.items) {
+    if (i.label.rfind(prefix, 0) == 0) return true;
+  }
+  return false;
+}
+
+// The unit direction of an arrow.
+Vec3d direction(const SketchItem& arrow) {
+  if (arrow.points.size() != 2) return {};
+  return normalized(arrow.points[1] - arrow.points[0]);
+}
+
+void expect_near(const Vec3d& a, const Vec3d& b, double tolerance = 1e-12) {
+  EXPECT_NEAR(a.x, b.x, tolerance) << "x";
+  EXPECT_NEAR(a.y, b.y, tolerance) << "y";
+  EXPECT_NEAR(a.z, b.z, tolerance) << "z";
+}
+
+// The bank's floor: d = (1, −2, 0), n = (0, 5, 0), so n̂ = (0, 1, 0), d·n̂ = −2 and
+// r = d − 2(d·n̂)n̂ = (1, −2, 0) + 4·(0, 1, 0) = (1, 2, 0), drawn as its unit (1, 2, 0)/√5.
+TEST(ReflectSketch, FloorShowsSurfaceNormalAndBothRays) {
+  Problem p = testing::problem(R"({"id": "r", "kind": "reflect",
+    "direction": [1, -2, 0], "normal": [0, 5, 0]})");
+  Sketch f = p.task->sketch();
+  const SketchItem& surface = item(f, Type::kPlane, "surface");
+  expect_near(surface.points[1], {0, 1, 0});
+  const SketchItem& normal = item(f, Type::kArrow, "n̂");
+  expect_near(normal.points[0], {0, 0, 0});
+  expect_near(normal.points[1], {0, 1, 0});
+  const SketchItem& in = item(f, Type::kArrow, "d = (1, −2, 0)");
+  expect_near(direction(in), Vec3d{1, -2, 0} / std::sqrt(5.0));
+  const SketchItem& out = item(f, Type::kArrow, "r = (1, 2, 0)");
+  expect_near(out.points[0], {0, 0, 0});
+  expect_near(direction(out), Vec3d{1, 2, 0} / std::sqrt(5.0));
+  EXPECT_EQ(out.ink, Ink::kRay);
+  // Seen edge-on: along the floor to the right, the normal up.
+  expect_near(f.across, {1, 0, 0});
+  expect_near(f.up, {0, 1, 0});
+  SvgFigure svg = render_svg(f, "reflect");
+  EXPECT_NE(svg.svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.caption.find("along the surface (+x) points right, the normal (+y) points up"),
+            std::string::npos)
+      << svg.caption;
+}
+
+// A unit normal given along the ray, (0, −1, 0): the figure turns it to face d and says so;
+// the reflected direction does not change.
+TEST(ReflectSketch, NormalAlongTheRayIsTurned) {
+  Problem p = testing::problem(R"({"id": "r", "kind": "reflect",
+    "direction": [1, -2, 0], "normal": [0, -1, 0]})");
+  Sketch f = p.task->sketch();
+  const SketchItem& normal = item(f, Type::kArrow, "−n (turned to face d)");
+  expect_near(normal.points[1], {0, 1, 0});
+  expect_near(direction(item(f, Type::kArrow, "r = (1, 2, 0)")), Vec3d{1, 2, 0} / std::sqrt(5.0));
+}
+
+// Air into water at 60°: η = 3/4, cos θi = 1/2, k = 1 − (9/16)(3/4) = 37/64, so
+// t = η·d̂ + (η·cos θi − √k)·n̂ = (3√3/8, −3/8 + 3/8 − √37/8, 0) = (3√3/8, −√37/8, 0) and
+// θt = asin(3√3/8) ≈ 40.505°.
+TEST(RefractSketch, WaterShowsTheRefractedRayAndItsAngle) {
+  Problem p = testing::problem(R"({"id": "w", "kind": "refract",
+    "direction": [0.8660254037844386, -0.5, 0], "normal": [0, 1, 0], "n1": 1,
+    "n2": 1.3333333333333333})");
+  Sketch f = p.task->sketch();
+  item(f, Type::kPlane, "surface");
+  expect_near(item(f, Type::kArrow, "n̂").points[1], {0, 1, 0});
+  expect_near(direction(item(f, Type::kArrow, "d, θi = 60°")), {std::sqrt(3.0) / 2, -0.5, 0});
+  const SketchItem& t = item(f, Type::kArrow, "t, θt = 40.51°");
+  expect_near(t.points[0], {0, 0, 0});
+  expect_near(t.points[1], {3 * std::sqrt(3.0) / 8, -std::sqrt(37.0) / 8, 0});
+  item(f, Type::kText, "n₁ = 1");
+  item(f, Type::kText, "n₂ = 1.333");
+  EXPECT_FALSE(has_label_starting(f, "r:"));
+}
+
+// Glass into air at 60° with the normal given along the ray: the figure turns it to
+// (0, −1, 0); sin θt would be 1.5·√3/2 > 1, so the ray is reflected: r = d̂ − 2(d̂·n̂)n̂ =
+// (√3/2, 1/2, 0) − 2·(−1/2)·(0, −1, 0) = (√3/2, −1/2, 0).
+TEST(RefractSketch, TotalInternalReflectionIsDrawnAndLabelled) {
+  Problem p = testing::problem(R"({"id": "g", "kind": "refract",
+    "direction": [0.8660254037844386, 0.5, 0], "normal": [0, 1, 0], "n1": 1.5, "n2": 1})");
+  Sketch f = p.task->sketch();
+  expect_near(item(f, Type::kArrow, "n̂").points[1], {0, -1, 0});
+  expect_near(f.up, {0, -1, 0});
+  const SketchItem& r = item(f, Type::kArrow, "r: total internal reflection");
+  expect_near(r.points[1], {std::sqrt(3.0) / 2, -0.5, 0});
+  item(f, Type::kText, "no refracted ray (k < 0)");
+  EXPECT_FALSE(has_label_starting(f, "t,"));
+}
+
+// The bank's two lights: V = (−3, 4, 0)/5; light A at (3, 4, 0): L_1 = (0.6, 0.8, 0),
+// N·L_1 = 0.8, R_1 = 2·0.8·(0, 1, 0) − L_1 = (−0.6, 0.8, 0) (= V: the full highlight);
+// light B at (0, 9, 0) is blocked: L_2 = (0, 1, 0), dotted, and no R_2.
+TEST(ShadeSketch, ShowsNormalViewLightsAndReflection) {
+  Problem p = testing::problem(R"({"id": "s", "kind": "shade",
+    "point": [0, 0, 0], "normal": [0, 1, 0], "eye": [-3, 4, 0], "ambient_light": 2,
+    "material": {"ambient": 0.1, "diffuse": 0.5, "specular": 0.3, "shininess": 12},
+    "lights": [{"name": "A", "position": [3, 4, 0]},
+               {"name": "B", "position": [0, 9, 0], "blocked": true}]})");
+  Sketch f = p.task->sketch();
+  item(f, Type::kPlane, "surface");
+  expect_near(item(f, Type::kPoint, "P").points[0], {0, 0, 0});
+  expect_near(item(f, Type::kArrow, "N").points[1], {0, 1, 0});
+  expect_near(item(f, Type::kArrow, "V (to the eye)").points[1], {-0.6, 0.8, 0});
+  const SketchItem& l1 = item(f, Type::kArrow, "L_1, light A");
+  EXPECT_EQ(l1.ink, Ink::kRay);
+  expect_near(l1.points[1], {0.6, 0.8, 0});
+  expect_near(item(f, Type::kArrow, "R_1").points[1], {-0.6, 0.8, 0});
+  const SketchItem& l2 = item(f, Type::kArrow, "L_2, light B: blocked");
+  EXPECT_EQ(l2.ink, Ink::kMiss);
+  expect_near(l2.points[1], {0, 1, 0});
+  EXPECT_FALSE(has_label_starting(f, "R_2"));
+  // V's part along the surface, (−0.6, 0, 0), points right.
+  expect_near(f.across, {-1, 0, 0});
+}
+
+// A light below the surface: N·L = −1 ≤ 0, drawn dotted with the reason.
+TEST(ShadeSketch, LightBehindTheSurfaceIsDotted) {
+  Problem p = testing::problem(R"({"id": "s", "kind": "shade",
+    "point": [0, 0, 0], "normal": [0, 1, 0], "eye": [0, 4, 0],
+    "lights": [{"name": "low", "position": [0, -2, 0]}]})");
+  Sketch f = p.task->sketch();
+  const SketchItem& l = item(f, Type::kArrow, "L_1, light low: behind the surface");
+  EXPECT_EQ(l.ink, Ink::kMiss);
+  expect_near(l.points[1], {0, -1, 0});
+  // V runs along the normal: the view takes a direction along the surface.
+  EXPECT_NEAR(dot(f.across, f.up), 0, 1e-15);
+  EXPECT_NEAR(length(f.across), 1, 1e-15);
+}
+
+// Seed 000's cylinder x² + y² = 1 and the ray (−3, 0, 0.5) + t(1, 0, 0): a = 1, b = −6,
+// c = 8, so t = 2 and t = 4, at (−1, 0, 0.5) and (1, 0, 0.5). The ray is labelled in the
+// formulas' symbols and the radius r drawn from the axis toward the ray's side.
+TEST(DeriveSketch, CylinderWithTheFormulasSymbols) {
+  Problem p = testing::problem(R"({"id": "d", "kind": "derive",
+    "ray": {"origin": [-3, 0, 0.5], "direction": [1, 0, 0]},
+    "object": {"type": "cylinder", "base": [0, 0, 0], "axis": [0, 0, 1], "radius": 1},
+    "find": ["a", "b", "c"]})");
+  Sketch f = p.task->sketch();
+  const SketchItem& cylinder = item(f, Type::kCylinder, "");
+  EXPECT_EQ(cylinder.radius, 1);
+  expect_near(cylinder.points[1], {0, 0, 1});
+  expect_near(item(f, Type::kPoint, "(0, 0): x² + y² = r²").points[0], {0, 0, 0});
+  const SketchItem& r = item(f, Type::kPath, "r");
+  expect_near(r.points[0], {-1, 0, 0});
+  expect_near(r.points[1], {0, 0, 0});
+  expect_near(item(f, Type::kPoint, "p").points[0], {-3, 0, 0.5});
+  expect_near(direction(item(f, Type::kArrow, "p + t v")), {1, 0, 0});
+  expect_near(item(f, Type::kPoint, "t = 2").points[0], {-1, 0, 0.5});
+  expect_near(item(f, Type::kPoint, "t = 4").points[0], {1, 0, 0.5});
+}
+
+// Seed 000's second cylinder, axis through (2, 3): the centre is named (c_x, c_y) and r = 2
+// points from it against the ray's direction (1, 1, 0.2), i.e. along −(1, 1, 0)/√2.
+TEST(DeriveSketch, OffsetCylinderNamesItsCentre) {
+  Problem p = testing::problem(R"({"id": "d", "kind": "derive",
+    "ray": {"origin": [0, 0, 0], "direction": [1, 1, 0.2]},
+    "object": {"type": "cylinder", "base": [2, 3, 0], "axis": [0, 0, 1], "radius": 2},
+    "find": ["a", "b", "c"]})");
+  Sketch f = p.task->sketch();
+  expect_near(item(f, Type::kPoint, "(c_x, c_y): (x − c_x)² + (y − c_y)² = r²").points[0],
+              {2, 3, 0});
+  const SketchItem& r = item(f, Type::kPath, "r");
+  expect_near(r.points[0], {2 - std::sqrt(2.0), 3 - std::sqrt(2.0), 0});
+  expect_near(r.points[1], {2, 3, 0});
+}
+
+}  // namespace
+}  // namespace raygrade
