@@ -62,12 +62,12 @@ std::optional<T> triangle(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& a, 
                           const Vec3<T>& c) {
   Vec3<T> n = cross(b - a, c - a);
   std::optional<T> t = plane(o, d, n, a);
-  if (!t) return t;
+  if (!t) return std::nullopt;
   Vec3<T> q = o + *t * d;
   if (dot(cross(b - a, q - a), n) < T(0)) return std::nullopt;
   if (dot(cross(c - b, q - b), n) < T(0)) return std::nullopt;
   if (dot(cross(a - c, q - c), n) < T(0)) return std::nullopt;
-  return t;
+  return *t;
 }
 
 // Polygon: hit the plane of its first three vertices, then count crossings of a ray along +u
@@ -76,7 +76,7 @@ template <typename T>
 std::optional<T> polygon(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& v) {
   Vec3<T> n = cross(v[1] - v[0], v[2] - v[0]);
   std::optional<T> t = plane(o, d, n, v[0]);
-  if (!t) return t;
+  if (!t) return std::nullopt;
   Vec3<T> q = o + *t * d;
   int drop = max_dimension(n), iu = (drop + 1) % 3, iv = (drop + 2) % 3;
   bool inside = false;
@@ -89,7 +89,7 @@ std::optional<T> polygon(const Vec3<T>& o, const Vec3<T>& d, const std::vector<V
     }
   }
   if (!inside) return std::nullopt;
-  return t;
+  return *t;
 }
 
 // Box: the slab method with plain divisions (a zero direction component gives ±∞, and NaN

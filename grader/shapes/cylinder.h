@@ -11,9 +11,35 @@ namespace raygrade {
 // unit axis. As for the sphere, the quarter discriminant is a·r² − ((f × d)·â)², which does
 // not cancel, and the roots come from q = −(b + sign(b)√Δ). count 0 when the ray is parallel
 // to the axis (a = 0).
+// The compensated path of cylinder_side_roots (f = o − base, its part f⊥ across the axis,
+// a = |d⊥|², b = f⊥·d⊥), out of line so that the fast path inlines where it is called.
 template <typename T>
-Roots<T> cylinder_side_roots(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& base,
-                             const Vec3<T>& axis, T r) {
+[[gnu::noinline]] Roots<T> cylinder_side_roots_accurate(const Vec3<T>& f, const Vec3<T>& d,
+                                                        const Vec3<T>& fp, const Vec3<T>& axis, T a,
+                                                        T b, T r) {
+  using std::sqrt;
+  Roots<T> out;
+  T s = dot(cross_accurate(f, d), axis);
+  T disc = a * (r * r) - s * s;
+  if (disc < T(0)) return out;
+  if (disc == T(0)) {
+    out.count = 1;
+    out.t0 = out.t1 = -b / a;
+    return out;
+  }
+  T c = sum_of_squares_minus_square(fp, Vec3<T>{}, r);
+  T q = -(b + sign_of(b) * sqrt(disc));
+  T t0 = c / q, t1 = q / a;
+  if (t1 < t0) std::swap(t0, t1);
+  out.count = 2;
+  out.t0 = t0;
+  out.t1 = t1;
+  return out;
+}
+
+template <typename T>
+inline Roots<T> cylinder_side_roots(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& base,
+                                    const Vec3<T>& axis, T r) {
   using std::sqrt;
   Vec3<T> f = o - base;
   Vec3<T> fp = f - dot(f, axis) * axis;
@@ -54,22 +80,7 @@ Roots<T> cylinder_side_roots(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& 
       }
     }
   }
-  T s = dot(cross_accurate(f, d), axis);
-  T disc = a * (r * r) - s * s;
-  if (disc < T(0)) return out;
-  if (disc == T(0)) {
-    out.count = 1;
-    out.t0 = out.t1 = -b / a;
-    return out;
-  }
-  T c = sum_of_squares_minus_square(fp, Vec3<T>{}, r);
-  T q = -(b + sign_of(b) * sqrt(disc));
-  T t0 = c / q, t1 = q / a;
-  if (t1 < t0) std::swap(t0, t1);
-  out.count = 2;
-  out.t0 = t0;
-  out.t1 = t1;
-  return out;
+  return cylinder_side_roots_accurate(f, d, fp, axis, a, b, r);
 }
 
 class Cylinder final : public Shape {

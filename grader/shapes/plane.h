@@ -11,8 +11,22 @@ namespace raygrade {
 // The parameter t where the ray meets the plane through p with normal n: n·(p − o) / (n·d),
 // with p − o split exactly and both dot products compensated, so that a ray nearly parallel
 // to the plane (n·d around 1e-12) keeps the digits of its denominator. No value when n·d = 0.
+// The compensated path of plane_t, kept out of line so that the fast path inlines where it
+// is called: a call costs as much as the fast path's arithmetic.
 template <typename T>
-std::optional<T> plane_t(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& n, const Vec3<T>& p) {
+[[gnu::noinline]] std::optional<T> plane_t_accurate(const Vec3<T>& o, const Vec3<T>& d,
+                                                    const Vec3<T>& n, const Vec3<T>& p) {
+  T den = dot_accurate(n, d);
+  if (den == T(0)) return std::nullopt;
+  Vec3<T> f, f_lo;
+  difference_exact(p, o, f, f_lo);
+  T num = dot_accurate(n, f) + dot(n, f_lo);
+  return num / den;
+}
+
+template <typename T>
+inline std::optional<T> plane_t(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& n,
+                                const Vec3<T>& p) {
   if constexpr (kErrorFree<T>) {
     // Fast path: plain dot products, kept when their error bounds show t = num/den within the
     // tolerance (docs/precision.md, "Fast paths"): |den − den*| ≤ 4u·Σ|n_i d_i| and, counting
@@ -29,13 +43,10 @@ std::optional<T> plane_t(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& n, c
     if (num_error * abs(den) + den_error * abs(num) < kFastPathTolerance<T> * size &&
         size >= T(1) / kFastPathRange<T>)
       return num / den;
+    return plane_t_accurate(o, d, n, p);
+  } else {
+    return plane_t_accurate(o, d, n, p);
   }
-  T den = dot_accurate(n, d);
-  if (den == T(0)) return std::nullopt;
-  Vec3<T> f, f_lo;
-  difference_exact(p, o, f, f_lo);
-  T num = dot_accurate(n, f) + dot(n, f_lo);
-  return num / den;
 }
 
 class Plane final : public Shape {

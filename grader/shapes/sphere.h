@@ -48,17 +48,17 @@ T sum_of_squares_minus_square(const Vec3<T>& f_hi, const Vec3<T>& f_lo, T r) {
 // The roots of the sphere's quadratic in plain arithmetic, when their a-posteriori error bounds
 // (docs/precision.md, "Fast paths") show that they decide hit or miss, and which root is nearest,
 // as exact arithmetic would, and that c = f·f − r² and the quarter discriminant are within
-// kFastPathTolerance of their exact values (relative to the root they make). Nothing otherwise:
-// the compensated formulas then run.
+// kFastPathTolerance of their exact values (relative to the root they make): then true, with
+// the roots in `out`. False otherwise: the compensated formulas then run. (An out-parameter
+// rather than a std::optional, whose copy through memory costs GCC 12 a store-forwarding stall.)
 template <typename T>
-std::optional<Roots<T>> sphere_roots_fast(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& center,
-                                          T r) {
+inline bool sphere_roots_fast(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& center, T r,
+                              Roots<T>& out) {
   using std::abs, std::sqrt;
   constexpr T u = kUnitRoundoff<T>, tolerance = kFastPathTolerance<T>;
   Vec3<T> f = o - center;
   T a = dot(d, d), ff = dot(f, f), rr = r * r;
-  if (!in_fast_path_range(a) || !in_fast_path_range(rr) || !(ff <= kFastPathRange<T>))
-    return std::nullopt;
+  if (!in_fast_path_range(a) || !in_fast_path_range(rr) || !(ff <= kFastPathRange<T>)) return false;
   // The cross product f × d, and beside each component the sum of its two products' magnitudes,
   // which bounds its rounding error: at most 3u times that sum, counting the rounding of f.
   T px = f.y * d.z, qx = f.z * d.y, py = f.z * d.x, qy = f.x * d.z, pz = f.x * d.y, qz = f.y * d.x;
@@ -67,20 +67,20 @@ std::optional<Roots<T>> sphere_roots_fast(const Vec3<T>& o, const Vec3<T>& d, co
   T spread = abs(fxd.x) * (abs(px) + abs(qx)) + abs(fxd.y) * (abs(py) + abs(qy)) +
              abs(fxd.z) * (abs(pz) + abs(qz));
   // Bounds: |c − c*| ≤ 7u(ff + rr) and |disc − disc*| ≤ e.
-  if (!(abs(c) * tolerance >= T(7) * u * (ff + rr))) return std::nullopt;
+  if (!(abs(c) * tolerance >= T(7) * u * (ff + rr))) return false;
   T e = T(7) * u * (ar + s2) + T(6) * u * spread + T(32) * u * u * (ff * a);
-  if (!(abs(disc) > e)) return std::nullopt;
-  Roots<T> out;
-  if (disc < T(0)) return out;
+  if (!(abs(disc) > e)) return false;
+  out = Roots<T>{};
+  if (disc < T(0)) return true;
   // The error of √disc, at most e/√disc, is within the tolerance of |q| = |b| + √disc.
   T b = dot(f, d), root = sqrt(disc);
-  if (!(e <= tolerance * (disc + abs(b) * root))) return std::nullopt;
+  if (!(e <= tolerance * (disc + abs(b) * root))) return false;
   T q = -(b + sign_of(b) * root);
   out.count = 2;
   out.t0 = c / q;
   out.t1 = q / a;
   if (out.t1 < out.t0) std::swap(out.t0, out.t1);
-  return out;
+  return true;
 }
 
 // The stable reference: roots of |o + t d − c|² = r² (Ray Tracing Gems, ch. 7). The quarter
@@ -89,11 +89,22 @@ std::optional<Roots<T>> sphere_roots_fast(const Vec3<T>& o, const Vec3<T>& d, co
 // computation is kept when its error bounds allow (sphere_roots_fast); otherwise f = o − c is
 // split exactly and the cross product and c are compensated.
 template <typename T>
-Roots<T> sphere_roots(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& center, T r) {
-  using std::sqrt;
+[[gnu::noinline]] Roots<T> sphere_roots_accurate(const Vec3<T>& o, const Vec3<T>& d,
+                                                 const Vec3<T>& center, T r);
+
+template <typename T>
+inline Roots<T> sphere_roots(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& center, T r) {
   if constexpr (kErrorFree<T>) {
-    if (std::optional<Roots<T>> fast = sphere_roots_fast(o, d, center, r)) return *fast;
+    Roots<T> fast;
+    if (sphere_roots_fast(o, d, center, r, fast)) return fast;
   }
+  return sphere_roots_accurate(o, d, center, r);
+}
+
+// The compensated path, out of line so that the fast path inlines where it is called.
+template <typename T>
+Roots<T> sphere_roots_accurate(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& center, T r) {
+  using std::sqrt;
   Vec3<T> f, f_lo;
   difference_exact(o, center, f, f_lo);
   T a = dot(d, d);
