@@ -55,9 +55,15 @@ std::optional<T> nearest_of(const Roots<T>& r) {
 
 // The reference: the templates the solver's Shape::intersect runs in double, on inputs
 // already in T (points and radius as AccuracyCase describes them).
+// Inlined where it is called, as naive_nearest is: a std::optional<double> returned from a call
+// is stored and reloaded through memory by GCC 12, a store-forwarding stall that costs as much as
+// a plane's whole intersection and would be timed as part of the formula.
 template <typename T>
-std::optional<T> reference_nearest_at(Primitive primitive, const Vec3<T>& o, const Vec3<T>& d,
-                                      const std::vector<Vec3<T>>& p, const T& radius) {
+[[gnu::always_inline]] inline std::optional<T> reference_nearest_at(Primitive primitive,
+                                                                    const Vec3<T>& o,
+                                                                    const Vec3<T>& d,
+                                                                    const std::vector<Vec3<T>>& p,
+                                                                    const T& radius) {
   using std::sqrt;
   switch (primitive) {
     case Primitive::kSphere: return nearest_of(sphere_roots(o, d, p[0], radius));

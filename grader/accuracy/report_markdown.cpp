@@ -94,8 +94,9 @@ std::string render_accuracy_markdown(const AccuracyReport& r, const std::string&
       "ground truth computed in certified MPFR interval arithmetic on the exact binary inputs. "
       "Relative errors in t are absolute below |t| = 1; cases whose truth lies exactly on a "
       "boundary (a ray exactly parallel to a cylinder's axis, say) are not judged. Times are "
-      "nanoseconds per intersection on the machine that ran the command, single-threaded; "
-      "compare them with each other, not across machines.\n\n",
+      "nanoseconds per intersection on the machine that ran the command, single-threaded, the "
+      "least of five timings of at least 30 ms each (another process taking the core only "
+      "ever adds time); compare them with each other, not across machines.\n\n",
       r.random_per_primitive, hard_total);
   md += "## The ladder\n\n";
   md += "| level | what it is |\n| --- | --- |\n";

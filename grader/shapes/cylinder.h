@@ -38,8 +38,9 @@ template <typename T>
 }
 
 template <typename T>
-inline Roots<T> cylinder_side_roots(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& base,
-                                    const Vec3<T>& axis, T r) {
+[[gnu::always_inline]] inline Roots<T> cylinder_side_roots(const Vec3<T>& o, const Vec3<T>& d,
+                                                           const Vec3<T>& base, const Vec3<T>& axis,
+                                                           T r) {
   using std::sqrt;
   Vec3<T> f = o - base;
   Vec3<T> fp = f - dot(f, axis) * axis;

@@ -45,37 +45,49 @@ T sum_of_squares_minus_square(const Vec3<T>& f_hi, const Vec3<T>& f_lo, T r) {
   }
 }
 
+// The quarter discriminant a·r² − |f × d|² in plain arithmetic, when its a-posteriori error
+// bound e (docs/precision.md, "Fast paths") is within kFastPathTolerance of it; 0 otherwise.
+// Each component x_i = p_i − q_i of the cross product is within 3u(|p_i| + |q_i|) of the exact
+// one, counting the rounding of f, so a ray aimed near the centre (x small) keeps a small bound.
+template <typename T>
+[[gnu::always_inline]] inline T cross_product_discriminant(const Vec3<T>& f, const Vec3<T>& d, T a,
+                                                           T ff, T rr) {
+  using std::abs;
+  constexpr T u = kUnitRoundoff<T>, tolerance = kFastPathTolerance<T>;
+  T px = f.y * d.z, qx = f.z * d.y, py = f.z * d.x, qy = f.x * d.z, pz = f.x * d.y, qz = f.y * d.x;
+  Vec3<T> x{px - qx, py - qy, pz - qz};
+  T s2 = dot(x, x), ar = a * rr, disc = ar - s2;
+  T spread = abs(x.x) * (abs(px) + abs(qx)) + abs(x.y) * (abs(py) + abs(qy)) +
+             abs(x.z) * (abs(pz) + abs(qz));
+  T e = T(7) * u * (ar + s2) + T(6) * u * spread + T(32) * u * u * (ff * a);
+  return abs(disc) * tolerance >= e ? disc : T(0);
+}
+
 // The roots of the sphere's quadratic in plain arithmetic, when their a-posteriori error bounds
 // (docs/precision.md, "Fast paths") show that they decide hit or miss, and which root is nearest,
 // as exact arithmetic would, and that c = f·f − r² and the quarter discriminant are within
-// kFastPathTolerance of their exact values (relative to the root they make): then true, with
-// the roots in `out`. False otherwise: the compensated formulas then run. (An out-parameter
-// rather than a std::optional, whose copy through memory costs GCC 12 a store-forwarding stall.)
+// kFastPathTolerance τ of their exact values: then true, with the roots in `out`. False
+// otherwise: the compensated formulas then run. (An out-parameter rather than a std::optional,
+// whose copy through memory costs GCC 12 a store-forwarding stall.)
 template <typename T>
-inline bool sphere_roots_fast(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& center, T r,
-                              Roots<T>& out) {
+[[gnu::always_inline]] inline bool sphere_roots_fast(const Vec3<T>& o, const Vec3<T>& d,
+                                                     const Vec3<T>& center, T r, Roots<T>& out) {
   using std::abs, std::sqrt;
   constexpr T u = kUnitRoundoff<T>, tolerance = kFastPathTolerance<T>;
   Vec3<T> f = o - center;
-  T a = dot(d, d), ff = dot(f, f), rr = r * r;
-  if (!in_fast_path_range(a) || !in_fast_path_range(rr) || !(ff <= kFastPathRange<T>)) return false;
-  // The cross product f × d, and beside each component the sum of its two products' magnitudes,
-  // which bounds its rounding error: at most 3u times that sum, counting the rounding of f.
-  T px = f.y * d.z, qx = f.z * d.y, py = f.z * d.x, qy = f.x * d.z, pz = f.x * d.y, qz = f.y * d.x;
-  Vec3<T> fxd{px - qx, py - qy, pz - qz};
-  T s2 = dot(fxd, fxd), ar = a * rr, disc = ar - s2, c = ff - rr;
-  T spread = abs(fxd.x) * (abs(px) + abs(qx)) + abs(fxd.y) * (abs(py) + abs(qy)) +
-             abs(fxd.z) * (abs(pz) + abs(qz));
-  // Bounds: |c − c*| ≤ 7u(ff + rr) and |disc − disc*| ≤ e.
-  if (!(abs(c) * tolerance >= T(7) * u * (ff + rr))) return false;
-  T e = T(7) * u * (ar + s2) + T(6) * u * spread + T(32) * u * u * (ff * a);
-  if (!(abs(disc) > e)) return false;
+  T a = dot(d, d), ff = dot(f, f), rr = r * r, b = dot(f, d), c = ff - rr;
+  // |c − c*| ≤ 7u(ff + rr); the bounds' products neither overflow nor underflow in range.
+  bool in_range = in_fast_path_range(a) && in_fast_path_range(rr) && ff <= kFastPathRange<T>;
+  if (!(in_range && abs(c) * tolerance >= T(7) * u * (ff + rr))) return false;
+  // The quarter discriminant a·r² − |f × d|², which does not cancel for far spheres. Its bound
+  // e ≤ τ·|disc| makes its sign certain and keeps the error it brings into √disc, and so into
+  // q = −(b + sign(b)√disc), within τ. (The textbook b² − a·c would be cheaper, but near a
+  // tangent its error grows faster than the condition number of t: the hard cases catch it.)
+  T disc = cross_product_discriminant(f, d, a, ff, rr);
+  if (disc == T(0)) return false;
   out = Roots<T>{};
   if (disc < T(0)) return true;
-  // The error of √disc, at most e/√disc, is within the tolerance of |q| = |b| + √disc.
-  T b = dot(f, d), root = sqrt(disc);
-  if (!(e <= tolerance * (disc + abs(b) * root))) return false;
-  T q = -(b + sign_of(b) * root);
+  T q = -(b + sign_of(b) * sqrt(disc));
   out.count = 2;
   out.t0 = c / q;
   out.t1 = q / a;
@@ -93,7 +105,8 @@ template <typename T>
                                                  const Vec3<T>& center, T r);
 
 template <typename T>
-inline Roots<T> sphere_roots(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& center, T r) {
+[[gnu::always_inline]] inline Roots<T> sphere_roots(const Vec3<T>& o, const Vec3<T>& d,
+                                                    const Vec3<T>& center, T r) {
   if constexpr (kErrorFree<T>) {
     Roots<T> fast;
     if (sphere_roots_fast(o, d, center, r, fast)) return fast;
