@@ -57,10 +57,13 @@ template <typename T>
   T px = f.y * d.z, qx = f.z * d.y, py = f.z * d.x, qy = f.x * d.z, pz = f.x * d.y, qz = f.y * d.x;
   Vec3<T> x{px - qx, py - qy, pz - qz};
   T s2 = dot(x, x), ar = a * rr, disc = ar - s2;
+  // First a bound from magnitudes at hand, enough for nearly every ordinary ray: the spread
+  // below is at most 2|f||d|·√3|f||d| < 4·ff·a, so e ≤ 7u(a·rr + s2) + 25u·ff·a.
+  T slack = abs(disc) * tolerance - T(7) * u * (ar + s2);
+  if (slack >= T(25) * u * (ff * a)) return disc;
   T spread = abs(x.x) * (abs(px) + abs(qx)) + abs(x.y) * (abs(py) + abs(qy)) +
              abs(x.z) * (abs(pz) + abs(qz));
-  T e = T(7) * u * (ar + s2) + T(6) * u * spread + T(32) * u * u * (ff * a);
-  return abs(disc) * tolerance >= e ? disc : T(0);
+  return slack >= T(6) * u * spread + T(32) * u * u * (ff * a) ? disc : T(0);
 }
 
 // The roots of the sphere's quadratic in plain arithmetic, when their a-posteriori error bounds
