@@ -1,6 +1,8 @@
 // Recording derivation steps.
 #include "derivation/derivation.h"
 
+#include <string_view>
+
 #include "core/error.h"
 
 namespace raygrade {
@@ -78,7 +80,10 @@ const Value& Deriver::value(const std::string& name) const {
 void Deriver::note(std::string text) {
   if (d_.steps.empty()) return;
   auto& n = d_.steps.back().note;
-  n = n.empty() ? std::move(text) : n + " " + text;
+  // Two sentences, not one run-on: "cos²θt. Going into a lower index, ...".
+  bool ends_sentence =
+      !n.empty() && std::string_view(".!?:;").find(n.back()) != std::string_view::npos;
+  n = n.empty() ? std::move(text) : n + (ends_sentence ? " " : ". ") + text;
 }
 
 void Deriver::conclude(std::string sentence) { conclude(Sentence(std::move(sentence))); }
