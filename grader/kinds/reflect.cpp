@@ -31,10 +31,9 @@ std::vector<SolutionPart> ReflectTask::derive(std::string_view /*method*/,
   Value r = d.step("r", "r", D - 2 * d.sym("d_dot_n") * Nh,
                    "remove that component twice: the tangential part stays, the normal part "
                    "flips");
-  d.conclude(
-      fmt::format("The reflected direction is r = {} (same length as d; the normal's "
-                  "orientation does not matter).",
-                  format_vector(r.vector)));
+  d.conclude(Sentence("The reflected direction is r = ")
+                 .value(r)
+                 .text(" (same length as d; the normal's orientation does not matter)."));
   return {SolutionPart{"", std::move(d).finish()}};
 }
 

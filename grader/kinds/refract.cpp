@@ -76,9 +76,13 @@ std::vector<SolutionPart> RefractTask::derive(std::string_view /*method*/,
                      d.sym("eta") * d.sym("d_hat") +
                          (d.sym("eta") * d.sym("cos_i") - sqrt(d.sym("k"))) * d.sym("n_hat"),
                      "t = η·d̂ + (η·cos θi − √k)·n̂, a unit vector");
-    d.conclude(fmt::format("The refracted direction is t = {} (θi = {}°, θt = {}°).",
-                           format_vector(t.vector), format_number(theta_i),
-                           format_number(degrees(std::acos(std::sqrt(k.scalar))))));
+    d.conclude(Sentence("The refracted direction is t = ")
+                   .value(t)
+                   .text(" (θi = ")
+                   .value(theta_i)
+                   .text("°, θt = ")
+                   .value(degrees(std::acos(std::sqrt(k.scalar))))
+                   .text("°)."));
   }
   return {SolutionPart{"", std::move(d).finish()}};
 }
