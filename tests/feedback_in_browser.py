@@ -18,10 +18,8 @@ import re
 import shutil
 import subprocess
 import sys
-import tempfile
 
-FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-         "--disable-background-networking", "--disable-component-update", "--disable-sync"]
+from chromium import chromium, run_browser
 
 MARK = "document.documentElement.setAttribute('data-pwned','1')"
 SCRIPT_NAME = "<script>alert(1)</script>"
@@ -42,20 +40,6 @@ SUBMISSIONS = {
     "other-payloads": {"student": {"name": OTHER_NAME, "id": OTHER_ID}, "answers": RIGHT},
     "markup-answers": {"student": {"name": "Mallory", "id": "s3"}, "answers": MARKUP_ANSWERS},
 }
-
-
-def chromium():
-    for name in ("chromium", "chromium-browser"):
-        path = shutil.which(name)
-        if path:
-            return path
-    return None
-
-
-def run_browser(browser, args, page):
-    with tempfile.TemporaryDirectory(prefix="raygrade-chromium-") as profile:
-        cmd = [browser, *FLAGS, f"--user-data-dir={profile}", *args, "file://" + page]
-        return subprocess.run(cmd, capture_output=True, text=True, timeout=120)
 
 
 def check_dom(dom):

@@ -11,27 +11,10 @@ usage: html_in_browser.py RAYGRADE_BINARY BANK_FOLDER OUTPUT_FOLDER
 import json
 import os
 import re
-import shutil
 import subprocess
 import sys
-import tempfile
 
-FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-         "--disable-background-networking", "--disable-component-update", "--disable-sync"]
-
-
-def chromium():
-    for name in ("chromium", "chromium-browser"):
-        path = shutil.which(name)
-        if path:
-            return path
-    return None
-
-
-def run_browser(browser, args, page):
-    with tempfile.TemporaryDirectory(prefix="raygrade-chromium-") as profile:
-        cmd = [browser, *FLAGS, f"--user-data-dir={profile}", *args, "file://" + page]
-        return subprocess.run(cmd, capture_output=True, text=True, timeout=120)
+from chromium import chromium, run_browser
 
 
 def main():

@@ -1,0 +1,23 @@
+"""Headless Chromium for the browser tests: find it, and load a page in a fresh profile."""
+import shutil
+import subprocess
+import tempfile
+
+FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+         "--disable-background-networking", "--disable-component-update", "--disable-sync"]
+
+
+def chromium():
+    """The path of Debian's chromium, or None when it is not installed."""
+    for name in ("chromium", "chromium-browser"):
+        path = shutil.which(name)
+        if path:
+            return path
+    return None
+
+
+def run_browser(browser, args, page):
+    """Loads the file `page` with the extra command-line `args` (--dump-dom, --screenshot=...)."""
+    with tempfile.TemporaryDirectory(prefix="raygrade-chromium-") as profile:
+        cmd = [browser, *FLAGS, f"--user-data-dir={profile}", *args, "file://" + page]
+        return subprocess.run(cmd, capture_output=True, text=True, timeout=120)
