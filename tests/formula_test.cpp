@@ -57,6 +57,32 @@ TEST(Formula, FaultsPointAtTheCharacter) {
   p = parse_formula("\u22121 $");
   ASSERT_FALSE(p.ok);
   EXPECT_EQ(p.column, 4u);
+  EXPECT_FALSE(p.over_limit);  // a slip, given back as feedback
+}
+
+// "((...(1)...))", n parentheses deep.
+std::string nested(int n) {
+  std::string s(static_cast<std::size_t>(n), '(');
+  s += '1';
+  s.append(static_cast<std::size_t>(n), ')');
+  return s;
+}
+
+// Beyond the limits is not a slip: the submission reader rejects it (over_limit).
+TEST(Formula, LimitsAreToldApartFromSlips) {
+  EXPECT_TRUE(parse_formula(std::string(1001, '1')).over_limit);
+  std::string sum = "1";  // 1+1+...+1: 999 characters, within the limit
+  while (sum.size() < 999) sum += "+1";
+  EXPECT_TRUE(parse_formula(sum).ok);
+  // Each parenthesis is two grammar levels (the sum inside, and the factor), and the whole
+  // answer one more: 19 nest within the 40 levels, 20 do not.
+  EXPECT_TRUE(parse_formula(nested(19)).ok);
+  EXPECT_TRUE(parse_formula(nested(20)).over_limit);
+  FormulaParse deep = parse_formula(nested(30));
+  EXPECT_FALSE(deep.ok);
+  EXPECT_TRUE(deep.over_limit);
+  // A fault before the depth limit is reached stays a slip.
+  EXPECT_FALSE(parse_formula("((1 +) + 2)").over_limit);
 }
 
 TEST(Formula, NestingBombIsRefusedNotRecursed) {

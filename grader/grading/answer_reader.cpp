@@ -3,7 +3,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
 
 #include "core/escape.h"
@@ -55,9 +54,10 @@ void AnswerReader::fail(const std::string& message, const std::string& code) con
   throw Error(Diagnostic{file_ ? *file_ : "", path_, 0, 0, Severity::kError, message, code});
 }
 
-AnswerReader::Number parse_student_number(std::string_view text) {
+namespace {
+
+AnswerReader::Number student_number(std::string_view text, FormulaParse p) {
   AnswerReader::Number out;
-  FormulaParse p = parse_formula(text);
   if (!p.ok) {
     out.fault = fmt::format("could not read '{}': {}", printable(text, 60), p.message);
     return out;
@@ -69,6 +69,12 @@ AnswerReader::Number parse_student_number(std::string_view text) {
   }
   out.value = StudentNumber{v, p.digits, std::string(text)};
   return out;
+}
+
+}  // namespace
+
+AnswerReader::Number parse_student_number(std::string_view text) {
+  return student_number(text, parse_formula(text));
 }
 
 AnswerReader::Number AnswerReader::number() const {
@@ -83,22 +89,11 @@ AnswerReader::Number AnswerReader::number() const {
   }
   if (value_->is_string()) {
     const std::string& text = value_->get_ref<const std::string&>();
-    // A typed number longer or deeper than any real one is hostile input, not a slip to
-    // give feedback on: the submission is rejected, as for a string over the file's limit.
-    if (text.size() > kMaxFormulaLength)
-      fail(fmt::format("a typed number is at most {} characters; this one has {}",
-                       kMaxFormulaLength, text.size()),
-           "limit");
-    int depth = 0, deepest = 0;
-    for (char ch : text) {
-      depth += ch == '(' ? 1 : ch == ')' ? -1 : 0;
-      deepest = std::max(deepest, depth);
-    }
-    if (deepest > kMaxFormulaDepth)
-      fail(fmt::format("a typed number nests at most {} parentheses deep; this one {}",
-                       kMaxFormulaDepth, deepest),
-           "limit");
-    return parse_student_number(text);
+    FormulaParse p = parse_formula(text);
+    // Beyond the parser's limits is hostile input, not a slip to give feedback on: the
+    // submission is rejected, as for a string over the file's limit.
+    if (p.over_limit) fail("a typed number beyond the limits: " + p.message, "limit");
+    return student_number(text, std::move(p));
   }
   fail("expected a number (or a number typed as a string, like \"1/3\")", "type");
 }

@@ -105,6 +105,7 @@ class Parser {
     if (text_.size() > kMaxFormulaLength) {
       fail(kMaxFormulaLength,
            fmt::format("the answer is too long (more than {} characters)", kMaxFormulaLength));
+      out.over_limit = true;
     } else {
       skip_space();
       if (pos_ == text_.size()) {
@@ -118,6 +119,7 @@ class Parser {
       }
     }
     if (failed_) {
+      out.over_limit = out.over_limit || too_deep_;
       out.column = column_of(error_at_);
       out.message = fmt::format("{} at character {}", error_, out.column);
       return out;
@@ -194,6 +196,7 @@ class Parser {
 
   bool enter(int depth) {
     if (depth > kMaxFormulaDepth) {
+      if (!failed_) too_deep_ = true;
       fail(pos_, fmt::format("the answer nests more than {} levels deep", kMaxFormulaDepth));
       return false;
     }
@@ -383,6 +386,7 @@ class Parser {
   Formula f_;
   int depth_of_stack_ = 0;
   bool failed_ = false;
+  bool too_deep_ = false;  // the fault is the depth limit
   std::size_t error_at_ = 0;
   std::string error_;
 };

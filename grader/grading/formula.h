@@ -69,8 +69,9 @@ struct FormulaParse {
   bool ok = false;
   Formula formula;
   TypedDigits digits;
-  std::size_t column = 0;  // 1-based character where the fault is (when !ok)
-  std::string message;     // the fault in words (when !ok)
+  std::size_t column = 0;   // 1-based character where the fault is (when !ok)
+  std::string message;      // the fault in words (when !ok)
+  bool over_limit = false;  // the fault is a limit (kMaxFormulaLength or kMaxFormulaDepth)
 };
 
 // Parses `text`. Without `symbols`, only numbers, + − * / ^, parentheses, sqrt and the like,
