@@ -4,11 +4,13 @@
 // were rejected, and text a student controls comes out escaped in every format.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "run_binary.h"
 
@@ -166,15 +168,51 @@ TEST_F(HostileBatch, FilesStayInTheOutputFolderAndTextIsEscaped) {
   EXPECT_EQ(pages, kExpectedFault.size() + 11);  // one page per file, a rejection included
 }
 
+// The cells of a CSV text (RFC 4180: quoted cells, "" for a quote inside one).
+std::vector<std::string> csv_cells(const std::string& text) {
+  std::vector<std::string> cells;
+  std::string cell;
+  bool quoted = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
+        cell += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cell += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',' || c == '\n' || c == '\r') {
+      if (c != '\n' || i == 0 || text[i - 1] != '\r') cells.push_back(cell);
+      cell.clear();
+    } else {
+      cell += c;
+    }
+  }
+  if (!cell.empty()) cells.push_back(cell);
+  return cells;
+}
+
 TEST_F(HostileBatch, GradebookNeutralisesFormulas) {
   auto r = grade("--format csv");
   EXPECT_EQ(r.exit_code, 2);
-  // The student named =HYPERLINK(...) with id @s006: neither cell starts a formula.
-  EXPECT_EQ(r.out.find("\n=HYPERLINK"), std::string::npos);
-  EXPECT_EQ(r.out.find(",=HYPERLINK"), std::string::npos);
-  EXPECT_EQ(r.out.find(",@s006"), std::string::npos);
-  EXPECT_EQ(r.out.find("\n@s006"), std::string::npos);
-  EXPECT_NE(r.out.find("HYPERLINK"), std::string::npos);  // the name is still there
+  std::vector<std::string> cells = csv_cells(r.out);
+  bool saw_name = false;
+  for (const std::string& cell : cells) {
+    // No cell starts a spreadsheet formula, quoted or not (a number may carry its sign).
+    if (cell.empty() || std::string("=+-@").find(cell[0]) == std::string::npos) {
+      saw_name = saw_name || cell == "'=HYPERLINK(\"http://example.com/x\",\"grade\")";
+      continue;
+    }
+    char* end = nullptr;
+    std::strtod(cell.c_str(), &end);
+    EXPECT_TRUE(end && *end == '\0') << "a cell starts a formula: " << cell;
+  }
+  EXPECT_TRUE(saw_name) << "the student named =HYPERLINK(...) is listed, neutralised";
 }
 
 }  // namespace
