@@ -62,24 +62,37 @@ std::vector<std::pair<int, std::string>> generate() {
   return out;
 }
 
-void BM_GradeAnswers(benchmark::State& state) {
-  auto file = parse_json_text("bench.json", kBank);
-  Bank bank;
-  for (const auto& item : Cursor(file).at("problems").items()) {
-    bank.problems.push_back(read_problem(item));
-  }
+// The bench bank's problems, each prepared for grading once. A Grader points at its problem,
+// so the problems live as long as the program.
+std::vector<Grader> prepared_graders() {
+  static const std::vector<Problem> problems = [] {
+    auto file = parse_json_text("bench.json", kBank);
+    std::vector<Problem> out;
+    for (const auto& item : Cursor(file).at("problems").items()) out.push_back(read_problem(item));
+    return out;
+  }();
   std::vector<Grader> graders;
-  for (const auto& p : bank.problems) graders.emplace_back(p);
+  for (const auto& p : problems) graders.emplace_back(p);
+  return graders;
+}
+
+// One answer, from JSON text to its result as JSON text: what the benchmark times.
+std::string grade_to_json(const std::vector<Grader>& graders, int problem,
+                          const std::string& text) {
+  nlohmann::json answer = nlohmann::json::parse(text);
+  GradeResult r = graders[static_cast<std::size_t>(problem)].grade(answer);
+  std::string out;
+  append_result_json(out, r);
+  return out;
+}
+
+void BM_GradeAnswers(benchmark::State& state) {
+  std::vector<Grader> graders = prepared_graders();
   auto answers = generate();
   std::size_t bytes = 0;
   for (auto _ : state) {
-    for (const auto& [problem, text] : answers) {
-      nlohmann::json answer = nlohmann::json::parse(text);
-      GradeResult r = graders[static_cast<std::size_t>(problem)].grade(answer);
-      std::string out;
-      append_result_json(out, r);
-      bytes += out.size();
-    }
+    for (const auto& [problem, text] : answers)
+      bytes += grade_to_json(graders, problem, text).size();
   }
   benchmark::DoNotOptimize(bytes);
   state.SetItemsProcessed(state.iterations() * kAnswers);
@@ -88,19 +101,10 @@ BENCHMARK(BM_GradeAnswers)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 // One kind of answer at a time, to see where the time goes.
 void BM_GradeOneKind(benchmark::State& state) {
-  auto file = parse_json_text("bench.json", kBank);
-  Bank bank;
-  for (const auto& item : Cursor(file).at("problems").items()) {
-    bank.problems.push_back(read_problem(item));
-  }
-  std::vector<Grader> graders;
-  for (const auto& p : bank.problems) graders.emplace_back(p);
+  std::vector<Grader> graders = prepared_graders();
   auto [problem, text] = answer_kinds()[static_cast<std::size_t>(state.range(0))];
   for (auto _ : state) {
-    nlohmann::json answer = nlohmann::json::parse(text);
-    GradeResult r = graders[static_cast<std::size_t>(problem)].grade(answer);
-    std::string out;
-    append_result_json(out, r);
+    std::string out = grade_to_json(graders, problem, text);
     benchmark::DoNotOptimize(out);
   }
   state.SetItemsProcessed(state.iterations());

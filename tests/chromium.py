@@ -16,6 +16,18 @@ def chromium():
     return None
 
 
+# What a browser test returns when there is no browser: ctest's SKIP_RETURN_CODE.
+SKIPPED = 77
+
+
+def require_chromium():
+    """The path of chromium, or None after saying how to install it (the test then skips)."""
+    browser = chromium()
+    if not browser:
+        print("chromium is not installed (scripts/install-deps.sh installs it): skipped")
+    return browser
+
+
 def run_browser(browser, args, page):
     """Loads the file `page` with the extra command-line `args` (--dump-dom, --screenshot=...)."""
     with tempfile.TemporaryDirectory(prefix="raygrade-chromium-") as profile:

@@ -19,7 +19,7 @@ import shutil
 import subprocess
 import sys
 
-from chromium import chromium, run_browser
+from chromium import SKIPPED, require_chromium, run_browser
 
 MARK = "document.documentElement.setAttribute('data-pwned','1')"
 SCRIPT_NAME = "<script>alert(1)</script>"
@@ -59,10 +59,9 @@ def check_dom(dom):
 
 def main():
     binary, problems_json, out = sys.argv[1:4]
-    browser = chromium()
+    browser = require_chromium()
     if not browser:
-        print("chromium is not installed (scripts/install-deps.sh installs it): skipped")
-        return 77
+        return SKIPPED
     subs = os.path.join(out, "submissions")
     pages = os.path.join(out, "pages")
     shutil.rmtree(out, ignore_errors=True)

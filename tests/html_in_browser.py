@@ -14,15 +14,14 @@ import re
 import subprocess
 import sys
 
-from chromium import chromium, run_browser
+from chromium import SKIPPED, require_chromium, run_browser
 
 
 def main():
     binary, bank, out = sys.argv[1:4]
-    browser = chromium()
+    browser = require_chromium()
     if not browser:
-        print("chromium is not installed (scripts/install-deps.sh installs it): skipped")
-        return 77
+        return SKIPPED
     pages = os.path.join(out, "pages")
     shots = os.path.join(out, "screenshots")
     os.makedirs(shots, exist_ok=True)

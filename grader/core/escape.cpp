@@ -36,6 +36,12 @@ std::size_t utf8_sequence_length(std::string_view s, std::size_t i) {
   return n;
 }
 
+// A C0 control character other than tab and the line breaks: not allowed in HTML or XML text
+// (a terminal escape sequence typed into a name), so the escapers drop it.
+bool is_disallowed_control(char c) {
+  return static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r';
+}
+
 }  // namespace
 
 std::string html_escape(std::string_view s) {
@@ -48,13 +54,9 @@ std::string html_escape(std::string_view s) {
       case '>': out += "&gt;"; break;
       case '"': out += "&quot;"; break;
       case '\'': out += "&#39;"; break;
-      default: {
-        // C0 controls other than tab and line breaks, and DEL, are not allowed in HTML
-        // text (a terminal escape sequence typed into a name): dropped, as in XML.
-        auto u = static_cast<unsigned char>(c);
-        if ((u < 0x20 && c != '\t' && c != '\n' && c != '\r') || u == 0x7F) break;
-        out += c;
-      }
+      default:
+        // DEL is not allowed in HTML text either.
+        if (!is_disallowed_control(c) && c != '\x7F') out += c;
     }
   }
   return out;
@@ -65,7 +67,7 @@ std::string xml_escape(std::string_view s) {
   for (std::size_t i = 0; i < s.size(); ++i) {
     char c = s[i];
     auto u = static_cast<unsigned char>(c);
-    if (u < 0x20 && c != '\t' && c != '\n' && c != '\r') continue;
+    if (is_disallowed_control(c)) continue;
     if (u >= 0x80) {
       // XML parsers reject a whole document over one ill-formed byte: write U+FFFD instead.
       std::size_t n = utf8_sequence_length(s, i);
