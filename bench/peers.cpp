@@ -11,52 +11,44 @@ namespace {
 glm::dvec3 g(const Vec3d& v) { return {v.x, v.y, v.z}; }
 
 // GLM wants a unit direction and returns the distance along it: t = distance / |d|.
-std::optional<double> glm_sphere(const AccuracyCase& c) {
+bool glm_sphere(const AccuracyCase& c, double& t) {
   double len = length(c.direction);
   double distance = 0;
   if (!glm::intersectRaySphere(g(c.origin), g(c.direction / len), g(c.points[0]),
                                c.radius * c.radius, distance)) {
-    return std::nullopt;
+    return false;
   }
-  return distance / len;
+  t = distance / len;
+  return true;
 }
 
-std::optional<double> glm_triangle(const AccuracyCase& c) {
+bool glm_triangle(const AccuracyCase& c, double& t) {
   glm::dvec2 bary;
-  double t = 0;
-  if (!glm::intersectRayTriangle(g(c.origin), g(c.direction), g(c.points[0]), g(c.points[1]),
-                                 g(c.points[2]), bary, t) ||
-      t < 0) {
-    return std::nullopt;
-  }
-  return t;
+  return glm::intersectRayTriangle(g(c.origin), g(c.direction), g(c.points[0]), g(c.points[1]),
+                                   g(c.points[2]), bary, t) &&
+         t >= 0;
 }
 
-std::optional<double> glm_plane(const AccuracyCase& c) {
-  double t = 0;
-  if (!glm::intersectRayPlane(g(c.origin), g(c.direction), g(c.points[1]), g(c.points[0]), t)) {
-    return std::nullopt;
-  }
-  return t;
+bool glm_plane(const AccuracyCase& c, double& t) {
+  return glm::intersectRayPlane(g(c.origin), g(c.direction), g(c.points[1]), g(c.points[0]), t);
 }
 
 // Möller and Trumbore (1997), both faces, no epsilon: det = 0 is the only rejection.
-std::optional<double> moller_trumbore(const AccuracyCase& c) {
+bool moller_trumbore(const AccuracyCase& c, double& t) {
   const Vec3d &a = c.points[0], &b = c.points[1], &cc = c.points[2];
   Vec3d e1 = b - a, e2 = cc - a;
   Vec3d p = cross(c.direction, e2);
   double det = dot(e1, p);
-  if (det == 0) return std::nullopt;
+  if (det == 0) return false;
   double inv = 1 / det;
   Vec3d s = c.origin - a;
   double u = dot(s, p) * inv;
-  if (u < 0 || u > 1) return std::nullopt;
+  if (u < 0 || u > 1) return false;
   Vec3d q = cross(s, e1);
   double v = dot(c.direction, q) * inv;
-  if (v < 0 || u + v > 1) return std::nullopt;
-  double t = dot(e2, q) * inv;
-  if (t < 0) return std::nullopt;
-  return t;
+  if (v < 0 || u + v > 1) return false;
+  t = dot(e2, q) * inv;
+  return t >= 0;
 }
 
 }  // namespace

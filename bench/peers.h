@@ -2,19 +2,17 @@
 // intersectRayTriangle and intersectRayPlane (in double) and a plain Möller–Trumbore.
 #pragma once
 
-#include <functional>
-#include <optional>
 #include <string>
 #include <vector>
 
-#include "accuracy/accuracy_case.h"
+#include "accuracy/ladder.h"
 
 namespace raygrade {
 
 struct Peer {
   std::string name;
   Primitive primitive;
-  std::function<std::optional<double>(const AccuracyCase&)> nearest;
+  NearestHit nearest;
 };
 
 const std::vector<Peer>& peers();

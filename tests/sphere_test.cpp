@@ -86,6 +86,34 @@ TEST(Sphere, OriginJustAboveHugeSphere) {
   EXPECT_EQ(x.hits[0].t, 1.0 / 1024);
 }
 
+// sphere_nearest picks the nearest root at t ≥ 0 from the signs of b = f·d and c = f·f − r²
+// alone. Unit sphere at the origin, rays along ±z, one case per sign pattern; t by hand.
+TEST(Sphere, NearestRootBySigns) {
+  struct Case {
+    Vec3d origin, direction;
+    bool hit;
+    double t;
+  };
+  const Case cases[] = {
+      {{0, 0, -5}, {0, 0, 1}, true, 4},      // outside, approaching (b < 0, c > 0): near root
+      {{0, 0, -5}, {0, 0, 2}, true, 2},      // the same with |d| = 2: t halves
+      {{0, 0, 5}, {0, 0, 1}, false, 0},      // outside, receding (b > 0, c > 0): both behind
+      {{0, 0, 0.5}, {0, 0, 1}, true, 0.5},   // inside, b > 0: the far root, ahead
+      {{0, 0, 0.5}, {0, 0, -1}, true, 1.5},  // inside, b < 0: the far root, ahead
+      {{0, 0, 0}, {1, 0, 0}, true, 1},       // at the centre, b = 0
+      {{0.5, 0, -5}, {0, 0, 1}, true, 5 - std::sqrt(0.75)},  // off-axis, outside
+  };
+  for (std::size_t i = 0; i < std::size(cases); ++i) {
+    const Case& c = cases[i];
+    double t = -1;
+    bool hit = sphere_nearest(c.origin, c.direction, Vec3d{0, 0, 0}, 1.0, t);
+    EXPECT_EQ(hit, c.hit) << "case " << i;
+    if (hit && c.hit) {
+      EXPECT_NEAR(t, c.t, 4e-16 * c.t) << "case " << i;
+    }
+  }
+}
+
 TEST(Sphere, SegmentEndsAtTMax) {
   Sphere s({0, 0, 10}, 2);
   auto x = s.intersect(ray({0, 0, 0}, {0, 0, 1}, 0, 10));

@@ -124,7 +124,9 @@ std::optional<Mpfr> t_perturbed(const AccuracyCase& c, int which, const Mpfr& h)
   Mpfr r(c.radius);
   Mpfr* x = coordinate(which, o, d, p, r);
   *x = *x * (Mpfr(1) + h);
-  return reference_nearest_at(c.primitive, o, d, p, r);
+  Mpfr t;
+  if (!reference_hit_at(c.primitive, o, d, p, r, t)) return std::nullopt;
+  return t;
 }
 
 }  // namespace

@@ -44,84 +44,102 @@ const std::vector<Vec3<T>>& points_as(const AccuracyCase& c) {
   }
 }
 
-// The first root at t ≥ 0.
+// A vector of the case in T: the case's own for double (no copy, which the compiler would make
+// through memory), converted otherwise.
 template <typename T>
-std::optional<T> nearest_of(const Roots<T>& r) {
-  if (r.count == 0) return std::nullopt;
-  if (r.t0 >= T(0)) return r.t0;
-  if (r.t1 >= T(0)) return r.t1;
-  return std::nullopt;
+decltype(auto) vector_as(const Vec3d& v) {
+  if constexpr (std::is_same_v<T, double>) {
+    return (v);
+  } else {
+    return Vec3<T>(v);
+  }
 }
 
 // The reference: the templates the solver's Shape::intersect runs in double, on inputs
-// already in T (points and radius as AccuracyCase describes them).
-// Inlined where it is called, as naive_nearest is: a std::optional<double> returned from a call
-// is stored and reloaded through memory by GCC 12, a store-forwarding stall that costs as much as
-// a plane's whole intersection and would be timed as part of the formula.
+// already in T (points and radius as AccuracyCase describes them). True with the nearest hit at
+// t ≥ 0 in `t`, false for a miss. Inlined where it is called, and t handed back through a
+// reference: GCC 12 returns a std::optional<double> through memory, a store-forwarding stall
+// that costs as much as a plane's whole intersection and would be timed with the formula.
 template <typename T>
-[[gnu::always_inline]] inline std::optional<T> reference_nearest_at(Primitive primitive,
-                                                                    const Vec3<T>& o,
-                                                                    const Vec3<T>& d,
-                                                                    const std::vector<Vec3<T>>& p,
-                                                                    const T& radius) {
+[[gnu::always_inline]] inline bool reference_hit_at(Primitive primitive, const Vec3<T>& o,
+                                                    const Vec3<T>& d, const std::vector<Vec3<T>>& p,
+                                                    const T& radius, T& t) {
   using std::sqrt;
   switch (primitive) {
-    case Primitive::kSphere: return nearest_of(sphere_roots(o, d, p[0], radius));
-    // Each returns *t rather than the optional t: copying a std::optional<double> through
-    // memory stalls store forwarding and cost as much as the plane's whole fast path (GCC 12).
+    case Primitive::kSphere: return sphere_nearest(o, d, p[0], radius, t);
     case Primitive::kPlane: {
-      std::optional<T> t = plane_t(o, d, p[0], p[1]);
-      if (t && *t >= T(0)) return *t;
-      return std::nullopt;
+      std::optional<T> x = plane_t(o, d, p[0], p[1]);
+      if (!x || !(*x >= T(0))) return false;
+      t = *x;
+      return true;
     }
     case Primitive::kTriangle: {
       TriangleHit<T> h = watertight_triangle(o, d, p[0], p[1], p[2]);
-      if (h.hit && h.t >= T(0)) return h.t;
-      return std::nullopt;
+      if (!h.hit || !(h.t >= T(0))) return false;
+      t = h.t;
+      return true;
     }
     case Primitive::kPolygon: {
-      std::optional<T> t = plane_t(o, d, newell_normal_of(p), p[0]);
-      if (!t || !(*t >= T(0)) || !watertight_polygon(o, d, p)) return std::nullopt;
-      return *t;
+      std::optional<T> x = plane_t(o, d, newell_normal_of(p), p[0]);
+      if (!x || !(*x >= T(0)) || !watertight_polygon(o, d, p)) return false;
+      t = *x;
+      return true;
     }
     case Primitive::kCylinder: {
       Vec3<T> axis = p[1] / sqrt(dot(p[1], p[1]));
-      return nearest_of(cylinder_side_roots(o, d, p[0], axis, radius));
+      return cylinder_side_nearest(o, d, p[0], axis, radius, t);
     }
     case Primitive::kBox: {
       SlabInterval<T> s = slab_interval(o, d, p[0], p[1]);
-      if (!s.hit) return std::nullopt;
-      if (s.t_enter >= T(0)) return s.t_enter;
-      if (s.t_exit >= T(0)) return s.t_exit;
-      return std::nullopt;
+      if (!s.hit) return false;
+      if (s.t_enter >= T(0)) {
+        t = s.t_enter;
+        return true;
+      }
+      if (s.t_exit >= T(0)) {
+        t = s.t_exit;
+        return true;
+      }
+      return false;
     }
   }
-  return std::nullopt;
+  return false;
 }
 
 // The reference nearest hit of a case, computed in T.
 template <typename T>
 std::optional<T> reference_nearest(const AccuracyCase& c) {
-  return reference_nearest_at(c.primitive, Vec3<T>(c.origin), Vec3<T>(c.direction), points_as<T>(c),
-                              T(c.radius));
+  T t{};
+  if (!reference_hit_at(c.primitive, vector_as<T>(c.origin), vector_as<T>(c.direction),
+                        points_as<T>(c), T(c.radius), t))
+    return std::nullopt;
+  return t;
 }
 
-// The naive textbook formulation of the same question.
+// The naive textbook formulation of the same question, on inputs already in T.
 template <typename T>
-std::optional<T> naive_nearest(const AccuracyCase& c) {
+[[gnu::always_inline]] inline std::optional<T> naive_nearest_at(Primitive primitive,
+                                                                const Vec3<T>& o, const Vec3<T>& d,
+                                                                const std::vector<Vec3<T>>& p,
+                                                                const T& radius) {
   using std::sqrt;
-  Vec3<T> o(c.origin), d(c.direction);
-  const std::vector<Vec3<T>>& p = points_as<T>(c);
-  switch (c.primitive) {
-    case Primitive::kSphere: return naive::sphere(o, d, p[0], T(c.radius));
+  switch (primitive) {
+    case Primitive::kSphere: return naive::sphere(o, d, p[0], radius);
     case Primitive::kPlane: return naive::plane(o, d, p[0], p[1]);
     case Primitive::kTriangle: return naive::triangle(o, d, p[0], p[1], p[2]);
     case Primitive::kPolygon: return naive::polygon(o, d, p);
     case Primitive::kCylinder:
-      return naive::cylinder(o, d, p[0], p[1] / sqrt(dot(p[1], p[1])), T(c.radius));
+      return naive::cylinder(o, d, p[0], p[1] / sqrt(dot(p[1], p[1])), radius);
     case Primitive::kBox: return naive::box(o, d, p[0], p[1]);
   }
   return std::nullopt;
+}
+
+// The naive nearest hit of a case, computed in T.
+template <typename T>
+std::optional<T> naive_nearest(const AccuracyCase& c) {
+  return naive_nearest_at(c.primitive, vector_as<T>(c.origin), vector_as<T>(c.direction),
+                          points_as<T>(c), T(c.radius));
 }
 
 }  // namespace raygrade

@@ -11,44 +11,100 @@ namespace raygrade {
 namespace {
 
 template <typename T>
-std::optional<double> rounded(const std::optional<T>& t) {
-  if (!t) return std::nullopt;
-  return static_cast<double>(*t);
+bool as_double(const std::optional<T>& hit, double& t) {
+  if (!hit) return false;
+  t = static_cast<double>(*hit);
+  return true;
+}
+
+// The naive and the reference formulations in T, each instantiated per primitive.
+template <typename T>
+struct Naive {
+  template <Primitive P>
+  [[gnu::noinline]] static bool on(const AccuracyCase& c, double& t) {
+    return as_double(naive_nearest_at(P, vector_as<T>(c.origin), vector_as<T>(c.direction),
+                                      points_as<T>(c), T(c.radius)),
+                     t);
+  }
+};
+
+template <typename T, Primitive P>
+bool reference_hit(const AccuracyCase& c, double& t) {
+  const auto& o = vector_as<T>(c.origin);
+  const auto& d = vector_as<T>(c.direction);
+  if constexpr (std::is_same_v<T, double>) {
+    return reference_hit_at(P, o, d, c.points, c.radius, t);
+  } else {
+    T hit{};
+    if (!reference_hit_at(P, o, d, points_as<T>(c), T(c.radius), hit)) return false;
+    t = static_cast<double>(hit);
+    return true;
+  }
+}
+
+template <typename T>
+struct Reference {
+  template <Primitive P>
+  [[gnu::noinline]] static bool on(const AccuracyCase& c, double& t) {
+    if constexpr (std::is_same_v<T, Mpfr>) {
+      MpfrPrecision bits(kMpfrBits);
+      return reference_hit<T, P>(c, t);
+    } else {
+      return reference_hit<T, P>(c, t);
+    }
+  }
+};
+
+template <typename F>
+PerPrimitive per_primitive() {
+  return {&F::template on<Primitive::kSphere>,   &F::template on<Primitive::kPlane>,
+          &F::template on<Primitive::kTriangle>, &F::template on<Primitive::kPolygon>,
+          &F::template on<Primitive::kCylinder>, &F::template on<Primitive::kBox>};
+}
+
+PerPrimitive every_primitive(NearestHit f) {
+  PerPrimitive out;
+  out.fill(f);
+  return out;
 }
 
 }  // namespace
 
+std::optional<double> LadderLevel::nearest(const AccuracyCase& c) const {
+  NearestHit f = on[static_cast<std::size_t>(c.primitive)];
+  double t = 0;
+  if (!f || !f(c, t)) return std::nullopt;
+  return t;
+}
+
 const std::vector<LadderLevel>& ladder_levels() {
   static const std::vector<LadderLevel> levels = {
       {"naive float", "b² − 4ac and (−b ± √Δ)/2a, plane then edge tests, plain slabs; float",
-       [](const AccuracyCase& c) { return rounded(naive_nearest<float>(c)); }},
-      {"naive double", "the same textbook formulas in double",
-       [](const AccuracyCase& c) { return naive_nearest<double>(c); }},
+       per_primitive<Naive<float>>()},
+      {"naive double", "the same textbook formulas in double", per_primitive<Naive<double>>()},
       {"reference float", "the solver's stable formulations in float",
-       [](const AccuracyCase& c) { return rounded(reference_nearest<float>(c)); }},
+       per_primitive<Reference<float>>()},
       {"reference double", "the solver's stable formulations in double (what solve runs)",
-       [](const AccuracyCase& c) { return reference_nearest<double>(c); }},
+       per_primitive<Reference<double>>()},
       {"reference long double", "the same in x87 long double (64-bit significand)",
-       [](const AccuracyCase& c) { return rounded(reference_nearest<long double>(c)); }},
+       per_primitive<Reference<long double>>()},
       {"reference double-double", "the same in double-double (about 106 bits)",
-       [](const AccuracyCase& c) { return rounded(reference_nearest<DoubleDouble>(c)); }},
-      {"reference MPFR", "the same in MPFR at 256 bits",
-       [](const AccuracyCase& c) {
-         MpfrPrecision bits(kMpfrBits);
-         return rounded(reference_nearest<Mpfr>(c));
-       }},
+       per_primitive<Reference<DoubleDouble>>()},
+      {"reference MPFR", "the same in MPFR at 256 bits", per_primitive<Reference<Mpfr>>()},
       {"certified double", "interval arithmetic in double with outward rounding",
-       [](const AccuracyCase& c) -> std::optional<double> {
+       every_primitive([](const AccuracyCase& c, double& t) {
          Certified x = certified_double(c);
-         if (!x.hit) return std::nullopt;
-         return x.t;
-       }},
+         if (!x.hit) return false;
+         t = x.t;
+         return true;
+       })},
       {"adaptive", "certified double, then double-double, then MPFR, until decided",
-       [](const AccuracyCase& c) -> std::optional<double> {
+       every_primitive([](const AccuracyCase& c, double& t) {
          Adaptive a = adaptive_nearest(c);
-         if (!a.hit) return std::nullopt;
-         return a.t;
-       }},
+         if (!a.hit) return false;
+         t = a.t;
+         return true;
+       })},
   };
   return levels;
 }

@@ -3,7 +3,8 @@
 // against ground truth.
 #pragma once
 
-#include <functional>
+#include <array>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,10 +13,25 @@
 
 namespace raygrade {
 
+// A formulation's nearest hit (t ≥ 0) on a case, rounded to double: true with it in `t`, false
+// for a miss. A plain function that hands t back through a reference: GCC 12 returns a
+// std::optional<double> through memory, a store-forwarding stall that a timing would count as
+// part of the formula.
+using NearestHit = bool (*)(const AccuracyCase& c, double& t);
+
+// One such function per primitive, indexed by Primitive: timing one primitive's cases then runs a
+// compact function with that primitive's formula alone, for every level alike. nullptr where a
+// peer does not serve the primitive.
+using PerPrimitive = std::array<NearestHit, std::size(kAllPrimitives)>;
+
 struct LadderLevel {
   std::string name;     // "naive double", "reference double-double", ...
   std::string summary;  // one line for the report
-  std::function<std::optional<double>(const AccuracyCase&)> nearest;
+  PerPrimitive on{};
+
+  // The nearest hit of a case; std::nullopt for a miss, or where the level does not serve the
+  // case's primitive.
+  std::optional<double> nearest(const AccuracyCase& c) const;
 };
 
 // naive float, naive double, reference float, reference double, reference long double,

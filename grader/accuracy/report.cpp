@@ -15,7 +15,7 @@ constexpr double kMinTimingSeconds = 0.03;
 // moments another process took the core (the noise is one-sided).
 constexpr int kTimingRepeats = 5;
 
-double time_once(const NearestFunction& f, const std::vector<AccuracyCase>& cases) {
+double time_once(NearestHit f, const std::vector<AccuracyCase>& cases) {
   if (cases.empty()) return 0;
   using Clock = std::chrono::steady_clock;
   long long calls = 0;
@@ -24,8 +24,8 @@ double time_once(const NearestFunction& f, const std::vector<AccuracyCase>& case
   double elapsed = 0;
   do {
     for (const auto& c : cases) {
-      std::optional<double> t = f.nearest(c);
-      sink += t ? *t : 1;
+      double t = 0;
+      sink += f(c, t) ? t : 1;
     }
     calls += static_cast<long long>(cases.size());
     elapsed = std::chrono::duration<double>(Clock::now() - start).count();
@@ -35,7 +35,7 @@ double time_once(const NearestFunction& f, const std::vector<AccuracyCase>& case
   return elapsed * 1e9 / static_cast<double>(calls);
 }
 
-double time_per_call(const NearestFunction& f, const std::vector<AccuracyCase>& cases) {
+double time_per_call(NearestHit f, const std::vector<AccuracyCase>& cases) {
   double best = time_once(f, cases);
   for (int i = 1; i < kTimingRepeats; ++i) best = std::min(best, time_once(f, cases));
   return best;
@@ -49,14 +49,14 @@ std::vector<AccuracyCase> inputs(const std::vector<TruthCase>& cases) {
 
 }  // namespace
 
-AccuracyReport measure_accuracy(const std::vector<NearestFunction>& functions, int random_count,
+AccuracyReport measure_accuracy(const std::vector<Measured>& levels, int random_count,
                                 const std::vector<TruthCase>& hard,
                                 const std::function<void(int, int)>& progress) {
   AccuracyReport report;
   report.random_per_primitive = random_count;
   int total = 0, done = 0;
   for (Primitive p : kAllPrimitives) {
-    for (const auto& f : functions) total += !f.only || *f.only == p;
+    for (const auto& m : levels) total += m.level.on[static_cast<std::size_t>(p)] != nullptr;
   }
   for (Primitive p : kAllPrimitives) {
     std::vector<TruthCase> random;
@@ -70,16 +70,16 @@ AccuracyReport measure_accuracy(const std::vector<NearestFunction>& functions, i
     }
     report.hard_per_primitive[p] = static_cast<int>(hard_p.size());
     std::vector<AccuracyCase> random_in = inputs(random), hard_in = inputs(hard_p);
-    for (const auto& f : functions) {
-      if (f.only && *f.only != p) continue;
-      LadderLevel level{f.name, "", f.nearest};
-      ReportRow row{f.name,
+    for (const auto& m : levels) {
+      NearestHit f = m.level.on[static_cast<std::size_t>(p)];
+      if (!f) continue;
+      ReportRow row{m.level.name,
                     p,
-                    f.peer,
+                    m.peer,
                     time_per_call(f, random_in),
                     time_per_call(f, hard_in),
-                    level_error(level, random),
-                    level_error(level, hard_p)};
+                    level_error(m.level, random),
+                    level_error(m.level, hard_p)};
       report.rows.push_back(std::move(row));
       if (progress) progress(++done, total);
     }

@@ -29,16 +29,15 @@ struct AccuracyReport {
   std::optional<long long> stress_rays, stress_misses, spawn_rays, spawn_failures;
 };
 
-struct NearestFunction {
-  std::string name;
+// A ladder level or a peer (which serves only the primitives it has a function for).
+struct Measured {
+  LadderLevel level;
   bool peer = false;
-  std::function<std::optional<double>(const AccuracyCase&)> nearest;
-  std::optional<Primitive> only;  // peers serve one primitive
 };
 
-// Times and judges every function on every primitive's random set (`random_count` cases) and
-// hard cases. `progress` gets (done, total) after each measurement.
-AccuracyReport measure_accuracy(const std::vector<NearestFunction>& functions, int random_count,
+// Times and judges every level on every primitive's random set (`random_count` cases) and hard
+// cases. `progress` gets (done, total) after each measurement.
+AccuracyReport measure_accuracy(const std::vector<Measured>& levels, int random_count,
                                 const std::vector<TruthCase>& hard,
                                 const std::function<void(int, int)>& progress = {});
 

@@ -62,13 +62,15 @@ int run_bench(const BenchOptions& o) {
         edges.failures, edges.rays, spawn.failures, spawn.rays, s);
     return edges.failures == 0 && spawn.failures == 0 ? kExitOk : kExitFailed;
   }
-  std::vector<NearestFunction> functions;
-  for (const auto& level : ladder_levels())
-    functions.push_back({level.name, false, level.nearest, std::nullopt});
-  for (const auto& peer : peers())
-    functions.push_back({peer.name, true, peer.nearest, peer.primitive});
+  std::vector<Measured> levels;
+  for (const auto& level : ladder_levels()) levels.push_back({level, false});
+  for (const auto& peer : peers()) {
+    LadderLevel level{peer.name, "", {}};
+    level.on[static_cast<std::size_t>(peer.primitive)] = peer.nearest;
+    levels.push_back({level, true});
+  }
   std::vector<TruthCase> hard = read_corpus(o.corpus);
-  report = measure_accuracy(functions, o.random, hard, [](int done, int total) {
+  report = measure_accuracy(levels, o.random, hard, [](int done, int total) {
     progress_bar("measuring", static_cast<double>(done) / total);
   });
   report.command = fmt::format("raygrade bench --out {}", o.out);

@@ -84,6 +84,14 @@ template <typename T>
   return cylinder_side_roots_accurate(f, d, fp, axis, a, b, r);
 }
 
+// The nearest hit at t ≥ 0 on the side: true with it in `t`, false for a miss.
+template <typename T>
+[[gnu::always_inline]] inline bool cylinder_side_nearest(const Vec3<T>& o, const Vec3<T>& d,
+                                                         const Vec3<T>& base, const Vec3<T>& axis,
+                                                         T r, T& t) {
+  return nearest_root(cylinder_side_roots(o, d, base, axis, r), t);
+}
+
 class Cylinder final : public Shape {
  public:
   Cylinder(Vec3d base, Vec3d axis, double radius, std::optional<double> height, bool capped);

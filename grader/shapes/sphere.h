@@ -45,76 +45,183 @@ T sum_of_squares_minus_square(const Vec3<T>& f_hi, const Vec3<T>& f_lo, T r) {
   }
 }
 
-// The quarter discriminant a·r² − |f × d|² in plain arithmetic, when its a-posteriori error
-// bound e (docs/precision.md, "Fast paths") is within kFastPathTolerance of it; 0 otherwise.
-// Each component x_i = p_i − q_i of the cross product is within 3u(|p_i| + |q_i|) of the exact
-// one, counting the rounding of f, so a ray aimed near the centre (x small) keeps a small bound.
+// Is the quarter discriminant disc = a·r² − s2, with s2 = |f × d|² as rounded in plain
+// arithmetic, within kFastPathTolerance τ of its exact value, by the bound that follows the
+// cross product's own cancellation (docs/precision.md, "Fast paths")? Each component
+// x_i = p_i − q_i of the cross product is within 3u(|p_i| + |q_i|) of the exact one, counting
+// the rounding of f, so a ray aimed near the centre (x small) keeps a small bound. The second
+// test, for the few rays the first (in sphere_quadratic_fast) leaves undecided.
 template <typename T>
-[[gnu::always_inline]] inline T cross_product_discriminant(const Vec3<T>& f, const Vec3<T>& d, T a,
-                                                           T ff, T rr) {
+bool discriminant_certain(const Vec3<T>& f, const Vec3<T>& d, T a, T ff, T rr, T s2, T disc) {
   using std::abs;
   constexpr T u = kUnitRoundoff<T>, tolerance = kFastPathTolerance<T>;
+  // The bound's products neither overflow nor underflow in range.
+  if (!(in_fast_path_range(a) && in_fast_path_range(rr) && ff <= kFastPathRange<T>)) return false;
   T px = f.y * d.z, qx = f.z * d.y, py = f.z * d.x, qy = f.x * d.z, pz = f.x * d.y, qz = f.y * d.x;
-  Vec3<T> x{px - qx, py - qy, pz - qz};
-  T s2 = dot(x, x), ar = a * rr, disc = ar - s2;
-  // First a bound from magnitudes at hand, enough for nearly every ordinary ray: the spread
-  // below is at most 2|f||d|·√3|f||d| < 4·ff·a, so e ≤ 7u(a·rr + s2) + 25u·ff·a.
-  T slack = abs(disc) * tolerance - T(7) * u * (ar + s2);
-  if (slack >= T(25) * u * (ff * a)) return disc;
-  T spread = abs(x.x) * (abs(px) + abs(qx)) + abs(x.y) * (abs(py) + abs(qy)) +
-             abs(x.z) * (abs(pz) + abs(qz));
-  return slack >= T(6) * u * spread + T(32) * u * u * (ff * a) ? disc : T(0);
+  T spread = abs(px - qx) * (abs(px) + abs(qx)) + abs(py - qy) * (abs(py) + abs(qy)) +
+             abs(pz - qz) * (abs(pz) + abs(qz));
+  T e = T(7) * u * (a * rr + s2) + T(6) * u * spread + T(32) * u * u * (ff * a);
+  return abs(disc) * tolerance >= e;
 }
 
-// The roots of the sphere's quadratic in plain arithmetic, when their a-posteriori error bounds
-// (docs/precision.md, "Fast paths") show that they decide hit or miss, and which root is nearest,
-// as exact arithmetic would, and that c = f·f − r² and the quarter discriminant are within
-// kFastPathTolerance τ of their exact values: then true, with the roots in `out`. False
-// otherwise: the compensated formulas then run. (An out-parameter rather than a std::optional,
-// whose copy through memory costs GCC 12 a store-forwarding stall.)
+// The constants of the sphere's first test (docs/precision.md, "Fast paths"): |disc| ≥ kDisc·a·m
+// and |c| ≥ kC·m, with m = ff + r², put the errors of disc and of c within τ of them.
 template <typename T>
-[[gnu::always_inline]] inline bool sphere_roots_fast(const Vec3<T>& o, const Vec3<T>& d,
-                                                     const Vec3<T>& center, T r, Roots<T>& out) {
-  using std::abs, std::sqrt;
-  constexpr T u = kUnitRoundoff<T>, tolerance = kFastPathTolerance<T>;
-  Vec3<T> f = o - center;
-  T a = dot(d, d), ff = dot(f, f), rr = r * r, b = dot(f, d), c = ff - rr;
-  // |c − c*| ≤ 7u(ff + rr); the bounds' products neither overflow nor underflow in range.
-  bool in_range = in_fast_path_range(a) && in_fast_path_range(rr) && ff <= kFastPathRange<T>;
-  if (!(in_range && abs(c) * tolerance >= T(7) * u * (ff + rr))) return false;
-  // The quarter discriminant a·r² − |f × d|², which does not cancel for far spheres. Its bound
-  // e ≤ τ·|disc| makes its sign certain and keeps the error it brings into √disc, and so into
-  // q = −(b + sign(b)√disc), within τ. (The textbook b² − a·c would be cheaper, but near a
-  // tangent its error grows faster than the condition number of t: the hard cases catch it.)
-  T disc = cross_product_discriminant(f, d, a, ff, rr);
-  if (disc == T(0)) return false;
-  out = Roots<T>{};
-  if (disc < T(0)) return true;
-  T q = -(b + sign_of(b) * sqrt(disc));
+inline constexpr T kSphereDisc = T(33) * kUnitRoundoff<T> / kFastPathTolerance<T>;
+template <typename T>
+inline constexpr T kSphereC = T(8) * kUnitRoundoff<T> / kFastPathTolerance<T>;
+
+// A ray's quadratic a·t² + 2b·t + c = 0 (b is half the textbook b) with its quarter
+// discriminant disc = b² − a·c, as a fast path leaves it.
+template <typename T>
+struct Quadratic {
+  T a{}, b{}, c{}, disc{};
+};
+
+// q = −(b + sign(b)·√disc), from which the roots are c/q and q/a: neither subtracts nearly
+// equal numbers.
+template <typename T>
+T stable_q(const Quadratic<T>& k, T root) {
+  return -(k.b + sign_of(k.b) * root);
+}
+
+// Both roots of a quadratic with disc > 0, ascending, root = √disc.
+template <typename T>
+[[gnu::always_inline]] inline Roots<T> both_roots(const Quadratic<T>& k, T root) {
+  T q = stable_q(k, root);
+  Roots<T> out;
   out.count = 2;
-  out.t0 = c / q;
-  out.t1 = q / a;
+  out.t0 = k.c / q;
+  out.t1 = q / k.a;
   if (out.t1 < out.t0) std::swap(out.t0, out.t1);
+  return out;
+}
+
+// The nearest root at t ≥ 0 of a quadratic with disc > 0 and c ≠ 0, in one division: the signs
+// of b and c say which root it is. For b < 0, q > 0 and c/q ≤ q/a; for b ≥ 0, q < 0 and
+// q/a < 0. When c < 0 (the origin inside) the roots have opposite signs and the positive one is
+// q/a or c/q; when c > 0 they have the sign of −b. False when both roots are negative.
+template <typename T>
+[[gnu::always_inline]] inline bool nearest_root(const Quadratic<T>& k, T root, T& t) {
+  bool approaching = k.b < T(0);
+  if (k.c > T(0) && !approaching) return false;
+  T q = stable_q(k, root);
+  t = approaching == (k.c < T(0)) ? q / k.a : k.c / q;
   return true;
+}
+
+// The nearest root at t ≥ 0 of ascending roots: true with it in `t`, false if there is none.
+template <typename T>
+bool nearest_root(const Roots<T>& r, T& t) {
+  if (r.count == 0) return false;
+  if (r.t0 >= T(0)) {
+    t = r.t0;
+    return true;
+  }
+  if (r.t1 >= T(0)) {
+    t = r.t1;
+    return true;
+  }
+  return false;
+}
+
+// What a fast path found: a certain miss, a quadratic whose roots decide hit or miss, and which
+// root is nearest, as exact arithmetic would, or nothing certain (the compensated formulas run).
+enum class FastPath { kUndecided, kMiss, kRoots };
+
+// The sphere's quadratic in plain arithmetic, kept when the a-posteriori error bounds of the
+// quarter discriminant a·r² − |f × d|² (which does not cancel for far spheres) and of
+// c = f·f − r² are within kFastPathTolerance τ of them (docs/precision.md, "Fast paths").
+// (The textbook b² − a·c would be cheaper, but near a tangent its error grows faster than the
+// condition number of t: the hard cases catch it.) This first test takes a few operations on
+// magnitudes at hand, and its clauses are joined without short circuits: a branch per clause
+// costs more than the clause. The rays it leaves undecided (grazing ones, far spheres) go to
+// sphere_roots_slow. The sign of disc, hit or miss, is tested before it: that branch
+// goes wrong about as often as rays miss, and the earlier it comes in the instruction stream,
+// the sooner the processor recovers.
+template <typename T>
+[[gnu::always_inline]] inline FastPath sphere_quadratic_fast(const Vec3<T>& o, const Vec3<T>& d,
+                                                             const Vec3<T>& center, T r,
+                                                             Quadratic<T>& out) {
+  using std::abs;
+  constexpr T lo = T(1) / kFastPathRange<T>, hi = kFastPathRange<T> * kFastPathRange<T>;
+  Vec3<T> f = o - center;
+  T a = dot(d, d), ff = dot(f, f), rr = r * r;
+  T s2 = length_squared(cross(f, d)), disc = a * rr - s2;
+  T m = ff + rr, am = a * m;
+  // a and r² are normal numbers, and no product overflows.
+  auto certain = [&] {
+    return (std::min(a, rr) >= lo) & (am <= hi) & (abs(disc) >= kSphereDisc<T> * am);
+  };
+  if (disc < T(0)) return certain() ? FastPath::kMiss : FastPath::kUndecided;
+  T b = dot(f, d), c = ff - rr;
+  if (!(certain() & (abs(c) >= kSphereC<T> * m))) return FastPath::kUndecided;
+  out = Quadratic<T>{a, b, c, disc};
+  return FastPath::kRoots;
 }
 
 // The stable reference: roots of |o + t d − c|² = r² (Ray Tracing Gems, ch. 7). The quarter
 // discriminant is a·r² − |f × d|², which does not cancel for far spheres; the roots are
 // q/a and c/q with q = −(b + sign(b)√Δ), which never subtracts nearly equal numbers. The plain
-// computation is kept when its error bounds allow (sphere_roots_fast); otherwise f = o − c is
+// computation is kept when its error bounds allow (sphere_quadratic_fast); otherwise f = o − c is
 // split exactly and the cross product and c are compensated.
 template <typename T>
 [[gnu::noinline]] Roots<T> sphere_roots_accurate(const Vec3<T>& o, const Vec3<T>& d,
                                                  const Vec3<T>& center, T r);
 
+// The rays the fast path leaves undecided: its plain quadratic when the second test, with the
+// bound that follows the cross product's cancellation, certifies it; the compensated formulas
+// otherwise. Out of line, so that the fast path stays short where it is inlined.
+template <typename T>
+[[gnu::noinline]] Roots<T> sphere_roots_slow(const Vec3<T>& o, const Vec3<T>& d,
+                                             const Vec3<T>& center, T r) {
+  using std::abs, std::sqrt;
+  if constexpr (kErrorFree<T>) {
+    Vec3<T> f = o - center;
+    T a = dot(d, d), ff = dot(f, f), rr = r * r;
+    T s2 = length_squared(cross(f, d)), disc = a * rr - s2;
+    if (discriminant_certain(f, d, a, ff, rr, s2, disc)) {
+      if (disc < T(0)) return Roots<T>{};
+      T b = dot(f, d), c = ff - rr;
+      if (abs(c) >= kSphereC<T> * (ff + rr))
+        return both_roots(Quadratic<T>{a, b, c, disc}, sqrt(disc));
+    }
+  }
+  return sphere_roots_accurate(o, d, center, r);
+}
+
+template <typename T>
+[[gnu::noinline]] bool sphere_nearest_slow(const Vec3<T>& o, const Vec3<T>& d,
+                                           const Vec3<T>& center, T r, T& t) {
+  return nearest_root(sphere_roots_slow(o, d, center, r), t);
+}
+
 template <typename T>
 [[gnu::always_inline]] inline Roots<T> sphere_roots(const Vec3<T>& o, const Vec3<T>& d,
                                                     const Vec3<T>& center, T r) {
+  using std::sqrt;
   if constexpr (kErrorFree<T>) {
-    Roots<T> fast;
-    if (sphere_roots_fast(o, d, center, r, fast)) return fast;
+    Quadratic<T> k;
+    FastPath fast = sphere_quadratic_fast(o, d, center, r, k);
+    if (fast == FastPath::kMiss) return Roots<T>{};
+    if (fast == FastPath::kRoots) return both_roots(k, sqrt(k.disc));
   }
-  return sphere_roots_accurate(o, d, center, r);
+  return sphere_roots_slow(o, d, center, r);
+}
+
+// The nearest hit at t ≥ 0 by the same formulas, dividing only for that root: true with it in
+// `t`, false for a miss.
+template <typename T>
+[[gnu::always_inline]] inline bool sphere_nearest(const Vec3<T>& o, const Vec3<T>& d,
+                                                  const Vec3<T>& center, T r, T& t) {
+  using std::sqrt;
+  if constexpr (kErrorFree<T>) {
+    Quadratic<T> k;
+    FastPath fast = sphere_quadratic_fast(o, d, center, r, k);
+    if (fast == FastPath::kMiss) return false;
+    if (fast == FastPath::kRoots) return nearest_root(k, sqrt(k.disc), t);
+  }
+  return sphere_nearest_slow(o, d, center, r, t);
 }
 
 // The compensated path, out of line so that the fast path inlines where it is called.
