@@ -96,6 +96,34 @@ TEST(Cylinder, RayOnTheSideAlongTheAxis) {
 }
 
 // Along the axis of the capped cylinder: the bottom cap at t = 3 (normal −z), the top at 5.
+// cylinder_side_nearest picks the nearest root at t ≥ 0 from the signs of b = f⊥·d⊥ and
+// c = |f⊥|² − r², as the sphere does. Unit cylinder along z through the origin; t by hand.
+TEST(Cylinder, NearestRootBySigns) {
+  struct Case {
+    Vec3d origin, direction;
+    bool hit;
+    double t;
+  };
+  const Case cases[] = {
+      {{-5, 0, 0}, {1, 0, 0}, true, 4},      // outside, approaching: near root
+      {{-5, 0, 2}, {1, 0, 1}, true, 4},      // the same with a component along the axis
+      {{5, 0, 0}, {1, 0, 0}, false, 0},      // outside, receding: both roots behind
+      {{0.5, 0, 3}, {1, 0, 0}, true, 0.5},   // inside, b > 0: the far root, ahead
+      {{0.5, 0, 3}, {-1, 0, 0}, true, 1.5},  // inside, b < 0: the far root, ahead
+      {{0, 0, 7}, {0, 2, 0}, true, 0.5},     // on the axis, b = 0, |d| = 2
+      {{0, 0, 0}, {0, 0, 1}, false, 0},      // along the axis: no side hit
+  };
+  for (std::size_t i = 0; i < std::size(cases); ++i) {
+    const Case& c = cases[i];
+    double t = -1;
+    bool hit = cylinder_side_nearest(c.origin, c.direction, Vec3d{0, 0, 0}, Vec3d{0, 0, 1}, 1.0, t);
+    EXPECT_EQ(hit, c.hit) << "case " << i;
+    if (hit && c.hit) {
+      EXPECT_NEAR(t, c.t, 4e-16 * c.t) << "case " << i;
+    }
+  }
+}
+
 TEST(Cylinder, CapsAlongTheAxis) {
   auto x = kCapped.intersect(ray({0, 0, -3}, {0, 0, 1}));
   ASSERT_EQ(x.hits.size(), 2u);

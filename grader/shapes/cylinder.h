@@ -37,10 +37,12 @@ template <typename T>
   return out;
 }
 
+// The rays the fast path below leaves undecided: the plain quadratic when the bound of
+// s = (f × d)·â that follows the cross product's own cancellation certifies it, the compensated
+// formulas otherwise. Out of line, so that the fast path stays short where it is inlined.
 template <typename T>
-[[gnu::always_inline]] inline Roots<T> cylinder_side_roots(const Vec3<T>& o, const Vec3<T>& d,
-                                                           const Vec3<T>& base, const Vec3<T>& axis,
-                                                           T r) {
+[[gnu::noinline]] Roots<T> cylinder_side_roots_slow(const Vec3<T>& o, const Vec3<T>& d,
+                                                    const Vec3<T>& base, const Vec3<T>& axis, T r) {
   using std::sqrt;
   Vec3<T> f = o - base;
   Vec3<T> fp = f - dot(f, axis) * axis;
@@ -84,12 +86,77 @@ template <typename T>
   return cylinder_side_roots_accurate(f, d, fp, axis, a, b, r);
 }
 
-// The nearest hit at t ≥ 0 on the side: true with it in `t`, false for a miss.
+// The constant of the cylinder's first test (docs/precision.md, "Fast paths"): the error of the
+// quarter discriminant is at most 7u·a·r² + 25u·|f|²|d|², so |disc| ≥ kDisc(a·r² + |f|²|d|²)
+// puts it within τ of disc; the test on c = |f⊥|² − r² is the sphere's.
+template <typename T>
+inline constexpr T kCylinderDisc = T(26) * kUnitRoundoff<T> / kFastPathTolerance<T>;
+
+// The side's quadratic in plain arithmetic, kept when a first test on magnitudes at hand
+// certifies the quarter discriminant a·r² − s², s = (f × d)·â, and c = |f⊥|² − r² within τ, as
+// the sphere's fast path does (and shaped like it: the sign of disc first, the test's clauses
+// without short circuits).
+template <typename T>
+[[gnu::always_inline]] inline FastPath cylinder_side_quadratic_fast(const Vec3<T>& o,
+                                                                    const Vec3<T>& d,
+                                                                    const Vec3<T>& base,
+                                                                    const Vec3<T>& axis, T r,
+                                                                    Quadratic<T>& out) {
+  using std::abs;
+  constexpr T lo = T(1) / kFastPathRange<T>, hi = kFastPathRange<T> * kFastPathRange<T>;
+  Vec3<T> f = o - base;
+  Vec3<T> fp = f - dot(f, axis) * axis;
+  Vec3<T> dp = d - dot(d, axis) * axis;
+  T a = dot(dp, dp), rr = r * r;
+  T s = dot(cross(f, d), axis), ar = a * rr, disc = ar - s * s;
+  T magnitude = ar + dot(f, f) * dot(d, d);
+  // a and r² are normal numbers, and no product overflows.
+  auto certain = [&] {
+    return (std::min(a, rr) >= lo) & (magnitude <= hi) &
+           (abs(disc) >= kCylinderDisc<T> * magnitude);
+  };
+  if (disc < T(0)) return certain() ? FastPath::kMiss : FastPath::kUndecided;
+  T ff = dot(fp, fp), c = ff - rr;
+  if (!(certain() & (abs(c) >= kSphereC<T> * (ff + rr)))) return FastPath::kUndecided;
+  out = Quadratic<T>{a, dot(fp, dp), c, disc};
+  return FastPath::kRoots;
+}
+
+template <typename T>
+[[gnu::noinline]] bool cylinder_side_nearest_slow(const Vec3<T>& o, const Vec3<T>& d,
+                                                  const Vec3<T>& base, const Vec3<T>& axis, T r,
+                                                  T& t) {
+  return nearest_root(cylinder_side_roots_slow(o, d, base, axis, r), t);
+}
+
+template <typename T>
+[[gnu::always_inline]] inline Roots<T> cylinder_side_roots(const Vec3<T>& o, const Vec3<T>& d,
+                                                           const Vec3<T>& base, const Vec3<T>& axis,
+                                                           T r) {
+  using std::sqrt;
+  if constexpr (kErrorFree<T>) {
+    Quadratic<T> k;
+    FastPath fast = cylinder_side_quadratic_fast(o, d, base, axis, r, k);
+    if (fast == FastPath::kMiss) return Roots<T>{};
+    if (fast == FastPath::kRoots) return both_roots(k, sqrt(k.disc));
+  }
+  return cylinder_side_roots_slow(o, d, base, axis, r);
+}
+
+// The nearest hit at t ≥ 0 on the side, dividing only for that root: true with it in `t`, false
+// for a miss.
 template <typename T>
 [[gnu::always_inline]] inline bool cylinder_side_nearest(const Vec3<T>& o, const Vec3<T>& d,
                                                          const Vec3<T>& base, const Vec3<T>& axis,
                                                          T r, T& t) {
-  return nearest_root(cylinder_side_roots(o, d, base, axis, r), t);
+  using std::sqrt;
+  if constexpr (kErrorFree<T>) {
+    Quadratic<T> k;
+    FastPath fast = cylinder_side_quadratic_fast(o, d, base, axis, r, k);
+    if (fast == FastPath::kMiss) return false;
+    if (fast == FastPath::kRoots) return nearest_root(k, sqrt(k.disc), t);
+  }
+  return cylinder_side_nearest_slow(o, d, base, axis, r, t);
 }
 
 class Cylinder final : public Shape {
