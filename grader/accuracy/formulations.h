@@ -21,7 +21,7 @@ Vec3<T> newell_normal_of(const std::vector<Vec3<T>>& v) {
   Vec3<T> n{};
   for (std::size_t i = 0; i < v.size(); ++i) {
     const Vec3<T>& a = v[i];
-    const Vec3<T>& b = v[(i + 1) % v.size()];
+    const Vec3<T>& b = i + 1 < v.size() ? v[i + 1] : v[0];
     n.x += (a.y - b.y) * (a.z + b.z);
     n.y += (a.z - b.z) * (a.x + b.x);
     n.z += (a.x - b.x) * (a.y + b.y);
