@@ -91,16 +91,7 @@ template <typename T>
     }
     case Primitive::kBox: {
       SlabInterval<T> s = slab_interval(o, d, p[0], p[1]);
-      if (!s.hit) return false;
-      if (s.t_enter >= T(0)) {
-        t = s.t_enter;
-        return true;
-      }
-      if (s.t_exit >= T(0)) {
-        t = s.t_exit;
-        return true;
-      }
-      return false;
+      return s.hit && nearest_root(Roots<T>{2, s.t_enter, s.t_exit}, t);
     }
   }
   return false;
