@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace raygrade {
 namespace {
@@ -12,8 +13,10 @@ namespace {
 // over many thousands of calls; the clock's resolution (about 1e-8 s) is then negligible.
 constexpr double kMinTimingSeconds = 0.03;
 // The reported time is the least of this many timings: what the formula costs, without the
-// moments another process took the core (the noise is one-sided).
-constexpr int kTimingRepeats = 5;
+// moments another process took the core (the noise is one-sided). The timings of one primitive
+// go in rounds, every level once per round, so that a slow spell of the machine, which can last
+// longer than one timing, spoils at most one timing of each level rather than all of one.
+constexpr int kTimingRounds = 5;
 
 double time_once(NearestHit f, const std::vector<AccuracyCase>& cases) {
   if (cases.empty()) return 0;
@@ -35,11 +38,7 @@ double time_once(NearestHit f, const std::vector<AccuracyCase>& cases) {
   return elapsed * 1e9 / static_cast<double>(calls);
 }
 
-double time_per_call(NearestHit f, const std::vector<AccuracyCase>& cases) {
-  double best = time_once(f, cases);
-  for (int i = 1; i < kTimingRepeats; ++i) best = std::min(best, time_once(f, cases));
-  return best;
-}
+constexpr double kNever = std::numeric_limits<double>::infinity();
 
 std::vector<AccuracyCase> inputs(const std::vector<TruthCase>& cases) {
   std::vector<AccuracyCase> out;
@@ -56,7 +55,8 @@ AccuracyReport measure_accuracy(const std::vector<Measured>& levels, int random_
   report.random_per_primitive = random_count;
   int total = 0, done = 0;
   for (Primitive p : kAllPrimitives) {
-    for (const auto& m : levels) total += m.level.on[static_cast<std::size_t>(p)] != nullptr;
+    for (const auto& m : levels)
+      total += kTimingRounds * (m.level.on[static_cast<std::size_t>(p)] != nullptr);
   }
   for (Primitive p : kAllPrimitives) {
     std::vector<TruthCase> random;
@@ -70,19 +70,23 @@ AccuracyReport measure_accuracy(const std::vector<Measured>& levels, int random_
     }
     report.hard_per_primitive[p] = static_cast<int>(hard_p.size());
     std::vector<AccuracyCase> random_in = inputs(random), hard_in = inputs(hard_p);
+    std::vector<ReportRow> rows;
+    std::vector<NearestHit> timed;
     for (const auto& m : levels) {
       NearestHit f = m.level.on[static_cast<std::size_t>(p)];
       if (!f) continue;
-      ReportRow row{m.level.name,
-                    p,
-                    m.peer,
-                    time_per_call(f, random_in),
-                    time_per_call(f, hard_in),
-                    level_error(m.level, random),
-                    level_error(m.level, hard_p)};
-      report.rows.push_back(std::move(row));
-      if (progress) progress(++done, total);
+      rows.push_back({m.level.name, p, m.peer, kNever, kNever, level_error(m.level, random),
+                      level_error(m.level, hard_p)});
+      timed.push_back(f);
     }
+    for (int round = 0; round < kTimingRounds; ++round) {
+      for (std::size_t i = 0; i < rows.size(); ++i) {
+        rows[i].ns_random = std::min(rows[i].ns_random, time_once(timed[i], random_in));
+        rows[i].ns_hard = std::min(rows[i].ns_hard, time_once(timed[i], hard_in));
+        if (progress) progress(++done, total);
+      }
+    }
+    for (auto& row : rows) report.rows.push_back(std::move(row));
     for (const auto& c : hard_in)
       ++report.adaptive_levels_hard[std::string(level_name(adaptive_nearest(c).level))];
   }
