@@ -49,11 +49,7 @@ TEST(RefractKind, TotalInternalReflection) {
 // ambient 0.1·2 = 0.2; diffuse 0.5·1·0.8 = 0.4; specular 0.3·1·1 = 0.3; total 0.9.
 // A second light is blocked: it adds nothing.
 TEST(ShadeKind, TermByTerm) {
-  Problem p = testing::problem(R"({"id": "s", "kind": "shade",
-    "point": [0, 0, 0], "normal": [0, 1, 0], "eye": [-3, 4, 0], "ambient_light": 2,
-    "material": {"ambient": 0.1, "diffuse": 0.5, "specular": 0.3, "shininess": 12},
-    "lights": [{"name": "A", "position": [3, 4, 0]},
-               {"name": "B", "position": [0, 9, 0], "blocked": true}]})");
+  Problem p = testing::problem(testing::kTwoLightShade);
   nlohmann::json a = p.task->answer();
   EXPECT_NEAR(a["ambient"].get<double>(), 0.2, 1e-15);
   EXPECT_NEAR(a["diffuse"].get<double>(), 0.4, 1e-15);

@@ -122,11 +122,7 @@ TEST(RefractSketch, TotalInternalReflectionIsDrawnAndLabelled) {
 // N·L_1 = 0.8, R_1 = 2·0.8·(0, 1, 0) − L_1 = (−0.6, 0.8, 0) (= V: the full highlight);
 // light B at (0, 9, 0) is blocked: L_2 = (0, 1, 0), dotted, and no R_2.
 TEST(ShadeSketch, ShowsNormalViewLightsAndReflection) {
-  Problem p = testing::problem(R"({"id": "s", "kind": "shade",
-    "point": [0, 0, 0], "normal": [0, 1, 0], "eye": [-3, 4, 0], "ambient_light": 2,
-    "material": {"ambient": 0.1, "diffuse": 0.5, "specular": 0.3, "shininess": 12},
-    "lights": [{"name": "A", "position": [3, 4, 0]},
-               {"name": "B", "position": [0, 9, 0], "blocked": true}]})");
+  Problem p = testing::problem(testing::kTwoLightShade);
   Sketch f = p.task->sketch();
   item(f, Type::kPlane, "surface");
   expect_near(item(f, Type::kPoint, "P").points[0], {0, 0, 0});

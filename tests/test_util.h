@@ -23,6 +23,14 @@ inline Problem problem(const std::string& text) {
   return read_problem(Cursor(f));
 }
 
+// A shade problem worked by hand in the tests that use it: P at the origin, N = y, the eye at
+// (−3, 4, 0), light A at (3, 4, 0) and light B at (0, 9, 0), blocked.
+inline constexpr const char* kTwoLightShade = R"({"id": "s", "kind": "shade",
+    "point": [0, 0, 0], "normal": [0, 1, 0], "eye": [-3, 4, 0], "ambient_light": 2,
+    "material": {"ambient": 0.1, "diffuse": 0.5, "specular": 0.3, "shininess": 12},
+    "lights": [{"name": "A", "position": [3, 4, 0]},
+               {"name": "B", "position": [0, 9, 0], "blocked": true}]})";
+
 inline Ray ray(Vec3d o, Vec3d d, double t_min = 0, double t_max = kInfinity) {
   return Ray{o, d, t_min, t_max};
 }
