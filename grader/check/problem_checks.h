@@ -49,4 +49,9 @@ BoundaryProbe probe_boundaries(const Problem& p);
 std::vector<Diagnostic> check_conditioning(const Problem& p, const nlohmann::json& reference,
                                            const NumberLiterals& literals, bool exact_boundary);
 
+// Every finding of the checks `raygrade check` runs on one problem by itself: the stated answer,
+// the boundary probes and the conditioning check (those across problems, unique ids and
+// geometry, are the caller's). `literals` are keyed by JSON pointers that start with p.path.
+std::vector<Diagnostic> problem_findings(const Problem& p, const NumberLiterals& literals);
+
 }  // namespace raygrade

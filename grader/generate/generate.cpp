@@ -21,19 +21,6 @@ constexpr int kMaxAttempts = 200;
 const std::vector<Outcome> kAllOutcomes = {Outcome::kHit, Outcome::kMiss, Outcome::kTangent,
                                            Outcome::kInside, Outcome::kBehind};
 
-// Every finding of the checks a bank check runs on one problem (those across problems,
-// unique ids and geometry, are the caller's).
-std::vector<Diagnostic> findings(const std::shared_ptr<const SourceFile>& file, Problem& p) {
-  nlohmann::json reference = p.task->answer();
-  NumberLiterals literals = scan_number_literals(file->text);
-  std::vector<Diagnostic> out = check_expected(p, reference, literals);
-  BoundaryProbe probe = probe_boundaries(p);
-  out.insert(out.end(), probe.diagnostics.begin(), probe.diagnostics.end());
-  auto c = check_conditioning(p, reference, literals, probe.exact_boundary);
-  out.insert(out.end(), c.begin(), c.end());
-  return out;
-}
-
 }  // namespace
 
 const char* outcome_name(Outcome o) {
@@ -112,7 +99,8 @@ std::vector<GeneratedProblem> generate_problems(const GenerateOptions& options) 
       try {
         Problem p = read_problem(Cursor(file));
         key = geometry_key(p);
-        if (geometries.count(key) || !findings(file, p).empty()) continue;
+        if (geometries.count(key) || !problem_findings(p, scan_number_literals(file->text)).empty())
+          continue;
       } catch (const Error&) {
         continue;  // a draft the format rejects is discarded like any other failed draft
       }

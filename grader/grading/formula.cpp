@@ -397,6 +397,12 @@ FormulaParse parse_formula(std::string_view text, const SymbolTable* symbols) {
   return Parser(text, symbols).run();
 }
 
+std::vector<std::string> formula_function_names() {
+  std::vector<std::string> out;
+  for (const auto& f : kFunctions) out.emplace_back(f.name);
+  return out;
+}
+
 TypedDigits typed_digits(std::string_view text) {
   TypedDigits d;
   std::size_t i = 0, n = text.size();

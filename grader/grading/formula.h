@@ -78,6 +78,10 @@ struct FormulaParse {
 // and pi are allowed. Never throws; faults are reported with the character they are at.
 FormulaParse parse_formula(std::string_view text, const SymbolTable* symbols = nullptr);
 
+// The functions a formula may call by name ("sqrt", "sin", ...), for pages that read typed
+// numbers as the grader does.
+std::vector<std::string> formula_function_names();
+
 // The digits of a plain decimal literal as typed; `literal` is false for anything else.
 TypedDigits typed_digits(std::string_view text);
 

@@ -14,9 +14,9 @@ std::vector<std::string> Task::conclusion() const {
 }
 
 const std::vector<std::string>& common_problem_keys() {
-  static const std::vector<std::string> keys = {"id",     "kind",      "title",    "statement",
-                                                "method", "precision", "expected", "tolerance",
-                                                "points", "tests",     "tags",     "source"};
+  static const std::vector<std::string> keys = {
+      "id",        "kind",   "title", "statement", "method", "precision",  "expected",
+      "tolerance", "points", "tests", "tags",      "source", "parameters", "nice_numbers"};
   return keys;
 }
 
@@ -50,7 +50,54 @@ Ray read_ray(const Cursor& c) {
   return ray;
 }
 
+namespace {
+
+Problem read_plain_problem(const Cursor& c);
+
+// Reads the plain problem that `values` make of the parameterized problem at `c`. Its faults
+// are reported at the problem's place in the file as written.
+Problem read_instance(const Cursor& c, std::shared_ptr<const ParameterSet> set,
+                      const ParameterValues& values) {
+  nlohmann::json plain = instantiate(c, *set, values);
+  auto file = std::make_shared<SourceFile>();
+  file->name = c.file_name();
+  file->text = plain.dump(2);
+  file->root = std::move(plain);
+  Problem p;
+  try {
+    p = read_plain_problem(Cursor(file, &file->root, c.path()));
+  } catch (const Error& e) {
+    Diagnostic d = e.diagnostic();
+    std::tie(d.line, d.column) = locate(c.file()->text, d.path);
+    throw Error(d);
+  }
+  p.parameters = std::move(set);
+  p.template_file = c.file();
+  p.template_json = &c.json();
+  p.values = values;
+  return p;
+}
+
+}  // namespace
+
 Problem read_problem(const Cursor& c) {
+  if (c.is_object() && c.has("parameters")) {
+    auto set = std::make_shared<const ParameterSet>(read_parameters(c));
+    ParameterValues defaults = set->defaults();
+    return read_instance(c, std::move(set), defaults);
+  }
+  if (c.is_object() && c.has("nice_numbers")) (void)read_parameters(c);  // reports the fault
+  return read_plain_problem(c);
+}
+
+Problem read_problem_variant(const Problem& base, const ParameterValues& values) {
+  Cursor c(base.template_file, base.template_json, base.path);
+  return read_instance(c, base.parameters, values);
+}
+
+namespace {
+
+Problem read_plain_problem(const Cursor& c) {
   if (!c.is_object()) c.fail("a problem must be a JSON object", "type");
   Problem p;
   p.id = c.at("id").string();
@@ -100,8 +147,6 @@ Problem read_problem(const Cursor& c) {
   }
   return p;
 }
-
-namespace {
 
 void collect_files(const std::filesystem::path& path, std::vector<std::string>& out,
                    std::vector<Diagnostic>& errors) {

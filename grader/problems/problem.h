@@ -9,6 +9,7 @@
 
 #include "derivation/derivation.h"
 #include "json/cursor.h"
+#include "problems/parameters.h"
 #include "shapes/ray.h"
 #include "shapes/sketch.h"
 
@@ -74,6 +75,12 @@ struct Problem {
   std::string path;          // its JSON pointer in that file ("" or "/problems/3")
   std::shared_ptr<const SourceFile> source_file;
   std::unique_ptr<Task> task;
+  // A problem with parameters (problems/parameters.h): the set, the problem as written (with
+  // its "=r" and "{r}"), and the values this Problem was read with (the defaults in a bank).
+  std::shared_ptr<const ParameterSet> parameters;
+  std::shared_ptr<const SourceFile> template_file;
+  const nlohmann::json* template_json = nullptr;  // inside template_file
+  ParameterValues values;
 };
 
 // One row of the table of kinds.
@@ -92,8 +99,13 @@ const std::vector<std::string>& common_problem_keys();
 // Reads a ray {origin, direction, t_min, t_max}; rejects a zero direction and t_min > t_max.
 Ray read_ray(const Cursor& ray);
 
-// Reads one problem object. Throws Error naming the file and path on any fault.
+// Reads one problem object. Throws Error naming the file and path on any fault. A problem with
+// parameters is read with their defaults.
 Problem read_problem(const Cursor& problem);
+
+// Reads a problem with parameters for one set of values: the plain problem they give, with
+// the file and path of the problem as written. Throws Error at the path of any fault.
+Problem read_problem_variant(const Problem& base, const ParameterValues& values);
 
 // Every problem of a set of files and folders (folders are searched recursively for *.json,
 // in sorted order). Faulty files and problems are reported in `errors` and skipped; the rest

@@ -1,0 +1,70 @@
+// Parameters: the numbers of a problem that change from student to student. A problem declares
+// them ({"r": {"integer": [1, 4], "default": 2}}) and uses them in its numbers ("=r", "=2*r + 1")
+// and in its text ("radius {r}"); a set of values turns it into a plain problem.
+#pragma once
+
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "generate/prng.h"
+#include "json/cursor.h"
+
+namespace raygrade {
+
+// The values of a problem's parameters: a number, or a vector [x, y, z] drawn from choices.
+using ParameterValues = std::map<std::string, nlohmann::json>;
+
+struct Parameter {
+  enum class Domain { kInteger, kRange, kChoices };
+  std::string name;
+  Domain domain = Domain::kInteger;
+  double lo = 0, hi = 0, step = 1;  // kInteger and kRange: lo, lo + step, ..., hi
+  int step_decimals = 0;            // kRange: the decimals of the step, to round the draws
+  std::vector<nlohmann::json> choices;
+  std::vector<nlohmann::json> exclude;
+  nlohmann::json default_value;
+
+  // How many values the domain holds before exclusions.
+  std::uint64_t size() const;
+  // The i-th value of the domain (i < size()).
+  nlohmann::json value(std::uint64_t i) const;
+};
+
+// A requirement on a variant's answer: every number under the named answer keys (default "t")
+// has at most `decimals` decimals.
+struct NiceNumbers {
+  int decimals = 0;
+  std::vector<std::string> fields = {"t"};
+};
+
+struct ParameterSet {
+  std::vector<Parameter> parameters;
+  std::optional<NiceNumbers> nice;
+
+  bool empty() const { return parameters.empty(); }
+  ParameterValues defaults() const;
+  // One value per parameter, drawn in the order declared; excluded values are drawn again.
+  ParameterValues draw(Prng& rng) const;
+};
+
+// Reads the "parameters" (and "nice_numbers") of a problem object. Every parameter must be
+// used somewhere in the problem, every use must name known parameters, and every default must
+// lie in its domain; faults throw Error at their JSON path.
+ParameterSet read_parameters(const Cursor& problem);
+
+// The plain problem for a set of values: every string "=expression" replaced by its value,
+// every "{expression}" in the title and statement by its value as text ("{{" and "}}" are
+// braces), and the keys "parameters" and "nice_numbers" removed. Throws Error at the JSON path
+// of an expression that does not evaluate to a finite number.
+nlohmann::json instantiate(const Cursor& problem, const ParameterSet& set,
+                           const ParameterValues& values);
+
+// Whether every number under the answer's `fields` keys has at most `decimals` decimals.
+bool has_nice_numbers(const nlohmann::json& answer, const NiceNumbers& nice);
+
+// A value as a statement prints it: 2, 0.25, -1.5, (0, 0, 1).
+std::string parameter_text(const nlohmann::json& value);
+
+}  // namespace raygrade
