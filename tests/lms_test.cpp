@@ -104,7 +104,7 @@ TEST(Lms, PrairieLearnFieldList) {
 TEST(Lms, GradebookRowsAndEscaping) {
   std::string csv = gradebook_csv(
       {sample("=cmd|' /C calc'!A0", R"({"hits": [{"t": 1}]})"), rejected()}, {"s1", "other"});
-  EXPECT_EQ(csv.substr(0, csv.find('\n')), "student,file,s1,other,total,max,status");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "student,id,email,file,s1,other,total,max,status");
   EXPECT_NE(csv.find("'=cmd|"), std::string::npos);  // a formula neutralised
   EXPECT_EQ(csv.find("\n=cmd"), std::string::npos);
   EXPECT_NE(csv.find(",1,,1,3,graded"), std::string::npos);

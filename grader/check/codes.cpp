@@ -43,6 +43,10 @@ const std::vector<DiagnosticCode>& check_codes() {
        "--solutions)"},
       // Self-tests.
       {"self-test", "a sample answer gets a different score or mistake than its test states"},
+      // Assignments.
+      {"unknown-problem", "an assignment names a problem its bank does not have"},
+      {"no-variant", "no draw of a problem's parameters passes the checks in 100 tries"},
+      {"not-nice", "a variant's answer has more decimals than its nice_numbers allow"},
   };
   return codes;
 }

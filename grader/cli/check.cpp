@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <iostream>
 
+#include "assignments/assignment.h"
+#include "assignments/check_assignment.h"
 #include "check/report.h"
 #include "cli/command.h"
 
@@ -27,7 +29,9 @@ int run_check(const CheckCliOptions& o) {
   if (!o.no_solutions) options.solutions_dir = o.solutions;
   options.solutions_required = o.solutions_given;
   options.conditioning = !o.no_conditioning;
-  CheckReport report = check_bank(o.paths, options);
+  // One assignment file: the assignment and a sample of its variants; otherwise a bank.
+  bool assignment = o.paths.size() == 1 && is_assignment_file(o.paths[0]);
+  CheckReport report = assignment ? check_assignment(o.paths[0]) : check_bank(o.paths, options);
   if (o.format == "json") {
     std::cout << check_report_json(report).dump(2) << "\n";
   } else if (o.format == "junit") {
@@ -46,7 +50,7 @@ int run_check(const CheckCliOptions& o) {
 
 Runner setup_check(CLI::App& sub) {
   auto o = std::make_shared<CheckCliOptions>();
-  sub.add_option("paths", o->paths, "problem files or folders")->required();
+  sub.add_option("paths", o->paths, "problem files or folders, or one assignment file")->required();
   sub.add_option("--format", o->format, "text (default), json or junit")
       ->check(CLI::IsMember({"text", "json", "junit"}));
   auto* solutions = sub.add_option("--solutions", o->solutions,

@@ -8,6 +8,8 @@
 #include <iostream>
 #include <set>
 
+#include "assignments/grading.h"
+#include "assignments/roster.h"
 #include "cli/command.h"
 #include "core/atomic_file.h"
 #include "core/escape.h"
@@ -23,6 +25,10 @@ struct GradeCliOptions {
   std::string format = "text";
   std::string out;
   bool answered_only = false;
+  std::string assignment;  // an assignment file: each submission graded as its student's variant
+  std::string roster;
+  std::string feedback;  // overrides the assignment's feedback policy
+  std::string now;       // the time the due date is compared with (default: the clock)
 };
 
 // A progress bar on standard error, only when it is a terminal.
@@ -68,10 +74,68 @@ int run_grade(const GradeCliOptions& o) {
     fmt::print(stderr, "raygrade grade: unknown format '{}'\n", o.format);
     return kExitBadInput;
   }
-  Bank bank = load_bank(o.problems);
-  for (const auto& e : bank.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
-  Assignment assignment(bank.problems, AssignmentOptions{o.answered_only});
-  for (const auto& e : assignment.errors()) fmt::print(stderr, "{}\n", format_diagnostic(e));
+  // What grades one file, and the problems in gradebook order: the bank's, or an assignment's.
+  std::function<SubmissionGrade(const std::string&)> grade_one;
+  std::vector<std::string> ids;
+  std::vector<Diagnostic> setup_errors;
+  Bank bank;
+  std::unique_ptr<Assignment> assignment;
+  std::unique_ptr<AssignmentSpec> spec;
+  std::unique_ptr<AssignmentBank> spec_bank;
+  std::unique_ptr<AssignmentGrader> spec_grader;
+  if (o.assignment.empty()) {
+    if (!o.roster.empty() || !o.feedback.empty() || !o.now.empty()) {
+      fmt::print(stderr, "raygrade grade: --roster, --feedback and --now go with --assignment\n");
+      return kExitBadInput;
+    }
+    bank = load_bank(o.problems);
+    setup_errors = bank.errors;
+    assignment = std::make_unique<Assignment>(bank.problems, AssignmentOptions{o.answered_only});
+    setup_errors.insert(setup_errors.end(), assignment->errors().begin(),
+                        assignment->errors().end());
+    for (const auto& gr : assignment->graders()) ids.push_back(gr.problem().id);
+    grade_one = [&](const std::string& f) { return assignment->grade_file(f); };
+  } else {
+    AssignmentGradeOptions options;
+    try {
+      spec = std::make_unique<AssignmentSpec>(load_assignment(o.assignment));
+      if (!o.roster.empty()) options.roster = load_roster(o.roster);
+    } catch (const Error& e) {
+      fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
+      return kExitBadInput;
+    }
+    if (!o.feedback.empty()) {
+      options.feedback = parse_feedback_policy(o.feedback);
+      if (!options.feedback) {
+        fmt::print(stderr, "raygrade grade: unknown feedback policy '{}' (score, mistakes, full)\n",
+                   o.feedback);
+        return kExitBadInput;
+      }
+    }
+    auto now =
+        o.now.empty()
+            ? std::optional<std::int64_t>(std::chrono::duration_cast<std::chrono::seconds>(
+                                              std::chrono::system_clock::now().time_since_epoch())
+                                              .count())
+            : parse_time(o.now);
+    if (!now) {
+      fmt::print(stderr,
+                 "raygrade grade: --now '{}' is not a date and time (2026-12-04T23:59:00Z)\n",
+                 o.now);
+      return kExitBadInput;
+    }
+    options.now = *now;
+    spec_bank = std::make_unique<AssignmentBank>(load_assignment_bank(*spec));
+    setup_errors = spec_bank->errors;
+    if (spec_bank->problems.size() != spec->problems.size()) {
+      for (const auto& e : setup_errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
+      return kExitBadInput;
+    }
+    spec_grader = std::make_unique<AssignmentGrader>(*spec, spec_bank->problems, options);
+    ids = spec_grader->problem_ids();
+    grade_one = [&](const std::string& f) { return spec_grader->grade_file(f); };
+  }
+  for (const auto& e : setup_errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   std::vector<Diagnostic> errors;
   std::vector<std::string> files = submission_files(o.submissions, errors);
   for (const auto& e : errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
@@ -91,7 +155,7 @@ int run_grade(const GradeCliOptions& o) {
   std::size_t rejected = 0;
   for (std::size_t i = 0; i < files.size(); ++i) {
     auto start = std::chrono::steady_clock::now();
-    SubmissionGrade g = assignment.grade_file(files[i]);
+    SubmissionGrade g = grade_one(files[i]);
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!g.gradable) {
@@ -117,8 +181,6 @@ int run_grade(const GradeCliOptions& o) {
     progress.step(i + 1);
   }
   if (o.format == "csv") {
-    std::vector<std::string> ids;
-    for (const auto& gr : assignment.graders()) ids.push_back(gr.problem().id);
     std::string csv = gradebook_csv(grades, ids);
     if (o.out.empty()) {
       stream = csv;
@@ -135,7 +197,7 @@ int run_grade(const GradeCliOptions& o) {
     fmt::print(stderr, "Graded {} submissions into {}{}.\n", grades.size() - rejected, o.out,
                rejected ? fmt::format(" ({} rejected)", rejected) : "");
   }
-  bool bad = rejected || !errors.empty() || !bank.errors.empty() || !assignment.errors().empty();
+  bool bad = rejected || !errors.empty() || !setup_errors.empty();
   return bad ? kExitBadInput : kExitOk;
 }
 
@@ -169,16 +231,33 @@ int grade_sample_submissions(const Bank& bank, const std::string& folder) {
 
 Runner setup_grade(CLI::App& sub) {
   auto o = std::make_shared<GradeCliOptions>();
-  sub.add_option("--problems", o->problems, "the bank: a file or folder (repeat for more)")
-      ->allow_extra_args(false)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  auto* problems =
+      sub.add_option("--problems", o->problems, "the bank: a file or folder (repeat for more)")
+          ->allow_extra_args(false)
+          ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   sub.add_option("submissions", o->submissions, "submission files or folders")->required();
   sub.add_option("--format", o->format,
                  "text, json, gradescope, prairielearn, csv (a gradebook) or html");
   sub.add_option("--out", o->out, "a folder for one file per student (or gradebook.csv)");
   sub.add_flag("--answered-only", o->answered_only,
                "count only the problems each submission answers");
-  return [o] { return run_grade(*o); };
+  sub.add_option("--assignment", o->assignment,
+                 "an assignment file: each submission is graded as the variant of its student");
+  sub.add_option("--roster", o->roster,
+                 "with --assignment: a roster CSV (id, name, email); every student must be on it");
+  sub.add_option("--feedback", o->feedback,
+                 "with --assignment: score, mistakes or full, whatever the assignment says");
+  sub.add_option("--now", o->now,
+                 "with --assignment: the time compared with the due date (default: now)");
+  return [o, problems] {
+    if (problems->count() > 0 && !o->assignment.empty()) {
+      fmt::print(stderr,
+                 "raygrade grade: --problems does not go with --assignment (the "
+                 "assignment names its bank)\n");
+      return static_cast<int>(kExitBadInput);
+    }
+    return run_grade(*o);
+  };
 }
 
 }  // namespace raygrade::cli

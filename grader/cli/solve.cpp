@@ -3,6 +3,7 @@
 
 #include <iostream>
 
+#include "assignments/variants.h"
 #include "cli/command.h"
 #include "problems/problem.h"
 #include "reports/json_report.h"
@@ -17,10 +18,37 @@ struct SolveOptions {
   std::string method;
   int precision = -1;
   bool steps = false;
+  std::string student;  // with an assignment: that student's variant
 };
 
+// The problems to solve: a bank's, or an assignment's (one student's variant, or the
+// generic set with the default numbers).
+Bank problems_to_solve(const SolveOptions& o) {
+  bool assignment = o.paths.size() == 1 && is_assignment_file(o.paths[0]);
+  if (!assignment) {
+    if (!o.student.empty()) {
+      throw Error(Diagnostic{o.paths.empty() ? "" : o.paths[0], "", 0, 0, Severity::kError,
+                             "--student goes with one assignment file", "usage"});
+    }
+    return load_bank(o.paths);
+  }
+  AssignmentSpec spec = load_assignment(o.paths[0]);
+  AssignmentBank from = load_assignment_bank(spec);
+  Bank out;
+  out.errors = from.errors;
+  if (from.problems.size() != spec.problems.size()) return out;
+  out.problems = student_problems(spec, from.problems, o.student);
+  return out;
+}
+
 int run_solve(const SolveOptions& o) {
-  Bank bank = load_bank(o.paths);
+  Bank bank;
+  try {
+    bank = problems_to_solve(o);
+  } catch (const Error& e) {
+    fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
+    return kExitBadInput;
+  }
   for (const auto& e : bank.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   nlohmann::json solutions = nlohmann::json::array();
   std::vector<Solution> worked;
@@ -70,7 +98,7 @@ int run_solve(const SolveOptions& o) {
 
 Runner setup_solve(CLI::App& sub) {
   auto o = std::make_shared<SolveOptions>();
-  sub.add_option("paths", o->paths, "problem files or folders")->required();
+  sub.add_option("paths", o->paths, "problem files or folders, or one assignment file")->required();
   sub.add_option("--format", o->format,
                  "json (answers; with --steps, the steps too), or a worked solution as md, html "
                  "or txt")
@@ -81,6 +109,8 @@ Runner setup_solve(CLI::App& sub) {
                  "significant digits)")
       ->check(CLI::Range(0, 15));
   sub.add_flag("--steps", o->steps, "with --format json: include the derivation steps");
+  sub.add_option("--student", o->student,
+                 "with an assignment file: the student (id) whose own numbers are solved");
   return [o] { return run_solve(*o); };
 }
 

@@ -10,6 +10,7 @@ Runner setup_bench(CLI::App& sub);
 Runner setup_grade(CLI::App& sub);
 Runner setup_check(CLI::App& sub);
 Runner setup_generate(CLI::App& sub);
+Runner setup_handout(CLI::App& sub);
 
 const std::vector<Command>& command_table() {
   static const std::vector<Command> table = {
@@ -24,6 +25,8 @@ const std::vector<Command>& command_table() {
        &setup_check},
       {"generate", "seeded problem variants with nice numbers, and their solutions",
        &setup_generate},
+      {"handout", "each student's problems as a page with answer inputs, and a template",
+       &setup_handout},
   };
   return table;
 }

@@ -10,11 +10,12 @@ namespace raygrade {
 
 std::string gradebook_csv(const std::vector<SubmissionGrade>& grades,
                           const std::vector<std::string>& problem_ids) {
-  std::string s = "student,file";
+  std::string s = "student,id,email,file";
   for (const auto& id : problem_ids) s += "," + csv_cell(id);
   s += ",total,max,status\n";
   for (const auto& g : grades) {
-    s += csv_cell(g.student) + "," + csv_cell(g.file);
+    s += csv_cell(g.student) + "," + csv_cell(g.identity.id) + "," + csv_cell(g.identity.email) +
+         "," + csv_cell(g.file);
     std::map<std::string, const GradeResult*, std::less<>> by_id;
     for (const auto& r : g.results) by_id[r.problem_id] = &r;
     for (const auto& id : problem_ids) {

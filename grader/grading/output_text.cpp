@@ -47,7 +47,10 @@ std::string text_report(const SubmissionGrade& g) {
 }
 
 nlohmann::json submission_json(const SubmissionGrade& g) {
-  nlohmann::json j = {{"file", g.file}, {"student", g.student}, {"gradable", g.gradable}};
+  nlohmann::json j = {{"file", g.file}, {"student", g.student}};
+  if (!g.identity.id.empty()) j["student_id"] = g.identity.id;
+  if (!g.identity.email.empty()) j["email"] = g.identity.email;
+  j["gradable"] = g.gradable;
   if (!g.gradable) {
     const Diagnostic& d = *g.fault;
     j["fault"] = {{"file", d.file},     {"path", d.path}, {"line", d.line},

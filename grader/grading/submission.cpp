@@ -43,19 +43,67 @@ SubmissionGrade Assignment::grade_file(const std::string& path) const {
   }
 }
 
+std::string StudentIdentity::display() const {
+  if (!name.empty()) return name;
+  if (!id.empty()) return id;
+  return email;
+}
+
+std::optional<StudentIdentity> read_student(const Cursor& root) {
+  if (!root.is_object() || !root.has("student")) return std::nullopt;
+  Cursor s = root.at("student");
+  StudentIdentity who;
+  if (s.json().is_string()) {
+    who.name = s.string();
+  } else if (s.is_object()) {
+    s.allow_only({"name", "id", "email"});
+    who.name = s.string_or("name", "");
+    who.id = s.string_or("id", "");
+    who.email = s.string_or("email", "");
+  } else {
+    s.fail("student is a name, or an object with a name, id or email", "type");
+  }
+  if (who.empty()) s.fail("student names nobody: give a name, id or email", "invalid");
+  return who;
+}
+
 namespace {
 
-std::string student_name(const Cursor& root, const std::string& file) {
-  if (!root.has("student")) return std::filesystem::path(file).stem().string();
-  Cursor s = root.at("student");
-  if (s.json().is_string()) return s.string();
-  if (s.is_object()) {
-    s.allow_only({"name", "id", "email"});
-    for (const char* key : {"name", "id", "email"}) {
-      if (s.has(key)) return s.at(key).string();
-    }
+bool is_blank(const nlohmann::json& v) {
+  if (!v.is_string()) return false;
+  for (char c : v.get_ref<const std::string&>()) {
+    if (c != ' ' && c != '\t') return false;
   }
-  s.fail("student is a name, or an object with a name, id or email", "type");
+  return true;
+}
+
+bool is_blank_vector(const nlohmann::json& v) {
+  return v.is_array() && !v.empty() && std::all_of(v.begin(), v.end(), is_blank);
+}
+
+// An answer with the blanks of a template left out: a "" (or ["", "", ""]) is a part not
+// given, and a trailing list item of nothing but blanks is no item. A list that held only
+// blanks is left out too ("hits": [] is an answer, a blank row is not).
+nlohmann::json without_blanks(const nlohmann::json& v) {
+  if (v.is_object()) {
+    nlohmann::json out = nlohmann::json::object();
+    for (const auto& [key, value] : v.items()) {
+      if (is_blank(value) || is_blank_vector(value)) continue;
+      nlohmann::json kept = without_blanks(value);
+      if (value.is_array() && !value.empty() && kept.empty()) continue;
+      out[key] = std::move(kept);
+    }
+    return out;
+  }
+  if (v.is_array()) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& item : v) out.push_back(without_blanks(item));
+    std::size_t n = out.size();
+    while (n > 0 && v[n - 1].is_object() && !v[n - 1].empty() && out[n - 1].empty()) --n;
+    out.erase(out.begin() + static_cast<std::ptrdiff_t>(n), out.end());
+    return out;
+  }
+  return v;
 }
 
 }  // namespace
@@ -68,7 +116,10 @@ SubmissionGrade Assignment::grade(const std::shared_ptr<const SourceFile>& file)
   try {
     if (!root.is_object()) root.fail("a submission is a JSON object", "type");
     root.allow_only({"student", "answers", "$schema", "submitted"});
-    g.student = student_name(root, file->name);
+    if (auto who = read_student(root)) {
+      g.identity = *who;
+      g.student = who->display();
+    }
     Cursor answers = root.at("answers");
     if (!answers.is_object()) answers.fail("answers is an object: problem id → answer", "type");
     std::vector<std::string> ids;
@@ -90,7 +141,7 @@ SubmissionGrade Assignment::grade(const std::shared_ptr<const SourceFile>& file)
         continue;
       }
       GradeOptions o{file->name, "/answers/" + pointer_token(id)};
-      g.results.push_back(grader.grade(*it, o));
+      g.results.push_back(grader.grade(without_blanks(*it), o));
     }
   } catch (const Error& e) {
     g.gradable = false;

@@ -10,14 +10,31 @@
 
 #include "core/error.h"
 #include "grading/grade.h"
+#include "json/cursor.h"
 #include "json/source.h"
 #include "problems/problem.h"
 
 namespace raygrade {
 
+// Who a submission is from: its "student" ({"name", "id", "email"}, or a name alone).
+struct StudentIdentity {
+  std::string name;
+  std::string id;
+  std::string email;
+
+  bool empty() const { return name.empty() && id.empty() && email.empty(); }
+  // The first of name, id and email given: how reports name the student.
+  std::string display() const;
+};
+
+// The "student" of a submission's root object; nothing when it has none. Throws Error at
+// /student when it is neither a string nor an object of name, id and email strings.
+std::optional<StudentIdentity> read_student(const Cursor& root);
+
 struct SubmissionGrade {
   std::string file;
-  std::string student;  // the submission's "student", or the file's name without .json
+  std::string student;       // the submission's "student", or the file's name without .json
+  StudentIdentity identity;  // as the submission gives it (empty when it names nobody)
   bool gradable = true;
   std::optional<Diagnostic> fault;  // why it could not be graded (file, JSON path, fault)
   std::vector<GradeResult> results;

@@ -1,0 +1,21 @@
+// The answer form of a problem: one labelled input per part it asks for, as data that the
+// handout page turns into inputs and back into an answer in the submission format.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "problems/problem.h"
+
+namespace raygrade {
+
+// {"fields": [...]}, each field {"type", "key", "label", ...}; types: number, vector, yesno,
+// choice, set, formula, hits (rows of t, point, normal ...), rows (one row per named item),
+// json (the answer typed as JSON). Nothing in it depends on the answer: the same form for a
+// hit and a miss.
+nlohmann::json answer_form(const Problem& p);
+
+// The same answer with every input left blank: the skeleton of answers-template.json, with ""
+// for every number (a blank is a part not given).
+nlohmann::json blank_answer(const nlohmann::json& form);
+
+}  // namespace raygrade

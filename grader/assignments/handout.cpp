@@ -1,0 +1,153 @@
+// The handout page and the answers template.
+#include "assignments/handout.h"
+
+#include <fmt/format.h>
+
+#include "assignments/answer_form.h"
+#include "assignments/handout_assets.h"
+#include "assignments/variants.h"
+#include "core/escape.h"
+#include "grading/formula.h"
+#include "reports/svg_figure.h"
+
+namespace raygrade {
+namespace {
+
+using json = nlohmann::json;
+
+// JSON inside a <script> element: no "<", ">" or "&" that could end it or start markup.
+std::string script_json(const json& j) {
+  std::string text = j.dump(-1, ' ', false, json::error_handler_t::replace);
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    if (c == '<') {
+      out += "\\u003c";
+    } else if (c == '>') {
+      out += "\\u003e";
+    } else if (c == '&') {
+      out += "\\u0026";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+json identity_json(const StudentIdentity& s) {
+  json j = json::object();
+  if (!s.name.empty()) j["name"] = s.name;
+  if (!s.id.empty()) j["id"] = s.id;
+  if (!s.email.empty()) j["email"] = s.email;
+  return j;
+}
+
+std::string points_text(const AssignmentSpec& spec, std::size_t i, const Problem& p) {
+  if (i < spec.problems.size() && spec.problems[i].points) {
+    double pts = *spec.problems[i].points;
+    return fmt::format("{:g} point{}", pts, pts == 1 ? "" : "s");
+  }
+  (void)p;
+  return "";
+}
+
+}  // namespace
+
+std::string statement_figure_svg(const Problem& p) {
+  Sketch full = p.task->sketch();
+  if (full.empty()) return "";
+  Sketch s = full;
+  s.items.clear();
+  bool ray_kept = false;
+  for (const auto& item : full.items) {
+    switch (item.ink) {
+      case Ink::kObject: s.items.push_back(item); break;
+      case Ink::kPoint:
+        // The ray's origin, the eye, the light: given in the statement.
+        if (item.type == SketchItem::Type::kPoint) s.items.push_back(item);
+        break;
+      case Ink::kRay:
+        // The first ray drawn is the one given; later ones (reflected, refracted) are answers.
+        // It is drawn as a direction from its origin, without a length that could tell t.
+        if (!ray_kept && item.points.size() == 2) {
+          SketchItem ray = item;
+          ray.label.clear();
+          Vec3d d = ray.points[1] - ray.points[0];
+          double len = length(d);
+          if (len > 0) ray.points[1] = ray.points[0] + d * (1.0 / len);
+          ray.type = SketchItem::Type::kArrow;
+          s.items.push_back(ray);
+          ray_kept = true;
+        }
+        break;
+      case Ink::kGuide:
+      case Ink::kHit:
+      case Ink::kMiss:
+        break;  // construction lines, hits and rejected candidates belong to the solution
+    }
+  }
+  if (s.items.empty()) return "";
+  return render_svg(s, p.title.empty() ? p.id : p.title).svg;
+}
+
+Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& problems,
+                     const StudentIdentity* student) {
+  Handout out;
+  json data = {{"assignment", {{"id", spec.id}, {"title", spec.title}}},
+               {"formula",
+                {{"functions", formula_function_names()},
+                 {"max_length", kMaxFormulaLength},
+                 {"max_depth", kMaxFormulaDepth}}}};
+  data["student"] =
+      student ? json{{"key", student_key(*student)}, {"identity", identity_json(*student)}}
+              : json{{"key", ""}, {"identity", nullptr}};
+  json listed = json::array();
+  json answers = json::object();
+  std::string sections;
+  for (std::size_t i = 0; i < problems.size(); ++i) {
+    const Problem& p = problems[i];
+    json form = answer_form(p);
+    listed.push_back({{"index", i}, {"id", p.id}, {"form", form}});
+    answers[p.id] = blank_answer(form);
+    std::string points = points_text(spec, i, p);
+    std::string figure = statement_figure_svg(p);
+    sections += fmt::format(
+        "<section class=\"problem\" id=\"problem-{}\" data-problem=\"{}\">\n<h2>{}. {}{}</h2>\n"
+        "<p class=\"muted\">Problem id: <code>{}</code></p>\n<p class=\"statement\">{}</p>\n{}"
+        "<div class=\"form\" id=\"form-{}\"></div>\n</section>\n",
+        i, html_escape(p.id), i + 1, html_escape(p.title.empty() ? p.id : p.title),
+        points.empty() ? "" : fmt::format(" <span class=\"points\">({})</span>", points),
+        html_escape(p.id), html_escape(p.statement),
+        figure.empty() ? "" : "<figure>" + figure + "</figure>\n", i);
+  }
+  data["problems"] = listed;
+  std::string who = student ? student->display() : "";
+  std::string title = spec.title + (who.empty() ? "" : " — " + who);
+  out.html = fmt::format(
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+      "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; "
+      "script-src 'unsafe-inline'; style-src 'unsafe-inline'; img-src data:\">\n"
+      "<title>{}</title>\n<style>{}</style>\n</head>\n<body>\n<header>\n<h1>{}</h1>\n{}{}"
+      "<p>Type each answer as a number or as you would write it: <code>9 - sqrt(3)</code>, "
+      "<code>2√2</code>, <code>1/3</code>, <code>pi/4</code>. Each input says at once whether "
+      "it can be read; it does not say whether it is right. Your answers are kept in this "
+      "browser; when you are done, download <code>answers.json</code> and hand it in.</p>\n"
+      "</header>\n{}<div id=\"actions\"><button type=\"button\" id=\"download\">Download "
+      "answers.json</button><button type=\"button\" id=\"clear\">Clear my answers</button> "
+      "<span id=\"saved\" class=\"muted\"></span></div>\n"
+      "<script type=\"application/json\" id=\"handout-data\">{}</script>\n<script>{}</script>\n"
+      "</body>\n</html>\n",
+      html_escape(title), kHandoutStyle, html_escape(spec.title),
+      who.empty() ? "" : fmt::format("<p class=\"student\">For {}</p>\n", html_escape(who)),
+      spec.due_text.empty()
+          ? ""
+          : fmt::format("<p class=\"due\">Due {}</p>\n", html_escape(spec.due_text)),
+      sections, script_json(data), kHandoutScript);
+  out.template_json = json::object();
+  if (student) out.template_json["student"] = identity_json(*student);
+  out.template_json["answers"] = answers;
+  return out;
+}
+
+}  // namespace raygrade
