@@ -11,7 +11,7 @@ packages=(
 # Extra groups, asked for by name: RAYGRADE_EXTRA="browser fuzz".
 for extra in ${RAYGRADE_EXTRA:-}; do
   case "$extra" in
-    browser) packages+=(chromium) ;;
+    browser) packages+=(chromium chromium-driver python3-selenium) ;;
     fuzz) packages+=(clang libclang-rt-14-dev) ;;
     *) echo "install-deps: unknown extra '$extra'" >&2; exit 2 ;;
   esac

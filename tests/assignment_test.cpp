@@ -1,0 +1,332 @@
+// Assignments: reading them, per-student variants, grading each student against their own
+// numbers, feedback policies in every output format, rosters and templates.
+#include "assignments/assignment.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+
+#include "assignments/answer_form.h"
+#include "assignments/check_assignment.h"
+#include "assignments/feedback.h"
+#include "assignments/grading.h"
+#include "assignments/handout.h"
+#include "assignments/roster.h"
+#include "assignments/variants.h"
+#include "core/escape.h"
+#include "grading/mistakes.h"
+#include "grading/outputs.h"
+#include "run_binary.h"
+
+namespace raygrade {
+namespace {
+
+using testing::TempDir;
+using testing::write_text;
+
+const std::string kExample = std::string(RAYGRADE_SOURCE_DIR) + "/assignments/homework-rays.json";
+// 2026-12-04T23:59:00Z, computed independently (Python's calendar.timegm).
+constexpr std::int64_t kDue = 1796428740;
+
+std::string fault_of(const std::string& text) {
+  TempDir dir("assignment");
+  write_text(dir.path() / "a.json", text);
+  try {
+    (void)load_assignment((dir.path() / "a.json").string());
+  } catch (const Error& e) {
+    return e.diagnostic().path + ": " + e.diagnostic().message;
+  }
+  return "no error";
+}
+
+// A submission of `answers` (problem id → answer) by `student`.
+std::string submission(const std::string& student, const nlohmann::json& answers) {
+  nlohmann::json s = {{"answers", answers}};
+  if (!student.empty()) s["student"] = {{"id", student}};
+  return s.dump(2);
+}
+
+// Every reference answer of one student's variant.
+nlohmann::json right_answers(const AssignmentSpec& spec, const AssignmentBank& bank,
+                             const std::string& student) {
+  nlohmann::json answers = nlohmann::json::object();
+  for (const auto& p : student_problems(spec, bank.problems, student)) {
+    answers[p.id] = p.task->answer();
+  }
+  return answers;
+}
+
+TEST(Assignment, ReadsTheExample) {
+  AssignmentSpec a = load_assignment(kExample);
+  EXPECT_EQ(a.id, "homework-rays");
+  ASSERT_TRUE(a.due);
+  EXPECT_EQ(*a.due, kDue);
+  EXPECT_TRUE(a.per_student);
+  EXPECT_EQ(a.seed, 2026u);
+  ASSERT_EQ(a.problems.size(), 10u);
+  EXPECT_EQ(a.problems[0].id, "variant-sphere");
+  EXPECT_EQ(*a.problems[0].points, 3);
+  EXPECT_EQ(a.policy(a.problems[0], kDue - 1), FeedbackPolicy::kMistakes);
+  EXPECT_EQ(a.policy(a.problems[0], kDue + 1), FeedbackPolicy::kFull);
+  EXPECT_EQ(a.policy(a.problems[9], kDue - 1), FeedbackPolicy::kFull);  // its own policy
+  AssignmentBank bank = load_assignment_bank(a);
+  EXPECT_TRUE(bank.errors.empty());
+  ASSERT_EQ(bank.problems.size(), 10u);
+}
+
+TEST(Assignment, ParsesDueDates) {
+  EXPECT_EQ(parse_time("2026-12-04T23:59:00Z"), kDue);
+  EXPECT_EQ(parse_time("2026-12-04T23:59Z"), kDue);
+  EXPECT_EQ(parse_time("2026-12-05T00:59:00+01:00"), kDue);
+  EXPECT_EQ(parse_time("2026-12-04T22:59:00-01:00"), kDue);  // 22:59 at −01:00 is 23:59 UTC
+  EXPECT_EQ(parse_time("2024-02-29"), 1709251199);           // a date alone: the end of that day
+  EXPECT_FALSE(parse_time("2026-12-04T23:59:00"));           // no zone
+  EXPECT_FALSE(parse_time("2026-02-29"));                    // not a leap year
+  EXPECT_FALSE(parse_time("2026-13-01"));
+  EXPECT_FALSE(parse_time("2026-12-04T24:00:00Z"));
+  EXPECT_FALSE(parse_time("tomorrow"));
+}
+
+TEST(Assignment, FaultsNameTheirPlace) {
+  EXPECT_EQ(fault_of(R"({"assignment": "a", "bank": "b", "problems": ["x"], "due": "soon"})")
+                .substr(0, 5),
+            "/due:");
+  EXPECT_NE(fault_of(R"({"assignment": "a", "bank": "b", "problems": ["x"], "feedbak": "full"})")
+                .find("unknown key 'feedbak' (did you mean 'feedback'?)"),
+            std::string::npos);
+  EXPECT_NE(fault_of(R"({"assignment": "a", "bank": "b", "problems": ["x"], "feedback": "all"})")
+                .find("/feedback: unknown feedback policy 'all'"),
+            std::string::npos);
+  EXPECT_NE(fault_of(R"({"assignment": "a", "bank": "b", "problems": ["x", {"id": "x"}]})")
+                .find("/problems/1: problem 'x' is listed twice"),
+            std::string::npos);
+  EXPECT_NE(
+      fault_of(R"({"assignment": "a", "bank": "b", "problems": []})").find("at least one problem"),
+      std::string::npos);
+}
+
+TEST(Assignment, UnknownProblemsAreReportedWithASuggestion) {
+  TempDir dir("assignment");
+  write_text(dir.path() / "a.json",
+             std::string(R"({"assignment": "a", "bank": ")") + RAYGRADE_SOURCE_DIR +
+                 R"(/problems", "problems": ["sphere-hit", {"id": "sphere-hitt"}]})");
+  AssignmentSpec a = load_assignment((dir.path() / "a.json").string());
+  AssignmentBank bank = load_assignment_bank(a);
+  ASSERT_EQ(bank.errors.size(), 1u);
+  EXPECT_EQ(bank.errors[0].path, "/problems/1/id");
+  EXPECT_NE(bank.errors[0].message.find("did you mean 'sphere-hit'?"), std::string::npos);
+}
+
+TEST(Assignment, EachStudentIsGradedAgainstTheirOwnNumbers) {
+  AssignmentSpec spec = load_assignment(kExample);
+  AssignmentBank bank = load_assignment_bank(spec);
+  TempDir dir("grade");
+  write_text(dir.path() / "ada.json", submission("s001", right_answers(spec, bank, "s001")));
+  // Ada's answers handed in by Alan: graded against Alan's numbers.
+  write_text(dir.path() / "alan.json", submission("s002", right_answers(spec, bank, "s001")));
+  write_text(dir.path() / "nobody.json", submission("", right_answers(spec, bank, "s001")));
+  AssignmentGradeOptions options;
+  options.now = kDue - 60;
+  AssignmentGrader grader(spec, bank.problems, options);
+  SubmissionGrade ada = grader.grade_file((dir.path() / "ada.json").string());
+  ASSERT_TRUE(ada.gradable) << format_diagnostic(*ada.fault);
+  EXPECT_DOUBLE_EQ(ada.max_score, 21);  // 3 + 2 + 3 + 2 + 2 + 1 + 2 + 3 + 1 + 2
+  EXPECT_DOUBLE_EQ(ada.score, 21);
+  EXPECT_EQ(ada.identity.id, "s001");
+  SubmissionGrade alan = grader.grade_file((dir.path() / "alan.json").string());
+  ASSERT_TRUE(alan.gradable);
+  EXPECT_LT(alan.score, 15);
+  SubmissionGrade nobody = grader.grade_file((dir.path() / "nobody.json").string());
+  EXPECT_FALSE(nobody.gradable);
+  EXPECT_EQ(nobody.fault->code, "no-student");
+  EXPECT_NE(nobody.fault->message.find("names no student"), std::string::npos);
+}
+
+TEST(Assignment, TheRosterNamesTheStudents) {
+  TempDir dir("roster");
+  write_text(dir.path() / "r.csv",
+             "\xEF\xBB\xBFname,id,email\r\n\"Lovelace, Ada\",s001,Ada@Example.edu\r\n"
+             "Alan Turing,s002,alan@example.edu\r\n");
+  auto roster = load_roster((dir.path() / "r.csv").string());
+  ASSERT_EQ(roster.size(), 2u);
+  EXPECT_EQ(roster[0].name, "Lovelace, Ada");
+  EXPECT_EQ(roster[0].id, "s001");
+  const StudentIdentity* by_email = find_on_roster(roster, {"", "", "ada@example.EDU"});
+  ASSERT_TRUE(by_email);
+  EXPECT_EQ(by_email->id, "s001");
+  EXPECT_FALSE(find_on_roster(roster, {"", "s003", ""}));
+  write_text(dir.path() / "bad.csv", "id,nmae\ns1,x\n");
+  try {
+    (void)load_roster((dir.path() / "bad.csv").string());
+    ADD_FAILURE() << "a misspelt column was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(e.diagnostic().message.find("unknown column 'nmae'"), std::string::npos);
+    EXPECT_EQ(e.diagnostic().line, 1);
+  }
+  write_text(dir.path() / "twice.csv", "id\ns1\ns1\n");
+  EXPECT_THROW((void)load_roster((dir.path() / "twice.csv").string()), Error);
+}
+
+TEST(Assignment, TheBlankTemplateEarnsNothingAndIsNotAFault) {
+  AssignmentSpec spec = load_assignment(kExample);
+  AssignmentBank bank = load_assignment_bank(spec);
+  StudentIdentity who{"Ada", "s001", ""};
+  Handout h = make_handout(spec, student_problems(spec, bank.problems, "s001"), &who);
+  EXPECT_EQ(h.template_json["student"]["id"], "s001");
+  EXPECT_EQ(h.template_json["answers"]["variant-sphere"]["hits"][0]["t"], "");
+  TempDir dir("template");
+  write_text(dir.path() / "t.json", h.template_json.dump(2));
+  AssignmentGradeOptions options;
+  options.feedback = FeedbackPolicy::kFull;
+  AssignmentGrader grader(spec, bank.problems, options);
+  SubmissionGrade g = grader.grade_file((dir.path() / "t.json").string());
+  ASSERT_TRUE(g.gradable) << format_diagnostic(*g.fault);
+  EXPECT_DOUBLE_EQ(g.score, 0);
+  std::string text = text_report(g);
+  EXPECT_EQ(text.find("could not read"), std::string::npos) << text;
+}
+
+// The reference values of a student's variant a student could copy: every number of every
+// answer that is not a whole number, written as reports write numbers.
+std::vector<std::string> reference_values(const std::vector<Problem>& problems) {
+  std::vector<std::string> out;
+  auto walk = [&](const nlohmann::json& v, auto&& self) -> void {
+    if (v.is_number()) {
+      double x = v.get<double>();
+      if (std::abs(x - std::round(x)) < 1e-6) return;
+      for (int digits : {3, 4, 5, 6}) out.push_back(fmt::format("{:.{}g}", std::abs(x), digits));
+    } else if (v.is_array() || v.is_object()) {
+      for (const auto& item : v) self(item, self);
+    }
+  };
+  for (const auto& p : problems) walk(p.task->answer(), walk);
+  return out;
+}
+
+TEST(Assignment, TheMistakesPolicyRevealsNoReferenceValueInAnyFormat) {
+  AssignmentSpec spec = load_assignment(kExample);
+  AssignmentBank bank = load_assignment_bank(spec);
+  auto mine = student_problems(spec, bank.problems, "s001");
+  // Wrong answers to every problem: the numbers of another student.
+  TempDir dir("policy");
+  write_text(dir.path() / "s.json", submission("s001", right_answers(spec, bank, "s777")));
+  std::vector<std::string> values = reference_values(mine);
+  ASSERT_GT(values.size(), 20u);
+  for (auto policy : {FeedbackPolicy::kMistakes, FeedbackPolicy::kScore, FeedbackPolicy::kFull}) {
+    AssignmentGradeOptions options;
+    options.feedback = policy;
+    AssignmentGrader grader(spec, bank.problems, options);
+    SubmissionGrade g = grader.grade_file((dir.path() / "s.json").string());
+    ASSERT_TRUE(g.gradable);
+    std::vector<std::pair<std::string, std::string>> formats = {
+        {"text", text_report(g)},
+        {"json", submission_json(g).dump()},
+        {"csv", gradebook_csv({g}, grader.problem_ids())},
+        {"html", feedback_html(g)},
+        {"gradescope", gradescope_json(g, 0.1).dump()},
+        {"prairielearn", prairielearn_json(g).dump()}};
+    int found = 0;
+    for (const auto& [name, text] : formats) {
+      for (const auto& v : values) {
+        if (text.find(v) != std::string::npos) {
+          ++found;
+          if (policy != FeedbackPolicy::kFull) {
+            ADD_FAILURE() << name << " shows " << v;
+          }
+        }
+      }
+    }
+    // The same search finds the values where they are allowed: it can fail.
+    if (policy == FeedbackPolicy::kFull) EXPECT_GT(found, 0);
+  }
+}
+
+TEST(Assignment, TheMistakesPolicyStillNamesTheMistakeAndThePart) {
+  GradeResult r;
+  r.problem_id = "p";
+  r.parts.push_back({"t", 1, 2, PartStatus::kPartial, {"The far root t = 7.268 is a hit too."}});
+  r.parts.push_back({"point",
+                     0,
+                     1,
+                     PartStatus::kWrong,
+                     {"could not read '7.2.7': a second decimal point at character 4"}});
+  r.mistakes.push_back(make_mistake("far-root", "t", "You gave t = 7.268, the far root."));
+  r.notes.push_back("The ray also hits at t = 1.057.");
+  GradeResult mistakes = r, score = r;
+  apply_feedback_policy(mistakes, FeedbackPolicy::kMistakes);
+  std::string lines = fmt::format("{}", fmt::join(feedback_lines(mistakes), "\n"));
+  EXPECT_EQ(lines.find("7.268"), std::string::npos) << lines;
+  EXPECT_EQ(lines.find("1.057"), std::string::npos) << lines;
+  EXPECT_NE(lines.find("Far root given as the first hit"), std::string::npos) << lines;
+  EXPECT_NE(lines.find("t (1/2, partial): Partly right"), std::string::npos) << lines;
+  EXPECT_NE(lines.find("could not read '7.2.7'"), std::string::npos) << lines;
+  apply_feedback_policy(score, FeedbackPolicy::kScore);
+  EXPECT_TRUE(score.mistakes.empty());
+  EXPECT_TRUE(score.parts[0].feedback.empty());
+}
+
+TEST(Assignment, TheCheckDrawsSampleVariants) {
+  TempDir dir("check");
+  // ox = 4.99999999 makes every draw nearly tangent to the sphere of radius 5: no variant
+  // passes the boundary check.
+  write_text(dir.path() / "bank.json", R"({"id": "tangent",
+    "parameters": {"ox": {"choices": [4.99999999, 5.00000001], "default": 4.99999999}},
+    "ray": {"origin": ["=ox", 0, 0], "direction": [0, 0, 1]},
+    "object": {"type": "sphere", "center": [0, 0, 10], "radius": 5}})");
+  write_text(dir.path() / "a.json",
+             R"({"assignment": "a", "bank": "bank.json", "variants": {"seed": 1},
+                 "problems": ["tangent"]})");
+  CheckReport bad = check_assignment((dir.path() / "a.json").string());
+  ASSERT_EQ(bad.problems.size(), 1u);
+  ASSERT_EQ(bad.problems[0].diagnostics.size(), 1u);
+  EXPECT_EQ(bad.problems[0].diagnostics[0].code, "no-variant");
+  EXPECT_NE(bad.problems[0].diagnostics[0].message.find("sample-001"), std::string::npos);
+  CheckReport good = check_assignment(kExample);
+  EXPECT_EQ(good.count(Severity::kError), 0);
+  EXPECT_EQ(good.problems.size(), 10u);
+}
+
+TEST(Assignment, PointsAreScaledKeepingTheParts) {
+  GradeResult r;
+  r.score = 1;
+  r.max_score = 4;
+  r.parts.push_back({"t", 1, 2, PartStatus::kPartial, {}});
+  r.parts.push_back({"point", 0, 2, PartStatus::kWrong, {}});
+  scale_points(r, 2);
+  EXPECT_DOUBLE_EQ(r.score, 0.5);
+  EXPECT_DOUBLE_EQ(r.max_score, 2);
+  EXPECT_DOUBLE_EQ(r.parts[0].max_points, 1);
+  EXPECT_DOUBLE_EQ(r.parts[0].points, 0.5);
+}
+
+TEST(Assignment, TheHandoutShowsTheStudentsNumbersAndNoAnswer) {
+  AssignmentSpec spec = load_assignment(kExample);
+  AssignmentBank bank = load_assignment_bank(spec);
+  auto problems = student_problems(spec, bank.problems, "s001");
+  StudentIdentity who{"Ada <Lovelace>", "s001", "ada@example.edu"};
+  Handout h = make_handout(spec, problems, &who);
+  EXPECT_NE(h.html.find("Ada &lt;Lovelace&gt;"), std::string::npos);
+  EXPECT_EQ(h.html.find("Ada <Lovelace>"), std::string::npos);
+  for (const auto& p : problems) {
+    EXPECT_NE(h.html.find(html_escape(p.statement)), std::string::npos) << p.id;
+  }
+  // The figure of the sphere problem draws the sphere and the ray, and no hit.
+  std::string figure = statement_figure_svg(problems[0]);
+  EXPECT_NE(figure.find("<svg"), std::string::npos);
+  Sketch full = problems[0].task->sketch();
+  int hits = 0;
+  for (const auto& item : full.items) hits += item.ink == Ink::kHit;
+  EXPECT_GT(hits, 0);  // the solution's sketch has them: the figure must leave them out
+  for (const auto& item : full.items) {
+    if (item.ink == Ink::kHit && !item.label.empty()) {
+      EXPECT_EQ(figure.find(xml_escape(item.label)), std::string::npos) << item.label;
+    }
+  }
+  // The form is the same for a hit and a miss: it does not depend on the answer.
+  EXPECT_EQ(answer_form(problems[0]).dump(),
+            answer_form(student_problems(spec, bank.problems, "s002")[0]).dump());
+}
+
+}  // namespace
+}  // namespace raygrade

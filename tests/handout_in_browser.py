@@ -1,0 +1,249 @@
+#!/usr/bin/env python3
+"""The handout page as a student uses it, in headless Chromium driven by Selenium.
+
+Writes the handouts of two students from a roster, checks that their numbers differ on every
+problem with parameters, opens the first student's page from disk, types that student's right
+answers into the inputs (some as a student would type them: "2√2", "1/4", "−3"), watches an
+unreadable entry being flagged as it is typed, downloads answers.json, and grades the download
+with `raygrade grade --assignment`: full marks. The same answers handed in as the second
+student earn less. Reloading the page keeps the answers. Screenshots land in OUT.
+
+Usage: handout_in_browser.py RAYGRADE ASSIGNMENT OUT
+"""
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from chromium import FLAGS, SKIPPED, require_chromium  # noqa: E402
+
+try:
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.support.ui import Select
+except ImportError:
+    print("python3-selenium is not installed (scripts/install-deps.sh installs it): skipped")
+    sys.exit(SKIPPED)
+
+RAYGRADE, ASSIGNMENT, OUT = sys.argv[1:4]
+ROSTER = "id,name,email\ns001,Ada Lovelace,ada@example.edu\ns002,Alan Turing,alan@example.edu\n"
+failures = []
+
+
+def check(ok, message):
+    if not ok:
+        failures.append(message)
+        print("FAIL:", message)
+
+
+def run(*args):
+    return subprocess.run([RAYGRADE, *args], capture_output=True, text=True, timeout=300)
+
+
+def answers_of(student):
+    r = run("solve", ASSIGNMENT, "--student", student, "--format", "json")
+    assert r.returncode == 0, r.stderr
+    return {s["id"]: s["answer"] for s in json.loads(r.stdout)["solutions"]}
+
+
+def typed(x):
+    """A number as a student types it: whole numbers plainly, others to 12 significant digits,
+    and a few in the forms the grader reads (a fraction, a square root, a Unicode minus)."""
+    if x == int(x):
+        v = int(x)
+        return f"−{-v}" if v < 0 else str(v)
+    for q in (2, 4, 5, 8, 10):
+        if abs(x * q - round(x * q)) < 1e-12:
+            return f"{round(x * q)}/{q}"
+    for k in (2, 3):
+        if abs(x / math.sqrt(k) - round(x / math.sqrt(k))) < 1e-12 and round(x / math.sqrt(k)) != 0:
+            return f"{round(x / math.sqrt(k))}√{k}"
+    return f"{x:.12g}"
+
+
+def driver_for(downloads, profile):
+    options = webdriver.ChromeOptions()
+    for flag in FLAGS:
+        options.add_argument(flag if flag != "--headless" else "--headless=new")
+    options.add_argument(f"--user-data-dir={profile}")
+    options.add_argument("--window-size=1200,1600")
+    options.binary_location = shutil.which("chromium") or shutil.which("chromium-browser")
+    options.add_experimental_option("prefs", {"download.default_directory": downloads,
+                                              "download.prompt_for_download": False})
+    driver = webdriver.Chrome(service=Service(shutil.which("chromedriver")), options=options)
+    driver.execute_cdp_cmd("Page.setDownloadBehavior", {"behavior": "allow", "downloadPath": downloads})
+    return driver
+
+
+def fill(driver, answers):
+    """Types every answer into the page, as a student would, field by field."""
+    def put(name, value):
+        el = driver.find_element(By.NAME, name)
+        el.clear()
+        el.send_keys(value)
+
+    def put_vector(name, v):
+        for axis, x in zip("xyz", v):
+            put(f"{name}.{axis}", typed(x))
+
+    data = json.loads(driver.find_element(By.ID, "handout-data").get_attribute("textContent"))
+    for p in data["problems"]:
+        a = answers[p["id"]]
+        for i, f in enumerate(p["form"]["fields"]):
+            prefix = f"{p['id']}.{i}"
+            kind = f["type"]
+            if kind == "hits":
+                hits = a.get("hits", [])
+                if not hits:
+                    driver.find_element(By.NAME, prefix + ".miss").click()
+                for n, hit in enumerate(hits):
+                    if n > 0:
+                        buttons = driver.find_elements(By.CSS_SELECTOR, f"#problem-{p['index']} button.add")
+                        buttons[0].click()
+                    for c in f["columns"]:
+                        if c["key"] not in hit:
+                            continue
+                        if c["type"] == "vector":
+                            put_vector(f"{prefix}.{n}.{c['key']}", hit[c["key"]])
+                        else:
+                            put(f"{prefix}.{n}.{c['key']}", typed(hit[c["key"]]))
+            elif kind == "choice":
+                want = a.get(f["key"])
+                index = [o["value"] for o in f["options"]].index(want)
+                Select(driver.find_element(By.NAME, prefix)).select_by_value(str(index))
+            elif kind in ("number", "vector", "yesno", "formula"):
+                v = a
+                for k in f["key"].split("/"):
+                    v = v.get(k) if isinstance(v, dict) else None
+                if v is None:
+                    continue
+                if kind == "vector":
+                    put_vector(prefix, v)
+                elif kind == "yesno":
+                    Select(driver.find_element(By.NAME, prefix)).select_by_value("true" if v else "false")
+                elif kind == "formula":
+                    put(prefix, v)
+                else:
+                    put(prefix, typed(v))
+            elif kind == "rows":
+                for r, row in enumerate(f["rows"]):
+                    mine = next(x for x in a[f["key"]] if all(x.get(k) == w for k, w in row["fixed"].items()))
+                    for c in f["columns"]:
+                        name = f"{prefix}.{r}.{c['key']}"
+                        if c["type"] == "yesno":
+                            Select(driver.find_element(By.NAME, name)).select_by_value("true" if mine[c["key"]] else "false")
+                        else:
+                            put(name, typed(mine[c["key"]]))
+            elif kind == "set":
+                for option in a.get(f["key"], []):
+                    driver.find_element(By.NAME, f"{prefix}.{option}").click()
+            elif kind == "json":
+                put(prefix, json.dumps({k: v for k, v in a.items()}))
+
+
+def wait_for_file(folder, name, seconds=30):
+    end = time.time() + seconds
+    path = os.path.join(folder, name)
+    while time.time() < end:
+        if os.path.exists(path) and not os.path.exists(path + ".crdownload"):
+            return path
+        time.sleep(0.2)
+    return None
+
+
+def grade(submission, *extra):
+    r = run("grade", "--assignment", ASSIGNMENT, "--format", "json", "--feedback", "full", *extra, submission)
+    return r.returncode, json.loads(r.stdout) if r.stdout.strip() else None, r.stderr
+
+
+def main():
+    if not require_chromium():
+        return SKIPPED
+    if not shutil.which("chromedriver"):
+        print("chromedriver is not installed (scripts/install-deps.sh installs it): skipped")
+        return SKIPPED
+    os.makedirs(OUT, exist_ok=True)
+    work = tempfile.mkdtemp(prefix="raygrade-handout-")
+    try:
+        roster = os.path.join(work, "roster.csv")
+        with open(roster, "w") as f:
+            f.write(ROSTER)
+        handouts = os.path.join(work, "handouts")
+        r = run("handout", ASSIGNMENT, "--roster", roster, "--out", handouts)
+        check(r.returncode == 0, f"handout exited {r.returncode}: {r.stderr}")
+        pages = {s: os.path.join(handouts, s, "index.html") for s in ("s001", "s002")}
+        check(all(os.path.exists(p) for p in pages.values()), "a handout page is missing")
+
+        # The numbers differ on every problem with parameters.
+        mine, theirs = answers_of("s001"), answers_of("s002")
+        with open(ASSIGNMENT) as f:
+            spec = json.load(f)
+        for entry in spec["problems"]:
+            pid = entry if isinstance(entry, str) else entry["id"]
+            if pid.startswith("variant-"):
+                check(mine[pid] != theirs[pid], f"{pid}: both students got the same numbers")
+
+        downloads = os.path.join(work, "downloads")
+        os.makedirs(downloads)
+        profile = os.path.join(work, "profile")
+        driver = driver_for(downloads, profile)
+        try:
+            driver.get("file://" + pages["s001"])
+            # An unreadable entry is flagged as it is typed, and the flag goes when it is fixed.
+            probe = driver.find_element(By.NAME, "variant-sphere.0.0.t")
+            probe.send_keys("7.2.7")
+            hint = driver.execute_script("return arguments[0].hint.textContent", probe)
+            check("second decimal point" in hint, f"no syntax message for 7.2.7: {hint!r}")
+            driver.save_screenshot(os.path.join(OUT, "handout-typing-error.png"))
+            probe.clear()
+            probe.send_keys("2√2")
+            hint = driver.execute_script("return arguments[0].hint.textContent", probe)
+            check("reads as 2.82843" in hint, f"2√2 not read as 2.82843: {hint!r}")
+            fill(driver, mine)
+            driver.save_screenshot(os.path.join(OUT, "handout-filled.png"))
+            bad = driver.find_elements(By.CSS_SELECTOR, "input.bad")
+            check(not bad, f"{len(bad)} inputs flagged as unreadable after filling")
+            # Progress is kept: reload and the answers are still there.
+            driver.refresh()
+            kept = driver.find_element(By.NAME, "variant-sphere.0.0.t").get_attribute("value")
+            check(kept != "", "the answers were not kept after a reload")
+            driver.find_element(By.ID, "download").click()
+            downloaded = wait_for_file(downloads, "answers.json")
+            check(downloaded is not None, "answers.json was not downloaded")
+            driver.save_screenshot(os.path.join(OUT, "handout-downloaded.png"))
+        finally:
+            driver.quit()
+        if downloaded:
+            shutil.copy(downloaded, os.path.join(OUT, "answers-s001.json"))
+            with open(downloaded) as f:
+                submission = json.load(f)
+            check(submission.get("student", {}).get("id") == "s001", "the download does not name s001")
+            code, graded, err = grade(downloaded, "--roster", roster)
+            check(code == 0, f"grading the download exited {code}: {err}")
+            s = graded["submissions"][0] if graded else {}
+            check(s.get("score") == s.get("max_score") and s.get("max_score", 0) > 0,
+                  f"the right answers got {s.get('score')} / {s.get('max_score')}: "
+                  + json.dumps([p for p in s.get("problems", []) if p["score"] < p["max_score"]])[:2000])
+            # The same answers handed in as the other student.
+            submission["student"] = {"id": "s002"}
+            as_other = os.path.join(work, "as-s002.json")
+            with open(as_other, "w") as f:
+                json.dump(submission, f)
+            code, graded, err = grade(as_other, "--roster", roster)
+            t = graded["submissions"][0] if graded else {}
+            check(code == 1 or code == 0, f"grading as s002 exited {code}: {err}")
+            check(t.get("score", 0) < s.get("score", 0), f"s002 with s001's answers got {t.get('score')}")
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    print(f"handout_in_browser: {'FAILED' if failures else 'passed'}; screenshots in {OUT}")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
