@@ -99,10 +99,10 @@ struct Function {
   std::string_view name;
   Op op;
 };
-constexpr Function kFunctions[] = {
-    {"sqrt", Op::kSqrt}, {"abs", Op::kAbs},   {"sin", Op::kSin},   {"cos", Op::kCos},
-    {"tan", Op::kTan},   {"exp", Op::kExp},   {"ln", Op::kLog},    {"log", Op::kLog},
-    {"asin", Op::kAsin}, {"acos", Op::kAcos}, {"atan", Op::kAtan}, {"atan2", Op::kAtan2}};
+constexpr Function kFunctions[] = {{"sqrt", Op::kSqrt}, {"abs", Op::kAbs},   {"sin", Op::kSin},
+                                   {"cos", Op::kCos},   {"tan", Op::kTan},   {"exp", Op::kExp},
+                                   {"ln", Op::kLog},    {"log", Op::kLog},   {"asin", Op::kAsin},
+                                   {"acos", Op::kAcos}, {"atan", Op::kAtan}, {"atan2", Op::kAtan2}};
 
 // Degrees: "30deg", "30 deg" or "30°" is 30·π/180 (the trigonometric functions take radians).
 constexpr std::string_view kDegreeSign = "\u00b0";
@@ -287,8 +287,8 @@ class Parser {
     if (rest.starts_with(kDegreeSign)) {
       width = kDegreeSign.size();
     } else if (rest.starts_with("deg") &&
-               (rest.size() == 3 || !(std::isalnum(static_cast<unsigned char>(rest[3])) ||
-                                      rest[3] == '_'))) {
+               (rest.size() == 3 ||
+                !(std::isalnum(static_cast<unsigned char>(rest[3])) || rest[3] == '_'))) {
       width = 3;
     }
     if (width == 0) return false;
@@ -384,7 +384,8 @@ class Parser {
     skip_space();
     if (failed_) return;
     if (peek() != ',') {
-      fail(pos_, fmt::format("expected ',' between the two arguments, found '{}'", current_glyph()));
+      fail(pos_,
+           fmt::format("expected ',' between the two arguments, found '{}'", current_glyph()));
       return;
     }
     advance();

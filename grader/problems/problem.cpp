@@ -14,10 +14,30 @@ std::vector<std::string> Task::conclusion() const {
 }
 
 const std::vector<std::string>& common_problem_keys() {
-  static const std::vector<std::string> keys = {"id",     "kind",      "title",    "statement",
-                                                "method", "precision", "expected", "tolerance",
-                                                "points", "tests",     "tags",     "source"};
+  static const std::vector<std::string> keys = {
+      "id",        "kind",   "title", "statement", "method", "precision",  "expected",
+      "tolerance", "points", "tests", "tags",      "source", "conventions"};
   return keys;
+}
+
+Conventions read_conventions(const Cursor& c, Conventions base) {
+  if (!c.is_object()) c.fail("conventions is an object", "type");
+  c.allow_only({"contained"});
+  if (c.has("contained")) {
+    std::string v = c.at("contained").string();
+    if (v == "either") {
+      base.contained = Conventions::Contained::kEither;
+    } else if (v == "line") {
+      base.contained = Conventions::Contained::kLine;
+    } else if (v == "miss") {
+      base.contained = Conventions::Contained::kMiss;
+    } else {
+      c.at("contained")
+          .fail(fmt::format("contained is \"either\", \"line\" or \"miss\", not \"{}\"", v),
+                "invalid");
+    }
+  }
+  return base;
 }
 
 nlohmann::json vec_json(const Vec3d& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
@@ -50,7 +70,7 @@ Ray read_ray(const Cursor& c) {
   return ray;
 }
 
-Problem read_problem(const Cursor& c) {
+Problem read_problem(const Cursor& c, const Conventions& defaults) {
   if (!c.is_object()) c.fail("a problem must be a JSON object", "type");
   Problem p;
   p.id = c.at("id").string();
@@ -85,6 +105,8 @@ Problem read_problem(const Cursor& c) {
   if (auto t = c.find("tolerance")) p.tolerance = t->json();
   if (auto t = c.find("points")) p.points = t->json();
   if (auto t = c.find("tests")) p.tests = t->json();
+  p.conventions = defaults;
+  if (auto t = c.find("conventions")) p.conventions = read_conventions(*t, defaults);
   p.source = c.json();
   p.file = c.file_name();
   p.path = c.path();
@@ -135,7 +157,7 @@ std::vector<std::string> list_bank_files(const std::vector<std::string>& paths,
 
 std::vector<Cursor> problem_items(const Cursor& root) {
   if (root.is_object() && root.has("problems")) {
-    root.allow_only({"problems", "$schema", "title", "description"});
+    root.allow_only({"problems", "$schema", "title", "description", "conventions"});
     return root.at("problems").items();
   }
   return {root};
@@ -161,9 +183,18 @@ Bank load_bank(const std::vector<std::string>& paths) {
       bank.errors.push_back(e.diagnostic());
       continue;
     }
+    Conventions conventions;
+    try {
+      if (root.is_object() && root.has("conventions")) {
+        conventions = read_conventions(root.at("conventions"), conventions);
+      }
+    } catch (const Error& e) {
+      bank.errors.push_back(e.diagnostic());
+      continue;
+    }
     for (const auto& item : items) {
       try {
-        Problem p = read_problem(item);
+        Problem p = read_problem(item, conventions);
         auto [it, fresh] = seen.emplace(p.id, fmt::format("{}{}", p.file, p.path));
         if (!fresh)
           item.at("id").fail(fmt::format("duplicate id '{}' (first used at {})", p.id, it->second),
