@@ -213,7 +213,10 @@ TEST(Parts, DoubleRootListedTwiceIsRight) {
 TEST(Parts, WidenedToleranceNeverReachesTheOtherRoot) {
   const char* grazing = R"({"id": "z", "ray": {"origin": [0.9998, 0, 0], "direction": [0, 0, 1]},
     "object": {"type": "sphere", "center": [0, 0, 5], "radius": 1}})";
-  EXPECT_DOUBLE_EQ(part(grade(grazing, R"({"hits": [{"t": 5.02}, {"t": 5.02}]})"), "t")->points, 1);
+  GradeResult twice = grade(grazing, R"({"hits": [{"t": 5.02}, {"t": 5.02}]})");
+  EXPECT_DOUBLE_EQ(part(twice, "t")->points, 1);
+  EXPECT_TRUE(says(part(twice, "t")->feedback, "listed twice"));
+  EXPECT_TRUE(says(part(twice, "t")->feedback, "also hits at t = 4.98"));
   EXPECT_DOUBLE_EQ(part(grade(grazing, R"({"hits": [{"t": 4.98}, {"t": 5.02}]})"), "t")->points, 2);
 }
 

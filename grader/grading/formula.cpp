@@ -321,14 +321,7 @@ class Parser {
       advance();
       expression(depth + 1);
       skip_space();
-      if (failed_) return;
-      if (peek() != ')') {
-        fail(pos_, pos_ >= text_.size()
-                       ? "missing ')'"
-                       : fmt::format("expected ')' but found '{}'", current_glyph()));
-        return;
-      }
-      advance();
+      close_parenthesis();
     } else if (c == '\x01') {  // √x or √(x)
       advance();
       postfix(depth + 1);
@@ -391,15 +384,20 @@ class Parser {
     advance();
     expression(depth + 1);
     skip_space();
-    if (failed_) return;
+    if (close_parenthesis()) emit(op);
+  }
+
+  // The ')' that closes a group or a function's arguments; false (and a fault) without it.
+  bool close_parenthesis() {
+    if (failed_) return false;
     if (peek() != ')') {
       fail(pos_, pos_ >= text_.size()
                      ? "missing ')'"
                      : fmt::format("expected ')' but found '{}'", current_glyph()));
-      return;
+      return false;
     }
     advance();
-    emit(op);
+    return true;
   }
 
   void identifier(std::string_view name, std::size_t start, int depth) {

@@ -457,6 +457,11 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
         }
       }
     }
+    for (std::size_t k = 0; k < n_stu && !explained; ++k) {
+      if (k == i || match[k] < 0 || !near(ref_[static_cast<std::size_t>(match[k])].t)) continue;
+      t_feedback.push_back(fmt::format("t = {} is listed twice; it is one hit.", typed));
+      explained = true;
+    }
     if (!explained) t_feedback.push_back(fmt::format("t = {} is not a hit of this ray.", typed));
   }
   std::size_t denom = std::max(n_ref, n_stu - n_twice);
