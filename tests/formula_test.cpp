@@ -36,6 +36,23 @@ TEST(Formula, GlyphsFromWorkedSolutions) {
   EXPECT_DOUBLE_EQ(value_of("6 \u00f7 4"), 1.5);
 }
 
+// Angles as exercises give them: sin 30° = 1/2, cos 60° = 1/2, atan2(1, −1) = 3π/4 = 135°,
+// asin(1/2) = π/6, acos(0) = π/2, atan(1) = π/4.
+TEST(Formula, InverseTrigonometryAndDegrees) {
+  const double pi = std::acos(-1.0);
+  EXPECT_NEAR(value_of("sin(30deg)"), 0.5, 1e-15);
+  EXPECT_NEAR(value_of("sin(30 deg)"), 0.5, 1e-15);
+  EXPECT_NEAR(value_of("cos(60\u00b0)"), 0.5, 1e-15);
+  EXPECT_NEAR(value_of("90\u00b0"), pi / 2, 1e-15);
+  EXPECT_NEAR(value_of("asin(1/2)"), pi / 6, 1e-15);
+  EXPECT_NEAR(value_of("acos(0)"), pi / 2, 1e-15);
+  EXPECT_NEAR(value_of("atan(1)"), pi / 4, 1e-15);
+  EXPECT_NEAR(value_of("atan2(1, -1)"), 3 * pi / 4, 1e-15);
+  EXPECT_NEAR(value_of("2atan2(1, 1) + 45deg"), 3 * pi / 4, 1e-15);
+  EXPECT_FALSE(parse_formula("atan2(1)").ok);
+  EXPECT_FALSE(parse_formula("30degrees").ok);
+}
+
 TEST(Formula, FaultsPointAtTheCharacter) {
   FormulaParse p = parse_formula("7.2.7");
   ASSERT_FALSE(p.ok);

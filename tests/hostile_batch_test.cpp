@@ -48,7 +48,6 @@ const std::map<std::string, std::string> kExpectedFault = {
     {"bad-number-1e400.json", "range"},
     {"bad-number-1e99999.json", "range"},
     {"bad-number-huge-integer.json", "range"},
-    {"bad-path-traversal-problem.json", "unknown-problem"},
     {"bad-raw-control-character.json", "bad-json"},
     {"bad-root-array.json", "type"},
     {"bad-root-null.json", "type"},
@@ -59,13 +58,17 @@ const std::map<std::string, std::string> kExpectedFault = {
     {"bad-trailing-garbage.json", "bad-json"},
     {"bad-truncated.json", "bad-json"},
     {"bad-unknown-key.json", "unknown-key"},
-    {"bad-unknown-problem.json", "unknown-problem"},
     {"bad-utf16.json", "bad-encoding"},
     {"bad-whitespace-only.json", "bad-json"},
     // Made by the test: too large or too odd to keep as files.
     {"bad-over-1-mib.json", "limit"},
     {"bad-10001-answers.json", "limit"},
 };
+
+// Answers to problems the assignment does not have: graded (nothing to grade), each unknown
+// id a finding with its JSON path, never a rejection of the file.
+const std::set<std::string> kFindings = {"finding-path-traversal-problem.json",
+                                         "finding-unknown-problem.json"};
 
 // A right answer to both problems of problems.json: the ray along +x meets the unit sphere at
 // (2, 0, 0) at t = 1 and 3, and the plane x = 2 at t = 2.
@@ -119,8 +122,7 @@ TEST_F(HostileBatch, EveryHostileFileRejectedEveryGoodOneGradedRight) {
       EXPECT_NE(f.at("file").get<std::string>().find(name), std::string::npos) << name;
       EXPECT_FALSE(f.at("message").get<std::string>().empty()) << name;
       // Where the fault is inside a well-formed document, the JSON path is named.
-      static const std::set<std::string> kInside = {"duplicate-key", "range", "unknown-key",
-                                                    "unknown-problem"};
+      static const std::set<std::string> kInside = {"duplicate-key", "range", "unknown-key"};
       bool inside = kInside.count(f["code"].get<std::string>()) ||
                     (f["code"] == "type" && name.rfind("bad-root-", 0) != 0) ||
                     name.rfind("bad-formula-", 0) == 0;
@@ -130,6 +132,16 @@ TEST_F(HostileBatch, EveryHostileFileRejectedEveryGoodOneGradedRight) {
       // The message speaks of the input, not of the parser's internals.
       EXPECT_EQ(f["message"].get<std::string>().find("nlohmann"), std::string::npos) << name;
       EXPECT_EQ(f["message"].get<std::string>().find("[json.exception"), std::string::npos) << name;
+    } else if (kFindings.count(name)) {
+      ASSERT_TRUE(s.at("gradable").get<bool>()) << name;
+      ASSERT_EQ(s.at("findings").size(), 1u) << name;
+      const json& f = s["findings"][0];
+      EXPECT_EQ(f.at("code"), "unknown-problem") << name;
+      EXPECT_EQ(f.at("path").get<std::string>().rfind("/answers/", 0), 0u) << name;
+      if (name == "finding-unknown-problem.json") {
+        EXPECT_NE(f.at("message").get<std::string>().find("did you mean 'sphere-1'"),
+                  std::string::npos);
+      }
     } else {
       ++good;
       ASSERT_TRUE(s.at("gradable").get<bool>()) << name << ": " << s.dump();
@@ -146,6 +158,7 @@ TEST_F(HostileBatch, EveryHostileFileRejectedEveryGoodOneGradedRight) {
   }
   EXPECT_EQ(good, 11u);  // ten fixtures and the Latin-1 file name
   for (const auto& [name, code] : kExpectedFault) EXPECT_TRUE(seen.count(name)) << name;
+  for (const auto& name : kFindings) EXPECT_TRUE(seen.count(name)) << name;
   // Each rejection is also on standard error, one line naming the file.
   for (const auto& [name, code] : kExpectedFault)
     EXPECT_NE(r.err.find(name), std::string::npos) << name;
@@ -165,7 +178,8 @@ TEST_F(HostileBatch, FilesStayInTheOutputFolderAndTextIsEscaped) {
     EXPECT_EQ(html.find("<script"), std::string::npos) << entry.path();
     EXPECT_EQ(html.find("\x1b"), std::string::npos) << entry.path();
   }
-  EXPECT_EQ(pages, kExpectedFault.size() + 11);  // one page per file, a rejection included
+  // One page per file, a rejection included.
+  EXPECT_EQ(pages, kExpectedFault.size() + kFindings.size() + 11);
 }
 
 // The cells of a CSV text (RFC 4180: quoted cells, "" for a quote inside one).

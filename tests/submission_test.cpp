@@ -101,10 +101,12 @@ TEST(Submission, MalformedIsReportedWithPath) {
   ASSERT_TRUE(bad.fault);
   EXPECT_EQ(bad.fault->path, "/answers/seed000-sphere-1/hits");
   EXPECT_EQ(bad.fault->line, 2);
+  // An unknown problem id is a finding; the rest of the file is graded.
   SubmissionGrade typo =
       a.grade_file(write_temp("typo.json", R"({"answers": {"seed000-sphere-9x": {}}})"));
-  EXPECT_FALSE(typo.gradable);
-  EXPECT_EQ(typo.fault->code, "unknown-problem");
+  EXPECT_TRUE(typo.gradable);
+  ASSERT_EQ(typo.findings.size(), 1u);
+  EXPECT_EQ(typo.findings[0].code, "unknown-problem");
   SubmissionGrade broken = a.grade_file(write_temp("broken.json", "{\"answers\": "));
   EXPECT_FALSE(broken.gradable);
   EXPECT_FALSE(broken.fault->message.empty());

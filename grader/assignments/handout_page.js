@@ -80,9 +80,21 @@
       }
       return v;
     }
+    // "30deg", "30 deg" or "30°": degrees, as radians.
+    function degrees() {
+      let at = pos;
+      while (chars[at] === " " || chars[at] === "\t") at++;
+      let width = 0;
+      if (chars[at] === "\u00b0") width = 1;
+      else if (chars.slice(at, at + 3).join("") === "deg" && !/^[A-Za-z0-9_]$/.test(chars[at + 3] || "")) width = 3;
+      if (!width) return false;
+      pos = at + width;
+      return true;
+    }
     function postfix(depth) {
       let v = primary(depth);
       for (;;) {
+        if (!failed && degrees()) { v = v * Math.PI / 180; continue; }
         const c = peek();
         if (failed || (c !== "\u00b2" && c !== "\u00b3")) return v;
         pos++;
@@ -131,6 +143,20 @@
       space();
       if (FUNCS[name]) {
         if (peek() !== "(") return fail("expected '(' after " + name);
+        if (name === "atan2") {
+          pos++;
+          const y = expression(depth + 1);
+          space();
+          if (failed) return NaN;
+          if (peek() !== ",") return fail("expected ',' between the two arguments, found '" + (peek() || "end") + "'");
+          pos++;
+          const x = expression(depth + 1);
+          space();
+          if (failed) return NaN;
+          if (peek() !== ")") return fail(pos >= chars.length ? "missing ')'" : "expected ')' but found '" + peek() + "'");
+          pos++;
+          return Math.atan2(y, x);
+        }
         const x = primary(depth + 1);
         const f = {sqrt: Math.sqrt, abs: Math.abs, sin: Math.sin, cos: Math.cos, tan: Math.tan,
                    exp: Math.exp, ln: Math.log, log: Math.log, asin: Math.asin, acos: Math.acos,

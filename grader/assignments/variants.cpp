@@ -33,7 +33,7 @@ Problem reread(const Problem& p) {
   const nlohmann::json& value = p.path.empty()
                                     ? p.source_file->root
                                     : p.source_file->root.at(nlohmann::json::json_pointer(p.path));
-  return read_problem(Cursor(p.source_file, &value, p.path));
+  return read_problem(Cursor(p.source_file, &value, p.path), p.file_conventions);
 }
 
 }  // namespace

@@ -49,16 +49,23 @@ class BankChecker {
   void check_file(const std::string& name, CheckReport& report) {
     std::shared_ptr<const SourceFile> file;
     std::vector<Cursor> items;
+    Conventions conventions;  // the bank file's, for all its problems
     try {
       file = load_json_file(name);
-      items = problem_items(Cursor(file));
+      Cursor root(file);
+      items = problem_items(root);
+      if (root.is_object() && root.has("conventions")) {
+        conventions = read_conventions(root.at("conventions"), conventions);
+      }
     } catch (const Error& e) {
       if (is_unreadable(e.diagnostic())) report.unreadable = true;
       report.problems.push_back(file_result(name, e.diagnostic()));
       return;
     }
     NumberLiterals literals = scan_number_literals(file->text);
-    for (const auto& item : items) report.problems.push_back(check_item(item, literals));
+    for (const auto& item : items) {
+      report.problems.push_back(check_item(item, literals, conventions));
+    }
   }
 
   void check_solutions(CheckReport& report) {
@@ -124,7 +131,8 @@ class BankChecker {
     if (d.line == 0) std::tie(d.line, d.column) = locate_from(text, places[index], "");
   }
 
-  ProblemResult check_item(const Cursor& item, const NumberLiterals& literals) {
+  ProblemResult check_item(const Cursor& item, const NumberLiterals& literals,
+                           const Conventions& conventions) {
     ProblemResult r;
     r.file = item.file_name();
     r.path = item.path();
@@ -136,7 +144,7 @@ class BankChecker {
     Problem p;
     nlohmann::json reference;
     try {
-      p = read_problem(item);
+      p = read_problem(item, conventions);
       r.kind = p.kind;
       (void)read_tolerance_policy(p);  // a faulty tolerance is reported like any other fault
       reference = p.task->answer();

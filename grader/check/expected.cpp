@@ -1,5 +1,6 @@
 // The stated answer of a problem graded against the reference, and the helpers every
 // problem check shares.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -97,20 +98,12 @@ std::vector<Diagnostic> check_expected(const Problem& p, const nlohmann::json& r
     out.push_back(e.diagnostic());
     return out;
   }
-  if (r.fraction() >= kFullMarks) return out;
-  // Kinds without a grader of their own are graded leaf by leaf as one part, "answer", in
-  // which every leaf the stated answer leaves out counts as missed. A stated answer gives
-  // only what the exercise asks, so compare those leaves alone, with the same tolerance.
-  if (r.parts.size() == 1 && r.parts[0].name == "answer") {
-    const Tolerance& t = read_tolerance_policy(p).base;
-    CompareTolerance tol{t.mode == ToleranceMode::kRelAbs ? t.atol : kDefaultAbsolute,
-                         t.mode == ToleranceMode::kRelAbs ? t.rtol : kDefaultRelative};
-    for (const auto& m : compare_stated(stated, reference, tol, no_digits)) {
-      out.push_back(problem_diagnostic(p, "/expected" + m.path, Severity::kError,
-                                       "the stated answer is wrong: " + m.message, m.code));
-    }
-    return out;
-  }
+  // Full marks are not enough: a part that carries no points is still checked when the
+  // stated answer gives it (barycentric weights, a flag nobody asked for).
+  bool every_part_right = std::all_of(r.parts.begin(), r.parts.end(), [](const PartResult& x) {
+    return x.status == PartStatus::kRight || x.status == PartStatus::kMissing;
+  });
+  if (r.fraction() >= kFullMarks && every_part_right) return out;
   // A stated answer may leave parts out (the seeds give t and the point, not the normal):
   // it is right when every part it gives is right.
   bool all_right = !r.parts.empty();

@@ -162,6 +162,7 @@ int run_grade(const GradeCliOptions& o) {
       ++rejected;
       if (!single || o.format == "csv") fmt::print(stderr, "{}\n", format_diagnostic(*g.fault));
     }
+    for (const auto& d : g.findings) fmt::print(stderr, "{}\n", format_diagnostic(d));
     if (o.format != "csv") {
       if (!o.out.empty()) {
         std::string base = single && (o.format == "gradescope" || o.format == "prairielearn")

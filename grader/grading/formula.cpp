@@ -70,6 +70,13 @@ double Formula::evaluate(const std::vector<double>& values) const {
       case Op::kTan: s[top - 1] = std::tan(s[top - 1]); break;
       case Op::kExp: s[top - 1] = std::exp(s[top - 1]); break;
       case Op::kLog: s[top - 1] = std::log(s[top - 1]); break;
+      case Op::kAsin: s[top - 1] = std::asin(s[top - 1]); break;
+      case Op::kAcos: s[top - 1] = std::acos(s[top - 1]); break;
+      case Op::kAtan: s[top - 1] = std::atan(s[top - 1]); break;
+      case Op::kAtan2:
+        --top;
+        s[top - 1] = std::atan2(s[top - 1], s[top]);
+        break;
     }
   }
   return top == 1 ? s[0] : std::numeric_limits<double>::quiet_NaN();
@@ -92,9 +99,14 @@ struct Function {
   std::string_view name;
   Op op;
 };
-constexpr Function kFunctions[] = {{"sqrt", Op::kSqrt}, {"abs", Op::kAbs}, {"sin", Op::kSin},
-                                   {"cos", Op::kCos},   {"tan", Op::kTan}, {"exp", Op::kExp},
-                                   {"ln", Op::kLog},    {"log", Op::kLog}};
+constexpr Function kFunctions[] = {{"sqrt", Op::kSqrt}, {"abs", Op::kAbs},   {"sin", Op::kSin},
+                                   {"cos", Op::kCos},   {"tan", Op::kTan},   {"exp", Op::kExp},
+                                   {"ln", Op::kLog},    {"log", Op::kLog},   {"asin", Op::kAsin},
+                                   {"acos", Op::kAcos}, {"atan", Op::kAtan}, {"atan2", Op::kAtan2}};
+
+// Degrees: "30deg", "30 deg" or "30°" is 30·π/180 (the trigonometric functions take radians).
+constexpr std::string_view kDegreeSign = "\u00b0";
+constexpr double kRadiansPerDegree = std::numbers::pi / 180;
 
 class Parser {
  public:
@@ -189,7 +201,7 @@ class Parser {
     if (op == Op::kNumber || op == Op::kSymbol) {
       f_.stack_size = std::max(f_.stack_size, ++depth_of_stack_);
     } else if (op == Op::kAdd || op == Op::kSub || op == Op::kMul || op == Op::kDiv ||
-               op == Op::kPow) {
+               op == Op::kPow || op == Op::kAtan2) {
       --depth_of_stack_;
     }
   }
@@ -266,9 +278,30 @@ class Parser {
     }
   }
 
+  // "deg" or "°" after a value, with optional spaces between; true when one was read.
+  bool degrees() {
+    std::size_t at = pos_;
+    while (at < text_.size() && (text_[at] == ' ' || text_[at] == '\t')) ++at;
+    std::string_view rest = text_.substr(at);
+    std::size_t width = 0;
+    if (rest.starts_with(kDegreeSign)) {
+      width = kDegreeSign.size();
+    } else if (rest.starts_with("deg") &&
+               (rest.size() == 3 ||
+                !(std::isalnum(static_cast<unsigned char>(rest[3])) || rest[3] == '_'))) {
+      width = 3;
+    }
+    if (width == 0) return false;
+    pos_ = at + width;
+    emit(Op::kNumber, kRadiansPerDegree);
+    emit(Op::kMul);
+    return true;
+  }
+
   void postfix(int depth) {
     primary(depth);
     for (;;) {
+      if (!failed_ && degrees()) continue;
       char c = peek();
       if (failed_ || (c != '\x02' && c != '\x03')) return;
       advance();
@@ -288,14 +321,7 @@ class Parser {
       advance();
       expression(depth + 1);
       skip_space();
-      if (failed_) return;
-      if (peek() != ')') {
-        fail(pos_, pos_ >= text_.size()
-                       ? "missing ')'"
-                       : fmt::format("expected ')' but found '{}'", current_glyph()));
-        return;
-      }
-      advance();
+      close_parenthesis();
     } else if (c == '\x01') {  // √x or √(x)
       advance();
       postfix(depth + 1);
@@ -344,6 +370,36 @@ class Parser {
     emit(Op::kNumber, v);
   }
 
+  // f(a, b): the two operands, then the operation.
+  void two_arguments(int depth, Op op) {
+    advance();  // '('
+    expression(depth + 1);
+    skip_space();
+    if (failed_) return;
+    if (peek() != ',') {
+      fail(pos_,
+           fmt::format("expected ',' between the two arguments, found '{}'", current_glyph()));
+      return;
+    }
+    advance();
+    expression(depth + 1);
+    skip_space();
+    if (close_parenthesis()) emit(op);
+  }
+
+  // The ')' that closes a group or a function's arguments; false (and a fault) without it.
+  bool close_parenthesis() {
+    if (failed_) return false;
+    if (peek() != ')') {
+      fail(pos_, pos_ >= text_.size()
+                     ? "missing ')'"
+                     : fmt::format("expected ')' but found '{}'", current_glyph()));
+      return false;
+    }
+    advance();
+    return true;
+  }
+
   void identifier(std::string_view name, std::size_t start, int depth) {
     skip_space();
     for (const auto& fn : kFunctions) {
@@ -352,6 +408,7 @@ class Parser {
         fail(pos_, fmt::format("expected '(' after {}", name));
         return;
       }
+      if (fn.op == Op::kAtan2) return two_arguments(depth + 1, fn.op);
       primary(depth + 1);
       emit(fn.op);
       return;

@@ -44,6 +44,10 @@ struct Formula {
     kTan,
     kExp,
     kLog,
+    kAsin,
+    kAcos,
+    kAtan,
+    kAtan2,  // atan2(y, x): two operands
   };
   struct Instruction {
     Op op;

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <stdexcept>
+
 #include "grading/kind_grader.h"
 #include "json/cursor.h"
 
@@ -63,6 +65,10 @@ PartResult make_part(const GradingContext& c, const std::string& name, double cr
              : credit > 0 ? PartStatus::kPartial
                           : PartStatus::kWrong;
   p.feedback = std::move(feedback);
+  if (credit < 1 && p.feedback.empty()) {
+    throw std::logic_error(fmt::format("part {} of {} earns {} without a reason", name,
+                                       c.problem ? c.problem->id : "?", credit));
+  }
   return p;
 }
 
@@ -80,7 +86,7 @@ std::shared_ptr<const KindGrader> make_kind_grader(const Problem& p) {
   if (p.kind == "camera-ray") return make_camera_grader(p);
   if (p.kind == "derive") return make_formula_grader(p);
   if (p.kind == "ray-tree") return make_ray_tree_grader(p);
-  return make_generic_grader(p);
+  return make_fields_grader(p);
 }
 
 Grader::Grader(const Problem& problem) : problem_(&problem), kind_(make_kind_grader(problem)) {}
@@ -113,6 +119,19 @@ GradeResult Grader::grade(const nlohmann::json& answer, const GradeOptions& opti
     if (!seen) unique.push_back(std::move(m));
   }
   r.mistakes = std::move(unique);
+  // A part that carries no points is not asked: not required when left out, and when given
+  // it is checked as feedback, and the student is told that it does not count.
+  std::vector<PartResult> kept;
+  for (auto& part : r.parts) {
+    if (part.max_points == 0) {
+      if (part.status == PartStatus::kMissing) continue;
+      r.notes.push_back(fmt::format(
+          "{} is not asked in this problem (it carries no points): it is checked, not counted.",
+          part.name));
+    }
+    kept.push_back(std::move(part));
+  }
+  r.parts = std::move(kept);
   for (const auto& part : r.parts) {
     r.score += part.points;
     r.max_score += part.max_points;

@@ -5,6 +5,7 @@
 #include "derivation/number_format.h"
 #include "grading/kind_grader.h"
 #include "grading/mistakes.h"
+#include "grading/parts.h"
 #include "grading/steps.h"
 #include "kinds/camera_ray.h"
 
@@ -21,7 +22,7 @@ class CameraGrader final : public KindGrader {
   explicit CameraGrader(const Problem& p) : task_(dynamic_cast<const CameraRayTask&>(*p.task)) {
     context_.problem = &p;
     context_.tolerance = read_tolerance_policy(p);
-    context_.points = read_points_policy(p, {{"ray", 1}, {"steps", 0}});
+    context_.points = read_points_policy(p, default_points(p.kind, {"ray", "steps"}));
     if (p.precision >= 0) numbers_.decimals = p.precision;
     direction_ =
         camera_ray_direction(task_.camera(), task_.pixel_x(), task_.pixel_y(), task_.convention());
@@ -66,8 +67,10 @@ class CameraGrader final : public KindGrader {
       fb.push_back("direction: " + direction->fault);
     } else if (length(direction->value()) == 0) {
       fb.push_back("A direction cannot be the zero vector.");
-    } else if (same_direction(direction->value(), direction_, tol)) {
-      credit = 1;
+    } else if (NumberVerdict dv = compare_direction(direction->c, direction_, tol).verdict;
+               dv.match != Match::kWrong) {
+      credit = dv.match == Match::kRight ? 1 : tol.precision_credit;
+      if (dv.match == Match::kInsufficientPrecision) fb.push_back("direction: " + dv.message);
     } else {
       bool named = false;
       for (const auto& v : variants_) {
@@ -79,6 +82,7 @@ class CameraGrader final : public KindGrader {
                         format_vector(direction->value(), numbers_), format_number(task_.pixel_x()),
                         format_number(task_.pixel_y()), format_vector(direction_, numbers_))));
         credit = mistake_info(v.id).credit;
+        fb.push_back(out.mistakes.back().message);
         named = true;
         break;
       }

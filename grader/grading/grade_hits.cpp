@@ -8,6 +8,7 @@
 #include "derivation/number_format.h"
 #include "grading/kind_grader.h"
 #include "grading/mistakes.h"
+#include "grading/parts.h"
 #include "grading/steps.h"
 #include "kinds/intersect.h"
 
@@ -19,11 +20,23 @@ namespace {
 // (discriminant ≈ 0) a root moves by the square root of this, so the tolerance of t widens
 // to (√(Δ + δΔ) − √Δ) / 2|a|; far from a tangent the widening is below the usual tolerance.
 constexpr double kTangentInputError = 1e-4;
+// A quadratic whose discriminant is this small relative to b² + 4|ac| has a double root (the
+// ray touches the surface): rounding in double leaves about 1e-16 of it, hand work far more.
+constexpr double kDoubleRootDiscriminant = 1e-12;
+// A widened tolerance reaches at most this fraction of the way to the nearest other
+// candidate (another root, another object's hit): half, so that no value is nearer to the
+// accepted root than to the other.
+constexpr double kWideningReach = 0.5;
+// Feedback shows numbers with the significant figures of worked solutions (NumberFormat's
+// default), as a fixed number of decimals shared by every number of the problem.
+constexpr int kDisplayFigures = 4;
+constexpr int kMaxDisplayDecimals = 6;
 
 struct StudentHit {
   std::optional<StudentNumber> t;
   std::string t_fault;
-  std::optional<AnswerReader::Vector> point, normal;
+  std::optional<AnswerReader::Vector> point, normal, barycentric;
+  std::optional<AnswerReader::Number> u, v;
 };
 
 std::string norm_name(std::string s) {
@@ -44,6 +57,11 @@ class HitsGrader final : public KindGrader {
   void grade_object(const AnswerReader& a, GradeResult& out) const;
   void grade_hits(const std::vector<StudentHit>& hits, const StepsGrade* steps,
                   GradeResult& out) const;
+  void grade_claimed_miss(const StepsGrade* steps, GradeResult& out) const;
+  void grade_contained(bool says_line, bool no_hits, GradeResult& out) const;
+  void grade_barycentric(const std::vector<StudentHit>& hits, const std::vector<int>& match,
+                         GradeResult& out) const;
+  std::string normal_formula() const;
   double widen_point(std::size_t j) const { return widen_[j] * length(ray_.direction); }
   std::string fmt_t(double t) const { return format_number(t, numbers_); }
 
@@ -56,6 +74,8 @@ class HitsGrader final : public KindGrader {
   int ref_object_ = -1;
   const Shape* shape_ = nullptr;  // the object whose hits are asked for
   std::vector<double> widen_;
+  bool double_root_ = false;  // one hit, where the ray touches the surface (a tangent)
+  Conventions conventions_;
   std::vector<double> behind_;  // roots with t < t_min: behind the origin
   std::vector<double> far_;     // roots past the first hit of the same object
   std::vector<MethodDerivation> methods_;
@@ -63,13 +83,15 @@ class HitsGrader final : public KindGrader {
   NumberFormat numbers_;
 };
 
-HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()) {
+HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()), conventions_(p.conventions) {
   context_.problem = &p;
   context_.tolerance = read_tolerance_policy(p);
   if (p.precision >= 0) numbers_.decimals = p.precision;
+  std::vector<std::string> names;
+  for (const auto& spec : kind_parts(p.kind)) names.push_back(spec.name);
   std::vector<const Shape*> shapes;
   if (auto* it = dynamic_cast<const IntersectTask*>(task_)) {
-    context_.points = read_points_policy(p, {{"t", 2}, {"point", 1}, {"normal", 0}, {"steps", 0}});
+    context_.points = read_points_policy(p, default_points(p.kind, names));
     ray_ = it->ray();
     Intersection x = it->object().intersect(ray_);
     ref_ = x.hits;
@@ -79,7 +101,7 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()) {
   } else {
     auto& fh = dynamic_cast<const FirstHitTask&>(*task_);
     first_hit_ = true;
-    context_.points = read_points_policy(p, {{"object", 2}, {"t", 1}, {"point", 1}, {"normal", 0}});
+    context_.points = read_points_policy(p, default_points(p.kind, names));
     ray_ = fh.ray();
     FirstHit f = first_hit(ray_, fh.objects());
     for (const auto& o : fh.objects()) {
@@ -93,8 +115,12 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()) {
     }
   }
   // Roots every method computes, kept when they are not hits: behind the origin, or far.
+  // All of them, and every object's hits, are the candidates a widened tolerance must not
+  // reach.
+  std::vector<double> candidates;
   for (const Shape* s : shapes) {
     Intersection x = s->intersect(ray_);
+    for (const auto& h : x.hits) candidates.push_back(h.t);
     for (const auto& m : s->methods()) {
       Derivation d;
       try {
@@ -103,6 +129,7 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()) {
         continue;  // a method that does not apply to this ray
       }
       for (double t : derivation_roots(d)) {
+        candidates.push_back(t);
         if (t < ray_.t_min) behind_.push_back(t);
         if (first_hit_ && !x.hits.empty() && t > x.hits.front().t + 1e-9 * (1 + std::abs(t))) {
           far_.push_back(t);
@@ -129,6 +156,33 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()) {
       double delta = kTangentInputError * (B * B + 4 * std::abs(A * C));
       double w = (std::sqrt(disc + delta) - std::sqrt(disc)) / (2 * std::abs(A));
       widen_.assign(ref_.size(), w);
+      double_root_ =
+          ref_.size() == 1 &&
+          std::abs(B * B - 4 * A * C) <= kDoubleRootDiscriminant * (B * B + 4 * std::abs(A * C));
+    }
+  }
+  // A widened tolerance never reaches another candidate: at most half way to the nearest
+  // one that the usual tolerance tells apart from the hit.
+  const Tolerance& tt = context_.tolerance.for_field("t");
+  for (std::size_t j = 0; j < ref_.size(); ++j) {
+    double t = ref_[j].t, usual = allowed_error(t, t, tt);
+    for (double c : candidates) {
+      double gap = std::abs(c - t);
+      if (gap > usual) widen_[j] = std::min(widen_[j], kWideningReach * gap);
+    }
+  }
+  // One display precision for every number of a message: without the problem's own, the
+  // decimals that show the smallest hit's t with four significant figures (7.268 and 10.732,
+  // not 7.268 beside 10.73).
+  if (p.precision < 0) {
+    double smallest = 0;
+    for (const auto& h : ref_) {
+      if (h.t != 0 && (smallest == 0 || std::abs(h.t) < smallest)) smallest = std::abs(h.t);
+    }
+    if (smallest > 0) {
+      numbers_.decimals =
+          std::clamp(kDisplayFigures - 1 - static_cast<int>(std::floor(std::log10(smallest))), 0,
+                     kMaxDisplayDecimals);
     }
   }
   if (!first_hit_) methods_ = solutions_by_method(*task_);
@@ -152,15 +206,19 @@ void HitsGrader::grade(const AnswerReader& a, GradeResult& out) const {
     }
   }
   if (first_hit_) grade_object(a, out);
+  bool says_line = a.has("contained") && a.at("contained").json() == true;
+  if (!first_hit_ && contained_ && says_line && !a.has("hits")) {
+    return grade_contained(true, true, out);
+  }
   if (!a.has("hits")) {
-    for (const char* part : {"t", "point", "normal"}) {
-      if (context_.points.of(part) > 0) out.parts.push_back(missing_part(context_, part));
+    for (const char* part : {"t", "point", "normal", "barycentric"}) {
+      out.parts.push_back(missing_part(context_, part));
     }
     return;
   }
   std::vector<StudentHit> hits;
   for (const auto& h : a.at("hits").items()) {
-    h.allow_only({"t", "point", "normal", "barycentric", "part"});
+    h.allow_only({"t", "point", "normal", "barycentric", "u", "v", "part"});
     StudentHit s;
     if (h.has("t")) {
       auto n = h.at("t").number();
@@ -169,24 +227,88 @@ void HitsGrader::grade(const AnswerReader& a, GradeResult& out) const {
     }
     if (h.has("point")) s.point = h.at("point").vector();
     if (h.has("normal")) s.normal = h.at("normal").vector();
+    if (h.has("barycentric")) s.barycentric = h.at("barycentric").vector();
+    if (h.has("u")) s.u = h.at("u").number();
+    if (h.has("v")) s.v = h.at("v").number();
     hits.push_back(std::move(s));
   }
-  if (!first_hit_ && contained_) {
-    bool says = a.has("contained") && a.at("contained").json() == true;
-    double credit = says && hits.empty() ? 1 : hits.empty() ? 0.5 : 0;
-    // No single point to give: the point part follows the verdict on the line.
-    if (context_.points.of("point") > 0) {
-      out.parts.push_back(make_part(context_, "point", credit, {}));
-    }
-    out.parts.push_back(make_part(
-        context_, "t", credit,
-        {says && hits.empty()
-             ? "Right: the ray lies in the plane and meets it along a whole line."
-             : "The ray lies in the plane (N·R = 0 and its origin is on the plane): it meets "
-               "the plane along a whole line; say so with \"contained\": true."}));
-    return;
-  }
+  if (!first_hit_ && contained_) return grade_contained(says_line, hits.empty(), out);
+  if (hits.empty() && !ref_.empty()) return grade_claimed_miss(steps ? &*steps : nullptr, out);
   grade_hits(hits, steps ? &*steps : nullptr, out);
+}
+
+// A ray lying in a plane (or along a cylinder's side) meets it along a whole line. Textbooks
+// and most ray tracers report that as no intersection; others as the line. By default both
+// are right, with a note that teaches the case; the problem's convention may make one strict.
+void HitsGrader::grade_contained(bool says_line, bool no_hits, GradeResult& out) const {
+  std::string type(shape_ ? shape_->type() : "");
+  bool side = type == "cylinder";
+  std::string line =
+      side ? "The ray runs along the cylinder's side (its distance from the axis is r and it is "
+             "parallel to the axis): it meets the side along a whole line"
+           : fmt::format(
+                 "The ray lies in the {}'s plane (N·D = 0 and its origin is on the "
+                 "plane): it meets the {} along a whole line",
+                 type, type);
+  using C = Conventions::Contained;
+  double credit = 1;
+  std::string message;
+  if (!no_hits) {
+    credit = 0;
+    message = line + ": there is no single t to give.";
+  } else if (says_line) {
+    credit = conventions_.contained == C::kMiss ? 0.5 : 1;
+    message = credit < 1 ? line + "; this problem counts that as no intersection: \"hits\": []."
+                         : "Right: " + line + ".";
+  } else {
+    credit = conventions_.contained == C::kLine ? 0.5 : 1;
+    message = credit < 1 ? line + "; say so with \"contained\": true."
+                         : "Right, as most ray tracers count it. " + line +
+                               ", which \"contained\": true says exactly.";
+  }
+  out.parts.push_back(make_part(context_, "t", credit, {message}));
+  // No single point to give: the point and normal follow the verdict on the line.
+  for (const char* part : {"point", "normal"}) {
+    if (context_.points.of(part) == 0) continue;
+    out.parts.push_back(
+        make_part(context_, part, credit,
+                  {credit < 1 ? "No single point: see t." : "Right: no single point."}));
+  }
+}
+
+// "hits": [] where the ray hits: a claimed miss is an answer, and is graded as one.
+void HitsGrader::grade_claimed_miss(const StepsGrade* steps, GradeResult& out) const {
+  std::vector<std::string> ts;
+  for (const auto& h : ref_) ts.push_back(fmt_t(h.t));
+  std::string said =
+      fmt::format("You say the ray misses; it hits at t = {}.", fmt::join(ts, " and "));
+  double credit = 0;
+  std::vector<std::string> fb{said};
+  if (steps && steps->carried) {
+    // The student's own steps: do they lead to no hit?
+    bool any_hit = false;
+    std::vector<std::string> roots;
+    for (double t : derivation_roots(*steps->carried)) {
+      roots.push_back(fmt_t(t));
+      any_hit |= t >= ray_.t_min && t <= ray_.t_max;
+    }
+    if (!any_hit) {
+      credit = context_.points.carried_forward;
+      out.carried_forward = true;
+      fb.push_back(roots.empty()
+                       ? "Your own steps give no real root, so no hit follows from them (error "
+                         "carried forward)."
+                       : fmt::format("Your own steps give t = {}, behind the origin, so no hit "
+                                     "follows from them (error carried forward).",
+                                     fmt::join(roots, " and ")));
+    }
+  }
+  out.parts.push_back(make_part(context_, "t", credit, fb));
+  for (const char* part : {"point", "normal", "barycentric"}) {
+    if (context_.points.of(part) == 0) continue;
+    out.parts.push_back(make_part(context_, part, credit,
+                                  {fmt::format("No {} where a miss is claimed: see t.", part)}));
+  }
 }
 
 void HitsGrader::grade_object(const AnswerReader& a, GradeResult& out) const {
@@ -196,6 +318,13 @@ void HitsGrader::grade_object(const AnswerReader& a, GradeResult& out) const {
   }
   const auto& v = a.at("object").json();
   std::string right = ref_object_ >= 0 ? names_[static_cast<std::size_t>(ref_object_)] : "";
+  if (v.is_string() && norm_name(v.get<std::string>()).empty()) {
+    out.parts.push_back(missing_part(context_, "object",
+                                     ref_object_ < 0
+                                         ? "The object is blank: write null when no object is hit."
+                                         : "The object is blank: name the object hit first."));
+    return;
+  }
   if (v.is_null() || (v.is_string() && norm_name(v.get<std::string>()) == "none")) {
     out.parts.push_back(make_part(
         context_, "object", ref_object_ < 0 ? 1 : 0,
@@ -222,6 +351,11 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
   std::vector<Match> verdict(n_stu, Match::kWrong);
   std::vector<std::string> t_feedback;
   bool any_t = false;
+  // A mistake found in t is named, and said in the part's feedback too.
+  auto t_mistake = [&](const FoundMistake& m) {
+    t_feedback.push_back(m.message);
+    out.mistakes.push_back(m);
+  };
   // Match t values to reference hits regardless of order: right matches first, then those
   // right to the digits given.
   for (Match wanted : {Match::kRight, Match::kInsufficientPrecision}) {
@@ -239,6 +373,24 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
       }
     }
   }
+  // A tangent's double root listed twice (t = 5, 5), as many textbooks list it: one hit.
+  std::vector<bool> twice(n_stu, false);
+  std::size_t n_twice = 0;
+  if (double_root_ && used[0]) {
+    for (std::size_t i = 0; i < n_stu; ++i) {
+      if (!hits[i].t || match[i] >= 0) continue;
+      if (compare_number(*hits[i].t, ref_[0].t, ref_[0].t, tt, widen_[0]).match != Match::kRight)
+        continue;
+      match[i] = 0;
+      verdict[i] = Match::kRight;
+      twice[i] = true;
+      ++n_twice;
+      t_feedback.push_back(fmt::format(
+          "t = {} twice is right: the ray touches the surface, where the quadratic's two roots "
+          "coincide (a double root); it is one hit.",
+          hits[i].t->text));
+    }
+  }
   double t_credit = 0;
   std::vector<double> carried_roots;
   if (steps && steps->carried) carried_roots = derivation_roots(*steps->carried);
@@ -250,6 +402,7 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
     }
     any_t = true;
     const std::string& typed = hits[i].t->text;
+    if (twice[i]) continue;
     if (match[i] >= 0) {
       t_credit += verdict[i] == Match::kRight ? 1 : tt.precision_credit;
       continue;
@@ -269,7 +422,7 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
     }
     for (double r : behind_) {
       if (explained || !near(r)) continue;
-      out.mistakes.push_back(make_mistake(
+      t_mistake(make_mistake(
           "negative-t", "t",
           fmt::format("t = {} solves the equation, but t < {} puts it behind the ray's origin.",
                       typed, fmt_t(ray_.t_min))));
@@ -277,7 +430,7 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
     }
     for (double r : far_) {
       if (explained || !near(r)) continue;
-      out.mistakes.push_back(make_mistake(
+      t_mistake(make_mistake(
           "far-root", "t",
           fmt::format("t = {} is where the ray leaves the object; it enters at t = {}.", typed,
                       ref_.empty() ? "?" : fmt_t(ref_.front().t))));
@@ -286,7 +439,7 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
     if (!explained && std::abs(dlen - 1) > 1e-9) {
       for (const auto& h : ref_) {
         if (!near(h.t * dlen)) continue;
-        out.mistakes.push_back(make_mistake(
+        t_mistake(make_mistake(
             "unit-direction-t", "t",
             fmt::format("t = {} is the distance along D/|D|; with |D| = {} the ray's t is {}.",
                         typed, format_number(dlen, numbers_), fmt_t(h.t))));
@@ -299,15 +452,19 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
       for (const auto& part : ms.parts) {
         for (double r : derivation_roots(part.derivation)) {
           if (explained || !near(r)) continue;
-          out.mistakes.push_back(
-              make_mistake(ms.id, "t", fmt::format("your t = {} is what it gives.", typed)));
+          t_mistake(make_mistake(ms.id, "t", fmt::format("your t = {} is what it gives.", typed)));
           explained = true;
         }
       }
     }
+    for (std::size_t k = 0; k < n_stu && !explained; ++k) {
+      if (k == i || match[k] < 0 || !near(ref_[static_cast<std::size_t>(match[k])].t)) continue;
+      t_feedback.push_back(fmt::format("t = {} is listed twice; it is one hit.", typed));
+      explained = true;
+    }
     if (!explained) t_feedback.push_back(fmt::format("t = {} is not a hit of this ray.", typed));
   }
-  std::size_t denom = std::max(n_ref, n_stu);
+  std::size_t denom = std::max(n_ref, n_stu - n_twice);
   for (std::size_t j = 0; j < n_ref; ++j) {
     if (!used[j] && any_t) {
       t_feedback.push_back(first_hit_
@@ -320,7 +477,7 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
   } else if (!any_t) {
     out.parts.push_back(missing_part(context_, "t", t_feedback.empty() ? "" : t_feedback.front()));
   } else {
-    if (t_credit >= static_cast<double>(denom) && t_feedback.empty()) {
+    if (t_credit >= static_cast<double>(denom) && n_twice == 0 && t_feedback.empty()) {
       t_feedback.push_back(n_ref == 1 ? "Right." : "Right: every hit, in any order.");
     }
     if (n_ref == 0) t_feedback.push_back("The ray does not hit this object.");
@@ -371,7 +528,13 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
           out.carried_forward = true;
           p_feedback.push_back(fmt::format(
               "The point follows correctly from your t = {} (error carried forward).", h.t->text));
+        } else {
+          p_feedback.push_back(fmt::format("The point {} is not O + tD for your t = {}.",
+                                           format_vector(h.point->value(), numbers_), h.t->text));
         }
+      } else {
+        p_feedback.push_back(fmt::format("The point {} is not a hit of this ray.",
+                                         format_vector(h.point->value(), numbers_)));
       }
     }
     if (h.normal) {
@@ -380,34 +543,44 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
         n_feedback.push_back("normal: " + h.normal->fault);
         continue;
       }
-      if (match[i] < 0) continue;
+      if (match[i] < 0) {
+        n_feedback.push_back(fmt::format("The normal of a hit that is not one is not graded{}.",
+                                         h.t ? fmt::format(" (t = {})", h.t->text) : ""));
+        continue;
+      }
       auto j = static_cast<std::size_t>(match[i]);
       Vec3d mine = h.normal->value();
-      double len = length(mine);
+      // Graded as a direction: any positive multiple of the unit normal is right, and its
+      // digits are judged as any number's.
+      Vec3d r = ref_[j].normal;
+      DirectionVerdict dv = compare_direction(h.normal->c, r, tn);
+      double len = dv.length;
       if (len == 0) {
         n_feedback.push_back("A normal cannot be the zero vector.");
         continue;
       }
-      // Graded as a direction: any positive multiple of the unit normal is right.
-      StudentNumber unit[3];
-      for (int k = 0; k < 3; ++k) unit[k] = {mine[k] / len, {}, ""};
-      Vec3d r = ref_[j].normal;
-      if (compare_vector(unit, r, tn).match == Match::kRight) {
+      if (dv.verdict.match == Match::kRight) {
         n_credit += 1;
         if (std::abs(len - 1) > 1e-3) {
           n_feedback.push_back(fmt::format("Your normal has length {}; as a direction it is right.",
                                            format_number(len, numbers_)));
         }
-      } else if (compare_vector(unit, -r, tn).match == Match::kRight) {
+      } else if (dv.verdict.match == Match::kInsufficientPrecision) {
+        n_credit += tn.precision_credit;
+        n_feedback.push_back("normal: " + dv.verdict.message);
+      } else if (dv.opposite) {
         std::string type(shape_ ? shape_->type() : "");
         bool flat = type == "triangle" || type == "polygon";
         if (flat || type == "sphere" || type == "cylinder" || type == "box") {
           const char* id = flat ? "cross-order" : "inward-normal";
           out.mistakes.push_back(
               make_mistake(id, "normal",
-                           fmt::format("your normal {} points the opposite way to {}.",
-                                       format_vector(mine, numbers_), format_vector(r, numbers_))));
+                           fmt::format("your normal {} points the opposite way to {}.{}",
+                                       format_vector(mine, numbers_), format_vector(r, numbers_),
+                                       flat ? "" : normal_formula())));
           n_credit += mistake_info(id).credit;
+          n_feedback.push_back(fmt::format("Your normal points the opposite way to {}.",
+                                           format_vector(r, numbers_)));
         } else {
           n_feedback.push_back(
               fmt::format("Your normal points the opposite way to the plane's "
@@ -431,10 +604,112 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
       return;
     }
     if (credit >= static_cast<double>(d) && fb.empty()) fb.push_back("Right.");
+    if (given < n_ref) {
+      fb.push_back(fmt::format(
+          "The ray has {} hits; {} of them {} given.", n_ref, given,
+          given == 1 ? fmt::format("has its {}", name) : fmt::format("have their {}s", name)));
+    }
     out.parts.push_back(make_part(context_, name, credit / static_cast<double>(d), std::move(fb)));
   };
   add("point", p_credit, n_points, std::move(p_feedback));
   add("normal", n_credit, n_normals, std::move(n_feedback));
+  grade_barycentric(hits, match, out);
+}
+
+// The outward normal of this object's shape, in words, for the inward-normal mistake.
+std::string HitsGrader::normal_formula() const {
+  std::string type(shape_ ? shape_->type() : "");
+  if (type == "sphere") return " A sphere's outward normal is (P − C)/r.";
+  if (type == "cylinder") {
+    return " A cylinder's side has the outward normal (P − Q)/r, Q the nearest point of the "
+           "axis; a cap's is the axis direction, away from the cylinder.";
+  }
+  if (type == "box") {
+    return " A box's outward normal is the axis of the slab hit, pointing away from the box's "
+           "centre.";
+  }
+  return "";
+}
+
+// Barycentric weights (w_a, w_b, w_c) of a triangle hit, in the order of the vertices, or
+// u = w_b and v = w_c alone: an exercise may ask for either.
+void HitsGrader::grade_barycentric(const std::vector<StudentHit>& hits,
+                                   const std::vector<int>& match, GradeResult& out) const {
+  const Tolerance& tol = context_.tolerance.for_field("point");
+  std::size_t given = 0;
+  double credit = 0;
+  std::vector<std::string> fb;
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    const StudentHit& h = hits[i];
+    if (!h.barycentric && !h.u && !h.v) continue;
+    ++given;
+    if (match[i] < 0 || !ref_[static_cast<std::size_t>(match[i])].barycentric) {
+      fb.push_back(ref_.empty() || !ref_.front().barycentric
+                       ? "Barycentric weights belong to a triangle's hit."
+                       : "Weights of a hit that is not one are not graded.");
+      continue;
+    }
+    auto w = *ref_[static_cast<std::size_t>(match[i])].barycentric;
+    Vec3d want{w[0], w[1], w[2]};
+    NumberFormat f = numbers_;
+    if (h.barycentric) {
+      if (!h.barycentric->ok) {
+        fb.push_back("barycentric: " + h.barycentric->fault);
+        continue;
+      }
+      NumberVerdict v = compare_vector(h.barycentric->c, want, tol);
+      if (v.match == Match::kRight) {
+        credit += 1;
+        continue;
+      }
+      if (v.match == Match::kInsufficientPrecision) {
+        credit += tol.precision_credit;
+        fb.push_back("barycentric: " + v.message);
+        continue;
+      }
+      Vec3d got = h.barycentric->value();
+      double sum = got.x + got.y + got.z;
+      std::string why = std::abs(sum - 1) > 1e-3
+                            ? fmt::format(
+                                  " Your weights add up to {}; barycentric weights add up "
+                                  "to 1.",
+                                  format_number(sum, f))
+                            : " They are in the order of the vertices a, b, c: w_a weighs a.";
+      fb.push_back(fmt::format("The weights (w_a, w_b, w_c) are {}, not {}.{}",
+                               format_vector(want, f), format_vector(got, f), why));
+      continue;
+    }
+    // u = w_b and v = w_c (P = a + u(b − a) + v(c − a), as Möller and Trumbore write it).
+    bool right = true;
+    for (const auto& [given_uv, ref, name] :
+         {std::tuple{&h.u, want.y, "u"}, std::tuple{&h.v, want.z, "v"}}) {
+      if (!*given_uv) {
+        right = false;
+        fb.push_back(fmt::format("No {} given (the weight of {}).", name,
+                                 std::string_view(name) == "u" ? "b" : "c"));
+        continue;
+      }
+      const AnswerReader::Number& n = **given_uv;
+      if (!n.value) {
+        right = false;
+        fb.push_back(fmt::format("{}: {}", name, n.fault));
+        continue;
+      }
+      if (compare_number(*n.value, ref, 1, tol).match != Match::kRight) {
+        right = false;
+        fb.push_back(fmt::format("{} is {}, not {} (P = a + u(b − a) + v(c − a)).", name,
+                                 format_number(ref, f), n.value->text));
+      }
+    }
+    if (right) credit += 1;
+  }
+  if (given == 0) {
+    out.parts.push_back(missing_part(context_, "barycentric"));
+    return;
+  }
+  std::size_t d = std::max(ref_.size(), given);
+  if (credit >= static_cast<double>(d) && fb.empty()) fb.push_back("Right.");
+  out.parts.push_back(make_part(context_, "barycentric", credit / static_cast<double>(d), fb));
 }
 
 }  // namespace

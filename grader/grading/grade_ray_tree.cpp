@@ -8,6 +8,7 @@
 #include "derivation/number_format.h"
 #include "grading/kind_grader.h"
 #include "grading/mistakes.h"
+#include "grading/parts.h"
 #include "kinds/ray_tree.h"
 #include "scenes/tree_json.h"
 
@@ -47,12 +48,12 @@ class RayTreeGrader final : public KindGrader {
     context_.tolerance = read_tolerance_policy(p);
     Ask ask = task_.tree().ask;
     if (ask == Ask::kHit) {
-      context_.points = read_points_policy(p, {{"hit", 1}});
+      context_.points = read_points_policy(p, default_points(p.kind, {"hit"}));
     } else if (ask == Ask::kTree) {
-      context_.points = read_points_policy(p, {{"tree", 1}, {"shadows", 1}, {"terms", 1}});
+      context_.points = read_points_policy(p, default_points(p.kind, {"tree", "shadows", "terms"}));
     } else {
       context_.points =
-          read_points_policy(p, {{"tree", 1}, {"shadows", 1}, {"terms", 1}, {"intensity", 1}});
+          read_points_policy(p, default_points(p.kind, {"tree", "shadows", "terms", "intensity"}));
     }
   }
 
@@ -92,6 +93,7 @@ class RayTreeGrader final : public KindGrader {
     std::vector<std::string> fb;
     double credit = 0;
     std::string want = root.hit ? object_name(root.object) : "";
+    if (!a.has("object")) fb.push_back("No object named.");
     if (a.has("object")) {
       std::string got = a.at("object").json().is_null() ? "" : a.at("object").string();
       if (got == want) {
@@ -115,9 +117,17 @@ class RayTreeGrader final : public KindGrader {
                            ? fmt::format("t is {}, not {}.", format_number(root.t), n.value->text)
                            : "t: " + n.fault);
         }
+      } else {
+        fb.push_back("No t given.");
       }
     } else if (!root.hit) {
-      credit += a.has("hits") && a.at("hits").items().empty() ? 0.5 : 0;
+      bool none = a.has("hits") && a.at("hits").items().empty();
+      credit += none ? 0.5 : 0;
+      if (!none) fb.push_back("The ray hits nothing: give \"hits\": [].");
+    } else {
+      fb.push_back(a.has("hits") ? fmt::format("You say the ray misses; it hits {} at t = {}.",
+                                               want, format_number(root.t))
+                                 : "No hits given.");
     }
     if (credit >= 1) fb.push_back("Right.");
     out.parts.push_back(make_part(context_, "hit", credit, fb));

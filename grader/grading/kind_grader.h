@@ -48,16 +48,17 @@ class KindGrader {
   GradingContext context_;
 };
 
-// The grader for a problem's kind (a generic leaf-by-leaf comparison for kinds without one).
+// The grader for a problem's kind.
 std::shared_ptr<const KindGrader> make_kind_grader(const Problem& p);
 
 std::shared_ptr<const KindGrader> make_hits_grader(const Problem& p);      // intersect, first-hit
 std::shared_ptr<const KindGrader> make_camera_grader(const Problem& p);    // camera-ray
 std::shared_ptr<const KindGrader> make_formula_grader(const Problem& p);   // derive
 std::shared_ptr<const KindGrader> make_ray_tree_grader(const Problem& p);  // ray-tree
-std::shared_ptr<const KindGrader> make_generic_grader(const Problem& p);
+std::shared_ptr<const KindGrader> make_fields_grader(const Problem& p);  // reflect, refract, shade
 
-// A part with its points from `credit` (0 to 1) and its status from the credit.
+// A part with its points from `credit` (0 to 1) and its status from the credit. A part below
+// full credit must say why: without feedback it is a bug of the grader (std::logic_error).
 PartResult make_part(const GradingContext& c, const std::string& name, double credit,
                      std::vector<std::string> feedback);
 PartResult missing_part(const GradingContext& c, const std::string& name, std::string why = "");

@@ -36,7 +36,7 @@ const std::vector<MistakeInfo>& mistake_catalogue() {
        "order the normal is (b − a) × (c − a); a camera's right vector is d × u.",
        0.5},
       {"inward-normal", "orientation", "Normal pointing inward",
-       "A closed surface's normal points outward: for a sphere, (P − C)/r.", 0.5},
+       "A closed surface's normal points outward, away from its inside.", 0.5},
       {"pixel-corner", "convention", "Pixel corner instead of pixel centre",
        "The offsets x − resX/2 aim at the pixel's lower-left corner; the centre needs half a "
        "pixel more, x + 0.5 − resX/2.",

@@ -31,6 +31,9 @@ std::string feedback_html(const SubmissionGrade& g) {
   }
   s += fmt::format("<p>Score: <strong>{} / {}</strong></p>\n", format_points(g.score),
                    format_points(g.max_score));
+  for (const auto& d : g.findings) {
+    s += fmt::format("<p class=\"fault\">{}</p>\n", h(format_diagnostic(d)));
+  }
   for (const auto& r : g.results) {
     s += fmt::format("<h2>{}{} — {} / {}</h2>\n", h(r.problem_id),
                      r.title.empty() ? "" : ": " + h(r.title), format_points(r.score),

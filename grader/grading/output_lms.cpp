@@ -21,8 +21,11 @@ std::string summary(const SubmissionGrade& g) {
     return fmt::format("This submission could not be graded: {}",
                        g.fault ? format_diagnostic(*g.fault) : "unreadable");
   }
-  return fmt::format("{} / {} points on {} problems; {} named mistakes.", format_points(g.score),
-                     format_points(g.max_score), g.results.size(), g.mistakes());
+  std::string s =
+      fmt::format("{} / {} points on {} problems; {} named mistakes.", format_points(g.score),
+                  format_points(g.max_score), g.results.size(), g.mistakes());
+  for (const auto& d : g.findings) s += "\n" + format_diagnostic(d);
+  return s;
 }
 
 }  // namespace

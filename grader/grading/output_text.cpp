@@ -38,6 +38,7 @@ std::string text_report(const SubmissionGrade& g) {
     return s + fmt::format(": not gradable\n  {}\n", g.fault ? format_diagnostic(*g.fault) : "");
   }
   s += fmt::format(": {} / {}\n", format_points(g.score), format_points(g.max_score));
+  for (const auto& d : g.findings) s += "  " + format_diagnostic(d) + "\n";
   for (const auto& r : g.results) {
     s += fmt::format("  {}{}: {} / {}\n", r.problem_id, r.title.empty() ? "" : " — " + r.title,
                      format_points(r.score), format_points(r.max_score));
@@ -62,6 +63,16 @@ nlohmann::json submission_json(const SubmissionGrade& g) {
   nlohmann::json results = nlohmann::json::array();
   for (const auto& r : g.results) results.push_back(result_json(r));
   j["problems"] = results;
+  nlohmann::json findings = nlohmann::json::array();
+  for (const auto& d : g.findings) {
+    findings.push_back({{"file", d.file},
+                        {"path", d.path},
+                        {"line", d.line},
+                        {"column", d.column},
+                        {"code", d.code},
+                        {"message", d.message}});
+  }
+  j["findings"] = findings;
   return j;
 }
 

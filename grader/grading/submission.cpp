@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <tuple>
 
 #include "json/cursor.h"
 
@@ -127,11 +128,18 @@ SubmissionGrade Assignment::grade(const std::shared_ptr<const SourceFile>& file)
     for (const auto& [id, v] : answers.json().items()) {
       if (by_id_.count(id)) continue;
       std::string hint = closest_match(id, ids);
-      answers.at(id).fail(hint.empty() ? fmt::format("no problem '{}' in this assignment", id)
-                                       : fmt::format("no problem '{}' in this assignment (did "
-                                                     "you mean '{}'?)",
-                                                     id, hint),
-                          "unknown-problem");
+      Diagnostic d;
+      d.file = file->name;
+      d.path = answers.at(id).path();
+      std::tie(d.line, d.column) = locate(file->text, d.path);
+      d.severity = Severity::kWarning;
+      d.message = hint.empty() ? fmt::format("no problem '{}' in this assignment: not graded", id)
+                               : fmt::format(
+                                     "no problem '{}' in this assignment (did you mean "
+                                     "'{}'?): not graded",
+                                     id, hint);
+      d.code = "unknown-problem";
+      g.findings.push_back(std::move(d));
     }
     for (const auto& grader : graders_) {
       const std::string& id = grader.problem().id;

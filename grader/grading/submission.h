@@ -38,6 +38,9 @@ struct SubmissionGrade {
   bool gradable = true;
   std::optional<Diagnostic> fault;  // why it could not be graded (file, JSON path, fault)
   std::vector<GradeResult> results;
+  // What was read but could not be graded, each a warning with its JSON path: an answer to a
+  // problem the assignment does not have ("did you mean ...?"). The other answers are graded.
+  std::vector<Diagnostic> findings;
   double score = 0;
   double max_score = 0;
   double fraction() const { return max_score > 0 ? score / max_score : 0; }

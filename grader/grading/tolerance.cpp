@@ -88,6 +88,39 @@ NumberVerdict compare_vector(const StudentNumber (&s)[3], const Vec3d& reference
   return out;
 }
 
+DirectionVerdict compare_direction(const StudentNumber (&s)[3], const Vec3d& reference,
+                                   const Tolerance& t) {
+  DirectionVerdict out;
+  Vec3d v{s[0].value, s[1].value, s[2].value};
+  out.length = length(v);
+  if (!(out.length > 0) || !std::isfinite(out.length)) {
+    out.length = 0;
+    return out;
+  }
+  // The digits typed keep their meaning when the student rounded a unit vector: its length
+  // is then 1 within the rounding of its three components (√3 half units of the coarsest).
+  // A multiple of another length ((−2, 2, −4)) was not rounded, and is judged by value.
+  double own = 0;
+  bool literal = true;
+  for (const auto& c : s) {
+    literal = literal && c.digits.literal;
+    if (c.digits.literal) own = std::max(own, kHalfUnit * std::pow(10.0, -c.digits.decimals));
+  }
+  bool rounded_unit = literal && std::abs(out.length - 1) <= std::sqrt(3.0) * own;
+  StudentNumber unit[3];
+  for (int k = 0; k < 3; ++k) {
+    unit[k] = s[k];
+    unit[k].value = s[k].value / out.length;
+    if (!rounded_unit) unit[k].digits.literal = false;
+  }
+  Vec3d r = normalized(reference);
+  out.verdict = compare_vector(unit, r, t);
+  if (out.verdict.match == Match::kWrong) {
+    out.opposite = compare_vector(unit, -r, t).match != Match::kWrong;
+  }
+  return out;
+}
+
 std::string describe(const Tolerance& t) {
   switch (t.mode) {
     case ToleranceMode::kDecimals: return plural(t.digits, "decimal place", "decimal places");

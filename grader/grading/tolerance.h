@@ -62,6 +62,17 @@ NumberVerdict compare_number(const StudentNumber& s, double reference, double sc
 NumberVerdict compare_vector(const StudentNumber (&s)[3], const Vec3d& reference,
                              const Tolerance& t, double widen = 0);
 
+// A direction: any positive multiple of `reference` is right. The student's vector is scaled
+// to unit length and compared with the unit reference by the same rule as any number, so a
+// unit vector rounded to too few digits is "too imprecise", as a rounded t is.
+struct DirectionVerdict {
+  NumberVerdict verdict;
+  double length = 0;      // the student's vector's length (0: not a direction)
+  bool opposite = false;  // a positive multiple of −reference
+};
+DirectionVerdict compare_direction(const StudentNumber (&s)[3], const Vec3d& reference,
+                                   const Tolerance& t);
+
 // "relative 0.1%", "3 significant figures", "2 decimal places".
 std::string describe(const Tolerance& t);
 

@@ -16,8 +16,29 @@ std::vector<std::string> Task::conclusion() const {
 const std::vector<std::string>& common_problem_keys() {
   static const std::vector<std::string> keys = {
       "id",        "kind",   "title", "statement", "method", "precision",  "expected",
-      "tolerance", "points", "tests", "tags",      "source", "parameters", "nice_numbers"};
+      "tolerance", "points", "tests", "tags",      "source", "conventions", "parameters",
+      "nice_numbers"};
   return keys;
+}
+
+Conventions read_conventions(const Cursor& c, Conventions base) {
+  if (!c.is_object()) c.fail("conventions is an object", "type");
+  c.allow_only({"contained"});
+  if (c.has("contained")) {
+    std::string v = c.at("contained").string();
+    if (v == "either") {
+      base.contained = Conventions::Contained::kEither;
+    } else if (v == "line") {
+      base.contained = Conventions::Contained::kLine;
+    } else if (v == "miss") {
+      base.contained = Conventions::Contained::kMiss;
+    } else {
+      c.at("contained")
+          .fail(fmt::format("contained is \"either\", \"line\" or \"miss\", not \"{}\"", v),
+                "invalid");
+    }
+  }
+  return base;
 }
 
 nlohmann::json vec_json(const Vec3d& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
@@ -52,12 +73,12 @@ Ray read_ray(const Cursor& c) {
 
 namespace {
 
-Problem read_plain_problem(const Cursor& c);
+Problem read_plain_problem(const Cursor& c, const Conventions& defaults);
 
 // Reads the plain problem that `values` make of the parameterized problem at `c`. Its faults
 // are reported at the problem's place in the file as written.
 Problem read_instance(const Cursor& c, std::shared_ptr<const ParameterSet> set,
-                      const ParameterValues& values) {
+                      const ParameterValues& values, const Conventions& defaults) {
   nlohmann::json plain = instantiate(c, *set, values);
   auto file = std::make_shared<SourceFile>();
   file->name = c.file_name();
@@ -65,7 +86,7 @@ Problem read_instance(const Cursor& c, std::shared_ptr<const ParameterSet> set,
   file->root = std::move(plain);
   Problem p;
   try {
-    p = read_plain_problem(Cursor(file, &file->root, c.path()));
+    p = read_plain_problem(Cursor(file, &file->root, c.path()), defaults);
   } catch (const Error& e) {
     Diagnostic d = e.diagnostic();
     std::tie(d.line, d.column) = locate(c.file()->text, d.path);
@@ -80,24 +101,24 @@ Problem read_instance(const Cursor& c, std::shared_ptr<const ParameterSet> set,
 
 }  // namespace
 
-Problem read_problem(const Cursor& c) {
+Problem read_problem(const Cursor& c, const Conventions& defaults) {
   if (c.is_object() && c.has("parameters")) {
     auto set = std::make_shared<const ParameterSet>(read_parameters(c));
-    ParameterValues defaults = set->defaults();
-    return read_instance(c, std::move(set), defaults);
+    ParameterValues values = set->defaults();
+    return read_instance(c, std::move(set), values, defaults);
   }
   if (c.is_object() && c.has("nice_numbers")) (void)read_parameters(c);  // reports the fault
-  return read_plain_problem(c);
+  return read_plain_problem(c, defaults);
 }
 
 Problem read_problem_variant(const Problem& base, const ParameterValues& values) {
   Cursor c(base.template_file, base.template_json, base.path);
-  return read_instance(c, base.parameters, values);
+  return read_instance(c, base.parameters, values, base.file_conventions);
 }
 
 namespace {
 
-Problem read_plain_problem(const Cursor& c) {
+Problem read_plain_problem(const Cursor& c, const Conventions& defaults) {
   if (!c.is_object()) c.fail("a problem must be a JSON object", "type");
   Problem p;
   p.id = c.at("id").string();
@@ -132,6 +153,9 @@ Problem read_plain_problem(const Cursor& c) {
   if (auto t = c.find("tolerance")) p.tolerance = t->json();
   if (auto t = c.find("points")) p.points = t->json();
   if (auto t = c.find("tests")) p.tests = t->json();
+  p.conventions = defaults;
+  p.file_conventions = defaults;
+  if (auto t = c.find("conventions")) p.conventions = read_conventions(*t, defaults);
   p.source = c.json();
   p.file = c.file_name();
   p.path = c.path();
@@ -180,7 +204,7 @@ std::vector<std::string> list_bank_files(const std::vector<std::string>& paths,
 
 std::vector<Cursor> problem_items(const Cursor& root) {
   if (root.is_object() && root.has("problems")) {
-    root.allow_only({"problems", "$schema", "title", "description"});
+    root.allow_only({"problems", "$schema", "title", "description", "conventions"});
     return root.at("problems").items();
   }
   return {root};
@@ -206,9 +230,18 @@ Bank load_bank(const std::vector<std::string>& paths) {
       bank.errors.push_back(e.diagnostic());
       continue;
     }
+    Conventions conventions;
+    try {
+      if (root.is_object() && root.has("conventions")) {
+        conventions = read_conventions(root.at("conventions"), conventions);
+      }
+    } catch (const Error& e) {
+      bank.errors.push_back(e.diagnostic());
+      continue;
+    }
     for (const auto& item : items) {
       try {
-        Problem p = read_problem(item);
+        Problem p = read_problem(item, conventions);
         auto [it, fresh] = seen.emplace(p.id, fmt::format("{}{}", p.file, p.path));
         if (!fresh)
           item.at("id").fail(fmt::format("duplicate id '{}' (first used at {})", p.id, it->second),

@@ -59,6 +59,19 @@ class Task {
   virtual std::optional<std::string> level() const { return std::nullopt; }
 };
 
+// Conventions on which textbooks differ, so that an exercise can say which it follows
+// (docs/grading.md): a problem's "conventions", or a bank file's for all its problems.
+struct Conventions {
+  // A ray lying in a plane, or running along a cylinder's side, meets it along a whole line.
+  // kEither: "contained": true and "no intersection" ([]) are both right (the default);
+  // kLine: only "contained": true is; kMiss: only [] is.
+  enum class Contained { kEither, kLine, kMiss };
+  Contained contained = Contained::kEither;
+};
+
+// Reads a "conventions" object on top of `base`. Throws Error naming the path of a fault.
+Conventions read_conventions(const Cursor& c, Conventions base);
+
 struct Problem {
   std::string id;
   std::string kind;
@@ -70,6 +83,8 @@ struct Problem {
   nlohmann::json tolerance;  // as written; the grader reads it
   nlohmann::json points;     // as written; the grader reads it
   nlohmann::json tests;      // sample answers with the scores they must get
+  Conventions conventions;   // the bank file's, then the problem's own
+  Conventions file_conventions;  // the bank file's alone (to read the problem again)
   nlohmann::json source;     // the whole problem object as written
   std::string file;          // where it came from
   std::string path;          // its JSON pointer in that file ("" or "/problems/3")
@@ -100,8 +115,8 @@ const std::vector<std::string>& common_problem_keys();
 Ray read_ray(const Cursor& ray);
 
 // Reads one problem object. Throws Error naming the file and path on any fault. A problem with
-// parameters is read with their defaults.
-Problem read_problem(const Cursor& problem);
+// parameters is read with their defaults; `defaults` are the bank file's conventions.
+Problem read_problem(const Cursor& problem, const Conventions& defaults = {});
 
 // Reads a problem with parameters for one set of values: the plain problem they give, with
 // the file and path of the problem as written. Throws Error at the path of any fault.

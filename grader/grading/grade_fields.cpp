@@ -1,0 +1,289 @@
+// Grading the kinds `reflect`, `refract` and `shade` by their declared parts (grading/parts.h):
+// each part the student gives is compared by its own rule (a direction as any positive
+// multiple, a number by the tolerance, a flag, a set of names), parts that carry no points
+// are not required, and every part below full credit says why.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+#include <set>
+
+#include "derivation/number_format.h"
+#include "grading/kind_grader.h"
+#include "grading/parts.h"
+
+namespace raygrade {
+namespace {
+
+// A part's verdict: its credit and the sentences that explain it, made together.
+struct Verdict {
+  double credit = 0;
+  std::vector<std::string> feedback;
+};
+
+Vec3d vec_of(const nlohmann::json& j) {
+  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
+}
+
+// Relative difference of two lengths above which a right direction's length is remarked on.
+constexpr double kLengthNoteTolerance = 1e-3;
+
+class FieldsGrader final : public KindGrader {
+ public:
+  explicit FieldsGrader(const Problem& p) : kind_(p.kind), reference_(p.task->answer()) {
+    context_.problem = &p;
+    context_.tolerance = read_tolerance_policy(p);
+    if (p.precision >= 0) numbers_.decimals = p.precision;
+    std::vector<std::string> names;
+    for (const auto& spec : kind_parts(kind_)) names.push_back(spec.name);
+    context_.points = read_points_policy(p, default_points(kind_, names));
+    if (kind_ == "reflect") {
+      d_length_ = length(vec_of(p.source.at("direction")));
+    }
+  }
+
+  void grade(const AnswerReader& a, GradeResult& out) const override {
+    std::vector<std::string> names;
+    for (const auto& spec : kind_parts(kind_)) names.push_back(spec.name);
+    a.allow_only(names);
+    for (const auto& spec : kind_parts(kind_)) {
+      std::optional<AnswerReader> given = answer_for(a, spec.name);
+      if (!given) {
+        out.parts.push_back(missing_part(context_, spec.name,
+                                         fmt::format("No {} given ({}).", spec.name, spec.asks)));
+        continue;
+      }
+      Verdict v = grade_part(spec, *given);
+      if (v.credit >= 1 && v.feedback.empty()) v.feedback.push_back("Right.");
+      out.parts.push_back(make_part(context_, spec.name, v.credit, std::move(v.feedback)));
+    }
+  }
+
+ private:
+  // The student's value for a part: the key itself, or what stands for it (a unit direction
+  // is a direction; "total_internal_reflection": true says there is no refracted ray).
+  std::optional<AnswerReader> answer_for(const AnswerReader& a, const std::string& name) const {
+    if (a.has(name)) return a.at(name);
+    if (name == "direction" && a.has("unit_direction")) return a.at("unit_direction");
+    if (kind_ == "refract" && name == "direction" && a.has("total_internal_reflection") &&
+        a.at("total_internal_reflection").json() == true) {
+      return AnswerReader(kNull, nullptr, a.path() + "/direction");
+    }
+    return std::nullopt;
+  }
+
+  Verdict grade_part(const PartSpec& spec, const AnswerReader& s) const {
+    const nlohmann::json* ref =
+        reference_.contains(spec.name) ? &reference_.at(spec.name) : nullptr;
+    if (spec.name == "lights") return grade_lights(s);
+    if (!ref || ref->is_null()) {
+      if (s.json().is_null() || s.json() == false) return {1, {}};
+      return {0, {absent_reason(spec.name)}};
+    }
+    switch (spec.compare) {
+      case Comparison::kDirection:
+      case Comparison::kUnitDirection: return grade_direction(spec, s, vec_of(*ref));
+      case Comparison::kFlag: return grade_flag(spec.name, s, ref->get<bool>());
+      case Comparison::kNames: return grade_names(spec.name, s, *ref);
+      default: return grade_scalar(spec.name, s, ref->get<double>());
+    }
+  }
+
+  // Why a part has no value in this problem.
+  std::string absent_reason(const std::string& name) const {
+    if (name == "direction" || name == "angle_of_refraction") {
+      return fmt::format(
+          "Past the critical angle (θi = {}° > θc = {}°) there is no refracted ray: all the "
+          "light is reflected, so there is no {}.",
+          number(reference_.value("angle_of_incidence", 0.0)),
+          number(reference_.value("critical_angle", 0.0)),
+          name == "direction" ? "refracted direction" : "angle of refraction");
+    }
+    if (name == "critical_angle") {
+      return "Going into an equal or higher index (n2 ≥ n1) there is no critical angle: the "
+             "ray is always refracted.";
+    }
+    if (name == "reflected_direction") {
+      return "The ray is refracted, not totally reflected: there is no reflected direction to "
+             "give.";
+    }
+    return fmt::format("This problem has no {}.", name);
+  }
+
+  std::string number(double v) const { return format_number(v, numbers_); }
+
+  Verdict grade_scalar(const std::string& name, const AnswerReader& s, double ref) const {
+    if (s.json().is_null()) return {0, {fmt::format("{} is {}, not none.", name, number(ref))}};
+    auto n = s.number();
+    if (!n.value) return {0, {fmt::format("{}: {}", name, n.fault)}};
+    const Tolerance& tol = context_.tolerance.for_field(name);
+    NumberVerdict v = compare_number(*n.value, ref, ref, tol);
+    if (v.match == Match::kRight) return {1, {}};
+    if (v.match == Match::kInsufficientPrecision) {
+      return {tol.precision_credit, {fmt::format("{}: {}", name, v.message)}};
+    }
+    bool angle = name.find("angle") != std::string::npos;
+    double radians = ref * std::numbers::pi / 180;
+    if (angle && compare_number(*n.value, radians, radians, tol).match == Match::kRight) {
+      return {0,
+              {fmt::format("{} = {} is the angle in radians; the answer is in degrees: {}°.", name,
+                           n.value->text, number(ref))}};
+    }
+    return {
+        0,
+        {fmt::format("{} is {}{}, not {}.", name, number(ref), angle ? "°" : "", n.value->text)}};
+  }
+
+  Verdict grade_direction(const PartSpec& spec, const AnswerReader& s, const Vec3d& ref) const {
+    const std::string& name = spec.name;
+    if (s.json().is_null()) {
+      return {0,
+              {fmt::format("The ray is refracted (cos²θt = k > 0): its direction is {}.",
+                           format_vector(ref, numbers_))}};
+    }
+    AnswerReader::Vector v = s.vector();
+    if (!v.ok) return {0, {fmt::format("{}: {}", name, v.fault)}};
+    DirectionVerdict d = compare_direction(v.c, ref, context_.tolerance.for_field(name));
+    if (d.length == 0)
+      return {0, {fmt::format("{}: a direction cannot be the zero vector.", name)}};
+    Vec3d unit = normalized(ref);
+    if (d.verdict.match == Match::kWrong) {
+      if (d.opposite) {
+        return {
+            0,
+            {fmt::format("Your {} {} points the opposite way: the answer is {} (or any "
+                         "positive multiple).",
+                         name, format_vector(v.value(), numbers_), format_vector(ref, numbers_))}};
+      }
+      return {0,
+              {fmt::format("The {} is {} (or any positive multiple), not {}.", name,
+                           format_vector(ref, numbers_), format_vector(v.value(), numbers_))}};
+    }
+    Verdict out{1, {}};
+    if (d.verdict.match == Match::kInsufficientPrecision) {
+      out.credit = context_.tolerance.for_field(name).precision_credit;
+      out.feedback.push_back(fmt::format("{}: {}", name, d.verdict.message));
+    }
+    if (spec.compare == Comparison::kUnitDirection) {
+      if (std::abs(d.length - 1) > kLengthNoteTolerance) {
+        return {0,
+                {fmt::format("Your {} points the right way but has length {}; a unit vector "
+                             "has length 1: {}.",
+                             name, number(d.length), format_vector(unit, numbers_))}};
+      }
+      return out;
+    }
+    double ref_length = length(ref);
+    bool usual = std::abs(d.length - 1) <= kLengthNoteTolerance ||
+                 std::abs(d.length - ref_length) <= kLengthNoteTolerance * ref_length;
+    if (!usual) {
+      std::string keeps =
+          kind_ == "reflect"
+              ? fmt::format(" (r = d − 2(d·n̂)n̂ keeps the length of d, {})", number(d_length_))
+              : "";
+      out.feedback.push_back(fmt::format("Your {} has length {}{}; as a direction it is right.",
+                                         name, number(d.length), keeps));
+    }
+    return out;
+  }
+
+  Verdict grade_flag(const std::string& name, const AnswerReader& s, bool ref) const {
+    if (!s.json().is_boolean()) s.fail("expected true or false", "type");
+    if (s.json().get<bool>() == ref) return {1, {}};
+    if (name == "total_internal_reflection") {
+      double theta = reference_.value("angle_of_incidence", 0.0);
+      if (ref) {
+        return {0,
+                {fmt::format("The light is totally reflected: θi = {}° exceeds the critical "
+                             "angle {}°.",
+                             number(theta), number(reference_.value("critical_angle", 0.0)))}};
+      }
+      return {0,
+              {reference_.contains("critical_angle")
+                   ? fmt::format("The ray is refracted: θi = {}° is below the critical angle "
+                                 "{}°.",
+                                 number(theta), number(reference_.at("critical_angle")))
+                   : "The ray is refracted: going into an equal or higher index, light is "
+                     "never totally reflected."}};
+    }
+    return {0, {fmt::format("{} is {}.", name, ref ? "true" : "false")}};
+  }
+
+  Verdict grade_names(const std::string& name, const AnswerReader& s,
+                      const nlohmann::json& ref) const {
+    std::set<std::string> want, got;
+    for (const auto& x : ref) want.insert(x.get<std::string>());
+    for (const auto& x : s.items()) got.insert(x.string());
+    if (want == got) return {1, {}};
+    return {0,
+            {fmt::format("The {} that apply are {}, not {}.", name, fmt::join(want, ", "),
+                         got.empty() ? "none" : fmt::format("{}", fmt::join(got, ", ")))}};
+  }
+
+  // Each light of the answer, by name or in order: every field given must be right.
+  Verdict grade_lights(const AnswerReader& s) const {
+    const nlohmann::json& ref = reference_.at("lights");
+    std::vector<AnswerReader> given = s.items();
+    Verdict out;
+    double right = 0;
+    for (std::size_t i = 0; i < given.size(); ++i) {
+      const AnswerReader& g = given[i];
+      g.allow_only({"light", "n_dot_l", "r_dot_v", "reaches", "diffuse", "specular"});
+      const nlohmann::json* r = i < ref.size() ? &ref[i] : nullptr;
+      if (g.has("light")) {
+        r = nullptr;
+        for (const auto& x : ref) {
+          if (x.at("light") == g.at("light").json()) r = &x;
+        }
+      }
+      if (!r) {
+        out.feedback.push_back(fmt::format("{}: the problem has no such light.", g.path()));
+        continue;
+      }
+      std::string light = r->at("light").get<std::string>();
+      std::size_t before = out.feedback.size();
+      for (const char* key : {"n_dot_l", "r_dot_v", "diffuse", "specular"}) {
+        if (!g.has(key)) continue;
+        Verdict v = grade_scalar(key, g.at(key), r->at(key).get<double>());
+        if (v.credit < 1) out.feedback.push_back(fmt::format("Light {}: {}", light, v.feedback[0]));
+      }
+      if (g.has("reaches")) {
+        bool want = r->at("reaches").get<bool>();
+        if (!g.at("reaches").json().is_boolean())
+          g.at("reaches").fail("expected true or false", "type");
+        if (g.at("reaches").json().get<bool>() != want) {
+          out.feedback.push_back(
+              want ? fmt::format("Light {} reaches the point.", light)
+              : r->at("n_dot_l").get<double>() <= 0
+                  ? fmt::format("Light {} does not reach the point: the surface faces away from "
+                                "it (N·L ≤ 0).",
+                                light)
+                  : fmt::format("Light {} does not reach the point: its shadow ray is blocked.",
+                                light));
+        }
+      }
+      if (out.feedback.size() == before) right += 1;
+    }
+    std::size_t d = std::max(ref.size(), given.size());
+    for (std::size_t i = given.size(); i < ref.size(); ++i) {
+      out.feedback.push_back(
+          fmt::format("Light {} is not given.", ref[i].at("light").get<std::string>()));
+    }
+    out.credit = d ? right / static_cast<double>(d) : 1;
+    return out;
+  }
+
+  static inline const nlohmann::json kNull = nullptr;
+  std::string kind_;
+  nlohmann::json reference_;
+  NumberFormat numbers_;
+  double d_length_ = 1;
+};
+
+}  // namespace
+
+std::shared_ptr<const KindGrader> make_fields_grader(const Problem& p) {
+  return std::make_shared<FieldsGrader>(p);
+}
+
+}  // namespace raygrade
