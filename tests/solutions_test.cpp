@@ -53,9 +53,13 @@ TEST(WorkedSolution, SeedSphereCase1MatchesTheSeed) {
       << md;
   EXPECT_TRUE(has(md, "$$d^{2} = L^{2} - {t_{\\text{ca}}}^2 = 4 - {2}^2 = 0$$")) << md;
   std::string html = render(p, Format::kHtml);
-  EXPECT_TRUE(has(html, "<msub><mi>t</mi><mi mathvariant=\"normal\">hc</mi></msub><mo>=</mo>"))
+  // Each "= ..." of a step is a link of its own, where a long chain may break.
+  EXPECT_TRUE(has(html,
+                  "<div class=\"chain\"><math displaystyle=\"true\"><mrow><msub><mi>t</mi><mi "
+                  "mathvariant=\"normal\">hc</mi></msub></mrow></math><math "
+                  "displaystyle=\"true\"><mrow><mo form=\"infix\">=</mo>"))
       << html;
-  EXPECT_TRUE(has(html, "<mo>=</mo><mn>1</mn></mrow></math>")) << html;
+  EXPECT_TRUE(has(html, "<mo form=\"infix\">=</mo><mn>1</mn></mrow></math>")) << html;
 }
 
 // Seed 000, plane case 1 in the D form: D = −N·V0 = −(−1·2) = 2 and t = −(N·O + D)/(N·R)
@@ -84,6 +88,47 @@ TEST(WorkedSolution, ExactFormsBesideDecimals) {
   EXPECT_TRUE(has(txt, "The ray first hits sphere 3 at t = 9 − √3 ≈ 7.27")) << txt;
 }
 
+// A ray tangent in exact arithmetic: C − O = (10, 5, 0) along the unit direction (2, 1, 0)/√5,
+// so t_ca = 25/√5 = √125 and d² = 125 − 125 = 0 (−1.4e-14 in doubles); with r = 1,
+// t_hc = √(1 − 0) = 1. The zero is written as an exact 0, with no "≈" and no parentheses.
+TEST(WorkedSolution, ZeroUpToRoundingIsWrittenZero) {
+  Problem p = testing::problem(R"({"id": "z", "kind": "intersect", "method": "geometric",
+    "ray": {"origin": [0, 0, 0], "direction": [0.8944271909999159, 0.4472135954999579, 0]},
+    "object": {"type": "sphere", "center": [10, 5, 0], "radius": 1}})");
+  std::string txt = render(p, Format::kText);
+  EXPECT_TRUE(has(txt, "d² = L² − t_ca² = 125 − 11.18² = 0\n")) << txt;
+  EXPECT_TRUE(has(txt, "t_hc = √(r² − d²) = √(1 − 0) = 1\n")) << txt;
+  EXPECT_FALSE(has(txt, "≈ 0\n")) << txt;
+  EXPECT_FALSE(has(txt, "(0)")) << txt;
+}
+
+// In HTML a long step is a chain of formulas the page may wrap: d_r = f·d + x_diff·v +
+// y_diff·u becomes the links "d_r", "= f·d", "+ x_diff·v", "+ y_diff·u", then the numbers
+// the same way, then "= value" whole.
+TEST(WorkedSolution, HtmlChainBreaksBeforeEqualsAndBetweenTerms) {
+  Bank bank = load_bank({kSource + "/problems/camera-ray.json"});
+  std::string html = render(find(bank, "camera-ray-corner"), Format::kHtml);
+  const std::string link = "</mrow></math><math displaystyle=\"true\"><mrow>";
+  EXPECT_TRUE(has(html, link + "<mo form=\"infix\">+</mo><msub><mi>y</mi><mi "
+                               "mathvariant=\"normal\">diff</mi>"))
+      << html;
+  EXPECT_TRUE(has(html, link + "<mo form=\"infix\">+</mo><mrow><mo>(</mo>"))
+      << html;  // + (−240) · ⟨0, 1, 0⟩
+  EXPECT_FALSE(has(html, "<math display=\"block\">")) << html;
+}
+
+// Seed 004's triangle: q = (1/6, 1/3, 1/2) = (1/6)·a + (1/3)·b + (1/2)·c for the unit vertices
+// a, b, c; the conclusion gives the weights it computed.
+TEST(WorkedSolution, TriangleConclusionGivesTheBarycentricWeights) {
+  Bank bank = load_bank({kSource + "/problems/seeds/seed004-surfaces.json"});
+  const Problem& p = find(bank, "seed004-triangle");
+  std::string txt = render(p, Format::kText);
+  EXPECT_TRUE(has(txt,
+                  "In barycentric weights, P = w_a·a + w_b·b + w_c·c with w_a = 1/6 ≈ "
+                  "0.1667, w_b = 1/3 ≈ 0.3333, w_c = 0.5.\n"))
+      << txt;
+}
+
 // Acceptance 3, in the library: every kind of the bank renders in every format, with its
 // formulas (LaTeX, MathML) and, in HTML, a sketch.
 TEST(WorkedSolution, EveryKindInEveryFormat) {
@@ -104,7 +149,7 @@ TEST(WorkedSolution, EveryKindInEveryFormat) {
     SCOPED_TRACE(kind);
     EXPECT_TRUE(has(render(*p, Format::kMarkdown), "$$")) << p->id;
     std::string html = render(*p, Format::kHtml);
-    EXPECT_TRUE(has(html, "<math display=\"block\">")) << p->id;
+    EXPECT_TRUE(has(html, "<div class=\"chain\"><math displaystyle=\"true\"><mrow>")) << p->id;
     EXPECT_TRUE(has(html, "<svg")) << p->id;
     EXPECT_FALSE(has(html, "<script")) << p->id;
     EXPECT_TRUE(has(render(*p, Format::kText), " = ")) << p->id;

@@ -80,7 +80,8 @@ std::string sentence_text(const Sentence& s, const NumberFormat& numbers) {
     switch (p.value.kind) {
       case Value::Kind::kNone: out += p.text; break;
       case Value::Kind::kScalar:
-        if (auto x = exact_form(p.value.scalar)) {
+        if (auto x = exact_form(p.value.scalar);
+            x && exact_text(*x) != text_number(p.value.scalar, numbers)) {
           out += exact_text(*x) + " ≈ " + text_number(p.value.scalar, numbers);
         } else {
           out += text_number(p.value.scalar, numbers);
