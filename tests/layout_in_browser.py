@@ -24,7 +24,7 @@ import re
 import subprocess
 import sys
 
-from chromium import SKIPPED, require_chromium, run_browser
+from chromium import SKIPPED, require_chromium, run_browser, write_solution_pages
 
 WIDTH, HEIGHT = 1200, 900
 
@@ -91,13 +91,9 @@ def main():
     browser = require_chromium()
     if not browser:
         return SKIPPED
-    pages = os.path.join(out, "pages")
+    pages, shots = write_solution_pages(binary, bank, out, "html")
     work = os.path.join(out, "probes")
-    shots = os.path.join(out, "screenshots")
-    for folder in (work, shots):
-        os.makedirs(folder, exist_ok=True)
-    subprocess.run([binary, "solutions", bank, "--out", pages, "--format", "html"], check=True,
-                   capture_output=True)
+    os.makedirs(work, exist_ok=True)
     # Every worked solution of the bank on one page (as `solve --format html` prints them),
     # measured in one run of the browser; the pages of the long ones measured on their own too.
     everything = os.path.abspath(os.path.join(work, "all.html"))
