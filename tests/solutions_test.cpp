@@ -123,6 +123,8 @@ TEST(WorkedSolution, TriangleConclusionGivesTheBarycentricWeights) {
   Bank bank = load_bank({kSource + "/problems/seeds/seed004-surfaces.json"});
   const Problem& p = find(bank, "seed004-triangle");
   std::string txt = render(p, Format::kText);
+  // t = 1/6: the numbers "1 / 6" are not repeated before the exact form that says the same.
+  EXPECT_TRUE(has(txt, "t = (n · (a − O)) / (n · D) = 1 / 6 ≈ 0.1667\n")) << txt;
   EXPECT_TRUE(has(txt,
                   "In barycentric weights, P = w_a·a + w_b·b + w_c·c with w_a = 1/6 ≈ "
                   "0.1667, w_b = 1/3 ≈ 0.3333, w_c = 0.5.\n"))
