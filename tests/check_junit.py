@@ -4,7 +4,9 @@
 Usage: check_junit.py RAYGRADE SOURCE_DIR. Runs the check on the broken-bank fixtures (plus a
 problem whose id and statement hold XML's special characters) and on the bundled bank, parses
 the XML with the standard library's parser (which rejects anything not well-formed), and
-checks testsuites/testsuite/testcase/failure and the counts against the JSON report.
+checks testsuites/testsuite/testcase/failure and the counts against the JSON report: every
+suite and case carries a time, the root's tests, failures and errors are the sums of its
+suites', and a file that cannot be read is an error (not a failure) in both.
 """
 import json
 import os
@@ -25,10 +27,26 @@ def fail(message):
     sys.exit(1)
 
 
+def seconds(element):
+    """The element's time attribute, which must be a number of seconds, 0 or more."""
+    text = element.get("time")
+    if text is None:
+        fail(f"<{element.tag} name={element.get('name')!r}> has no time")
+    value = float(text)
+    if not value >= 0:
+        fail(f"<{element.tag} name={element.get('name')!r}> has time={text}")
+    return value
+
+
 def check_structure(xml_text, report):
     root = ET.fromstring(xml_text)  # raises on malformed XML
     if root.tag != "testsuites":
         fail(f"root is <{root.tag}>, not <testsuites>")
+    for attribute in ("tests", "failures", "errors", "time"):
+        if root.get(attribute) is None:
+            fail(f"<testsuites> has no {attribute}")
+    seconds(root)
+    sums = {"tests": 0, "failures": 0, "errors": 0}
     cases = []
     for suite in root:
         if suite.tag != "testsuite":
@@ -36,6 +54,10 @@ def check_structure(xml_text, report):
         tests = int(suite.get("tests"))
         failures = int(suite.get("failures"))
         errors = int(suite.get("errors"))
+        sums["tests"] += tests
+        sums["failures"] += failures
+        sums["errors"] += errors
+        seconds(suite)
         children = list(suite)
         if any(c.tag != "testcase" for c in children):
             fail("a testsuite holds something other than testcases")
@@ -48,12 +70,16 @@ def check_structure(xml_text, report):
         for c in children:
             if not c.get("name") or not c.get("classname"):
                 fail("a testcase without name or classname")
+            seconds(c)
             for f in c.findall("failure"):
                 if not f.get("message") or not f.get("type") or not (f.text or "").strip():
                     fail(f"testcase {c.get('name')}: failure without message, type or text")
         cases.extend(children)
     if int(root.get("tests")) != len(cases):
         fail("testsuites/@tests does not count the testcases")
+    for attribute, total in sums.items():
+        if int(root.get(attribute)) != total:
+            fail(f"testsuites/@{attribute}={root.get(attribute)}, its suites' sum is {total}")
     by_name = {c.get("name"): c for c in cases}
     problems = report["problems"]
     if len(cases) != len(problems):
@@ -98,6 +124,18 @@ def main():
             fail("the problem with special characters in its id is missing or passed")
         if "wrong-expected" != case.find("failure").get("type"):
             fail("its failure is not typed wrong-expected")
+        # A path that cannot be read: an error, counted as one at the root and in its suite.
+        missing = os.path.join(work, "no-such-file.json")
+        args = [bank, missing, "--solutions", solutions, "--format"]
+        code, xml_text = run(binary, args + ["junit"])
+        if code != 2:
+            fail(f"exit code {code} with an unreadable file, not 2")
+        _, json_text = run(binary, args + ["json"])
+        cases = check_structure(xml_text, json.loads(json_text))
+        if cases.get(missing) is None or cases[missing].find("error") is None:
+            fail("the unreadable file is not a testcase with an <error>")
+        if ET.fromstring(xml_text).get("errors") != "1":
+            fail("testsuites/@errors does not count the unreadable file")
         # A clean bank: one testcase per problem, none failing.
         problems = os.path.join(source, "problems")
         code, xml_text = run(binary, [problems, "--no-solutions", "--format", "junit"])

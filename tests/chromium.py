@@ -1,4 +1,5 @@
 """Headless Chromium for the browser tests: find it, and load a page in a fresh profile."""
+import os
 import shutil
 import subprocess
 import tempfile
@@ -33,3 +34,14 @@ def run_browser(browser, args, page):
     with tempfile.TemporaryDirectory(prefix="raygrade-chromium-") as profile:
         cmd = [browser, *FLAGS, f"--user-data-dir={profile}", *args, "file://" + page]
         return subprocess.run(cmd, capture_output=True, text=True, timeout=120)
+
+
+def write_solution_pages(binary, bank, out, formats):
+    """Writes the bank's worked solutions in `formats` ("html,json") to OUT/pages and makes
+    OUT/screenshots; returns the two folders."""
+    pages = os.path.join(out, "pages")
+    shots = os.path.join(out, "screenshots")
+    os.makedirs(shots, exist_ok=True)
+    subprocess.run([binary, "solutions", bank, "--out", pages, "--format", formats], check=True,
+                   capture_output=True)
+    return pages, shots

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "derivation/expr.h"
 #include "derivation/number_format.h"
@@ -50,6 +51,29 @@ TEST(ExactForm, ValuesShowBothForms) {
   EXPECT_EQ(value_text(9 - std::sqrt(3.0), o), "9 − √3 ≈ 7.27");
   EXPECT_EQ(value_latex(9 - std::sqrt(3.0), o), "9 - \\sqrt{3} \\approx 7.27");
   EXPECT_EQ(value_text(2, o), "2");
+}
+
+// 125 − √125² in doubles is −1.42e-14 (5√5 rounds up): a zero up to rounding. It prints as an
+// exact 0, never "0 ≈ 0", and needs no parentheses where it is substituted: √(1 − 0).
+TEST(ExactForm, ZeroUpToRoundingIsAnExactZero) {
+  double d2 = 125 - std::sqrt(125.0) * std::sqrt(125.0);
+  ASSERT_NE(d2, 0);
+  ASSERT_LT(std::abs(d2), 1e-13);
+  EXPECT_EQ(exact(d2), "none");
+  EXPECT_EQ(exact(1e-13), "none");
+  EXPECT_EQ(exact(3e-12), "none");  // within 1e-11 of the fraction 0/2
+  EXPECT_EQ(exact(1 - 2e-16), "none");
+  RenderOptions o;
+  o.exact = true;
+  EXPECT_EQ(value_text(d2, o), "0");
+  EXPECT_EQ(value_latex(d2, o), "0");
+  Env env{{"r2", Value(1.0)}, {"d2", Value(d2)}};
+  RenderOptions subst{&env, {}};
+  EXPECT_EQ(to_text(sqrt(sym("r2") - sym("d2")), subst), "√(1 − 0)");
+  EXPECT_EQ(to_latex(sym("r2") - sym("d2"), subst), "1 - 0");
+  EXPECT_FALSE(prints_negative(d2));
+  EXPECT_TRUE(prints_negative(-1e-3));
+  EXPECT_TRUE(prints_negative(-std::numeric_limits<double>::infinity()));
 }
 
 // Negative numbers substituted into a formula get parentheses unless they lead it.

@@ -9,10 +9,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "check/check.h"
 #include "generate/prng.h"
+#include "run_binary.h"
 #include "test_util.h"
 
 namespace raygrade {
@@ -97,6 +99,57 @@ TEST(GenerateCommand, Seed42TwiceSameBytesAndPassesCheck) {
   EXPECT_EQ(report.problems.size(), 200u);
   for (const auto& d : report.diagnostics()) ADD_FAILURE() << format_diagnostic(d);
   fs::remove_all(dir);
+}
+
+// Every regular file under `root`, by its path relative to `root`, with its bytes.
+std::map<std::string, std::string> tree(const std::filesystem::path& root) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(root)) {
+    if (e.is_regular_file()) files[e.path().lexically_relative(root).string()] = read_all(e.path());
+  }
+  return files;
+}
+
+// The same seed written to two folders gives the same tree, byte for byte: no header names the
+// folder. `check DIR` and `check DIR/problems`, run from a folder without solutions of its own,
+// find DIR/solutions and say so.
+TEST(GenerateCommand, TwoFoldersSameTreeAndCheckFindsSolutionsBesideTheBank) {
+  testing::TempDir dir("generate-two");
+  std::filesystem::create_directories(dir.path() / "elsewhere");
+  for (const char* out : {"A", "deeper/B"}) {
+    testing::RunResult r = testing::run_raygrade(
+        fmt::format("generate --seed 42 -n 50 --out '{}'", (dir.path() / out).string()),
+        dir.path() / "elsewhere");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  auto a = tree(dir.path() / "A"), b = tree(dir.path() / "deeper" / "B");
+  EXPECT_EQ(a.size(), 50u + 50u + 1u);  // problems, solutions, the solutions' README
+  EXPECT_TRUE(a == b) << "the two trees differ";
+  for (const auto& [name, bytes] : a) {
+    EXPECT_EQ(bytes.find(dir.path().string()), std::string::npos) << name << " names its folder";
+  }
+  for (const std::string bank : {"A", "A/problems"}) {
+    testing::RunResult r = testing::run_raygrade("check '" + (dir.path() / bank).string() + "'",
+                                                 dir.path() / "elsewhere");
+    EXPECT_EQ(r.exit_code, 0) << bank << ":\n" << r.out << r.err;
+    EXPECT_NE(r.out.find("worked solutions read from " + (dir.path() / "A" / "solutions").string()),
+              std::string::npos)
+        << r.out;
+  }
+  // Worked solutions in JSON beside the problems are not read as problems.
+  ASSERT_EQ(
+      testing::run_raygrade("generate --seed 42 -n 5 --solution-format md,json --out C", dir.path())
+          .exit_code,
+      0);
+  testing::RunResult c = testing::run_raygrade("check C", dir.path());
+  EXPECT_EQ(c.exit_code, 0) << c.out << c.err;
+  EXPECT_NE(c.out.find("Checked 5 problems in 5 files"), std::string::npos) << c.out;
+  // Nowhere to be found: the warning lists every place looked in.
+  std::filesystem::rename(dir.path() / "A" / "solutions", dir.path() / "A" / "moved");
+  testing::RunResult r = testing::run_raygrade("check A/problems", dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("looked in A/problems/solutions, A/solutions, solutions"), std::string::npos)
+      << r.out;
 }
 
 // Significant digits of a number as a person writes it: 7 → 1, 0.25 → 2, 12.5 → 3, 1/3 → 15+.

@@ -11,10 +11,9 @@ usage: html_in_browser.py RAYGRADE_BINARY BANK_FOLDER OUTPUT_FOLDER
 import json
 import os
 import re
-import subprocess
 import sys
 
-from chromium import SKIPPED, require_chromium, run_browser
+from chromium import SKIPPED, require_chromium, run_browser, write_solution_pages
 
 
 def main():
@@ -22,11 +21,7 @@ def main():
     browser = require_chromium()
     if not browser:
         return SKIPPED
-    pages = os.path.join(out, "pages")
-    shots = os.path.join(out, "screenshots")
-    os.makedirs(shots, exist_ok=True)
-    subprocess.run([binary, "solutions", bank, "--out", pages, "--format", "html,json"],
-                   check=True, capture_output=True)
+    pages, shots = write_solution_pages(binary, bank, out, "html,json")
     # The object's type of each problem, from the bank itself (a triangle and a convex
     # polygon share the method name "edge-tests").
     types = {}

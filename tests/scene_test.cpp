@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 #include "kinds/ray_tree.h"
 #include "scenes/trace.h"
@@ -191,6 +192,43 @@ TEST(RayTree, SeedOneHasFivePointsTwoInShadow) {
   EXPECT_EQ(t.counts.reflection, 2);
   EXPECT_EQ(t.counts.refraction, 2);
   EXPECT_EQ(t.counts.shadow, 5);
+}
+
+// The answer says, as data, what the tree simulated and what it left out: seed 001 casts five
+// shadow rays (one per hit point; the light is one), two reflection and two refraction rays
+// (counted by hand above), shades every point and leaves intensities out (ask: tree).
+TEST(RayTree, EffectsAreDataInTheAnswer) {
+  Bank bank =
+      load_bank({std::string(RAYGRADE_SOURCE_DIR) + "/problems/seeds/seed001-ray-tree.json"});
+  ASSERT_TRUE(bank.errors.empty());
+  nlohmann::json effects = bank.problems.at(0).task->answer()["effects"];
+  ASSERT_TRUE(effects.is_array()) << effects;
+  std::map<std::string, nlohmann::json> by_name;
+  for (const auto& e : effects) {
+    ASSERT_TRUE(e["effect"].is_string()) << e;
+    ASSERT_TRUE(e["simulated"].is_boolean()) << e;
+    ASSERT_TRUE(e["why"].is_string() && !e["why"].get<std::string>().empty()) << e;
+    by_name[e["effect"].get<std::string>()] = e;
+  }
+  EXPECT_EQ(by_name["shadow rays"]["simulated"], true);
+  EXPECT_EQ(by_name["shadow rays"]["rays"], 5);
+  EXPECT_EQ(by_name["reflection"]["rays"], 2);
+  EXPECT_EQ(by_name["refraction"]["rays"], 2);
+  EXPECT_EQ(by_name["shading"]["simulated"], true);
+  EXPECT_FALSE(by_name["shading"].contains("rays"));
+  EXPECT_EQ(by_name["intensity"]["simulated"], false);
+  EXPECT_EQ(by_name["intensity"]["why"], "the question does not ask for intensities");
+  // Asking only for the hit skips the shadow rays, and says why.
+  Problem hit = testing::problem(blocker_problem(kGlass, "block", "hit"));
+  nlohmann::json answer = hit.task->answer();
+  bool said = false;
+  for (const auto& e : answer["effects"]) {
+    if (e["effect"] == "shadow rays") {
+      said = e["simulated"] == false && e["why"] == "the question asks only for the hit" &&
+             !e.contains("rays");
+    }
+  }
+  EXPECT_TRUE(said) << answer.dump();
 }
 
 TEST(Scene, UnknownMaterialNameIsAnErrorWithItsPath) {

@@ -29,6 +29,28 @@ TEST(RefractKind, SnellAngles) {
   EXPECT_FALSE(a.contains("critical_angle"));
 }
 
+// The angles the conclusion states are steps of their own: θi = arccos(cos θi) = 60° and
+// θt = arccos(√k) with k = 1 − (3/4)²·(1 − 1/4) = 37/64, the same angle as asin(3√3/8).
+TEST(RefractKind, AnglesAreComputedBySteps) {
+  Problem p = testing::problem(R"({"id": "w", "kind": "refract",
+    "direction": [0.8660254037844386, -0.5, 0], "normal": [0, 1, 0], "n1": 1, "n2": 1.3333333333333333})");
+  Derivation d = p.task->derive("")[0].derivation;
+  const Step* theta_i = d.find("theta_i");
+  const Step* theta_t = d.find("theta_t");
+  ASSERT_NE(theta_i, nullptr);
+  ASSERT_NE(theta_t, nullptr);
+  EXPECT_NEAR(theta_i->value.scalar, 60, 1e-12);
+  double expected = std::asin(3 * std::sqrt(3.0) / 8) * 180 / 3.141592653589793;
+  EXPECT_NEAR(theta_t->value.scalar, expected, 1e-12);
+  EXPECT_NEAR(std::cos(theta_t->value.scalar * 3.141592653589793 / 180), std::sqrt(37.0 / 64),
+              1e-12);
+  EXPECT_EQ(to_text(theta_t->formula), "arccos(√k)");
+  EXPECT_EQ(to_text(theta_i->formula), "arccos(cos_i)");
+  // The conclusion quotes the steps' values.
+  ASSERT_FALSE(d.conclusion.empty());
+  EXPECT_NE(d.conclusion[0].find("θi = 60°, θt = 40.5"), std::string::npos) << d.conclusion[0];
+}
+
 // From glass (1.5) into air at 60° (normal given pointing along the ray, so it is turned):
 // sin θt would be 1.5·√3/2 ≈ 1.3: total internal reflection; the critical angle is 41.81°.
 TEST(RefractKind, TotalInternalReflection) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <regex>
 
 #include "reports/svg_figure.h"
 #include "test_util.h"
@@ -152,6 +153,57 @@ TEST(ShadeSketch, LightBehindTheSurfaceIsDotted) {
   // V runs along the normal: the view takes a direction along the surface.
   EXPECT_NEAR(dot(f.across, f.up), 0, 1e-15);
   EXPECT_NEAR(length(f.across), 1, 1e-15);
+}
+
+// The caption names the ray's direction (1, −2, 2)/3 once, in parentheses of its own, with
+// real minus signs: "the ray's direction (0.333, −0.667, 0.667)".
+TEST(SketchCaption, DirectionWrittenOnceWithMinusSigns) {
+  Problem p = testing::problem(R"({"id": "c", "kind": "intersect",
+    "ray": {"origin": [0, 0, 0], "direction": [1, -2, 2]},
+    "object": {"type": "sphere", "center": [3, -6, 6], "radius": 1}})");
+  SvgFigure svg = render_svg(p.task->sketch(), "caption");
+  EXPECT_NE(svg.caption.find("the ray's direction (0.333, −0.667, 0.667) points right"),
+            std::string::npos)
+      << svg.caption;
+  EXPECT_EQ(svg.caption.find("(("), std::string::npos) << svg.caption;
+  EXPECT_EQ(svg.caption.find('-'), std::string::npos) << svg.caption;
+}
+
+// The labels of a sketch: text, x and baseline y, from the SVG.
+struct Label {
+  std::string text;
+  double x, y;
+};
+std::vector<Label> labels(const std::string& svg) {
+  std::vector<Label> out;
+  std::regex text(R"re(<text class="[^"]*" x="([-0-9.]+)" y="([-0-9.]+)">([^<]*)</text>)re");
+  for (std::sregex_iterator it(svg.begin(), svg.end(), text), end; it != end; ++it) {
+    out.push_back({(*it)[3], std::stod((*it)[1]), std::stod((*it)[2])});
+  }
+  return out;
+}
+
+// The ray y = 0.9999 across the cylinder x² + y² = 1 hits at x = ±√(1 − 0.9999²) = ±0.01414,
+// t = 3 ∓ 0.01414: the two hits are a fraction of a pixel apart, and so are the places of
+// their labels. Each label's box is at least 14.4 px high (the line box Chromium lays out for
+// the 12 px label font, measured by the browser test) and starts within a few pixels of the
+// other's, so the two must be at least 14.4 px apart vertically.
+TEST(SketchLabels, CloseHitsOfACylinderDoNotOverlap) {
+  Problem p = testing::problem(R"({"id": "c",
+    "ray": {"origin": [-3, 0.9999, 0], "direction": [1, 0, 0]},
+    "object": {"type": "cylinder", "base": [0, 0, -1], "axis": [0, 0, 1], "radius": 1,
+               "height": 2}})");
+  std::vector<Label> found = labels(render_svg(p.task->sketch(), "close").svg);
+  const Label* first = nullptr;
+  const Label* second = nullptr;
+  for (const auto& l : found) {
+    if (l.text == "t = 2.986") first = &l;
+    if (l.text == "t = 3.014") second = &l;
+  }
+  ASSERT_NE(first, nullptr);
+  ASSERT_NE(second, nullptr);
+  EXPECT_LT(std::abs(first->x - second->x), 10);
+  EXPECT_GE(std::abs(first->y - second->y), 14.4);
 }
 
 // Seed 000's cylinder x² + y² = 1 and the ray (−3, 0, 0.5) + t(1, 0, 0): a = 1, b = −6,

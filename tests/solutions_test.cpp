@@ -8,6 +8,7 @@
 #include "reports/json_report.h"
 #include "reports/render.h"
 #include "reports/solutions_folder.h"
+#include "run_binary.h"
 #include "test_util.h"
 
 namespace raygrade {
@@ -53,9 +54,13 @@ TEST(WorkedSolution, SeedSphereCase1MatchesTheSeed) {
       << md;
   EXPECT_TRUE(has(md, "$$d^{2} = L^{2} - {t_{\\text{ca}}}^2 = 4 - {2}^2 = 0$$")) << md;
   std::string html = render(p, Format::kHtml);
-  EXPECT_TRUE(has(html, "<msub><mi>t</mi><mi mathvariant=\"normal\">hc</mi></msub><mo>=</mo>"))
+  // Each "= ..." of a step is a link of its own, where a long chain may break.
+  EXPECT_TRUE(has(html,
+                  "<div class=\"chain\"><math displaystyle=\"true\"><mrow><msub><mi>t</mi><mi "
+                  "mathvariant=\"normal\">hc</mi></msub></mrow></math><math "
+                  "displaystyle=\"true\"><mrow><mo form=\"infix\">=</mo>"))
       << html;
-  EXPECT_TRUE(has(html, "<mo>=</mo><mn>1</mn></mrow></math>")) << html;
+  EXPECT_TRUE(has(html, "<mo form=\"infix\">=</mo><mn>1</mn></mrow></math>")) << html;
 }
 
 // Seed 000, plane case 1 in the D form: D = −N·V0 = −(−1·2) = 2 and t = −(N·O + D)/(N·R)
@@ -84,6 +89,49 @@ TEST(WorkedSolution, ExactFormsBesideDecimals) {
   EXPECT_TRUE(has(txt, "The ray first hits sphere 3 at t = 9 − √3 ≈ 7.27")) << txt;
 }
 
+// A ray tangent in exact arithmetic: C − O = (10, 5, 0) along the unit direction (2, 1, 0)/√5,
+// so t_ca = 25/√5 = √125 and d² = 125 − 125 = 0 (−1.4e-14 in doubles); with r = 1,
+// t_hc = √(1 − 0) = 1. The zero is written as an exact 0, with no "≈" and no parentheses.
+TEST(WorkedSolution, ZeroUpToRoundingIsWrittenZero) {
+  Problem p = testing::problem(R"({"id": "z", "kind": "intersect", "method": "geometric",
+    "ray": {"origin": [0, 0, 0], "direction": [0.8944271909999159, 0.4472135954999579, 0]},
+    "object": {"type": "sphere", "center": [10, 5, 0], "radius": 1}})");
+  std::string txt = render(p, Format::kText);
+  EXPECT_TRUE(has(txt, "d² = L² − t_ca² = 125 − 11.18² = 0\n")) << txt;
+  EXPECT_TRUE(has(txt, "t_hc = √(r² − d²) = √(1 − 0) = 1\n")) << txt;
+  EXPECT_FALSE(has(txt, "≈ 0\n")) << txt;
+  EXPECT_FALSE(has(txt, "(0)")) << txt;
+}
+
+// In HTML a long step is a chain of formulas the page may wrap: d_r = f·d + x_diff·v +
+// y_diff·u becomes the links "d_r", "= f·d", "+ x_diff·v", "+ y_diff·u", then the numbers
+// the same way, then "= value" whole.
+TEST(WorkedSolution, HtmlChainBreaksBeforeEqualsAndBetweenTerms) {
+  Bank bank = load_bank({kSource + "/problems/camera-ray.json"});
+  std::string html = render(find(bank, "camera-ray-corner"), Format::kHtml);
+  const std::string link = "</mrow></math><math displaystyle=\"true\"><mrow>";
+  EXPECT_TRUE(has(html, link + "<mo form=\"infix\">+</mo><msub><mi>y</mi><mi "
+                               "mathvariant=\"normal\">diff</mi>"))
+      << html;
+  EXPECT_TRUE(has(html, link + "<mo form=\"infix\">+</mo><mrow><mo>(</mo>"))
+      << html;  // + (−240) · ⟨0, 1, 0⟩
+  EXPECT_FALSE(has(html, "<math display=\"block\">")) << html;
+}
+
+// Seed 004's triangle: q = (1/6, 1/3, 1/2) = (1/6)·a + (1/3)·b + (1/2)·c for the unit vertices
+// a, b, c; the conclusion gives the weights it computed.
+TEST(WorkedSolution, TriangleConclusionGivesTheBarycentricWeights) {
+  Bank bank = load_bank({kSource + "/problems/seeds/seed004-surfaces.json"});
+  const Problem& p = find(bank, "seed004-triangle");
+  std::string txt = render(p, Format::kText);
+  // t = 1/6: the numbers "1 / 6" are not repeated before the exact form that says the same.
+  EXPECT_TRUE(has(txt, "t = (n · (a − O)) / (n · D) = 1 / 6 ≈ 0.1667\n")) << txt;
+  EXPECT_TRUE(has(txt,
+                  "In barycentric weights, P = w_a·a + w_b·b + w_c·c with w_a = 1/6 ≈ "
+                  "0.1667, w_b = 1/3 ≈ 0.3333, w_c = 0.5.\n"))
+      << txt;
+}
+
 // Acceptance 3, in the library: every kind of the bank renders in every format, with its
 // formulas (LaTeX, MathML) and, in HTML, a sketch.
 TEST(WorkedSolution, EveryKindInEveryFormat) {
@@ -104,7 +152,7 @@ TEST(WorkedSolution, EveryKindInEveryFormat) {
     SCOPED_TRACE(kind);
     EXPECT_TRUE(has(render(*p, Format::kMarkdown), "$$")) << p->id;
     std::string html = render(*p, Format::kHtml);
-    EXPECT_TRUE(has(html, "<math display=\"block\">")) << p->id;
+    EXPECT_TRUE(has(html, "<div class=\"chain\"><math displaystyle=\"true\"><mrow>")) << p->id;
     EXPECT_TRUE(has(html, "<svg")) << p->id;
     EXPECT_FALSE(has(html, "<script")) << p->id;
     EXPECT_TRUE(has(render(*p, Format::kText), " = ")) << p->id;
@@ -145,6 +193,25 @@ class SolutionsFolder : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
   fs::path dir_;
 };
+
+// Absolute paths given to `raygrade solutions` are written relative to the working folder in
+// every file's first line: no generated file names where on this machine it was written.
+TEST(SolutionsCommand, HeaderNamesNoAbsolutePath) {
+  testing::TempDir dir("solutions-header");
+  fs::create_directories(dir.path() / "bank");
+  fs::copy_file(kSource + "/problems/seeds/seed000-spheres.json",
+                dir.path() / "bank" / "spheres.json");
+  testing::RunResult r =
+      testing::run_raygrade("solutions '" + (dir.path() / "bank").string() + "' --out '" +
+                                (dir.path() / "out").string() + "' --format md",
+                            dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::string readme = testing::read_text(dir.path() / "out" / "README.md");
+  EXPECT_EQ(readme.rfind("<!-- Generated by raygrade with `raygrade solutions bank --out out`", 0),
+            0u)
+      << readme.substr(0, 200);
+  EXPECT_EQ(readme.find(dir.path().string()), std::string::npos);
+}
 
 TEST_F(SolutionsFolder, WritesChecksAndRemovesOnlyGeneratedFiles) {
   Bank bank = load_bank({kSource + "/problems/seeds/seed000-spheres.json"});

@@ -3,6 +3,7 @@
 #include "check/check.h"
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -64,15 +65,45 @@ class BankChecker {
     }
     NumberLiterals literals = scan_number_literals(file->text);
     for (const auto& item : items) {
+      auto start = std::chrono::steady_clock::now();
       report.problems.push_back(check_item(item, literals, conventions));
+      report.problems.back().seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
   }
 
   void check_solutions(CheckReport& report) {
-    if (options_.solutions_dir.empty()) return;
+    std::string dir = options_.solutions_dir;
     std::error_code ec;
-    if (!std::filesystem::is_directory(options_.solutions_dir, ec)) {
-      Diagnostic d{options_.solutions_dir,
+    if (dir.empty() && !options_.solutions_search.empty()) {
+      for (const auto& candidate : options_.solutions_search) {
+        if (std::filesystem::is_directory(candidate, ec)) {
+          dir = candidate;
+          break;
+        }
+      }
+      if (dir.empty()) {
+        report.general.push_back(
+            Diagnostic{options_.solutions_search.front(), "", 0, 0, Severity::kWarning,
+                       fmt::format("no solutions folder: looked in {}; cannot check that every "
+                                   "problem has a worked solution (name one with --solutions)",
+                                   fmt::join(options_.solutions_search, ", ")),
+                       "no-solutions-folder"});
+        return;
+      }
+      report.general.push_back(
+          Diagnostic{dir, "", 0, 0, Severity::kNote,
+                     fmt::format("worked solutions read from {} (looked in {})", dir,
+                                 fmt::join(options_.solutions_search.begin(),
+                                           std::find(options_.solutions_search.begin(),
+                                                     options_.solutions_search.end(), dir) +
+                                               1,
+                                           ", ")),
+                     "solutions-folder"});
+    }
+    if (dir.empty()) return;
+    if (!std::filesystem::is_directory(dir, ec)) {
+      Diagnostic d{dir,
                    "",
                    0,
                    0,
@@ -82,15 +113,15 @@ class BankChecker {
       report.general.push_back(std::move(d));
       return;
     }
-    std::set<std::string> stems = solution_stems(options_.solutions_dir);
+    std::set<std::string> stems = solution_stems(dir);
     for (auto& r : report.problems) {
       if (r.id.empty() || !r.solved) continue;
       std::string stem = safe_file_name(r.id);
       if (stems.count(stem)) continue;
-      r.diagnostics.push_back(at(r, "/id", Severity::kError,
-                                 fmt::format("no worked solution: {} holds no file named {}.*",
-                                             options_.solutions_dir, stem),
-                                 "no-solution"));
+      r.diagnostics.push_back(
+          at(r, "/id", Severity::kError,
+             fmt::format("no worked solution: {} holds no file named {}.*", dir, stem),
+             "no-solution"));
     }
   }
 
@@ -222,10 +253,42 @@ std::vector<Diagnostic> CheckReport::diagnostics() const {
   return out;
 }
 
+std::vector<std::string> solution_folder_candidates(const std::vector<std::string>& paths) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> out;
+  auto add = [&](const fs::path& folder) {
+    std::string s = (folder / "solutions").lexically_normal().string();
+    if (std::find(out.begin(), out.end(), s) == out.end()) out.push_back(s);
+  };
+  for (const auto& p : paths) {
+    fs::path path = fs::path(p).lexically_normal();
+    if (!path.has_filename()) path = path.parent_path();  // "A/" is the folder A
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) add(path);
+    add(path.parent_path());
+  }
+  add(fs::path());
+  return out;
+}
+
 CheckReport check_bank(const std::vector<std::string>& paths, const CheckOptions& options) {
   CheckReport report;
   std::vector<Diagnostic> missing;
   report.files = list_bank_files(paths, missing);
+  // Worked solutions in JSON beside the problems (`check DIR` after `generate --out DIR
+  // --solution-format json`) are not problems.
+  std::vector<std::string> solution_folders = options.solutions_search;
+  if (!options.solutions_dir.empty()) solution_folders = {options.solutions_dir};
+  for (const auto& dir : solution_folders) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) continue;
+    std::string prefix = (fs::path(dir) / "").lexically_normal().string();
+    std::erase_if(report.files, [&](const std::string& f) {
+      return fs::path(f).lexically_normal().string().rfind(prefix, 0) == 0;
+    });
+    break;
+  }
   for (auto& d : missing) {
     report.unreadable = true;
     report.problems.push_back(file_result(d.file, d));

@@ -10,8 +10,12 @@
 namespace raygrade {
 
 struct CheckOptions {
-  // The folder of worked solutions; empty to skip the check that every problem has one.
+  // The folder of worked solutions; empty to skip the check that every problem has one
+  // (unless `solutions_search` names places to look).
   std::string solutions_dir;
+  // When `solutions_dir` is empty: folders that may hold the worked solutions, the first that
+  // exists is used and a note says which (see solution_folder_candidates).
+  std::vector<std::string> solutions_search;
   // When false, a missing solutions folder is a warning (a bank without solutions yet);
   // when true (the folder was named explicitly) it is an error.
   bool solutions_required = false;
@@ -29,6 +33,7 @@ struct ProblemResult {
   int line = 0;
   int column = 0;
   bool solved = false;  // read and solved: the other checks ran
+  double seconds = 0;   // the time its checks took (JUnit's `time`)
   std::vector<Diagnostic> diagnostics;
 
   int count(Severity s) const;
@@ -48,6 +53,12 @@ struct CheckReport {
 
 // Checks every problem of the files and folders `paths` (as load_bank reads them).
 CheckReport check_bank(const std::vector<std::string>& paths, const CheckOptions& options);
+
+// Where the worked solutions of a bank may be, in order: for each path given, the folder
+// `solutions` inside it (a folder) and beside it (a folder, or the folder holding a file); then
+// `solutions` in the working folder. `raygrade generate --out DIR` writes DIR/problems and
+// DIR/solutions, so both `check DIR` and `check DIR/problems` find them.
+std::vector<std::string> solution_folder_candidates(const std::vector<std::string>& paths);
 
 // Every diagnostic code the check can report, with a one-line meaning, for docs and tests.
 struct DiagnosticCode {

@@ -41,6 +41,8 @@ const std::vector<DiagnosticCode>& check_codes() {
       {"no-solutions-folder",
        "the solutions folder does not exist (a warning by default, an error when named with "
        "--solutions)"},
+      {"solutions-folder",
+       "a note: the solutions folder the check found, and the places it looked in first"},
       // Self-tests.
       {"self-test", "a sample answer gets a different score or mistake than its test states"},
       // Assignments.

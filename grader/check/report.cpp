@@ -19,6 +19,13 @@ int failed_problems(const CheckReport& r) {
   return n;
 }
 
+// A problem whose file could not be read at all: a JUnit error rather than a failure, in
+// its suite's counts and in the root's alike.
+bool unreadable(const ProblemResult& p) {
+  return p.count(Severity::kError) > 0 && !p.diagnostics.empty() &&
+         (p.diagnostics.front().code == "unreadable" || p.diagnostics.front().code == "limit");
+}
+
 std::string plural(int n, const char* one, const char* many) {
   return fmt::format("{} {}", n, n == 1 ? one : many);
 }
@@ -90,25 +97,30 @@ std::string check_report_junit(const CheckReport& report) {
     order.insert(order.begin(), p.file);
     by_file[p.file].push_back(&p);
   }
-  int failed = failed_problems(report) + static_cast<int>(bank_level.size());
-  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out += fmt::format("<testsuites name=\"raygrade check\" tests=\"{}\" failures=\"{}\">\n",
-                     report.problems.size() + bank_level.size(), failed);
+  // Each suite is rendered first, so that the root can carry the sums of its suites' counts.
+  std::string suites;
+  int total_failures = 0, total_errors = 0;
+  double total_seconds = 0;
   for (const auto& file : order) {
     const auto& list = by_file[file];
     int suite_failures = 0, suite_errors = 0;
+    double suite_seconds = 0;
     for (const auto* p : list) {
+      suite_seconds += p->seconds;
       if (!p->count(Severity::kError)) continue;
-      bool unreadable = !p->diagnostics.empty() && (p->diagnostics.front().code == "unreadable" ||
-                                                    p->diagnostics.front().code == "limit");
-      (unreadable ? suite_errors : suite_failures)++;
+      (unreadable(*p) ? suite_errors : suite_failures)++;
     }
-    out += fmt::format(
-        "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"{}\" skipped=\"0\">\n",
-        xml_escape(file), list.size(), suite_failures, suite_errors);
+    total_failures += suite_failures;
+    total_errors += suite_errors;
+    total_seconds += suite_seconds;
+    suites += fmt::format(
+        "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"{}\" skipped=\"0\" "
+        "time=\"{:.6f}\">\n",
+        xml_escape(file), list.size(), suite_failures, suite_errors, suite_seconds);
     for (const auto* p : list) {
-      out += fmt::format("    <testcase name=\"{}\" classname=\"{}\" file=\"{}\"",
-                         xml_escape(p->name), xml_escape(file), xml_escape(file));
+      suites +=
+          fmt::format("    <testcase name=\"{}\" classname=\"{}\" file=\"{}\" time=\"{:.6f}\"",
+                      xml_escape(p->name), xml_escape(file), xml_escape(file), p->seconds);
       std::string errors, warnings;
       const Diagnostic* first = nullptr;
       for (const auto& d : p->diagnostics) {
@@ -116,24 +128,29 @@ std::string check_report_junit(const CheckReport& report) {
         if (!first && d.severity == Severity::kError) first = &d;
       }
       if (!first && warnings.empty()) {
-        out += "/>\n";
+        suites += "/>\n";
         continue;
       }
-      out += ">\n";
+      suites += ">\n";
       if (first) {
-        const char* element =
-            first->code == "unreadable" || first->code == "limit" ? "error" : "failure";
-        out += fmt::format("      <{} message=\"{}\" type=\"{}\">{}</{}>\n", element,
-                           xml_escape(first->message), xml_escape(first->code), xml_escape(errors),
-                           element);
+        const char* element = unreadable(*p) ? "error" : "failure";
+        suites += fmt::format("      <{} message=\"{}\" type=\"{}\">{}</{}>\n", element,
+                              xml_escape(first->message), xml_escape(first->code),
+                              xml_escape(errors), element);
       }
       if (!warnings.empty()) {
-        out += fmt::format("      <system-out>{}</system-out>\n", xml_escape(warnings));
+        suites += fmt::format("      <system-out>{}</system-out>\n", xml_escape(warnings));
       }
-      out += "    </testcase>\n";
+      suites += "    </testcase>\n";
     }
-    out += "  </testsuite>\n";
+    suites += "  </testsuite>\n";
   }
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += fmt::format(
+      "<testsuites name=\"raygrade check\" tests=\"{}\" failures=\"{}\" errors=\"{}\" "
+      "time=\"{:.6f}\">\n",
+      report.problems.size() + bank_level.size(), total_failures, total_errors, total_seconds);
+  out += suites;
   out += "</testsuites>\n";
   return out;
 }

@@ -17,7 +17,7 @@ namespace {
 struct CheckCliOptions {
   std::vector<std::string> paths;
   std::string format = "text";
-  std::string solutions = "solutions";
+  std::string solutions;
   bool solutions_given = false;
   bool no_solutions = false;
   bool no_conditioning = false;
@@ -26,7 +26,13 @@ struct CheckCliOptions {
 
 int run_check(const CheckCliOptions& o) {
   CheckOptions options;
-  if (!o.no_solutions) options.solutions_dir = o.solutions;
+  if (o.no_solutions) {
+    // neither solutions_dir nor solutions_search: no check
+  } else if (o.solutions_given) {
+    options.solutions_dir = o.solutions;
+  } else {
+    options.solutions_search = solution_folder_candidates(o.paths);
+  }
   options.solutions_required = o.solutions_given;
   options.conditioning = !o.no_conditioning;
   // One assignment file: the assignment and a sample of its variants; otherwise a bank.
@@ -53,8 +59,10 @@ Runner setup_check(CLI::App& sub) {
   sub.add_option("paths", o->paths, "problem files or folders, or one assignment file")->required();
   sub.add_option("--format", o->format, "text (default), json or junit")
       ->check(CLI::IsMember({"text", "json", "junit"}));
-  auto* solutions = sub.add_option("--solutions", o->solutions,
-                                   "the folder of worked solutions (default: solutions)");
+  auto* solutions =
+      sub.add_option("--solutions", o->solutions,
+                     "the folder of worked solutions (default: the first of PATH/solutions, "
+                     "solutions beside PATH, and ./solutions that exists)");
   sub.add_flag("--no-solutions", o->no_solutions, "do not check that worked solutions exist");
   sub.add_flag("--no-conditioning", o->no_conditioning,
                "skip the conditioning check (perturbing every printed input)");

@@ -25,6 +25,8 @@ struct GenerateCliOptions {
 };
 
 // The command that regenerates the output, quoted in every generated solution's first line.
+// The folder is named FOLDER rather than the path given, so that the same seed written to two
+// folders gives the same bytes and no file tells where it was written.
 std::string command_line(const GenerateCliOptions& o) {
   std::string c = fmt::format("raygrade generate --seed {} -n {}", o.seed, o.count);
   if (!o.kinds.empty()) c += fmt::format(" --kind {}", fmt::join(o.kinds, ","));
@@ -32,7 +34,7 @@ std::string command_line(const GenerateCliOptions& o) {
   if (o.formats != std::vector<std::string>{"md"}) {
     c += fmt::format(" --solution-format {}", fmt::join(o.formats, ","));
   }
-  return c + " --out " + o.out;
+  return c + " --out FOLDER";
 }
 
 int write_bank(const GenerateCliOptions& o, const std::vector<GeneratedProblem>& generated) {

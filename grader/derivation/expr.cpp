@@ -1,9 +1,11 @@
 // Building, evaluating and rendering formula trees.
 #include "derivation/expr.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <numbers>
 
 #include "core/error.h"
 
@@ -78,6 +80,7 @@ E cross_written_out(const E& a, const E& b) {
 }
 E tuple(const E& x, const E& y, const E& z) { return wrap(make(Op::kTuple, {x, y, z})); }
 E sqrt(const E& a) { return wrap(make(Op::kSqrt, {a})); }
+E arccos_degrees(const E& a) { return wrap(make(Op::kArccosDegrees, {a})); }
 E square(const E& a) { return wrap(make(Op::kSquare, {a})); }
 E abs(const E& a) { return wrap(make(Op::kAbs, {a})); }
 E norm(const E& a) { return wrap(make(Op::kNorm, {a})); }
@@ -145,6 +148,8 @@ Value evaluate(const E& e, const Env& env) {
       return scalar(a) * scalar(a);
     }
     case Op::kAbs: return std::abs(scalar(arg(0)));
+    case Op::kArccosDegrees:
+      return std::acos(std::clamp(scalar(arg(0)), -1.0, 1.0)) * (180 / std::numbers::pi);
     case Op::kNorm: return length(vector(arg(0)));
     case Op::kMin:
     case Op::kMax: {
@@ -186,12 +191,12 @@ int precedence(const ExprNode& n, const RenderOptions& o) {
     case Op::kCross: return 2;
     case Op::kNeg: return 3;
     case Op::kSquare: return 4;
-    case Op::kNumber: return n.number < 0 ? 3 : 5;
+    case Op::kNumber: return prints_negative(n.number, o.numbers) ? 3 : 5;
     case Op::kSymbol:
       if (o.substitute) {
         auto it = o.substitute->find(n.name);
         if (it != o.substitute->end()) {
-          return it->second.is_scalar() && it->second.scalar < 0 ? 3 : 5;
+          return it->second.is_scalar() && prints_negative(it->second.scalar, o.numbers) ? 3 : 5;
         }
       }
       return n.args.empty() ? 5 : precedence(n.args[0].node(), o);
@@ -223,8 +228,10 @@ std::string render(const E& e, const Dialect& d, const RenderOptions& o, bool le
 std::string render_number(double v, const Dialect& d, const RenderOptions& o, bool leading) {
   std::string s = format_number(v, o.numbers);
   if (std::isnan(v)) return d.word(s);
+  // A negative value that prints as 0 (−1.4e-14) needs no parentheses: "1 − 0", not "1 − (0)".
+  bool minus = prints_negative(v, o.numbers);
   s = d.number(s);
-  return v < 0 && !leading ? d.paren(s) : s;
+  return minus && !leading ? d.paren(s) : s;
 }
 
 std::string render_value(const Value& v, const Dialect& d, const RenderOptions& o, bool leading) {
@@ -301,6 +308,7 @@ std::string render(const E& e, const Dialect& d, const RenderOptions& o, bool le
     case Op::kSqrt: return d.sqrt(render(n.args[0], d, o));
     case Op::kSquare: return d.square(child(n.args[0], 5, d, o, true));
     case Op::kAbs: return d.abs(render(n.args[0], d, o));
+    case Op::kArccosDegrees: return d.call("arccos", render(n.args[0], d, o));
     case Op::kNorm: return d.norm(render(n.args[0], d, o));
     case Op::kMin:
     case Op::kMax: {
@@ -507,7 +515,10 @@ E exact_formula(const ExactForm& x) {
 std::string render_result(const Value& v, const Dialect& d, const RenderOptions& o) {
   if (o.exact && v.is_scalar()) {
     if (auto x = exact_form(v.scalar)) {
-      return render(exact_formula(*x), d, o) + d.op("≈") + render_number(v.scalar, d, o, true);
+      // Never "≈" between equal strings: the exact form is shown only where it says more.
+      std::string exact = render(exact_formula(*x), d, o);
+      std::string number = render_number(v.scalar, d, o, true);
+      return exact == number ? number : exact + d.op("≈") + number;
     }
   }
   return render_value(v, d, o, true);

@@ -32,8 +32,9 @@ enum class Op {
   kNorm,    // ‖v‖ of a vector
   kMin,
   kMax,
-  kCompare,  // a relation shown as "a < b", "a ≥ b"; evaluates to a verdict
-  kTuple,    // a vector from three scalar formulas: ⟨a, b, c⟩
+  kCompare,        // a relation shown as "a < b", "a ≥ b"; evaluates to a verdict
+  kTuple,          // a vector from three scalar formulas: ⟨a, b, c⟩
+  kArccosDegrees,  // arccos(x) in degrees, x clamped to [−1, 1] (rounding may push it past)
 };
 
 struct ExprNode;
@@ -84,6 +85,8 @@ E cross(const E& a, const E& b);
 E cross_written_out(const E& a, const E& b);
 E tuple(const E& x, const E& y, const E& z);
 E sqrt(const E& a);
+// The angle whose cosine is `a`, in degrees: arccos(a).
+E arccos_degrees(const E& a);
 E square(const E& a);
 E abs(const E& a);
 E norm(const E& a);

@@ -49,6 +49,10 @@ std::string format_number(double v, const NumberFormat& f) {
   return s;
 }
 
+bool prints_negative(double v, const NumberFormat& f) {
+  return v < 0 && (std::isinf(v) || format_number(v, f).front() == '-');
+}
+
 std::string format_vector(const Vec3d& v, const NumberFormat& f) {
   return fmt::format("({}, {}, {})", format_number(v.x, f), format_number(v.y, f),
                      format_number(v.z, f));
@@ -113,13 +117,22 @@ ExactForm reduced(ExactForm e) {
 
 std::optional<ExactForm> exact_form(double v) {
   if (!std::isfinite(v) || std::abs(v) > kMaxP) return std::nullopt;
+  // Values that print as an integer (rounding noise about one: 1 − 2e-16, or about zero:
+  // 125 − √125², which is −1.4e-14) are that integer, written as such; without this a value
+  // near zero would match the fraction 0/2 and print as "0 ≈ 0".
+  if (std::abs(v - std::round(v)) <= kIntegerSnap * std::max(1.0, std::abs(v))) {
+    return std::nullopt;
+  }
   double scaled = v * kShortDecimalScale;
   if (std::abs(scaled - std::round(scaled)) <= kExactSnap * std::max(1.0, std::abs(scaled))) {
     return std::nullopt;  // an integer or a short decimal: written as it is
   }
   long long n = 0;
   for (long long q = 2; q <= kMaxFractionDenominator; ++q) {
-    if (near_integer(q * v, q * v, n)) return reduced(ExactForm{n, 0, 1, q});
+    if (near_integer(q * v, q * v, n)) {
+      if (n == 0) return std::nullopt;  // zero is no fraction; v is rounding noise about it
+      return reduced(ExactForm{n, 0, 1, q});
+    }
   }
   for (long long q : kRootDenominators) {
     for (long long s = 1; s <= kMaxRootCoefficient; ++s) {

@@ -40,6 +40,9 @@ struct ExactForm {
 // |s| <= 12 for roots; |p| <= 10000.
 std::optional<ExactForm> exact_form(double v);
 
+// Whether `v` prints with a minus sign: false for −1.4e-14, which prints as 0.
+bool prints_negative(double v, const NumberFormat& f = {});
+
 // "9 − √3", "(1 + √5)/2", "1/6", "−2√2".
 std::string exact_text(const ExactForm& e);
 

@@ -59,7 +59,7 @@ class RayTreeGrader final : public KindGrader {
 
   void grade(const AnswerReader& a, GradeResult& out) const override {
     if (task_.tree().ask == Ask::kHit) return grade_hit(a, out);
-    a.allow_only({"nodes", "all_terms", "ambient_only", "rays", "intensity"});
+    a.allow_only({"nodes", "all_terms", "ambient_only", "rays", "effects", "intensity"});
     std::vector<StudentNode> nodes = read_nodes(a);
     // Reference hit node index -> the student's node standing for it.
     std::map<int, const StudentNode*> match;
@@ -88,7 +88,7 @@ class RayTreeGrader final : public KindGrader {
   std::string object_name(int i) const { return scene().objects[i].name; }
 
   void grade_hit(const AnswerReader& a, GradeResult& out) const {
-    a.allow_only({"object", "hits", "rays"});
+    a.allow_only({"object", "hits", "rays", "effects"});
     const TreeNode& root = tree().nodes.front();
     std::vector<std::string> fb;
     double credit = 0;

@@ -59,8 +59,10 @@ std::vector<SolutionPart> RefractTask::derive(std::string_view /*method*/,
   d.step("cos_i", "cos_i", -dot(d.sym("d_hat"), d.sym("n_hat")), "cos θi");
   Value k = d.step("k", "k", 1 - square(d.sym("eta")) * (1 - square(d.sym("cos_i"))),
                    "1 − η²·sin²θi = cos²θt");
-  Refraction r = refract(normalized(d_), facing_normal(), n1_, n2_);
-  double theta_i = degrees(std::acos(std::clamp(r.cos_i, -1.0, 1.0)));
+  // The angle of incidence, stated in the conclusion, is computed as a step of its own.
+  double theta_i = d.step("theta_i", "theta_i", arccos_degrees(d.sym("cos_i")),
+                          "θi = arccos(cos θi), in degrees")
+                       .scalar;
   if (auto c = critical_angle_degrees(n1_, n2_)) {
     d.note(fmt::format("Going into a lower index, the critical angle is asin(n₂/n₁) = {}°.",
                        format_number(*c)));
@@ -69,9 +71,13 @@ std::vector<SolutionPart> RefractTask::derive(std::string_view /*method*/,
     d.note("k < 0: sin θt would exceed 1.");
     d.step("r", "r", d.sym("d_hat") + 2 * d.sym("cos_i") * d.sym("n_hat"),
            "all the light is reflected: r = d̂ − 2(d̂·n̂)n̂");
-    d.conclude(fmt::format("Total internal reflection: at θi = {}° there is no refracted ray.",
-                           format_number(theta_i)));
+    d.conclude(Sentence("Total internal reflection: at θi = ")
+                   .value(theta_i)
+                   .text("° there is no refracted ray."));
   } else {
+    double theta_t = d.step("theta_t", "theta_t", arccos_degrees(sqrt(d.sym("k"))),
+                            "θt = arccos(√k), since k = cos²θt; in degrees")
+                         .scalar;
     Value t = d.step("t", "t",
                      d.sym("eta") * d.sym("d_hat") +
                          (d.sym("eta") * d.sym("cos_i") - sqrt(d.sym("k"))) * d.sym("n_hat"),
@@ -81,7 +87,7 @@ std::vector<SolutionPart> RefractTask::derive(std::string_view /*method*/,
                    .text(" (θi = ")
                    .value(theta_i)
                    .text("°, θt = ")
-                   .value(degrees(std::acos(std::sqrt(k.scalar))))
+                   .value(theta_t)
                    .text("°)."));
   }
   return {SolutionPart{"", std::move(d).finish()}};

@@ -26,14 +26,17 @@ figcaption{color:var(--muted);font-size:.85rem;margin-top:.3rem}
 .given{background:#f3f6fa;border-radius:8px;padding:.6rem 1rem;margin:.6rem 0 1rem}
 .given h4{margin:0 0 .3rem;font-size:.8rem;text-transform:uppercase;letter-spacing:.06em;color:var(--muted)}
 .given ul{margin:0;padding:0;list-style:none;display:flex;flex-wrap:wrap;gap:.25rem 1.6rem}
-.given li{white-space:nowrap}
+.given li{white-space:nowrap;max-width:100%}
+.given li .note{white-space:normal}
 .note{color:var(--muted);font-size:.9rem}
 ol.steps{list-style:none;margin:0;padding:0;counter-reset:step}
 ol.steps li{counter-increment:step;border-left:3px solid var(--line);padding:.35rem 0 .35rem 1rem;margin:.5rem 0}
 .step-head{margin:0;font-size:.9rem}
 .step-head::before{content:counter(step) ". ";color:var(--muted)}
 code.name{background:#eef2f6;border-radius:4px;padding:.05rem .35rem;font-size:.85rem;color:var(--accent)}
-math[display=block]{margin:.35rem 0;font-size:1.08rem;overflow-x:auto;overflow-y:hidden}
+math[display=block]{margin:.35rem 0;font-size:1.08rem}
+.chain{display:flex;flex-wrap:wrap;align-items:baseline;column-gap:.25em;margin:.35rem 0;font-size:1.08rem}
+.chain math{math-style:normal}
 .conclusion{border-left:4px solid var(--hit);background:#fbf3f2;border-radius:0 8px 8px 0;padding:.6rem 1rem;margin:1rem 0 .4rem}
 .conclusion p{margin:.2rem 0}
 )";
@@ -56,16 +59,70 @@ std::string math(const std::string& inner, bool block) {
          "</mrow></math>";
 }
 
+// The top-level elements of a MathML row, each from its opening tag to its matching end.
+std::vector<std::string> row_elements(const std::string& row) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  int depth = 0;
+  for (std::size_t i = 0; i < row.size(); ++i) {
+    if (row[i] != '<') continue;
+    bool closing = i + 1 < row.size() && row[i + 1] == '/';
+    std::size_t end = row.find('>', i);
+    if (end == std::string::npos) break;
+    bool self_closing = row[end - 1] == '/';
+    if (!closing && !self_closing) ++depth;
+    if (closing) --depth;
+    i = end;
+    if (depth == 0) {
+      out.push_back(row.substr(start, end + 1 - start));
+      start = end + 1;
+    }
+  }
+  return out;
+}
+
+// A formula's MathML cut before each + and − between its terms: "= a", "+ b", "− c". Signs
+// inside parentheses, fractions or roots are nested deeper and stay; a sign that follows
+// another operator is a sign of the term (a unary minus), not a place to cut.
+std::vector<std::string> terms(const std::string& row) {
+  std::vector<std::string> out;
+  bool after_operator = true;
+  for (const auto& e : row_elements(row)) {
+    bool is_operator = e.rfind("<mo>", 0) == 0;
+    bool cut = (e == "<mo>+</mo>" || e == "<mo>−</mo>") && !after_operator;
+    if (out.empty() || cut) out.emplace_back();
+    out.back() += e;
+    after_operator = is_operator;
+  }
+  return out;
+}
+
+// A step as a chain "symbol = formula = numbers = value", one link per "= ..." and per term of
+// a sum, each its own <math>, so that a chain too long for the page breaks before an "=", a
+// "+" or a "−" (the browser wraps the links like words; MathML Core, as browsers implement
+// it, never breaks a formula by itself).
 std::string step_math(const StepView& v, const NumberFormat& numbers) {
   const Step& s = *v.step;
   RenderOptions plain{nullptr, numbers, false};
   RenderOptions subst{&v.before, numbers, false};
   RenderOptions result{nullptr, numbers, true};
+  std::string out = "<div class=\"chain\">";
+  // A link that opens with =, + or − keeps the spacing of a binary operator (first in its
+  // <math>, an operator would otherwise be spaced as a prefix sign: "+t").
+  auto link = [&out](const std::string& t) {
+    bool sign = t.rfind("<mo>", 0) == 0;
+    out += "<math displaystyle=\"true\"><mrow>" + (sign ? "<mo form=\"infix\">" + t.substr(4) : t) +
+           "</mrow></math>";
+  };
+  auto links = [&link](const std::string& row) {
+    for (const auto& t : terms(row)) link(t);
+  };
   const std::string eq = "<mo>=</mo>";
-  std::string m = to_mathml(s.symbol, plain) + eq;
-  if (v.show_formula) m += to_mathml(s.formula, plain) + eq;
-  if (v.show_substituted) m += to_mathml(s.formula, subst) + eq;
-  return math(m + value_mathml(s.value, result), true);
+  links(to_mathml(s.symbol, plain));
+  if (v.show_formula) links(eq + to_mathml(s.formula, plain));
+  if (v.show_substituted) links(eq + to_mathml(s.formula, subst));
+  link(eq + value_mathml(s.value, result));  // the value stays whole: "9 − √3 ≈ 7.268"
+  return out + "</div>";
 }
 
 void render_part(std::string& out, const SolutionPart& part, const NumberFormat& numbers,

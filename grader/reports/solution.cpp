@@ -55,8 +55,11 @@ std::vector<StepGroup> step_groups(const Derivation& d, const NumberFormat& numb
       std::string formula = squeeze(to_text(s.formula, plain));
       std::string with_numbers = squeeze(to_text(s.formula, subst));
       std::string value = squeeze(value_text(s.value, plain));
+      // The value as shown, with its exact form: "1/6≈0.1667" repeats the numbers "1/6".
+      std::string shown = squeeze(value_text(s.value, RenderOptions{nullptr, numbers, true}));
       v.show_formula = formula != symbol;
-      v.show_substituted = with_numbers != formula && with_numbers != value;
+      v.show_substituted = with_numbers != formula && with_numbers != value &&
+                           shown.rfind(with_numbers + "≈", 0) != 0;
       // The value is always shown: a formula that is already the value is left out.
       if (v.show_formula && !v.show_substituted && formula == value) v.show_formula = false;
     }
@@ -80,7 +83,8 @@ std::string sentence_text(const Sentence& s, const NumberFormat& numbers) {
     switch (p.value.kind) {
       case Value::Kind::kNone: out += p.text; break;
       case Value::Kind::kScalar:
-        if (auto x = exact_form(p.value.scalar)) {
+        if (auto x = exact_form(p.value.scalar);
+            x && exact_text(*x) != text_number(p.value.scalar, numbers)) {
           out += exact_text(*x) + " ≈ " + text_number(p.value.scalar, numbers);
         } else {
           out += text_number(p.value.scalar, numbers);

@@ -100,7 +100,17 @@ FolderSync compare(const std::string& folder, const std::vector<GeneratedFile>& 
 }  // namespace
 
 std::string solutions_command(const std::vector<std::string>& paths, const std::string& folder) {
-  return fmt::format("raygrade solutions {} --out {}", fmt::join(paths, " "), folder);
+  // Absolute paths are written relative to the working folder, so that no generated file
+  // names where on this machine it was written (and the command still runs from there).
+  auto shown = [](const std::string& p) {
+    std::error_code ec;
+    fs::path cwd = fs::current_path(ec);
+    if (ec || !fs::path(p).is_absolute()) return p;
+    return fs::path(p).lexically_proximate(cwd).string();
+  };
+  std::vector<std::string> relative;
+  for (const auto& p : paths) relative.push_back(shown(p));
+  return fmt::format("raygrade solutions {} --out {}", fmt::join(relative, " "), shown(folder));
 }
 
 std::vector<GeneratedFile> solution_files(const std::vector<Problem>& problems,

@@ -18,7 +18,8 @@ struct GeneratedFile {
   std::string bytes;
 };
 
-// The command that regenerates a folder: "raygrade solutions problems --out solutions".
+// The command that regenerates a folder: "raygrade solutions problems --out solutions", with
+// absolute paths made relative to the working folder.
 std::string solutions_command(const std::vector<std::string>& paths, const std::string& folder);
 
 // The files of the folder for a bank: <id>.<ext> for each problem and format, and README.md

@@ -84,7 +84,20 @@ std::string direction_name(const Vec3d& v) {
     if (length(v - e) < 1e-9) return std::string("+") + names[i];
     if (length(v + e) < 1e-9) return std::string("−") + names[i];
   }
-  return format_vector(v, NumberFormat{3, -1});
+  // A vector as the worked solutions print points: (0.333, −0.667, 0.667), real minus signs.
+  std::string out;
+  for (char c : format_vector(v, NumberFormat{3, -1})) {
+    out += c == '-' ? std::string("−") : std::string(1, c);
+  }
+  return out;
+}
+
+// A direction's name with its value: "the surface normal (+y)", "the ray's direction
+// (0.707, 0.707, 0)": a vector brings its own parentheses.
+std::string named_direction(const std::string& name, const Vec3d& v) {
+  std::string value = direction_name(v);
+  if (name.empty()) return value;
+  return value.front() == '(' ? name + " " + value : name + " (" + value + ")";
 }
 
 View choose_view(const Sketch& f, const std::vector<Vec3d>& pts,
@@ -209,24 +222,34 @@ class Canvas {
     body_ += fmt::format("<circle class=\"mark-{}\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4\"/>\n", cls,
                          q.x, q.y);
   }
-  // A label near a point (in pixels), moved down while it would overlap an earlier one.
+  // A label near a point (in pixels), moved down below every earlier label it would overlap.
+  // Its box is measured generously: 7 px per byte of its UTF-8 text (12 px sans-serif runs
+  // 3 to 8 px a character, and a character not in ASCII takes two bytes or more), and kRow
+  // high (Chromium's box of a 12 px line is 14.4 px). Each move puts the label's row below
+  // the row of the label it clashed with, and rows only move down, so the loop ends after at
+  // most one move per earlier label, with no two boxes overlapping.
   void label(P2 at_px, const std::string& text, const char* cls) {
     if (text.empty()) return;
-    double w = 7.0 * static_cast<double>(text.size()), h = 14;
+    constexpr double kRow = 15;
+    double w = 7.0 * static_cast<double>(text.size());
     double x = std::min(at_px.x + 7, std::max(2.0, width() - w - 2));
-    double y = std::max(h, at_px.y - 7);
-    for (int tries = 0; tries < 12; ++tries) {
-      bool clash = false;
+    double y = std::max(kRow, at_px.y - 7);
+    for (bool clash = true; clash;) {
+      clash = false;
       for (const auto& [bx, by, bw] : placed_) {
-        if (x < bx + bw && bx < x + w && std::abs(y - by) < h) clash = true;
+        if (x < bx + bw && bx < x + w && y > by - kRow && y < by + kRow) {
+          y = by + kRow;
+          clash = true;
+        }
       }
-      if (!clash) break;
-      y += h;
     }
     placed_.push_back({x, y, w});
+    bottom_ = std::max(bottom_, y + 4);  // the baseline, and the descenders below it
     labels_ += fmt::format("<text class=\"label-{}\" x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n", cls, x,
                            y, html_escape(text));
   }
+  // How far down the labels reach, in pixels (they may reach below the drawing).
+  double labels_bottom() const { return bottom_; }
   std::string body() const { return body_ + labels_; }
 
  private:
@@ -234,6 +257,7 @@ class Canvas {
   double scale_;
   std::string body_, labels_;
   std::vector<std::array<double, 3>> placed_;
+  double bottom_ = 0;
 };
 
 constexpr const char* kStyle =
@@ -381,19 +405,17 @@ SvgFigure render_svg(const Sketch& f, const std::string& title) {
 
   SvgFigure out;
   int width = static_cast<int>(std::ceil(canvas.width()));
-  int height = static_cast<int>(std::ceil(canvas.height()));
+  int height = static_cast<int>(std::ceil(std::max(canvas.height(), canvas.labels_bottom())));
   out.svg = fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"sketch\" width=\"{0}\" height=\"{1}\" "
       "viewBox=\"0 0 {0} {1}\" role=\"img\" aria-label=\"{2}\">\n<title>{2}</title>\n{3}\n"
       "<rect x=\"0.5\" y=\"0.5\" width=\"{4}\" height=\"{5}\" fill=\"none\" stroke=\"#ddd\"/>\n{6}"
       "</svg>",
       width, height, html_escape(title), kStyle, width - 1, height - 1, canvas.body());
-  std::string across = f.across_name.empty() ? direction_name(view.u)
-                                             : f.across_name + " (" + direction_name(view.u) + ")";
+  std::string across = named_direction(f.across_name, view.u);
   bool own_up =
       !f.up_name.empty() && length(f.up) > 0 && length(view.v - normalized(f.up)) < kTinyDirection;
-  std::string up =
-      own_up ? f.up_name + " (" + direction_name(view.v) + ")" : direction_name(view.v);
+  std::string up = named_direction(own_up ? f.up_name : "", view.v);
   out.caption = fmt::format(
       "Side view, drawn to scale: {} points right, {} points up; the page is the plane that "
       "holds both.",

@@ -274,7 +274,8 @@ class Tracer {
                                c.shadow,
                                scene_.transparent_shadows == TransparentShadows::kBlock
                                    ? "block them like opaque ones"
-                                   : "let their transparency k_t of the light through")});
+                                   : "let their transparency k_t of the light through"),
+                   c.shadow});
     }
     auto secondary = [&](const char* name, bool any, const char* none, int cast) {
       if (hit_only) {
@@ -284,7 +285,7 @@ class Tracer {
       } else if (scene_.max_depth == 1) {
         e.push_back({name, false, "max_depth 1: the tree is the primary ray alone"});
       } else {
-        e.push_back({name, true, fmt::format("{} cast", cast)});
+        e.push_back({name, true, fmt::format("{} cast", cast), cast});
       }
     };
     secondary("reflection", any_reflects, "no material reflects (every reflectivity is 0)",

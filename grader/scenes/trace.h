@@ -98,6 +98,7 @@ struct Effect {
   std::string name;  // "shading", "shadow rays", "reflection", "refraction", "intensity"
   bool simulated = false;
   std::string reason;
+  int rays = -1;  // for the kinds of ray that are cast when simulated: how many; else -1
 };
 
 struct RayTree {

@@ -92,6 +92,18 @@ nlohmann::json node_json(const RayTree& tree, const Scene& scene, const TreeNode
   return j;
 }
 
+// What the tree simulates and what it leaves out, as data:
+// [{"effect": "shadow rays", "simulated": true, "rays": 5, "why": "..."}].
+nlohmann::json effects_json(const RayTree& tree) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& e : tree.effects) {
+    nlohmann::json j = {{"effect", e.name}, {"simulated", e.simulated}, {"why", e.reason}};
+    if (e.rays >= 0) j["rays"] = e.rays;
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
 nlohmann::json tree_json(const RayTree& tree, const Scene& scene) {
   const TreeNode& root = tree.nodes.front();
   if (tree.ask == Ask::kHit) {
@@ -102,7 +114,8 @@ nlohmann::json tree_json(const RayTree& tree, const Scene& scene) {
     }
     return {{"object", root.hit ? nlohmann::json(scene.objects[root.object].name) : nullptr},
             {"hits", hits},
-            {"rays", counts_json(tree.counts)}};
+            {"rays", counts_json(tree.counts)},
+            {"effects", effects_json(tree)}};
   }
   nlohmann::json nodes = nlohmann::json::array();
   nlohmann::json all = nlohmann::json::array(), ambient_only = nlohmann::json::array();
@@ -118,7 +131,8 @@ nlohmann::json tree_json(const RayTree& tree, const Scene& scene) {
   nlohmann::json j = {{"nodes", nodes},
                       {"all_terms", all},
                       {"ambient_only", ambient_only},
-                      {"rays", counts_json(tree.counts)}};
+                      {"rays", counts_json(tree.counts)},
+                      {"effects", effects_json(tree)}};
   if (tree.ask == Ask::kIntensity) j["intensity"] = root.intensity;
   return j;
 }

@@ -8,9 +8,15 @@
 namespace raygrade {
 namespace {
 
-constexpr double kColumn = 170;  // px per leaf
-constexpr double kRow = 100;     // px per generation
-constexpr double kRadius = 18;   // of a hit node's circle
+constexpr double kMinColumn = 170;  // px per leaf, at the least
+// Text is 12 px sans-serif: 7 px per byte of UTF-8 is more than any of its characters takes
+// (Chromium lays out 6.3 px per character on average), and 20 px a line more than its box
+// (14.4 px high in DejaVu Sans, 17.9 px in the tallest sans-serif fonts Chromium was seen to
+// pick), so that no two texts of the drawing overlap.
+constexpr double kCharWidth = 7;
+constexpr double kLine = 20;
+constexpr double kRow = 110;    // px per generation
+constexpr double kRadius = 18;  // of a hit node's circle
 constexpr double kMargin = 20;
 
 struct Placed {
@@ -19,7 +25,7 @@ struct Placed {
 
 class Layout {
  public:
-  explicit Layout(const RayTree& tree) : tree_(tree) {
+  Layout(const RayTree& tree, double column) : tree_(tree), column_(column) {
     nodes_.resize(tree.nodes.size());
     shadows_.resize(tree.nodes.size());
     place(0);
@@ -34,7 +40,7 @@ class Layout {
   }
 
  private:
-  static double x_of(double leaf) { return kMargin + (leaf + 0.5) * kColumn; }
+  double x_of(double leaf) const { return kMargin + (leaf + 0.5) * column_; }
   static double y_of(int depth) { return kMargin + 30 + depth * kRow; }
 
   // Leaves left to right: the node's shadow rays, then its children; the node sits centred
@@ -53,6 +59,7 @@ class Layout {
   }
 
   const RayTree& tree_;
+  double column_;
   std::vector<Placed> nodes_;
   std::vector<std::vector<Placed>> shadows_;
   double next_leaf_ = 0;
@@ -63,6 +70,26 @@ std::string text_at(double x, double y, std::string_view s, const char* extra = 
                      extra, xml_escape(s));
 }
 
+std::string object_caption(const Scene& scene, const TreeNode& n) {
+  return fmt::format("{}, t = {}", scene.objects[n.object].name, format_number(n.t));
+}
+
+std::string terms_caption(const TreeNode& n) {
+  return fmt::format("{}", fmt::join(node_terms(n), " + "));
+}
+
+// A leaf's width: wide enough for the widest text centred on a node or a shadow ray.
+double column_width(const RayTree& tree, const Scene& scene) {
+  std::size_t widest = 0;
+  for (const auto& n : tree.nodes) {
+    if (!n.hit) continue;
+    widest = std::max(widest, object_caption(scene, n).size());
+    if (n.shaded) widest = std::max(widest, terms_caption(n).size());
+    for (const auto& s : n.lights) widest = std::max(widest, shadow_caption(scene, s).size() + 2);
+  }
+  return std::max(kMinColumn, kCharWidth * static_cast<double>(widest) + 20);
+}
+
 std::string line(const Placed& a, const Placed& b, const char* style) {
   return fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" {}/>\n", a.x,
                      a.y, b.x, b.y, style);
@@ -71,9 +98,11 @@ std::string line(const Placed& a, const Placed& b, const char* style) {
 }  // namespace
 
 std::string tree_svg(const RayTree& tree, const Scene& scene) {
-  Layout layout(tree);
-  double width = 2 * kMargin + layout.leaves() * kColumn;
-  double height = 2 * kMargin + 60 + layout.depth() * kRow;
+  double column = column_width(tree, scene);
+  Layout layout(tree, column);
+  double width = 2 * kMargin + layout.leaves() * column;
+  // Room below the deepest row for its two lines of text (kRadius + 2·kLine and descenders).
+  double height = 2 * kMargin + 80 + layout.depth() * kRow;
   std::string out = fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"ray-tree\" width=\"{0:.0f}\" "
       "height=\"{1:.0f}\" viewBox=\"0 0 {0:.0f} {1:.0f}\" font-family=\"sans-serif\" "
@@ -94,7 +123,11 @@ std::string tree_svg(const RayTree& tree, const Scene& scene) {
                          : n.kind == RayKind::kRefraction ? "T"
                                                           : "";
     if (*letter) {
-      out += text_at((from.x + to.x) / 2 - 8, (from.y + to.y) / 2, letter,
+      // Three quarters of the way down the edge: below the parent's two lines of text (its
+      // object and t, its terms, down to kRadius + 2·kLine px under its centre), above the
+      // child.
+      double at = 0.75;
+      out += text_at(from.x + at * (to.x - from.x) - 8, from.y + at * (to.y - from.y) + 4, letter,
                      " font-weight=\"bold\" fill=\"#036\"");
     }
     for (std::size_t k = 0; k < n.lights.size(); ++k) {
@@ -117,11 +150,9 @@ std::string tree_svg(const RayTree& tree, const Scene& scene) {
         fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{}\" fill=\"{}\" stroke=\"#333\"/>\n",
                     p.x, p.y, kRadius, shadowed ? "#ddd" : "#ffd");
     out += text_at(p.x, p.y + 4, n.label, " font-weight=\"bold\"");
-    out += text_at(p.x, p.y + kRadius + 14,
-                   fmt::format("{}, t = {}", scene.objects[n.object].name, format_number(n.t)));
+    out += text_at(p.x, p.y + kRadius + kLine, object_caption(scene, n));
     if (n.shaded) {
-      out += text_at(p.x, p.y + kRadius + 28, fmt::format("{}", fmt::join(node_terms(n), " + ")),
-                     " fill=\"#555\"");
+      out += text_at(p.x, p.y + kRadius + 2 * kLine, terms_caption(n), " fill=\"#555\"");
     }
     for (std::size_t k = 0; k < n.lights.size(); ++k) {
       const ShadowCheck& s = n.lights[k];
@@ -130,7 +161,7 @@ std::string tree_svg(const RayTree& tree, const Scene& scene) {
       out += fmt::format(
           "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.0f}\" height=\"22\" fill=\"#fff\" "
           "stroke=\"{}\" stroke-dasharray=\"5,4\"/>\n",
-          q.x - kColumn / 2 + 8, q.y - 11, kColumn - 16, color);
+          q.x - column / 2 + 8, q.y - 11, column - 16, color);
       out += text_at(q.x, q.y + 4, shadow_caption(scene, s),
                      fmt::format(" fill=\"{}\"", color).c_str());
     }

@@ -93,10 +93,11 @@ Derivation Triangle::derive(const Ray& ray, std::string_view /*method*/,
   double e2 =
       d.step("e_ca", "e_ca", dot(cross(A - C, Q - C), n), "edge ca: ≥ 0 means inside").scalar;
   bool inside = e0 >= 0 && e1 >= 0 && e2 >= 0;
+  Value w_a, w_b, w_c;
   if (inside) {
-    d.step("w_a", "w_a", d.sym("e_bc") / dot(n, n), "barycentric weight of a");
-    d.step("w_b", "w_b", d.sym("e_ca") / dot(n, n), "barycentric weight of b");
-    d.step("w_c", "w_c", d.sym("e_ab") / dot(n, n), "barycentric weight of c");
+    w_a = d.step("w_a", "w_a", d.sym("e_bc") / dot(n, n), "barycentric weight of a");
+    w_b = d.step("w_b", "w_b", d.sym("e_ca") / dot(n, n), "barycentric weight of b");
+    w_c = d.step("w_c", "w_c", d.sym("e_ab") / dot(n, n), "barycentric weight of c");
   }
   std::vector<std::string> outside;
   if (e0 < 0) outside.push_back("e_ab");
@@ -106,6 +107,16 @@ Derivation Triangle::derive(const Ray& ray, std::string_view /*method*/,
                               : fmt::format("the plane point q lies outside the triangle ({} < 0)",
                                             fmt::join(outside, ", "));
   conclude_candidates(d, "triangle", ray, {{t, q.vector, reason}}, false);
+  if (inside) {
+    // The weights computed above belong in the answer too: P = w_a·a + w_b·b + w_c·c.
+    d.conclude(Sentence("In barycentric weights, P = w_a·a + w_b·b + w_c·c with w_a = ")
+                   .value(w_a.scalar)
+                   .text(", w_b = ")
+                   .value(w_b.scalar)
+                   .text(", w_c = ")
+                   .value(w_c.scalar)
+                   .text("."));
+  }
   return std::move(d).finish();
 }
 
