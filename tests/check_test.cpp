@@ -255,6 +255,44 @@ TEST(Conditioning, AmplifiedAnswerIsFlagged) {
   EXPECT_EQ(d[0].path, "/ray/direction/2");
 }
 
+TEST(Conditioning, GroupsCoverEveryInputOnce) {
+  for (std::size_t n : {0u, 1u, 5u, 16u, 17u, 4000u}) {
+    auto groups = conditioning_groups(n);
+    // One group per input up to 16; never more than 16 groups, so never more than 32 solves
+    // before the halving.
+    EXPECT_EQ(groups.size(), std::min<std::size_t>(n, kConditioningGroups)) << n;
+    std::vector<int> seen(n, 0);
+    for (const auto& g : groups) {
+      EXPECT_FALSE(g.empty());
+      for (std::size_t i : g) ++seen.at(i);
+    }
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<std::ptrdiff_t>(n)) << n;
+  }
+}
+
+TEST(Conditioning, OneFlippingSphereAmongAThousandIsFound) {
+  // 1,000 spheres of radius 1.25 centred 5.25 off the ray (missed by 4), and at index 700 a
+  // unit sphere 0.996 off it: the first hit, but its radius printed as 1.00 may be 0.995,
+  // where the ray misses it. Found through the groups and their halves.
+  std::string objects;
+  for (int i = 0; i < 1000; ++i) {
+    objects += i ? ", " : "";
+    objects += i == 700 ? R"({"name": "s700", "type": "sphere", "center": [5, 0.996, 0],
+                          "radius": 1.00})"
+                        : fmt::format(R"({{"name": "s{}", "type": "sphere", "center": [{}.5, )"
+                                      R"(5.25, 0], "radius": 1.25}})",
+                                      i, i + 10);
+  }
+  Problem p = testing::problem(R"({"id": "many", "kind": "first-hit", "ray": {"origin": [0, 0, 0],
+    "direction": [1, 0, 0]}, "objects": [)" +
+                               objects + "]}");
+  auto literals = scan_number_literals(p.source_file->text);
+  auto d = check_conditioning(p, p.task->answer(), literals, false);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].code, "ill-conditioned");
+  EXPECT_EQ(d[0].path, "/objects/700/radius") << d[0].message;
+}
+
 Problem with_tests(const std::string& tests) {
   return testing::problem(R"({"id": "st", "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
     "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}, "tests": )" +

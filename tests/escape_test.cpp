@@ -12,6 +12,13 @@ TEST(Escape, HtmlTurnsMarkupIntoText) {
   EXPECT_EQ(html_escape(R"(" onload='x' & y)"), "&quot; onload=&#39;x&#39; &amp; y");
   EXPECT_EQ(html_escape("Zoë √3"), "Zoë √3");
   EXPECT_EQ(html_escape("Eve\x1b[2J\x07 \x7f\tx\n"), "Eve[2J \tx\n");
+  // C1 controls dropped; U+00A0 (no-break space, C2 A0) kept.
+  EXPECT_EQ(html_escape("a\xc2\x9b"
+                        "2J\xc2\x80"
+                        "b \xc2\xa0"
+                        "c"),
+            "a2Jb \xc2\xa0"
+            "c");
 }
 
 TEST(Escape, XmlDropsControlsAndRepairsUtf8) {
@@ -40,10 +47,33 @@ TEST(Escape, CsvNeutralisesFormulas) {
   EXPECT_EQ(csv_cell("+1"), "'+1");
   EXPECT_EQ(csv_cell("-2+3"), "'-2+3");
   EXPECT_EQ(csv_cell("@SUM(A1)"), "'@SUM(A1)");
-  EXPECT_EQ(csv_cell("\t=1"), "'\t=1");
+  // A control character first is written out, so no spreadsheet skips it to reach a formula.
+  EXPECT_EQ(csv_cell("\t=1"), "\\x09=1");
+  EXPECT_EQ(csv_cell(std::string("\0=1+1", 5)), "\\x00=1+1");
+  EXPECT_EQ(csv_cell("\n=1+1"), "\\x0A=1+1");
+  EXPECT_EQ(csv_cell("\r=1+1"), "\\x0D=1+1");
   EXPECT_EQ(csv_cell(R"x(=HYPERLINK("http://x","y"))x"), R"x("'=HYPERLINK(""http://x"",""y"")")x");
   EXPECT_EQ(csv_cell("Ada, Countess"), "\"Ada, Countess\"");
   EXPECT_EQ(csv_cell("Ada"), "Ada");
+}
+
+TEST(Escape, TextDropsTerminalControls) {
+  EXPECT_EQ(text_escape("Sphere\x1b[31m red\x07\tx\n"), "Sphere[31m red\tx\n");
+  EXPECT_EQ(text_escape("a\xc2\x9b"
+                        "2J \xc2\xa0"
+                        "b"),
+            "a2J \xc2\xa0"
+            "b");
+}
+
+TEST(Escape, CsvCellsCarryNoTerminalControls) {
+  // ESC [ 2 J clears the screen, ESC ] 0 ; ... BEL retitles it; U+009B is the C1 form of ESC [.
+  EXPECT_EQ(csv_cell("Eve\x1b[2J"), "Eve\\x1B[2J");
+  EXPECT_EQ(csv_cell("\x1b]0;owned\x07"), "\\x1B]0;owned\\x07");
+  EXPECT_EQ(csv_cell("a\xc2\x9b"
+                     "2Jb"),
+            "a\\u009B2Jb");
+  EXPECT_EQ(csv_cell("line\nbreak"), "line\\x0Abreak");
 }
 
 TEST(Escape, SafeFileNamesStayInTheirFolder) {

@@ -14,6 +14,7 @@
 
 #include "check/check.h"
 #include "generate/prng.h"
+#include "json/source.h"
 #include "run_binary.h"
 #include "test_util.h"
 
@@ -60,6 +61,35 @@ TEST(Generate, SameSeedSameBytes) {
   std::string b = dump_all(generate_problems(options(42, 200)));
   EXPECT_EQ(a, b);
   EXPECT_NE(a, dump_all(generate_problems(options(43, 200))));
+}
+
+// What generate writes on standard output, a bank file check and grade read: a bank within
+// the limits is written and reads back; one over 16 MiB (300 problems, each with a statement
+// of 60,000 characters: 18 MB) is refused, as check would refuse it.
+TEST(Generate, BankTextIsWhatABankFileMayHold) {
+  auto problems = generate_problems(options(42, 20));
+  std::string text = bank_text(problems);
+  EXPECT_EQ(parse_json_text("bank.json", text)->root["problems"].size(), 20u);
+  std::vector<GeneratedProblem> big;
+  for (int i = 0; i < 300; ++i) {
+    big.push_back(problems[static_cast<std::size_t>(i) % problems.size()]);
+    big.back().json["statement"] = std::string(60000, 'x');
+  }
+  try {
+    bank_text(big);
+    ADD_FAILURE() << "an 18 MB bank was written";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.diagnostic().code, "limit");
+    EXPECT_NE(e.diagnostic().message.find("--out"), std::string::npos) << e.what();
+  }
+  nlohmann::ordered_json bank;
+  for (const auto& p : big) bank["problems"].push_back(p.json);
+  try {
+    parse_json_text("bank.json", bank.dump(2));
+    ADD_FAILURE() << "check would read an 18 MB bank file";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.diagnostic().code, "limit");
+  }
 }
 
 int run_command(const std::string& args) {

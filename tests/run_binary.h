@@ -49,13 +49,12 @@ class TempDir {
   std::filesystem::path path_;
 };
 
-// Runs `raygrade ARGS` (ARGS already quoted for the shell) in `dir`.
-inline RunResult run_raygrade(const std::string& args, const std::filesystem::path& dir) {
+// Runs the shell command `command` in `dir`, its standard error captured in dir/stderr.txt.
+inline RunResult run_shell(const std::string& command, const std::filesystem::path& dir) {
   std::filesystem::path err = dir / "stderr.txt";
-  std::string command =
-      "cd '" + dir.string() + "' && '" RAYGRADE_BINARY "' " + args + " 2>'" + err.string() + "'";
+  std::string full = "cd '" + dir.string() + "' && " + command + " 2>'" + err.string() + "'";
   RunResult r;
-  FILE* pipe = popen(command.c_str(), "r");
+  FILE* pipe = popen(full.c_str(), "r");
   if (!pipe) return r;
   char buffer[4096];
   std::size_t n;
@@ -64,6 +63,11 @@ inline RunResult run_raygrade(const std::string& args, const std::filesystem::pa
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.err = read_text(err);
   return r;
+}
+
+// Runs `raygrade ARGS` (ARGS already quoted for the shell) in `dir`.
+inline RunResult run_raygrade(const std::string& args, const std::filesystem::path& dir) {
+  return run_shell("'" RAYGRADE_BINARY "' " + args, dir);
 }
 
 }  // namespace raygrade::testing

@@ -117,6 +117,28 @@ TEST(Submission, MalformedIsReportedWithPath) {
   EXPECT_DOUBLE_EQ(named.score, named.max_score);
 }
 
+// A key spelled with escapes ("\u0062ogus" is "bogus") is named at its line and column, as
+// one spelled plainly is: at the value under it (line 3, column 17 for the 1).
+TEST(Submission, EscapedKeyIsLocated) {
+  const Assignment& a = samples().assignment;
+  SubmissionGrade g = a.grade_file(write_temp("escaped-key.json",
+                                              "{\"student\": \"E\",\n"
+                                              "  \"answers\": {},\n"
+                                              "  \"\\u0062ogus\": 1}"));
+  ASSERT_FALSE(g.gradable);
+  EXPECT_EQ(g.fault->code, "unknown-key");
+  EXPECT_EQ(g.fault->path, "/bogus");
+  EXPECT_EQ(g.fault->line, 3);
+  EXPECT_EQ(g.fault->column, 17);
+  SubmissionGrade answer = a.grade_file(write_temp("escaped-answer-key.json",
+                                                   "{\"answers\": {\"seed000-sphere-2\":\n"
+                                                   "  {\"hits\": [], \"\\u0078yz\": 2}}}"));
+  ASSERT_FALSE(answer.gradable);
+  EXPECT_EQ(answer.fault->path, "/answers/seed000-sphere-2/xyz");
+  EXPECT_EQ(answer.fault->line, 2);
+  EXPECT_EQ(answer.fault->column, 28);
+}
+
 // A folder with a good and a malformed submission: both reported, exit code 2.
 TEST(Submission, GradeCommandGoesOnAfterABadFile) {
   auto dir = std::filesystem::temp_directory_path() / "raygrade_grade_cli_test";

@@ -147,8 +147,8 @@ class BankChecker {
     if (src == sources_.end()) return;
     const std::string& text = src->second->text;
     if (r.path.empty()) {
-      std::tie(d.line, d.column) = locate(text, d.path);
-      if (d.line == 0) std::tie(d.line, d.column) = locate(text, "");
+      std::tie(d.line, d.column) = src->second->locate(d.path);
+      if (d.line == 0) std::tie(d.line, d.column) = src->second->locate("");
       return;
     }
     const std::string prefix = "/problems/";

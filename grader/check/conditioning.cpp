@@ -22,23 +22,110 @@ constexpr double kMaxAmplification = 100;
 // unit in its last digit is the uncertainty it carries.
 constexpr int kMinRoundedDigits = 3;
 
-// The problem object with the number at `relative` (a JSON pointer inside it) replaced.
-std::shared_ptr<const SourceFile> with_input(const Problem& p, const std::string& relative,
-                                             double value) {
-  auto file = std::make_shared<SourceFile>();
-  file->name = p.file;
-  file->root = p.source;
-  file->root[nlohmann::json::json_pointer(relative)] = value;
-  return file;
-}
+struct Input {
+  std::string relative;  // its JSON pointer inside the problem
+  std::string literal;   // as printed
+  double x = 0;
+  double h = 0;  // half a unit in its last printed digit
+};
 
 struct Finding {
-  double amplification = 0;
-  std::string relative;  // the input that moved
+  double amplification = 0;  // over kMaxAmplification, or infinite, when it is a finding
+  std::string relative;      // the input that moved (the first of a group)
   std::string message;
 };
 
+class Conditioning {
+ public:
+  Conditioning(const Problem& p, const nlohmann::json& reference, bool exact_boundary)
+      : p_(p),
+        reference_(reference),
+        outcome_(answer_outcome(reference)),
+        scale_(std::max(1.0, answer_magnitude(reference))),
+        exact_boundary_(exact_boundary) {}
+
+  std::vector<Input> inputs;
+
+  // The problem solved with the inputs `members` moved by half a unit each, in direction
+  // `sign` (alternating within a group, so that moving the ray and the object together does
+  // not cancel out).
+  Finding moved(const std::vector<std::size_t>& members, double sign) const {
+    Finding f;
+    const Input& first = inputs[members.front()];
+    f.relative = first.relative;
+    auto file = std::make_shared<SourceFile>();
+    file->name = p_.file;
+    file->root = p_.source;
+    double relative_move = 0;
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      const Input& in = inputs[members[k]];
+      double s = k % 2 == 0 ? sign : -sign;
+      file->root[nlohmann::json::json_pointer(in.relative)] = in.x + s * in.h;
+      relative_move = std::max(relative_move, in.h / std::max(1.0, std::abs(in.x)));
+    }
+    double moved_to = first.x + sign * first.h;
+    std::string what =
+        members.size() == 1
+            ? fmt::format("moving {} from {} to {} (half a unit in its last printed digit)",
+                          first.relative, first.literal,
+                          format_number(moved_to, NumberFormat{12, -1}))
+            : fmt::format(
+                  "moving {} inputs from {} on together (half a unit in their last "
+                  "printed digits)",
+                  members.size(), first.relative);
+    try {
+      Problem q = read_problem(Cursor(file));
+      nlohmann::json answer = q.task->answer();
+      if (answer_outcome(answer) != outcome_) {
+        // A designed tangent or edge case changes under any move; the boundary probe has
+        // judged it already.
+        if (exact_boundary_) return f;
+        f.amplification = kInfinity;
+        f.message = fmt::format("ill-conditioned: {} changes the answer from {} to {}", what,
+                                describe_answer(reference_), describe_answer(answer));
+      } else {
+        double change = answer_difference(answer, reference_) / scale_;
+        f.amplification = change / relative_move;
+        if (f.amplification <= kMaxAmplification) return f;
+        f.message = fmt::format(
+            "ill-conditioned: {} moves the answer by {}, {} times as much relative to its size: "
+            "{} instead of {}",
+            what, format_number(answer_difference(answer, reference_)),
+            format_number(std::round(f.amplification)), describe_answer(answer),
+            describe_answer(reference_));
+      }
+    } catch (const Error& e) {
+      f.amplification = kInfinity;
+      f.message = fmt::format("ill-conditioned: {} makes the problem invalid: {}", what,
+                              e.diagnostic().message);
+    }
+    return f;
+  }
+
+  // The worse of the two directions.
+  Finding worse_direction(const std::vector<std::size_t>& members) const {
+    Finding a = moved(members, -1), b = moved(members, +1);
+    return b.amplification > a.amplification ? b : a;
+  }
+
+ private:
+  const Problem& p_;
+  const nlohmann::json& reference_;
+  std::string outcome_;
+  double scale_;
+  bool exact_boundary_;
+};
+
+bool is_finding(const Finding& f) { return f.amplification > kMaxAmplification; }
+
 }  // namespace
+
+std::vector<std::vector<std::size_t>> conditioning_groups(std::size_t inputs) {
+  std::size_t n = std::min(inputs, kConditioningGroups);
+  std::vector<std::vector<std::size_t>> groups(n);
+  for (std::size_t i = 0; i < inputs; ++i) groups[i % n].push_back(i);
+  return groups;
+}
 
 std::vector<Diagnostic> check_conditioning(const Problem& p, const nlohmann::json& reference,
                                            const NumberLiterals& literals, bool exact_boundary) {
@@ -47,61 +134,44 @@ std::vector<Diagnostic> check_conditioning(const Problem& p, const nlohmann::jso
     if (k.name == p.kind) entry = &k;
   }
   if (!entry) return {};
-  std::string outcome = answer_outcome(reference);
-  double scale = std::max(1.0, answer_magnitude(reference));
-  std::optional<Finding> worst;
+  Conditioning c(p, reference, exact_boundary);
   for (const auto& key : entry->keys) {
     std::string prefix = p.path + "/" + key;
     for (auto it = literals.lower_bound(prefix); it != literals.end(); ++it) {
       if (it->first.compare(0, prefix.size(), prefix) != 0) break;
       if (it->first.size() > prefix.size() && it->first[prefix.size()] != '/') continue;
       if (significant_digits(it->second) < kMinRoundedDigits) continue;
-      std::string relative = it->first.substr(p.path.size());
-      double x = p.source[nlohmann::json::json_pointer(relative)].get<double>();
-      double h = half_unit(it->second);
-      for (double moved : {x - h, x + h}) {
-        Finding f;
-        f.relative = relative;
-        try {
-          auto file = with_input(p, relative, moved);
-          Problem q = read_problem(Cursor(file));
-          nlohmann::json answer = q.task->answer();
-          if (answer_outcome(answer) != outcome) {
-            // A designed tangent or edge case changes under any move; the boundary probe
-            // has judged it already.
-            if (exact_boundary) continue;
-            f.amplification = kInfinity;
-            f.message = fmt::format(
-                "ill-conditioned: moving {} from {} to {} (half a unit in its last printed "
-                "digit) changes the answer from {} to {}",
-                relative, it->second, format_number(moved, NumberFormat{12, -1}),
-                describe_answer(reference), describe_answer(answer));
-          } else {
-            double change = answer_difference(answer, reference) / scale;
-            f.amplification = change / (h / std::max(1.0, std::abs(x)));
-            if (f.amplification <= kMaxAmplification) continue;
-            f.message = fmt::format(
-                "ill-conditioned: moving {} from {} to {} (half a unit in its last printed "
-                "digit) moves the answer by {}, {} times as much relative to its size: {} "
-                "instead of {}",
-                relative, it->second, format_number(moved, NumberFormat{12, -1}),
-                format_number(answer_difference(answer, reference)),
-                format_number(std::round(f.amplification)), describe_answer(answer),
-                describe_answer(reference));
-          }
-        } catch (const Error& e) {
-          f.amplification = kInfinity;
-          f.message = fmt::format(
-              "ill-conditioned: moving {} from {} to {} (half a unit in its last printed digit) "
-              "makes the problem invalid: {}",
-              relative, it->second, format_number(moved, NumberFormat{12, -1}),
-              e.diagnostic().message);
-        }
-        if (!worst || f.amplification > worst->amplification) worst = f;
-      }
+      Input in;
+      in.relative = it->first.substr(p.path.size());
+      in.literal = it->second;
+      in.x = p.source[nlohmann::json::json_pointer(in.relative)].get<double>();
+      in.h = half_unit(it->second);
+      c.inputs.push_back(std::move(in));
+    }
+  }
+  // The worst group, then the worse half of it until one input is left (or neither half
+  // alone moves the answer too far: the group's finding stands).
+  std::optional<Finding> worst;
+  std::vector<std::size_t> culprit;
+  for (const auto& group : conditioning_groups(c.inputs.size())) {
+    Finding f = c.worse_direction(group);
+    if (is_finding(f) && (!worst || f.amplification > worst->amplification)) {
+      worst = f;
+      culprit = group;
     }
   }
   if (!worst) return {};
+  while (culprit.size() > 1) {
+    std::size_t half = culprit.size() / 2;
+    std::vector<std::size_t> a(culprit.begin(), culprit.begin() + half);
+    std::vector<std::size_t> b(culprit.begin() + half, culprit.end());
+    Finding fa = c.worse_direction(a), fb = c.worse_direction(b);
+    bool take_b = fb.amplification > fa.amplification;
+    const Finding& f = take_b ? fb : fa;
+    if (!is_finding(f)) break;
+    worst = f;
+    culprit = take_b ? b : a;
+  }
   return {
       problem_diagnostic(p, worst->relative, Severity::kError, worst->message, "ill-conditioned")};
 }

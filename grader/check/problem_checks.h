@@ -44,8 +44,16 @@ struct BoundaryProbe {
 // first hit that another object nearly ties.
 BoundaryProbe probe_boundaries(const Problem& p);
 
-// The conditioning check: every non-integer input moved by half a unit in its last printed
-// digit, and the problem solved again.
+// The conditioning check: every rounded input moved by half a unit in its last printed
+// digit, and the problem solved again. Up to kConditioningGroups inputs move one at a time;
+// beyond that they move in kConditioningGroups groups (conditioning_groups), each solved once
+// per direction, and a group that moves the answer too far is halved down to the input
+// responsible: a constant number of solves, so that the check stays linear in the size of a
+// problem of thousands of objects or vertices.
+inline constexpr std::size_t kConditioningGroups = 16;
+// The inputs (0 to inputs - 1) in groups: one each up to kConditioningGroups, else every
+// kConditioningGroups-th input together.
+std::vector<std::vector<std::size_t>> conditioning_groups(std::size_t inputs);
 std::vector<Diagnostic> check_conditioning(const Problem& p, const nlohmann::json& reference,
                                            const NumberLiterals& literals, bool exact_boundary);
 

@@ -74,10 +74,14 @@ int run_generate(const GenerateCliOptions& o) {
     return kExitBadInput;
   }
   if (!o.out.empty()) return write_bank(o, problems);
-  nlohmann::ordered_json bank;
-  bank["problems"] = nlohmann::ordered_json::array();
-  for (auto& p : problems) bank["problems"].push_back(p.json);
-  std::cout << bank.dump(2) << "\n";
+  std::string text;
+  try {
+    text = bank_text(problems);
+  } catch (const Error& e) {
+    fmt::print(stderr, "raygrade generate: {}\n", e.diagnostic().message);
+    return kExitBadInput;
+  }
+  std::cout << text;
   return kExitOk;
 }
 

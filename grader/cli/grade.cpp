@@ -6,13 +6,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <set>
+#include <sstream>
 
 #include "assignments/grading.h"
 #include "assignments/roster.h"
 #include "cli/command.h"
 #include "core/atomic_file.h"
 #include "core/escape.h"
+#include "core/folder_lock.h"
 #include "grading/outputs.h"
 #include "grading/submission.h"
 
@@ -57,15 +60,30 @@ std::string extension(const std::string& format) {
 std::string render(const SubmissionGrade& g, const std::string& format, double seconds) {
   if (format == "text") return text_report(g);
   if (format == "html") return feedback_html(g);
-  if (format == "gradescope")
-    return gradescope_json(g, seconds)
-               .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
-           "\n";
-  if (format == "prairielearn")
-    return prairielearn_json(g).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
-           "\n";
-  return submission_json(g).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  if (format == "gradescope") return json_text(gradescope_json(g, seconds)) + "\n";
+  if (format == "prairielearn") return json_text(prairielearn_json(g)) + "\n";
+  return json_text(submission_json(g)) + "\n";
 }
+
+// {"submissions": [...]} on standard output, one submission at a time as it is graded, so
+// that a batch of any size is never held whole; the text is what one dump of it would be.
+class JsonArrayStream {
+ public:
+  void add(const SubmissionGrade& g) {
+    std::string item = json_text(submission_json(g));
+    std::string indented = first_ ? "{\n  \"submissions\": [\n    " : ",\n    ";
+    for (char c : item) {
+      indented += c;
+      if (c == '\n') indented += "    ";
+    }
+    std::cout << indented;
+    first_ = false;
+  }
+  void finish() { std::cout << (first_ ? "{\n  \"submissions\": []\n}\n" : "\n  ]\n}\n"); }
+
+ private:
+  bool first_ = true;
+};
 
 int run_grade(const GradeCliOptions& o) {
   static const std::set<std::string> formats = {"text",         "json", "gradescope",
@@ -146,11 +164,20 @@ int run_grade(const GradeCliOptions& o) {
                o.format);
     return kExitBadInput;
   }
-  if (!o.out.empty()) std::filesystem::create_directories(o.out);
-  std::vector<SubmissionGrade> grades;
+  std::optional<FolderLock> lock;
+  if (!o.out.empty()) {
+    std::filesystem::create_directories(o.out);
+    // One grader per folder at a time; then what a killed one left half-written can go.
+    lock.emplace(o.out, "raygrade grade");
+    for (const auto& name : remove_stale_temporaries(o.out))
+      fmt::print(stderr, "raygrade grade: removed {}, left by an interrupted run\n",
+                 printable(name));
+  }
   std::set<std::string> names;
-  std::string stream;  // what goes to standard output
-  nlohmann::json all = nlohmann::json::array();
+  // The gradebook on standard output goes a row at a time; a file is written whole at the end.
+  std::ostringstream csv_file;
+  if (o.format == "csv") (o.out.empty() ? std::cout : csv_file) << gradebook_csv_header(ids);
+  JsonArrayStream json_out;
   Progress progress(files.size());
   std::size_t rejected = 0;
   for (std::size_t i = 0; i < files.size(); ++i) {
@@ -163,39 +190,32 @@ int run_grade(const GradeCliOptions& o) {
       if (!single || o.format == "csv") fmt::print(stderr, "{}\n", format_diagnostic(*g.fault));
     }
     for (const auto& d : g.findings) fmt::print(stderr, "{}\n", format_diagnostic(d));
-    if (o.format != "csv") {
-      if (!o.out.empty()) {
-        std::string base = single && (o.format == "gradescope" || o.format == "prairielearn")
-                               ? "results"
-                               : safe_file_name(g.student);
-        std::string name = base;
-        for (int k = 2; !names.insert(name).second; ++k) name = fmt::format("{}-{}", base, k);
-        write_file_atomically(std::filesystem::path(o.out) / (name + extension(o.format)),
-                              render(g, o.format, seconds));
-      } else if (o.format == "json") {
-        all.push_back(submission_json(g));
-      } else {
-        stream += render(g, o.format, seconds);
-      }
+    if (o.format == "csv") {
+      (o.out.empty() ? std::cout : csv_file) << gradebook_csv_row(g, ids);
+    } else if (!o.out.empty()) {
+      std::string base = single && (o.format == "gradescope" || o.format == "prairielearn")
+                             ? "results"
+                             : safe_file_name(g.student);
+      std::string name = base;
+      for (int k = 2; !names.insert(name).second; ++k) name = fmt::format("{}-{}", base, k);
+      // Each file appears whole or not at all (rename); the batch reaches the disk in one
+      // flush at the end instead of one per file.
+      write_file_atomically(std::filesystem::path(o.out) / (name + extension(o.format)),
+                            render(g, o.format, seconds), false);
+    } else if (o.format == "json") {
+      json_out.add(g);
+    } else {
+      std::cout << render(g, o.format, seconds);
     }
-    grades.push_back(std::move(g));
     progress.step(i + 1);
   }
-  if (o.format == "csv") {
-    std::string csv = gradebook_csv(grades, ids);
-    if (o.out.empty()) {
-      stream = csv;
-    } else {
-      write_file_atomically(std::filesystem::path(o.out) / "gradebook.csv", csv);
-    }
-  }
-  if (o.format == "json" && o.out.empty())
-    stream = nlohmann::json{{"submissions", all}}.dump(2, ' ', false,
-                                                       nlohmann::json::error_handler_t::replace) +
-             "\n";
-  std::cout << stream;
+  if (o.format == "csv" && !o.out.empty())
+    write_file_atomically(std::filesystem::path(o.out) / "gradebook.csv", csv_file.str(), false);
+  if (o.format == "json" && o.out.empty()) json_out.finish();
+  std::cout.flush();
   if (!o.out.empty()) {
-    fmt::print(stderr, "Graded {} submissions into {}{}.\n", grades.size() - rejected, o.out,
+    flush_folder(o.out);
+    fmt::print(stderr, "Graded {} submissions into {}{}.\n", files.size() - rejected, o.out,
                rejected ? fmt::format(" ({} rejected)", rejected) : "");
   }
   bool bad = rejected || !errors.empty() || !setup_errors.empty();

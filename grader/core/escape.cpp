@@ -47,7 +47,13 @@ bool is_disallowed_control(char c) {
 std::string html_escape(std::string_view s) {
   std::string out;
   out.reserve(s.size());
-  for (char c : s) {
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    char c = s[i];
+    // C1 controls (U+0080 to U+009F, bytes C2 80 to C2 9F) are not allowed in HTML either.
+    if (c == '\xC2' && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) < 0xA0) {
+      ++i;
+      continue;
+    }
     switch (c) {
       case '&': out += "&amp;"; break;
       case '<': out += "&lt;"; break;
@@ -127,12 +133,14 @@ std::string latex_escape(std::string_view s) {
 }
 
 std::string csv_cell(std::string_view s) {
-  std::string v(s);
-  if (!v.empty() &&
-      (v[0] == '=' || v[0] == '+' || v[0] == '-' || v[0] == '@' || v[0] == '\t' || v[0] == '\r')) {
+  // Control characters (NUL, tab, line breaks and escape sequences among them) and C1 controls
+  // become \xNN and \uNNNN: a gradebook on a terminal cannot retitle or clear it, and a cell
+  // cannot start with a NUL or a line feed that a spreadsheet would skip to reach a formula.
+  std::string v = printable(s);
+  if (!v.empty() && (v[0] == '=' || v[0] == '+' || v[0] == '-' || v[0] == '@')) {
     v.insert(v.begin(), '\'');
   }
-  bool quote = v.find_first_of(",\"\n\r") != std::string::npos;
+  bool quote = v.find_first_of(",\"") != std::string::npos;
   if (!quote) return v;
   std::string out = "\"";
   for (char c : v) {
@@ -144,10 +152,14 @@ std::string csv_cell(std::string_view s) {
 
 std::string text_escape(std::string_view s) {
   std::string out;
-  for (char c : s) {
-    auto u = static_cast<unsigned char>(c);
-    if ((u < 0x20 && c != '\t' && c != '\n') || u == 0x7f) continue;
-    out += c;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    auto u = static_cast<unsigned char>(s[i]);
+    if ((u < 0x20 && u != '\t' && u != '\n') || u == 0x7f) continue;
+    if (u == 0xC2 && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) < 0xA0) {
+      ++i;  // a C1 control (U+0080 to U+009F)
+      continue;
+    }
+    out += s[i];
   }
   return out;
 }

@@ -18,11 +18,12 @@ std::string xml_escape(std::string_view s);
 std::string markdown_escape(std::string_view s);
 // LaTeX text mode: \ { } $ & # ^ _ % ~ escaped.
 std::string latex_escape(std::string_view s);
-// A CSV cell: quoted when needed, and a leading = + - @ (or tab, carriage return) neutralised
-// with a leading apostrophe so spreadsheets do not run it as a formula.
+// A CSV cell: control characters written as printable() writes them (\x1B, \x00, \x0A),
+// quoted when needed, and a leading = + - @ neutralised with a leading apostrophe so
+// spreadsheets do not run it as a formula.
 std::string csv_cell(std::string_view s);
 // Plain text for terminals and .txt files: control characters other than tab and newline
-// (terminal escape sequences among them) are dropped.
+// (terminal escape sequences among them) and C1 controls are dropped.
 std::string text_escape(std::string_view s);
 // A file name made from an id: only [A-Za-z0-9._-], never "." or "..", never empty, at most
 // 100 bytes; other bytes become '_'. It cannot name a path outside its folder.

@@ -113,4 +113,22 @@ std::vector<GeneratedProblem> generate_problems(const GenerateOptions& options) 
   return out;
 }
 
+std::string bank_text(const std::vector<GeneratedProblem>& problems) {
+  nlohmann::ordered_json bank;
+  bank["problems"] = nlohmann::ordered_json::array();
+  for (const auto& p : problems) bank["problems"].push_back(p.json);
+  std::string text = bank.dump(2) + "\n";
+  JsonLimits limits;
+  if (text.size() > limits.max_bytes || problems.size() > limits.max_items) {
+    throw Error(Diagnostic{
+        "", "", 0, 0, Severity::kError,
+        fmt::format("{} problems make a bank file of {} bytes, over the {} bytes (or {} "
+                    "problems) one bank file may hold: write them with --out DIR (one file per "
+                    "problem), or fewer at a time (-n) with different seeds",
+                    problems.size(), text.size(), limits.max_bytes, limits.max_items),
+        "limit"});
+  }
+  return text;
+}
+
 }  // namespace raygrade

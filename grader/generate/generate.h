@@ -52,4 +52,10 @@ struct GeneratedProblem {
 // outcome that none of the chosen kinds can build.
 std::vector<GeneratedProblem> generate_problems(const GenerateOptions& options);
 
+// The bank of `problems` as one JSON file ({"problems": [...]}, two-space indent), as
+// `generate` writes it on standard output. Throws Error (code "limit") when the file would be
+// over the limits of one bank file (JsonLimits: 16 MiB, 100,000 problems), which check and
+// grade would refuse: what generate writes, they read.
+std::string bank_text(const std::vector<GeneratedProblem>& problems);
+
 }  // namespace raygrade

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "core/escape.h"
 #include "grading/outputs.h"
 
 namespace raygrade {
@@ -32,19 +33,42 @@ std::vector<std::string> feedback_lines(const GradeResult& r) {
   return out;
 }
 
+// Everything a student controls (name, file name, the answers quoted in feedback) goes
+// through printable(): a report read on a terminal cannot carry an escape sequence to it.
 std::string text_report(const SubmissionGrade& g) {
-  std::string s = fmt::format("{} ({})", g.student, g.file);
+  std::string s = fmt::format("{} ({})", printable(g.student), printable(g.file));
   if (!g.gradable) {
     return s + fmt::format(": not gradable\n  {}\n", g.fault ? format_diagnostic(*g.fault) : "");
   }
   s += fmt::format(": {} / {}\n", format_points(g.score), format_points(g.max_score));
   for (const auto& d : g.findings) s += "  " + format_diagnostic(d) + "\n";
   for (const auto& r : g.results) {
-    s += fmt::format("  {}{}: {} / {}\n", r.problem_id, r.title.empty() ? "" : " — " + r.title,
-                     format_points(r.score), format_points(r.max_score));
-    for (const auto& line : feedback_lines(r)) s += "    " + line + "\n";
+    s += fmt::format("  {}{}: {} / {}\n", printable(r.problem_id),
+                     r.title.empty() ? "" : " — " + printable(r.title), format_points(r.score),
+                     format_points(r.max_score));
+    for (const auto& line : feedback_lines(r)) s += "    " + printable(line) + "\n";
   }
   return s;
+}
+
+std::string json_text(const nlohmann::json& j, int indent) {
+  std::string dumped = j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+  // nlohmann writes C0 controls as \u00XX already; C1 controls (U+0080 to U+009F, bytes C2 80
+  // to C2 9F) and DEL it writes raw. Outside strings the text is ASCII, so every such byte is
+  // inside a string, where an escape means the same character.
+  std::string out;
+  out.reserve(dumped.size());
+  for (std::size_t i = 0; i < dumped.size(); ++i) {
+    auto c = static_cast<unsigned char>(dumped[i]);
+    if (c == 0xC2 && i + 1 < dumped.size() && static_cast<unsigned char>(dumped[i + 1]) < 0xA0) {
+      out += fmt::format("\\u{:04x}", static_cast<unsigned char>(dumped[++i]));
+    } else if (c == 0x7F) {
+      out += "\\u007f";
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
 }
 
 nlohmann::json submission_json(const SubmissionGrade& g) {

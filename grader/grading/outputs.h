@@ -18,6 +18,9 @@ std::vector<std::string> feedback_lines(const GradeResult& r);
 
 std::string text_report(const SubmissionGrade& g);
 nlohmann::json submission_json(const SubmissionGrade& g);
+// JSON as text (nlohmann's dump, `indent` spaces, ill-formed UTF-8 replaced) with the C1
+// controls and DEL written as \u escapes too, so that it is safe to show on a terminal.
+std::string json_text(const nlohmann::json& j, int indent = 2);
 
 // Gradescope's autograder results.json: score, execution_time, output, visibility and one
 // test per problem (name, score, max_score, status, output, visibility).
@@ -31,6 +34,10 @@ nlohmann::json prairielearn_json(const SubmissionGrade& g);
 // escaped with csv_cell.
 std::string gradebook_csv(const std::vector<SubmissionGrade>& grades,
                           const std::vector<std::string>& problem_ids);
+// The same gradebook a line at a time, for a batch written as it is graded.
+std::string gradebook_csv_header(const std::vector<std::string>& problem_ids);
+std::string gradebook_csv_row(const SubmissionGrade& g,
+                              const std::vector<std::string>& problem_ids);
 
 // A self-contained HTML feedback page for one student; all text escaped.
 std::string feedback_html(const SubmissionGrade& g);

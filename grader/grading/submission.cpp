@@ -157,7 +157,7 @@ SubmissionGrade Assignment::grade(const std::shared_ptr<const SourceFile>& file)
     Diagnostic d = e.diagnostic();
     if (d.file.empty()) d.file = file->name;
     if (d.line == 0 && !d.path.empty()) {
-      auto [line, column] = locate(file->text, d.path);
+      auto [line, column] = file->locate(d.path);
       d.line = line;
       d.column = column;
     }
@@ -171,26 +171,105 @@ SubmissionGrade Assignment::grade(const std::shared_ptr<const SourceFile>& file)
   return g;
 }
 
+namespace {
+
+namespace fs = std::filesystem;
+
+Diagnostic skipped(const fs::path& path, std::string why, std::string code = "skipped") {
+  return Diagnostic{path.string(), "", 0, 0, Severity::kError, std::move(why), std::move(code)};
+}
+
+// What a file that is neither a folder nor a regular file is, for "skipped: ...".
+std::string kind_of(fs::file_type type) {
+  switch (type) {
+    case fs::file_type::fifo: return "a FIFO (named pipe)";
+    case fs::file_type::block: return "a block device";
+    case fs::file_type::character: return "a character device";
+    case fs::file_type::socket: return "a socket";
+    default: return "not a regular file";
+  }
+}
+
+bool inside(const fs::path& path, const fs::path& folder) {
+  auto [f, p] = std::mismatch(folder.begin(), folder.end(), path.begin(), path.end());
+  return f == folder.end();
+}
+
+// Walks `folder` (whose canonical path is `root`), adding its .json submissions to `out` and
+// reporting every entry it cannot read or will not open.
+void walk(const fs::path& folder, const fs::path& root, std::vector<std::string>& out,
+          std::vector<Diagnostic>& errors) {
+  std::error_code ec;
+  fs::directory_iterator it(folder, ec);
+  if (ec) {
+    errors.push_back(skipped(folder, "cannot read the folder: " + ec.message(), "unreadable"));
+    return;
+  }
+  std::vector<fs::directory_entry> entries;
+  for (fs::directory_iterator end; it != end; it.increment(ec)) {
+    entries.push_back(*it);
+  }
+  if (ec)
+    errors.push_back(skipped(folder, "cannot read the folder: " + ec.message(), "unreadable"));
+  std::sort(entries.begin(), entries.end());
+  for (const auto& e : entries) {
+    const fs::path& p = e.path();
+    fs::file_status own = e.symlink_status(ec);
+    if (ec) {
+      errors.push_back(skipped(p, "cannot read: " + ec.message(), "unreadable"));
+      continue;
+    }
+    if (fs::is_directory(own)) {
+      walk(p, root, out, errors);
+      continue;
+    }
+    fs::file_status target = own;
+    if (fs::is_symlink(own)) {
+      // A link is followed to a regular file inside the submissions folder only: a link
+      // leading elsewhere (another student's folder, /etc/shadow) is not graded, nor is a
+      // link to a folder (it could loop, and the folder is walked on its own anyway).
+      target = fs::status(p, ec);
+      if (ec || !fs::exists(target)) {
+        errors.push_back(skipped(p, "skipped: a symbolic link to nothing"));
+        continue;
+      }
+      fs::path resolved = fs::canonical(p, ec);
+      if (ec || !inside(resolved, root)) {
+        errors.push_back(skipped(p, "skipped: a symbolic link leading outside " + root.string()));
+        continue;
+      }
+      if (fs::is_directory(target)) {
+        errors.push_back(skipped(p, "skipped: a symbolic link to a folder (not followed)"));
+        continue;
+      }
+    }
+    if (!fs::is_regular_file(target)) {
+      errors.push_back(skipped(p, "skipped: " + kind_of(target.type()) + ", not a regular file"));
+      continue;
+    }
+    // Other regular files (a README, notes) are not submissions.
+    if (p.extension() == ".json") out.push_back(p.string());
+  }
+}
+
+}  // namespace
+
 std::vector<std::string> submission_files(const std::vector<std::string>& paths,
                                           std::vector<Diagnostic>& errors) {
-  namespace fs = std::filesystem;
   std::vector<std::string> out;
   for (const auto& p : paths) {
     std::error_code ec;
-    if (fs::is_directory(p, ec)) {
-      std::vector<std::string> found;
-      for (fs::recursive_directory_iterator it(p, ec), end; !ec && it != end; it.increment(ec)) {
-        if (it->is_regular_file(ec) && it->path().extension() == ".json") {
-          found.push_back(it->path().string());
-        }
-      }
-      std::sort(found.begin(), found.end());
-      out.insert(out.end(), found.begin(), found.end());
-    } else if (fs::exists(p, ec)) {
+    // A path named on the command line is followed wherever it leads: the user chose it.
+    fs::file_status status = fs::status(p, ec);
+    if (fs::is_directory(status)) {
+      fs::path root = fs::canonical(p, ec);
+      walk(p, ec ? fs::path(p) : root, out, errors);
+    } else if (fs::is_regular_file(status)) {
       out.push_back(p);
+    } else if (fs::exists(status)) {
+      errors.push_back(skipped(p, "skipped: " + kind_of(status.type()) + ", not a regular file"));
     } else {
-      errors.push_back(
-          Diagnostic{p, "", 0, 0, Severity::kError, "no such file or folder", "unreadable"});
+      errors.push_back(skipped(p, "no such file or folder", "unreadable"));
     }
   }
   return out;

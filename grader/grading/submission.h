@@ -72,8 +72,11 @@ class Assignment {
   AssignmentOptions options_;
 };
 
-// The .json files among `paths` (folders searched recursively, in sorted order); paths that
-// do not exist are reported in `errors`.
+// The .json files among `paths` (folders searched recursively, in sorted order). Reported in
+// `errors`, and left out: paths that do not exist, folders that cannot be read (code
+// "unreadable"), and entries that are not regular files (FIFOs, devices, sockets), dangling
+// symbolic links, links to folders and links leading outside the folder walked (code
+// "skipped"). A path named in `paths` itself is followed wherever it leads.
 std::vector<std::string> submission_files(const std::vector<std::string>& paths,
                                           std::vector<Diagnostic>& errors);
 

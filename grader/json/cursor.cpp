@@ -166,7 +166,7 @@ void Cursor::allow_only(const std::vector<std::string>& allowed) const {
 }
 
 Diagnostic Cursor::diagnostic(std::string message, std::string code, Severity severity) const {
-  auto [line, column] = locate(file_->text, path_);
+  auto [line, column] = file_->locate(path_);
   return Diagnostic{file_->name,        path_,          line, column, severity,
                     std::move(message), std::move(code)};
 }

@@ -1,11 +1,18 @@
 // Reading JSON files with limits, and mapping JSON pointers back to lines and columns.
 #include "json/source.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdint>
-#include <fstream>
+#include <cstring>
 #include <map>
 #include <sstream>
+#include <unordered_map>
 #include <vector>
 
 #include "core/escape.h"
@@ -139,21 +146,39 @@ std::shared_ptr<const SourceFile> parse_json_text(std::string name, std::string 
 
 std::shared_ptr<const SourceFile> load_json_file(const std::string& path,
                                                  const JsonLimits& limits) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, "cannot open the file", 0, 0, "unreadable");
-  in.seekg(0, std::ios::end);
-  auto size = in.tellg();
-  if (size < 0) fail(path, "cannot read the file", 0, 0, "unreadable");
-  if (static_cast<std::size_t>(size) > limits.max_bytes) {
-    fail(path,
-         fmt::format("file is {} bytes, over the limit of {} bytes", static_cast<std::size_t>(size),
-                     limits.max_bytes),
+  // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer forever. Only a
+  // regular file is read; fstat on the open descriptor, so the file cannot be swapped between
+  // the check and the read.
+  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) {
+    fail(path, fmt::format("cannot open the file: {}", std::strerror(errno)), 0, 0, "unreadable");
+  }
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) {
+    fail(path, fmt::format("cannot read the file: {}", std::strerror(errno)), 0, 0, "unreadable");
+  }
+  if (!S_ISREG(st.st_mode)) fail(path, "not a regular file", 0, 0, "unreadable");
+  auto size = static_cast<std::size_t>(st.st_size);
+  if (size > limits.max_bytes) {
+    fail(path, fmt::format("file is {} bytes, over the limit of {} bytes", size, limits.max_bytes),
          0, 0, "limit");
   }
-  in.seekg(0);
-  std::string text(static_cast<std::size_t>(size), '\0');
-  in.read(text.data(), size);
-  if (!in) fail(path, "cannot read the file", 0, 0, "unreadable");
+  std::string text(size, '\0');
+  std::size_t done = 0;
+  while (done < size) {
+    ssize_t n = ::read(fd, text.data() + done, size - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      fail(path, fmt::format("cannot read the file: {}", std::strerror(errno)), 0, 0, "unreadable");
+    }
+    if (n == 0) break;  // the file shrank while it was read
+    done += static_cast<std::size_t>(n);
+  }
+  text.resize(done);
   return parse_json_text(path, std::move(text), limits);
 }
 
@@ -162,7 +187,11 @@ namespace {
 // A minimal scanner over JSON text that walks to the value at a pointer.
 class Locator {
  public:
-  explicit Locator(std::string_view text) : text_(text) {}
+  // `elements`, when given, keeps the offsets of the elements of every array walked, by the
+  // offset of its '[', so that a second walk through the same array jumps to its element.
+  explicit Locator(std::string_view text,
+                   std::unordered_map<std::size_t, std::vector<std::size_t>>* elements = nullptr)
+      : text_(text), elements_(elements) {}
 
   // Returns the offset of the value at the tokens, or npos.
   std::size_t find(const std::vector<std::string>& tokens) {
@@ -187,19 +216,23 @@ class Locator {
       ++pos_;
     }
   }
-  std::string read_string() {  // at '"'; returns the raw (unescaped-enough) contents
-    std::string out;
-    ++pos_;
+  // At '"': the string's contents, escapes decoded ("\u0074" is "t"), so that a key spelled
+  // with escapes is found under the name a JSON pointer gives it.
+  std::string read_string() {
+    std::size_t start = pos_++;
+    bool escaped = false;
     while (pos_ < text_.size() && text_[pos_] != '"') {
-      if (text_[pos_] == '\\' && pos_ + 1 < text_.size()) {
-        out += text_[pos_ + 1];
-        pos_ += 2;
-      } else {
-        out += text_[pos_++];
+      if (text_[pos_] == '\\') {
+        escaped = true;
+        ++pos_;
       }
+      ++pos_;
     }
     ++pos_;
-    return out;
+    std::string_view raw = text_.substr(start, std::min(pos_, text_.size()) - start);
+    if (!escaped) return std::string(raw.substr(1, raw.size() >= 2 ? raw.size() - 2 : 0));
+    auto decoded = nlohmann::json::parse(raw, nullptr, false);
+    return decoded.is_string() ? decoded.get<std::string>() : std::string();
   }
   void skip_value() {
     skip_ws();
@@ -251,8 +284,15 @@ class Locator {
   bool enter_array_element(const std::string& index_text) {
     std::size_t index = 0;
     for (char c : index_text) {
-      if (c < '0' || c > '9') return false;
+      if (c < '0' || c > '9' || index > text_.size()) return false;
       index = index * 10 + static_cast<std::size_t>(c - '0');
+    }
+    if (elements_) {
+      auto [it, fresh] = elements_->try_emplace(pos_);
+      if (fresh) it->second = element_offsets();
+      if (index >= it->second.size()) return false;
+      pos_ = it->second[index];
+      return true;
     }
     ++pos_;
     skip_ws();
@@ -264,32 +304,72 @@ class Locator {
     }
     return pos_ < text_.size() && text_[pos_] != ']';
   }
+  // At '[': where each element of the array starts.
+  std::vector<std::size_t> element_offsets() {
+    std::vector<std::size_t> out;
+    ++pos_;
+    skip_ws();
+    while (pos_ < text_.size() && text_[pos_] != ']') {
+      out.push_back(pos_);
+      skip_value();
+      if (pos_ >= text_.size() || text_[pos_] != ',') break;
+      ++pos_;
+      skip_ws();
+    }
+    return out;
+  }
 
   std::string_view text_;
   std::size_t pos_ = 0;
+  std::unordered_map<std::size_t, std::vector<std::size_t>>* elements_;
 };
+
+// The tokens of a JSON pointer ("/a~1b/0" is "a/b", "0").
+std::vector<std::string> pointer_tokens(std::string_view path) {
+  std::vector<std::string> tokens;
+  if (path.empty()) return tokens;
+  std::size_t start = 1;
+  while (start <= path.size()) {
+    auto end = path.find('/', start);
+    if (end == std::string_view::npos) end = path.size();
+    std::string token(path.substr(start, end - start));
+    // JSON pointer escapes: ~1 is '/', ~0 is '~'.
+    for (std::size_t p; (p = token.find("~1")) != std::string::npos;) token.replace(p, 2, "/");
+    for (std::size_t p; (p = token.find("~0")) != std::string::npos;) token.replace(p, 2, "~");
+    tokens.push_back(std::move(token));
+    start = end + 1;
+  }
+  return tokens;
+}
 
 }  // namespace
 
 std::pair<int, int> locate(std::string_view text, std::string_view path) {
-  std::vector<std::string> tokens;
-  if (!path.empty()) {
-    std::size_t start = 1;
-    while (start <= path.size()) {
-      auto end = path.find('/', start);
-      if (end == std::string_view::npos) end = path.size();
-      std::string token(path.substr(start, end - start));
-      // JSON pointer escapes: ~1 is '/', ~0 is '~'.
-      for (std::size_t p; (p = token.find("~1")) != std::string::npos;) token.replace(p, 2, "/");
-      for (std::size_t p; (p = token.find("~0")) != std::string::npos;) token.replace(p, 2, "~");
-      tokens.push_back(std::move(token));
-      start = end + 1;
-    }
-  }
   Locator loc(text);
-  auto offset = loc.find(tokens);
+  auto offset = loc.find(pointer_tokens(path));
   if (offset == std::string_view::npos) return {0, 0};
   return line_column_of(text, offset);
+}
+
+struct LocateIndex {
+  std::vector<std::size_t> line_starts;  // empty until the first call
+  std::unordered_map<std::size_t, std::vector<std::size_t>> elements;
+};
+
+std::pair<int, int> SourceFile::locate(std::string_view path) const {
+  if (!index_) index_ = std::make_shared<LocateIndex>();
+  Locator loc(text, &index_->elements);
+  auto offset = loc.find(pointer_tokens(path));
+  if (offset == std::string_view::npos) return {0, 0};
+  auto& starts = index_->line_starts;
+  if (starts.empty()) {
+    starts.push_back(0);
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      if (text[i] == '\n') starts.push_back(i + 1);
+    }
+  }
+  auto line = std::upper_bound(starts.begin(), starts.end(), offset) - starts.begin();
+  return {static_cast<int>(line), static_cast<int>(offset - starts[line - 1]) + 1};
 }
 
 }  // namespace raygrade
