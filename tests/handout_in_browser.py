@@ -202,6 +202,10 @@ def main():
             check("second decimal point" in hint, f"no syntax message for 7.2.7: {hint!r}")
             driver.save_screenshot(os.path.join(OUT, "handout-typing-error.png"))
             probe.clear()
+            probe.send_keys("30°")
+            hint = driver.execute_script("return arguments[0].hint.textContent", probe)
+            check("reads as 0.523599" in hint, f"30° not read as 0.523599 (radians): {hint!r}")
+            probe.clear()
             probe.send_keys("2√2")
             hint = driver.execute_script("return arguments[0].hint.textContent", probe)
             check("reads as 2.82843" in hint, f"2√2 not read as 2.82843: {hint!r}")
@@ -239,6 +243,14 @@ def main():
             t = graded["submissions"][0] if graded else {}
             check(code == 1 or code == 0, f"grading as s002 exited {code}: {err}")
             check(t.get("score", 0) < s.get("score", 0), f"s002 with s001's answers got {t.get('score')}")
+            # The other student's right answers, handed in as the first student.
+            theirs_as_mine = os.path.join(work, "s002-answers-as-s001.json")
+            with open(theirs_as_mine, "w") as f:
+                json.dump({"student": {"id": "s001"}, "answers": theirs}, f)
+            code, graded, err = grade(theirs_as_mine, "--roster", roster)
+            u = graded["submissions"][0] if graded else {}
+            check(u.get("score", 0) < s.get("score", 0),
+                  f"s001 with s002's right answers got {u.get('score')} of {u.get('max_score')}")
     finally:
         shutil.rmtree(work, ignore_errors=True)
     print(f"handout_in_browser: {'FAILED' if failures else 'passed'}; screenshots in {OUT}")

@@ -1,6 +1,7 @@
-// The checks of one problem by itself, as the bank check, the generator and assignment
-// variants run them.
+// The checks of one problem by itself (stated answer, boundaries, conditioning, self-tests), as
+// the generator and assignment variants run them.
 #include "check/problem_checks.h"
+#include "check/self_tests.h"
 
 namespace raygrade {
 
@@ -11,6 +12,8 @@ std::vector<Diagnostic> problem_findings(const Problem& p, const NumberLiterals&
   out.insert(out.end(), probe.diagnostics.begin(), probe.diagnostics.end());
   auto c = check_conditioning(p, reference, literals, probe.exact_boundary);
   out.insert(out.end(), c.begin(), c.end());
+  auto t = run_self_tests(p, reference);
+  out.insert(out.end(), t.begin(), t.end());
   return out;
 }
 

@@ -58,8 +58,8 @@ std::vector<Diagnostic> check_conditioning(const Problem& p, const nlohmann::jso
                                            const NumberLiterals& literals, bool exact_boundary);
 
 // Every finding of the checks `raygrade check` runs on one problem by itself: the stated answer,
-// the boundary probes and the conditioning check (those across problems, unique ids and
-// geometry, are the caller's). `literals` are keyed by JSON pointers that start with p.path.
+// the boundary probes, the conditioning check and the self-tests (those across problems, unique ids
+// and geometry, are the caller's). `literals` are keyed by JSON pointers that start with p.path.
 std::vector<Diagnostic> problem_findings(const Problem& p, const NumberLiterals& literals);
 
 }  // namespace raygrade
