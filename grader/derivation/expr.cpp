@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "math/robust.h"
 
 namespace raygrade {
 namespace {
@@ -145,7 +146,7 @@ Value evaluate(const E& e, const Env& env) {
       return scalar(a) * scalar(a);
     }
     case Op::kAbs: return std::abs(scalar(arg(0)));
-    case Op::kNorm: return length(vector(arg(0)));
+    case Op::kNorm: return length_at_any_scale(vector(arg(0)));
     case Op::kMin:
     case Op::kMax: {
       double best = scalar(arg(0));
