@@ -97,7 +97,9 @@ double naive_normal_error(const std::vector<TruthCase>& cases) {
     std::optional<double> t = naive_nearest<double>(c.input);
     if (!t) continue;
     std::optional<Vec3d> n = naive_normal(c.input, *t);
-    if (n) worst = std::max(worst, component_error(*n, c.truth.hits.front().normal));
+    if (!n) continue;
+    // A normal that is not finite (a t that overflowed) is as far off as two unit vectors can be.
+    worst = std::max(worst, is_finite(*n) ? component_error(*n, c.truth.hits.front().normal) : 2.0);
   }
   return worst;
 }
