@@ -88,13 +88,17 @@ TEST(SolverAccuracy, StoredHitsAreTheMpfrHits) {
 
 TEST(SolverAccuracy, RandomCasesAtEveryDirectionScale) {
   SplitMix rng(17);
+  std::size_t hits = 0;
   for (Primitive p : kAllPrimitives) {
     for (AccuracyCase& c : random_cases(p, 150, rng.next())) {
       c.direction = std::pow(10.0, rng.uniform(-300, 300)) * c.direction;
-      EXPECT_EQ(fault(c, truth_hits(c)), "")
+      std::vector<TruthHit> truth = truth_hits(c);
+      hits += truth.size();
+      EXPECT_EQ(fault(c, truth), "")
           << c.id << fmt::format(" direction {} origin {}", c.direction, c.origin);
     }
   }
+  EXPECT_GT(hits, 500u);  // about half the rays hit; spheres, cylinders and boxes twice
 }
 
 }  // namespace
