@@ -18,7 +18,7 @@ AccuracyReport hand_made_report() {
   for (Primitive p : kAllPrimitives) {
     r.hard_per_primitive[p] = 3;
     for (const auto& level : ladder_levels()) {
-      ReportRow row{level.name, p, false, 2, 4, {}, {}};
+      ReportRow row{level.name, p, false, 2, 4, {}, {}, std::nullopt};
       row.random.judged = 10;
       row.hard.judged = 3;
       if (level.name == "reference double" && p == Primitive::kSphere) row.ns_random = 3;
@@ -27,7 +27,7 @@ AccuracyReport hand_made_report() {
       r.rows.push_back(row);
     }
   }
-  ReportRow peer{"Möller–Trumbore", Primitive::kTriangle, true, 1, 1, {}, {}};
+  ReportRow peer{"Möller–Trumbore", Primitive::kTriangle, true, 1, 1, {}, {}, std::nullopt};
   peer.hard.judged = 3;
   peer.hard.wrong_decisions = 2;
   r.rows.push_back(peer);

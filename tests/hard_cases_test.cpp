@@ -32,9 +32,10 @@ constexpr double kUnitRoundoff = 0x1p-53;
 TEST(HardCases, CoverEveryKindOfHardInput) {
   std::map<std::string, int> groups;
   for (const auto& c : corpus()) ++groups[c.input.group];
-  for (const char* g : {"far-sphere", "huge-sphere", "grazing", "tangent", "on-surface",
-                        "near-parallel", "shared-edge", "needle", "huge-coordinates",
-                        "direction-scale", "box-slab", "cylinder-axis"}) {
+  for (const char* g :
+       {"far-sphere", "huge-sphere", "grazing", "tangent", "on-surface", "near-parallel",
+        "shared-edge", "needle", "huge-coordinates", "direction-scale", "box-slab", "cylinder-axis",
+        "extreme-scale", "small-far"}) {
     EXPECT_GE(groups[g], 5) << g;
   }
 }

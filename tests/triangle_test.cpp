@@ -139,7 +139,9 @@ TEST(Triangle, ObliqueHitAtOneSixth) {
   ASSERT_EQ(x.hits.size(), 1u);
   EXPECT_NEAR(x.hits[0].t, 1.0 / 6, 1e-16);
   expect_bary(x.hits[0], 1.0 / 6, 2.0 / 6, 3.0 / 6);
-  EXPECT_NEAR(x.hits[0].normal.x, 1 / std::sqrt(3.0), 1e-16);
+  // The normal (1, 1, 1)/√3, correctly rounded: 1/√3 = 0.5773502691896257645..., within half
+  // an ulp (5.55e-17). (1 / std::sqrt(3.0) rounds twice and lands an ulp above.)
+  EXPECT_NEAR(x.hits[0].normal.x, 0.5773502691896257645, 5.6e-17);
 }
 
 // Reversing the vertex order reverses the normal: (c − a) × (b − a) = (0, 0, −16).

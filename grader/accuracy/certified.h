@@ -61,12 +61,23 @@ constexpr int kMpfrBoundaryBits = 4096;
 // Ground truth: the certified MPFR answer; `boundary` when even kMpfrBoundaryBits cannot
 // decide. `condition` is the relative condition number of t with respect to relative
 // perturbations of every input coordinate (∞ at a tangent), by differences at MPFR precision.
+// `hits` holds every hit at t ≥ 0 (both of a sphere's, a cylinder's or a box's), each t and unit
+// normal computed at kTruthBits and rounded once; the normal is zero for boxes, whose faces'
+// normals are exact (and ambiguous at an edge). Empty for a miss and on a boundary.
+struct TruthHit {
+  double t = 0;
+  Vec3d normal;
+};
 struct Truth {
   bool hit = false;
   double t = 0;
   bool boundary = false;
   double condition = 0;
+  std::vector<TruthHit> hits;
 };
 Truth compute_truth(const AccuracyCase& c, bool with_condition = true);
+
+// Every hit at t ≥ 0 of the case at kTruthBits, as Truth::hits holds them.
+std::vector<TruthHit> truth_hits(const AccuracyCase& c);
 
 }  // namespace raygrade

@@ -28,16 +28,15 @@ Vec3d SplitMix::unit_vector() {
   return {s * std::cos(phi), s * std::sin(phi), z};
 }
 
+Vec3d perpendicular(const Vec3d& u, SplitMix& rng) {
+  return normalized(cross(u, rng.unit_vector()));
+}
+
 namespace {
 
 AccuracyCase make(std::string id, std::string group, Primitive p, Vec3d o, Vec3d d,
                   std::vector<Vec3d> points, double radius = 0) {
   return AccuracyCase{std::move(id), std::move(group), p, o, d, std::move(points), radius};
-}
-
-// A unit vector perpendicular to u.
-Vec3d perpendicular(const Vec3d& u, SplitMix& rng) {
-  return normalized(cross(u, rng.unit_vector()));
 }
 
 // ±10^-k: the relative offset from a tangent of a grazing ray.

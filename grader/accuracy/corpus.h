@@ -25,6 +25,9 @@ class SplitMix {
   std::uint64_t state_;
 };
 
+// A random unit vector perpendicular to u.
+Vec3d perpendicular(const Vec3d& u, SplitMix& rng);
+
 // The hard cases: every kind of input the accuracy study names (far and huge spheres, grazing
 // and tangent rays, origins on the surface, rays nearly parallel to a plane, shared edges and
 // vertices, needle triangles, huge coordinates, tiny and huge direction scales, box slab

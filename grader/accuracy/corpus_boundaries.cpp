@@ -86,6 +86,57 @@ void cylinder_axes(std::vector<AccuracyCase>& out, SplitMix& rng) {
   }
 }
 
+// Directions scaled by 1e-170 to 1e+148: a sphere of radius 1 at distance 5 (two hits, t of
+// order 1e-148 to 1e+170), then every primitive at a random scale 10^s, s in [−300, 148]. The
+// problem format reads no direction whose squared length overflows a double (about 1.8e308),
+// so 1e+148 is as far as a direction of length 5 goes there; the solver itself is tested up to
+// 1e+300 (tests/solver_accuracy_test.cpp).
+void extreme_direction_scales(std::vector<AccuracyCase>& out, SplitMix& rng) {
+  for (int i = 0; i < 24; ++i) {
+    int j = i / 2;  // 1e+60, 1e+68, ..., 1e+148 and 1e-60, 1e-70, ..., 1e-170
+    int exponent = i % 2 == 0 ? 60 + 8 * j : -(60 + 10 * j);
+    double scale = std::pow(10.0, exponent);
+    Vec3d aim = Vec3d{0, 0, 5} + 0.6 * perpendicular(Vec3d{0, 0, 1}, rng);
+    out.push_back(make(fmt::format("extreme-scale-sphere-{}", i), "extreme-scale",
+                       Primitive::kSphere, {0, 0, 0}, scale * aim, {{0, 0, 5}}, 1));
+  }
+  for (int i = 0; i < 60; ++i) {
+    AccuracyCase c = random_cases(kAllPrimitives[i % 6], 1, rng.next()).front();
+    c.id = fmt::format("extreme-scale-{}", i);
+    c.group = "extreme-scale";
+    c.direction = std::pow(10.0, rng.uniform(-300, 148)) * c.direction;
+    out.push_back(std::move(c));
+  }
+}
+
+// Objects small next to their distance, where a normal from the rounded hit point
+// (P − C)/r loses digits: spheres of radius 6e-9 at 1000 and of radius 1 at 1e11, spheres of
+// radius 1e-9 to 1e-6 at 1e2 to 1e4, and thin far cylinders; rays aimed within the object.
+void small_far_objects(std::vector<AccuracyCase>& out, SplitMix& rng) {
+  auto sphere = [&](std::string id, double r, double dist) {
+    Vec3d o{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    Vec3d u = rng.unit_vector(), c = o + dist * u;
+    Vec3d target = c + (r * rng.uniform(-0.9, 0.9)) * perpendicular(u, rng);
+    out.push_back(make(std::move(id), "small-far", Primitive::kSphere, o, target - o, {c}, r));
+  };
+  for (int i = 0; i < 10; ++i) sphere(fmt::format("small-far-sphere-{}", i), 6e-9, 1000);
+  for (int i = 0; i < 10; ++i) sphere(fmt::format("far-sphere-1e11-{}", i), 1, 1e11);
+  for (int i = 0; i < 20; ++i) {
+    sphere(fmt::format("small-far-sphere-{}", i + 10), std::pow(10.0, -rng.uniform(6, 9)),
+           std::pow(10.0, rng.uniform(2, 4)));
+  }
+  for (int i = 0; i < 20; ++i) {
+    double r = std::pow(10.0, -rng.uniform(6, 9)), dist = std::pow(10.0, rng.uniform(2, 4));
+    Vec3d o{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    Vec3d u = rng.unit_vector(), axis = perpendicular(u, rng);
+    Vec3d base = o + dist * u + rng.uniform(-1, 1) * axis;
+    Vec3d across = normalized(cross(axis, u));
+    Vec3d target = base + (r * rng.uniform(-0.9, 0.9)) * across + rng.uniform(-1, 1) * axis;
+    out.push_back(make(fmt::format("small-far-cylinder-{}", i), "small-far", Primitive::kCylinder,
+                       o, target - o, {base, axis}, r));
+  }
+}
+
 nlohmann::json truth_json(const Truth& t) {
   nlohmann::json j = {{"hit", t.hit}};
   if (t.hit) j["t"] = t.t;
@@ -93,6 +144,12 @@ nlohmann::json truth_json(const Truth& t) {
   if (t.hit && !t.boundary)
     j["condition"] =
         std::isfinite(t.condition) ? nlohmann::json(t.condition) : nlohmann::json("inf");
+  if (!t.hits.empty()) {
+    nlohmann::json hits = nlohmann::json::array();
+    for (const TruthHit& h : t.hits)
+      hits.push_back({{"t", h.t}, {"normal", {h.normal.x, h.normal.y, h.normal.z}}});
+    j["hits"] = hits;
+  }
   return j;
 }
 
@@ -103,6 +160,8 @@ void scale_and_boundary_cases(std::vector<AccuracyCase>& out, SplitMix& rng) {
   direction_scales(out, rng);
   box_slabs(out, rng);
   cylinder_axes(out, rng);
+  extreme_direction_scales(out, rng);
+  small_far_objects(out, rng);
 }
 
 nlohmann::json corpus_json(const std::vector<TruthCase>& cases) {
@@ -141,6 +200,12 @@ std::vector<TruthCase> read_corpus(const std::string& path) {
       tc.truth.condition = t.at("condition").json().is_string()
                                ? std::numeric_limits<double>::infinity()
                                : t.at("condition").number();
+    }
+    if (t.has("hits")) {
+      for (const auto& h : t.at("hits").items()) {
+        h.allow_only({"t", "normal"});
+        tc.truth.hits.push_back({h.at("t").number(), h.at("normal").vec3()});
+      }
     }
     out.push_back(std::move(tc));
   }

@@ -8,26 +8,13 @@
 #include "accuracy/naive.h"
 #include "shapes/box.h"
 #include "shapes/cylinder.h"
+#include "shapes/flat.h"
 #include "shapes/plane.h"
 #include "shapes/polygon.h"
 #include "shapes/sphere.h"
 #include "shapes/triangle.h"
 
 namespace raygrade {
-
-// Newell's normal (as Polygon uses), at any number type.
-template <typename T>
-Vec3<T> newell_normal_of(const std::vector<Vec3<T>>& v) {
-  Vec3<T> n{};
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    const Vec3<T>& a = v[i];
-    const Vec3<T>& b = i + 1 < v.size() ? v[i + 1] : v[0];
-    n.x += (a.y - b.y) * (a.z + b.z);
-    n.y += (a.z - b.z) * (a.x + b.x);
-    n.z += (a.x - b.x) * (a.y + b.y);
-  }
-  return n;
-}
 
 // The case's points in T. No copy for double, and a per-thread buffer for the other types,
 // so that the benchmark times the formulas rather than memory allocation. The buffer is

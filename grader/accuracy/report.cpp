@@ -6,6 +6,9 @@
 #include <cmath>
 #include <limits>
 
+#include "accuracy/formulations.h"
+#include "accuracy/settle.h"
+
 namespace raygrade {
 namespace {
 
@@ -46,7 +49,60 @@ std::vector<AccuracyCase> inputs(const std::vector<TruthCase>& cases) {
   return out;
 }
 
+// The largest component of a − b.
+double component_error(const Vec3d& a, const Vec3d& b) {
+  Vec3d e = a - b;
+  return std::max({std::abs(e.x), std::abs(e.y), std::abs(e.z)});
+}
+
+// The textbook normal at the point O + t·D rounded: (P − C)/r for a sphere, the part of P − B
+// across the axis for a cylinder, the normalized normal or cross product for the flats.
+std::optional<Vec3d> naive_normal(const AccuracyCase& c, double t) {
+  Vec3d point = c.origin + t * c.direction;
+  const std::vector<Vec3d>& p = c.points;
+  switch (c.primitive) {
+    case Primitive::kSphere: return (point - p[0]) / c.radius;
+    case Primitive::kCylinder: {
+      Vec3d axis = normalized(p[1]), v = point - p[0];
+      return normalized(v - dot(v, axis) * axis);
+    }
+    case Primitive::kPlane: return normalized(p[0]);
+    case Primitive::kTriangle: return normalized(cross(p[1] - p[0], p[2] - p[0]));
+    case Primitive::kPolygon: return normalized(newell_normal(p));
+    case Primitive::kBox: return std::nullopt;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
+
+double solver_normal_error(const std::vector<TruthCase>& cases) {
+  double worst = 0;
+  for (const auto& c : cases) {
+    if (c.truth.hits.empty() || c.truth.hits.front().normal == Vec3d{}) continue;
+    std::unique_ptr<Shape> shape = shape_of(c.input);
+    Ray ray{c.input.origin, c.input.direction};
+    Intersection x = shape->intersect(ray);
+    settle_nearest(*shape, ray, x);
+    if (x.hits.empty()) continue;  // a wrong decision: counted in the t columns
+    worst = std::max(worst, component_error(x.hits.front().normal, c.truth.hits.front().normal));
+  }
+  return worst;
+}
+
+double naive_normal_error(const std::vector<TruthCase>& cases) {
+  double worst = 0;
+  for (const auto& c : cases) {
+    if (c.truth.hits.empty() || c.truth.hits.front().normal == Vec3d{}) continue;
+    std::optional<double> t = naive_nearest<double>(c.input);
+    if (!t) continue;
+    std::optional<Vec3d> n = naive_normal(c.input, *t);
+    if (!n) continue;
+    // A normal that is not finite (a t that overflowed) is as far off as two unit vectors can be.
+    worst = std::max(worst, is_finite(*n) ? component_error(*n, c.truth.hits.front().normal) : 2.0);
+  }
+  return worst;
+}
 
 AccuracyReport measure_accuracy(const std::vector<Measured>& levels, int random_count,
                                 const std::vector<TruthCase>& hard,
@@ -76,7 +132,9 @@ AccuracyReport measure_accuracy(const std::vector<Measured>& levels, int random_
       NearestHit f = m.level.on[static_cast<std::size_t>(p)];
       if (!f) continue;
       rows.push_back({m.level.name, p, m.peer, kNever, kNever, level_error(m.level, random),
-                      level_error(m.level, hard_p)});
+                      level_error(m.level, hard_p), std::nullopt});
+      if (m.level.name == "reference double") rows.back().normal_hard = solver_normal_error(hard_p);
+      if (m.level.name == "naive double") rows.back().normal_hard = naive_normal_error(hard_p);
       timed.push_back(f);
     }
     for (int round = 0; round < kTimingRounds; ++round) {

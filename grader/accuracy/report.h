@@ -18,7 +18,18 @@ struct ReportRow {
   bool peer = false;
   double ns_random = 0, ns_hard = 0;  // nanoseconds per intersection (hard: 0 if no cases)
   LevelError random, hard;
+  // The largest error of the unit normal on the hard set, per component, against the MPFR
+  // normal: for "reference double", the normal solve reports (the primitive's intersect); for
+  // "naive double", the normal (P − C)/r of the rounded hit point at the naive t. Nothing for
+  // the other levels, which give t alone.
+  std::optional<double> normal_hard;
 };
+
+// The largest component error of the unit normal of the nearest hit on `cases` (those whose
+// truth has a normal), as solve reports it (`solver`), or as the naive formulas give it from
+// the rounded hit point P = O + t·D at the naive double t.
+double solver_normal_error(const std::vector<TruthCase>& cases);
+double naive_normal_error(const std::vector<TruthCase>& cases);
 
 struct AccuracyReport {
   std::vector<ReportRow> rows;

@@ -2,8 +2,15 @@
 #include "accuracy/settle.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "accuracy/certified.h"
+#include "shapes/box.h"
+#include "shapes/cylinder.h"
+#include "shapes/plane.h"
+#include "shapes/polygon.h"
+#include "shapes/sphere.h"
+#include "shapes/triangle.h"
 
 namespace raygrade {
 namespace {
@@ -26,7 +33,10 @@ std::optional<AccuracyCase> accuracy_case_of(const Shape& object, const Ray& ray
   c.id = "problem";
   c.group = "problem";
   c.origin = ray.origin;
-  c.direction = ray.direction;
+  // The direction scaled into [1, 2) by a power of two, as the shapes intersect it
+  // (intersect_rescaled): exact, and t is then 2^k times the problem's.
+  int k = direction_exponent(ray.direction);
+  c.direction = scaled_by_power_of_two(ray.direction, -k);
   std::string_view type = object.type();
   if (type == "sphere") {
     c.primitive = Primitive::kSphere;
@@ -51,22 +61,51 @@ std::optional<AccuracyCase> accuracy_case_of(const Shape& object, const Ray& ray
   return c;
 }
 
+std::unique_ptr<Shape> shape_of(const AccuracyCase& c) {
+  const std::vector<Vec3d>& p = c.points;
+  switch (c.primitive) {
+    case Primitive::kSphere: return std::make_unique<Sphere>(p[0], c.radius);
+    case Primitive::kPlane: return std::make_unique<Plane>(p[0], p[1], std::nullopt);
+    case Primitive::kTriangle: return std::make_unique<Triangle>(p[0], p[1], p[2]);
+    case Primitive::kPolygon: return std::make_unique<Polygon>(p);
+    case Primitive::kCylinder:
+      return std::make_unique<Cylinder>(p[0], p[1], c.radius, std::nullopt, false);
+    case Primitive::kBox: return std::make_unique<Box>(p[0], p[1]);
+  }
+  return nullptr;
+}
+
 namespace {
 
 // settle_nearest on the object's accuracy case `c`, returning the level itself.
 Level settle_case(const AccuracyCase& c, const Shape& object, const Ray& ray, Intersection& x) {
   Adaptive a = adaptive_nearest(c);
-  if (a.level != Level::kDouble && a.level != Level::kExactBoundary && a.hit != !x.hits.empty()) {
+  // Certified double deciding differently from the solver is certain too: a plane the solver
+  // takes as parallel up to rounding, which the ray still crosses.
+  if (a.level != Level::kExactBoundary && a.hit != !x.hits.empty()) {
     if (!a.hit) {
       x.hits.clear();
     } else {
       Hit h;
-      h.t = a.t;
-      h.point = ray.at(a.t);
-      // The normal: the object's own, from a ray that starts a little before the hit.
-      Intersection near =
-          object.intersect(Ray{ray.at(a.t) - kNormalProbeBack * ray.direction, ray.direction});
-      if (!near.hits.empty()) h.normal = near.hits.front().normal;
+      h.t = std::ldexp(a.t, -direction_exponent(ray.direction));
+      if (!ray.accepts(h.t)) return a.level;  // beyond what a double holds
+      h.point = ray.at(h.t);
+      // The normal: the object's own, from a ray that starts a little before the hit; when
+      // that ray is parallel to the surface up to rounding too (a plane the ray crosses at a
+      // glancing 1e-16), from rays along the axes through the hit point.
+      std::vector<Ray> probes = {Ray{h.point - kNormalProbeBack * ray.direction, ray.direction}};
+      double step = kNormalProbeBack * std::max(1.0, length(h.point));
+      for (int axis = 0; axis < 3; ++axis) {
+        Vec3d e{};
+        e[axis] = 1;
+        probes.push_back(Ray{h.point - step * e, e});
+      }
+      for (const Ray& probe : probes) {
+        Intersection near = object.intersect(probe);
+        if (near.hits.empty()) continue;
+        h.normal = near.hits.front().normal;
+        break;
+      }
       x.hits.insert(x.hits.begin(), h);
     }
   }

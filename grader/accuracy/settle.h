@@ -13,7 +13,13 @@ namespace raygrade {
 
 // The case of the accuracy study for an object and a ray, when it has one: the ray's interval
 // must be [0, ∞); planes given by a point, infinite cylinders and the other primitives qualify.
+// Its direction is the ray's scaled into [1, 2) by a power of two, as intersect_rescaled does:
+// its t is 2^direction_exponent times the ray's.
 std::optional<AccuracyCase> accuracy_case_of(const Shape& object, const Ray& ray);
+
+// The object of an accuracy case as the solver's Shape, the inverse of accuracy_case_of: an
+// infinite cylinder, a plane given by a point.
+std::unique_ptr<Shape> shape_of(const AccuracyCase& c);
 
 // Runs the adaptive ladder on the nearest hit of `x` (the double reference's answer). Returns
 // the level the decision needed ("double", "double-double", "mpfr", "exact-boundary"), or

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "core/error.h"
+#include "math/robust.h"
 
 namespace raygrade {
 namespace {
@@ -150,7 +151,7 @@ Value evaluate(const E& e, const Env& env) {
     case Op::kAbs: return std::abs(scalar(arg(0)));
     case Op::kArccosDegrees:
       return std::acos(std::clamp(scalar(arg(0)), -1.0, 1.0)) * (180 / std::numbers::pi);
-    case Op::kNorm: return length(vector(arg(0)));
+    case Op::kNorm: return length_at_any_scale(vector(arg(0)));
     case Op::kMin:
     case Op::kMax: {
       double best = scalar(arg(0));

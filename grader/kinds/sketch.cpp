@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "derivation/number_format.h"
+#include "math/robust.h"
 
 namespace raygrade {
 namespace {
@@ -19,6 +20,17 @@ constexpr double kAlongNormal = 1e-9;
 void sketch_ray(Sketch& figure, const Ray& ray, const std::vector<const Shape*>& objects,
                 const std::vector<Hit>& hits, const std::string& origin_label,
                 const std::string& ray_label) {
+  // The drawing does not depend on the direction's scale: it is drawn with the direction
+  // scaled into [1, 2) by a power of two, whose squared length neither overflows nor
+  // underflows (a direction of 1e-170 would give a ray of NaN).
+  if (int k = direction_exponent(ray.direction); k != 0) {
+    Ray unit{ray.origin, scaled_by_power_of_two(ray.direction, -k), std::ldexp(ray.t_min, k),
+             std::ldexp(ray.t_max, k)};
+    std::vector<Hit> unit_hits = hits;
+    for (Hit& h : unit_hits) h.t = std::ldexp(h.t, k);
+    sketch_ray(figure, unit, objects, unit_hits, origin_label, ray_label);
+    return;
+  }
   figure.across = ray.direction;
   figure.across_name = "the ray's direction";
   double dd = length_squared(ray.direction);

@@ -112,6 +112,47 @@ void difference_exact(const Vec3<T>& o, const Vec3<T>& c, Vec3<T>& hi, Vec3<T>& 
   }
 }
 
+// The exponent k (ilogb) of v's largest component, so that v·2^-k has it in [1, 2); 0 when it is
+// zero or not finite.
+template <typename T>
+int scale_exponent(const Vec3<T>& v) {
+  using std::abs;
+  T m = std::max({abs(v.x), abs(v.y), abs(v.z)});
+  if (!(m > T(0)) || !std::isfinite(m)) return 0;
+  return std::ilogb(m);
+}
+
+// v·2^k, exact barring underflow.
+template <typename T>
+Vec3<T> scaled_by_power_of_two(const Vec3<T>& v, int k) {
+  return {std::ldexp(v.x, k), std::ldexp(v.y, k), std::ldexp(v.z, k)};
+}
+
+// |v|, also where |v|² overflows or underflows (a direction of 1e-170): then computed for v
+// scaled by a power of two, exactly, and scaled back. Where |v|² is a normal number, the plain
+// √(v·v).
+inline double length_at_any_scale(const Vec3<double>& v) {
+  double squared = length_squared(v);
+  if (squared >= std::numeric_limits<double>::min() && std::isfinite(squared))
+    return std::sqrt(squared);
+  int k = scale_exponent(v);
+  return std::ldexp(length(scaled_by_power_of_two(v, -k)), k);
+}
+
+// The compensated paths of the sphere and the cylinder scale a direction whose largest
+// component is beyond 2^±kRescaleExponent into [1, 2) by a power of two, and the roots back:
+// the squares and products of up to four magnitudes in their formulas then neither overflow nor
+// underflow, at any direction scale where a double holds t.
+constexpr int kRescaleExponent = 64;
+
+// The roots of a quadratic for the direction d·2^-k, scaled back to the direction d (t·2^-k).
+template <typename Roots>
+Roots roots_scaled_back(Roots r, int k) {
+  r.t0 = std::ldexp(r.t0, -k);
+  r.t1 = std::ldexp(r.t1, -k);
+  return r;
+}
+
 // Sign of x as a number of the same type (+1 for zero, so that q below never vanishes
 // for a nonzero discriminant).
 template <typename T>

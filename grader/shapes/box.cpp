@@ -63,6 +63,7 @@ bool touches_edge(const Ray& ray, const SlabInterval<double>& s, const Vec3d& lo
 }  // namespace
 
 Intersection Box::intersect(const Ray& ray) const {
+  if (std::optional<Intersection> x = intersect_rescaled(*this, ray)) return *x;
   Intersection out;
   auto s = slab_interval(ray.origin, ray.direction, lo_, hi_);
   if (!s.hit && touches_edge(ray, s, lo_, hi_)) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "math/unit_vector.h"
 #include "shapes/describe.h"
 
 namespace raygrade {
@@ -58,6 +59,7 @@ constexpr double kSeamRelative = 64 * 2.220446049250313e-16;
 }  // namespace
 
 Intersection Cylinder::intersect(const Ray& ray) const {
+  if (std::optional<Intersection> x = intersect_rescaled(*this, ray)) return *x;
   Intersection out;
   Vec3d f = ray.origin - base_;
   double fa = dot(f, axis_), da = dot(ray.direction, axis_);
@@ -81,16 +83,21 @@ Intersection Cylinder::intersect(const Ray& ray) const {
       }
     }
   } else {
-    Roots<double> roots = cylinder_side_roots(ray.origin, ray.direction, base_, axis_, radius_);
-    double ts[2] = {roots.t0, roots.t1};
+    // The side's roots and normals in double-double, rounded once, as the sphere's: the axis
+    // normalized in it, and the normal the part of O − B + t·D across the axis, from the exact
+    // O − B and the unrounded t.
+    Vec3dd o(ray.origin), d(ray.direction), base(base_), axis = unit_dd(Vec3dd(axis_given_));
+    Roots<DoubleDouble> roots = cylinder_side_roots(o, d, base, axis, DoubleDouble(radius_));
+    DoubleDouble ts[2] = {roots.t0, roots.t1};
     for (int i = 0; i < roots.count; ++i) {
-      double t = ts[i];
+      double t = static_cast<double>(ts[i]);
       if (!ray.accepts(t)) continue;
       Vec3d p = ray.at(t);
       double h = dot(p - base_, axis_);
       if (height_ && (h < -seam || h > *height_ + seam)) continue;
-      Vec3d radial = (p - base_) - h * axis_;
-      out.hits.push_back(Hit{t, p, normalized(radial), std::nullopt, "side"});
+      Vec3dd v = (o - base) + ts[i] * d;
+      Vec3d normal = unit_rounded(v - dot(v, axis) * axis);
+      out.hits.push_back(Hit{t, p, normal, std::nullopt, "side"});
     }
   }
   // Compute the caps' hits

@@ -44,6 +44,12 @@ template <typename T>
 [[gnu::noinline]] Roots<T> cylinder_side_roots_slow(const Vec3<T>& o, const Vec3<T>& d,
                                                     const Vec3<T>& base, const Vec3<T>& axis, T r) {
   using std::sqrt;
+  if constexpr (kErrorFree<T>) {
+    if (int k = scale_exponent(d); k < -kRescaleExponent || k > kRescaleExponent) {
+      return roots_scaled_back(
+          cylinder_side_roots_slow(o, scaled_by_power_of_two(d, -k), base, axis, r), k);
+    }
+  }
   Vec3<T> f = o - base;
   Vec3<T> fp = f - dot(f, axis) * axis;
   Vec3<T> dp = d - dot(d, axis) * axis;

@@ -51,17 +51,7 @@ bool in_plane(const Vec3d& n, const Vec3d& q, const Vec3d& p) {
   return std::abs(dot(n, p - q)) <= kParallelRelative * scale;
 }
 
-Vec3d newell_normal(const std::vector<Vec3d>& v) {
-  Vec3d n{};
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    const Vec3d& a = v[i];
-    const Vec3d& b = v[(i + 1) % v.size()];
-    n.x += (a.y - b.y) * (a.z + b.z);
-    n.y += (a.z - b.z) * (a.x + b.x);
-    n.z += (a.x - b.x) * (a.y + b.y);
-  }
-  return n;
-}
+Vec3d newell_normal(const std::vector<Vec3d>& v) { return newell_normal_of(v); }
 
 bool point_in_polygon(const Vec3d& q3, const std::vector<Vec3d>& vertices, const Vec3d& normal) {
   int drop = max_dimension(normal);

@@ -34,7 +34,22 @@ bool point_in_polygon(const Vec3d& q, const std::vector<Vec3d>& vertices, const 
 // the boundary, so rays through edges and vertices hit.
 bool ray_pierces_polygon(const Ray& ray, const std::vector<Vec3d>& vertices);
 
-// Newell's normal of a polygon (twice the area vector; not normalized).
+// Newell's normal at any number type (twice the area vector; not normalized): the sum of
+// v_i × v_(i+1), by vertex order.
+template <typename T>
+Vec3<T> newell_normal_of(const std::vector<Vec3<T>>& v) {
+  Vec3<T> n{};
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Vec3<T>& a = v[i];
+    const Vec3<T>& b = i + 1 < v.size() ? v[i + 1] : v[0];
+    n.x += (a.y - b.y) * (a.z + b.z);
+    n.y += (a.z - b.z) * (a.x + b.x);
+    n.z += (a.x - b.x) * (a.y + b.y);
+  }
+  return n;
+}
+
+// Newell's normal of a polygon in double.
 Vec3d newell_normal(const std::vector<Vec3d>& vertices);
 
 }  // namespace raygrade

@@ -1,6 +1,7 @@
 // Plane: reading, reference intersection, and the point-normal and implicit derivations.
 #include "shapes/plane.h"
 
+#include "math/unit_vector.h"
 #include "shapes/describe.h"
 #include "shapes/flat.h"
 
@@ -44,6 +45,7 @@ Vec3d Plane::some_point() const {
 Vec3d Plane::center() const { return some_point(); }
 
 Intersection Plane::intersect(const Ray& ray) const {
+  if (std::optional<Intersection> x = intersect_rescaled(*this, ray)) return *x;
   Intersection out;
   Vec3d q = some_point();
   if (parallel_to_plane(normal_, ray.direction)) {
@@ -67,7 +69,7 @@ Intersection Plane::intersect(const Ray& ray) const {
     Hit h;
     h.t = t;
     h.point = ray.at(t);
-    h.normal = normalized(normal_);
+    h.normal = unit_rounded(Vec3dd(normal_));
     out.hits.push_back(h);
   }
   return out;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "math/unit_vector.h"
 #include "shapes/describe.h"
 #include "shapes/flat.h"
 #include "shapes/plane.h"
@@ -28,7 +29,10 @@ bool is_convex(const std::vector<Vec3d>& v, const Vec3d& n) {
 }  // namespace
 
 Polygon::Polygon(std::vector<Vec3d> vertices)
-    : v_(std::move(vertices)), normal_(newell_normal(v_)), convex_(is_convex(v_, normal_)) {}
+    : v_(std::move(vertices)),
+      normal_(rounded(newell_normal_of(std::vector<Vec3dd>(v_.begin(), v_.end())))),
+      unit_normal_(unit_rounded(Vec3dd(normal_))),
+      convex_(is_convex(v_, normal_)) {}
 
 std::unique_ptr<Shape> Polygon::read(const Cursor& object) {
   std::vector<std::string> keys = common_object_keys();
@@ -94,6 +98,7 @@ double Polygon::extent() const {
 }
 
 Intersection Polygon::intersect(const Ray& ray) const {
+  if (std::optional<Intersection> x = intersect_rescaled(*this, ray)) return *x;
   Intersection out;
   if (parallel_to_plane(normal_, ray.direction)) {
     out.contained =
@@ -106,7 +111,7 @@ Intersection Polygon::intersect(const Ray& ray) const {
   Hit h;
   h.t = *t;
   h.point = ray.at(*t);
-  h.normal = normalized(normal_);
+  h.normal = unit_normal_;
   out.hits.push_back(h);
   return out;
 }

@@ -66,7 +66,10 @@ class Polygon final : public Shape {
 
  private:
   std::vector<Vec3d> v_;
-  Vec3d normal_;  // Newell's normal, by vertex order
+  // Newell's normal, by vertex order, computed in double-double and rounded once: far from
+  // the origin (coordinates of 1e8) its sum of products cancels in double.
+  Vec3d normal_;
+  Vec3d unit_normal_;  // the same, normalized
   bool convex_;
 };
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <string>
@@ -20,7 +21,9 @@ struct Ray {
   double t_max = kInfinity;
 
   Vec3d at(double t) const { return origin + t * direction; }
-  bool accepts(double t) const { return t >= t_min && t <= t_max; }
+  // A t beyond double's range (the infinity a division by an underflowed quantity gives) is
+  // never a hit, even in [t_min, ∞].
+  bool accepts(double t) const { return std::isfinite(t) && t >= t_min && t <= t_max; }
 };
 
 struct Hit {

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math/robust.h"
+
 namespace raygrade {
 
 const std::vector<std::string>& common_object_keys() {
@@ -25,6 +27,24 @@ std::unique_ptr<Shape> read_shape(const Cursor& object) {
           ? fmt::format("unknown object type '{}' (known: {})", type, fmt::join(names, ", "))
           : fmt::format("unknown object type '{}' (did you mean '{}'?)", type, hint),
       "unknown-type");
+}
+
+int direction_exponent(const Vec3d& direction) { return scale_exponent(direction); }
+
+std::optional<Intersection> intersect_rescaled(const Shape& shape, const Ray& ray) {
+  int k = direction_exponent(ray.direction);
+  if (k == 0) return std::nullopt;
+  Ray unit{ray.origin, scaled_by_power_of_two(ray.direction, -k), std::ldexp(ray.t_min, k),
+           std::ldexp(ray.t_max, k)};
+  Intersection x = shape.intersect(unit);
+  std::vector<Hit> hits;
+  for (Hit& h : x.hits) {
+    h.t = std::ldexp(h.t, -k);
+    // A t beyond double's range has no hit to report.
+    if (ray.accepts(h.t)) hits.push_back(std::move(h));
+  }
+  x.hits = std::move(hits);
+  return x;
 }
 
 void finish_hits(std::vector<Hit>& hits, double seam_distance) {

@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -67,6 +68,19 @@ std::unique_ptr<Shape> read_shape(const Cursor& object);
 
 // The keys every object may carry beside its type's own parameters.
 const std::vector<std::string>& common_object_keys();
+
+// Every primitive's intersect starts here: when the largest component of the ray's direction
+// is outside [1, 2), the shape is intersected with the direction scaled into it by a power of
+// two 2^-k (exactly) and the hits' t scaled back by 2^-k. The answer is then the same at every
+// scale of the direction where a double holds t (1e-165 as well as 1e+165): no product of the
+// direction's components overflows or underflows, and finish_hits merges hits on the scale of
+// the object, not of t. Nothing when the direction is in [1, 2) already (or zero, or not
+// finite): the shape goes on with the ray as it is.
+std::optional<Intersection> intersect_rescaled(const Shape& shape, const Ray& ray);
+
+// The exponent k of intersect_rescaled: ilogb of the direction's largest component, 0 when that
+// is zero or not finite.
+int direction_exponent(const Vec3d& direction);
 
 // Sorts hits by t and merges those that are the same point of the surface (a seam: a
 // cylinder's rim, a box's edge), keeping the first: hits whose t agree within a few ulps, or

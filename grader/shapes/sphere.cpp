@@ -1,6 +1,7 @@
 // Sphere: reading, reference intersection, and the geometric and algebraic derivations.
 #include "shapes/sphere.h"
 
+#include "math/unit_vector.h"
 #include "shapes/describe.h"
 
 namespace raygrade {
@@ -22,15 +23,23 @@ nlohmann::json Sphere::to_json() const {
 }
 
 Intersection Sphere::intersect(const Ray& ray) const {
+  if (std::optional<Intersection> x = intersect_rescaled(*this, ray)) return *x;
+  // The roots and the normals in double-double, rounded once: t keeps its digits on grazing
+  // rays (its condition number grows as the ray nears the tangent), and the normal
+  // (O − C + t·D)/r, which cancels when the sphere is small next to its distance (radius 6e-9
+  // at 1000), is computed from the exact O − C and the unrounded t.
+  Vec3dd o(ray.origin), d(ray.direction), c(center_);
+  DoubleDouble r(radius_);
+  Roots<DoubleDouble> roots = sphere_roots(o, d, c, r);
   Intersection out;
-  Roots<double> roots = sphere_roots(ray.origin, ray.direction, center_, radius_);
-  double ts[2] = {roots.t0, roots.t1};
+  DoubleDouble ts[2] = {roots.t0, roots.t1};
   for (int i = 0; i < roots.count; ++i) {
-    if (!ray.accepts(ts[i])) continue;
+    double t = static_cast<double>(ts[i]);
+    if (!ray.accepts(t)) continue;
     Hit h;
-    h.t = ts[i];
-    h.point = ray.at(h.t);
-    h.normal = normalized(h.point - center_);
+    h.t = t;
+    h.point = ray.at(t);
+    h.normal = unit_rounded((o - c) + ts[i] * d);
     out.hits.push_back(h);
   }
   finish_hits(out.hits);

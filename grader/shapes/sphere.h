@@ -177,6 +177,8 @@ template <typename T>
                                              const Vec3<T>& center, T r) {
   using std::abs, std::sqrt;
   if constexpr (kErrorFree<T>) {
+    if (int k = scale_exponent(d); k < -kRescaleExponent || k > kRescaleExponent)
+      return roots_scaled_back(sphere_roots_slow(o, scaled_by_power_of_two(d, -k), center, r), k);
     Vec3<T> f = o - center;
     T a = dot(d, d), ff = dot(f, f), rr = r * r;
     T s2 = length_squared(cross(f, d)), disc = a * rr - s2;

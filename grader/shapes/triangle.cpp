@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "math/unit_vector.h"
 #include "shapes/describe.h"
 #include "shapes/flat.h"
 
@@ -43,6 +44,7 @@ double Triangle::extent() const {
 }
 
 Intersection Triangle::intersect(const Ray& ray) const {
+  if (std::optional<Intersection> x = intersect_rescaled(*this, ray)) return *x;
   Intersection out;
   Vec3d n = cross_accurate(v_[1] - v_[0], v_[2] - v_[0]);
   if (parallel_to_plane(n, ray.direction)) {
@@ -55,7 +57,9 @@ Intersection Triangle::intersect(const Ray& ray) const {
   Hit h;
   h.t = hit.t;
   h.point = ray.at(hit.t);
-  h.normal = normalized(n);
+  // (b − a) × (c − a) from the exact differences in double-double: a needle triangle's
+  // edges are nearly parallel, and their cross product cancels in double.
+  h.normal = unit_rounded(cross(difference_dd(v_[1], v_[0]), difference_dd(v_[2], v_[0])));
   h.barycentric = hit.barycentric;
   out.hits.push_back(h);
   return out;
