@@ -5,8 +5,9 @@
 # Usage: scripts/static-check.sh [STATIC] [RELEASE]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-static="${1:-build/static/grader/raygrade}"
-release="${2:-build/release/grader/raygrade}"
+repo=$(pwd)
+static=$(realpath "${1:-build/static/grader/raygrade}")
+release=$(realpath "${2:-build/release/grader/raygrade}")
 kind=$(file "$static")
 case "$kind" in
   *"statically linked"*) echo "static-check: $kind" ;;
@@ -22,12 +23,13 @@ same() {
   local name="$1"; shift
   for which in static release; do
     local bin; bin=$([ "$which" = static ] && echo "$static" || echo "$release")
-    bin=$(realpath "$bin")
     mkdir -p "$work/$which/$name"
     local args=("${@//BIN/$bin}")
-    args=("${args[@]//OUT/$work/$which/$name/out}")
+    args=("${args[@]//REPO/$repo}")
+    # Each in its own folder, writing into out/: files that quote their command line agree.
     set +e
-    "${args[@]}" > "$work/$which/$name.stdout" 2> "$work/$which/$name.stderr"
+    (cd "$work/$which/$name" && "${args[@]}") > "$work/$which/$name.stdout" \
+      2> "$work/$which/$name.stderr"
     echo $? > "$work/$which/$name.status"
     set -e
   done
@@ -35,7 +37,7 @@ same() {
   if ! diff -r <(sed "s|$work/static|W|g" "$work/static/$name.stdout") \
                <(sed "s|$work/release|W|g" "$work/release/$name.stdout") > /dev/null ||
      ! diff "$work/static/$name.status" "$work/release/$name.status" > /dev/null ||
-     { [ -d "$work/static/$name/out" ] && ! diff -r "$work/static/$name/out" "$work/release/$name/out" > /dev/null; }; then
+     { [ -e "$work/static/$name/out" ] && ! diff -r "$work/static/$name/out" "$work/release/$name/out" > /dev/null; }; then
     echo "static-check: $name differs between $static and $release" >&2
     failures=$((failures + 1))
   else
@@ -43,16 +45,16 @@ same() {
   fi
 }
 
-same solve BIN solve problems --format json
-same solve-html BIN solve assignments/homework-rays.json --student s001 --format html
-same run BIN run --problems problems --submissions submissions --solutions OUT
-same solutions-check BIN solutions problems --check --out solutions
-same grade-csv BIN grade --problems problems submissions --format csv
-same grade-json BIN grade --problems problems submissions --format json
-same check BIN check problems --format junit
-same generate BIN generate --seed 42 -n 20 --out OUT
-same handout BIN handout assignments/homework-rays.json --student s001 --out OUT
-same bench-corpus BIN bench --write-corpus OUT
-same export BIN export gradescope assignments/homework-rays.json --out OUT --binary "$static"
+same solve BIN solve REPO/problems --format json
+same solve-html BIN solve REPO/assignments/homework-rays.json --student s001 --format html
+same run BIN run --problems REPO/problems --submissions REPO/submissions --solutions out
+same solutions BIN solutions REPO/problems --out out
+same grade-csv BIN grade --problems REPO/problems REPO/submissions --format csv
+same grade-json BIN grade --problems REPO/problems REPO/submissions --format json
+same check BIN check REPO/problems --format junit
+same generate BIN generate --seed 42 -n 20 --out out
+same handout BIN handout REPO/assignments/homework-rays.json --student s001 --out out
+same bench-corpus BIN bench --write-corpus out
+same export BIN export gradescope REPO/assignments/homework-rays.json --out out --binary "$static"
 [ "$failures" -eq 0 ] || exit 1
 echo "static-check: every subcommand gives the same output with the static binary"
