@@ -238,7 +238,9 @@ TEST(Assignment, TheMistakesPolicyRevealsNoReferenceValueInAnyFormat) {
       }
     }
     // The same search finds the values where they are allowed: it can fail.
-    if (policy == FeedbackPolicy::kFull) EXPECT_GT(found, 0);
+    if (policy == FeedbackPolicy::kFull) {
+      EXPECT_GT(found, 0);
+    }
   }
 }
 
