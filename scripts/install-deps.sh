@@ -7,6 +7,7 @@ packages=(
   nlohmann-json3-dev libfmt-dev libcli11-dev libgtest-dev libgmock-dev
   libbenchmark-dev libmpfr-dev libglm-dev
   python3-jsonschema pkg-config clang-format strace
+  libgmp-dev file
 )
 # Extra groups, asked for by name: RAYGRADE_EXTRA="browser fuzz".
 for extra in ${RAYGRADE_EXTRA:-}; do

@@ -36,6 +36,35 @@ const AssignmentGrader::Student& AssignmentGrader::student(const std::string& ke
   return *students_.emplace(k, std::move(s)).first->second;
 }
 
+namespace {
+
+std::string lower(std::string s) {
+  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+void check_uploader(const Cursor& root, const StudentIdentity& who,
+                    const std::vector<StudentIdentity>& uploaders) {
+  std::string accounts;
+  for (const auto& u : uploaders) {
+    if (!who.email.empty() ? lower(u.email) == lower(who.email)
+                           : !who.name.empty() && u.name == who.name) {
+      return;
+    }
+    accounts += fmt::format("{}'{}'", accounts.empty() ? "" : ", ", u.email);
+  }
+  root.at("student").fail(
+      who.email.empty() && who.name.empty()
+          ? fmt::format("the submission names its student by id alone; give the email of the "
+                        "account that uploads it ({})",
+                        accounts)
+          : fmt::format("the submission names '{}', who is not the account that uploaded it ({})",
+                        who.email.empty() ? who.name : who.email, accounts),
+      "not-uploader");
+}
+
+}  // namespace
+
 StudentIdentity AssignmentGrader::identify(const Cursor& root) const {
   auto who = read_student(root);
   if (!who) {
@@ -44,6 +73,7 @@ StudentIdentity AssignmentGrader::identify(const Cursor& root) const {
                           spec_.id),
               "no-student");
   }
+  if (!options_.uploaders.empty()) check_uploader(root, *who, options_.uploaders);
   if (options_.roster.empty()) return *who;
   const StudentIdentity* entry = find_on_roster(options_.roster, *who);
   if (!entry) {

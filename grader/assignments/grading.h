@@ -18,6 +18,10 @@ struct AssignmentGradeOptions {
   std::int64_t now = 0;                    // seconds since 1970 UTC: before or after the due date
   std::optional<FeedbackPolicy> feedback;  // overrides the assignment's policy for every problem
   std::vector<StudentIdentity> roster;     // when not empty, every student must be on it
+  // The accounts that uploaded the submission (Gradescope's submission_metadata.json): when
+  // not empty, the student a submission names must be one of them, by email (or by name when
+  // the submission gives no email). The variant stays that of the student the file names.
+  std::vector<StudentIdentity> uploaders;
 };
 
 class AssignmentGrader {

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "assignments/grading.h"
+#include "assignments/lms_export.h"
 #include "assignments/roster.h"
 #include "cli/command.h"
 #include "core/atomic_file.h"
@@ -30,8 +31,9 @@ struct GradeCliOptions {
   bool answered_only = false;
   std::string assignment;  // an assignment file: each submission graded as its student's variant
   std::string roster;
-  std::string feedback;  // overrides the assignment's feedback policy
-  std::string now;       // the time the due date is compared with (default: the clock)
+  std::string feedback;             // overrides the assignment's feedback policy
+  std::string now;                  // the time the due date is compared with (default: the clock)
+  std::string gradescope_metadata;  // submission_metadata.json: who uploaded the submission
 };
 
 // A progress bar on standard error, only when it is a terminal.
@@ -57,10 +59,11 @@ std::string extension(const std::string& format) {
   return ".json";
 }
 
-std::string render(const SubmissionGrade& g, const std::string& format, double seconds) {
+std::string render(const SubmissionGrade& g, const std::string& format, double seconds,
+                   const SubmissionGrade* worked = nullptr) {
   if (format == "text") return text_report(g);
   if (format == "html") return feedback_html(g);
-  if (format == "gradescope") return json_text(gradescope_json(g, seconds)) + "\n";
+  if (format == "gradescope") return json_text(gradescope_json(g, seconds, worked)) + "\n";
   if (format == "prairielearn") return json_text(prairielearn_json(g)) + "\n";
   return json_text(submission_json(g)) + "\n";
 }
@@ -101,9 +104,13 @@ int run_grade(const GradeCliOptions& o) {
   std::unique_ptr<AssignmentSpec> spec;
   std::unique_ptr<AssignmentBank> spec_bank;
   std::unique_ptr<AssignmentGrader> spec_grader;
+  std::unique_ptr<AssignmentGrader> worked_grader;  // full feedback, for Gradescope
   if (o.assignment.empty()) {
-    if (!o.roster.empty() || !o.feedback.empty() || !o.now.empty()) {
-      fmt::print(stderr, "raygrade grade: --roster, --feedback and --now go with --assignment\n");
+    if (!o.roster.empty() || !o.feedback.empty() || !o.now.empty() ||
+        !o.gradescope_metadata.empty()) {
+      fmt::print(stderr,
+                 "raygrade grade: --roster, --feedback, --now and --gradescope-metadata go with "
+                 "--assignment\n");
       return kExitBadInput;
     }
     bank = load_bank(o.problems);
@@ -118,6 +125,8 @@ int run_grade(const GradeCliOptions& o) {
     try {
       spec = std::make_unique<AssignmentSpec>(load_assignment(o.assignment));
       if (!o.roster.empty()) options.roster = load_roster(o.roster);
+      if (!o.gradescope_metadata.empty())
+        options.uploaders = read_gradescope_users(o.gradescope_metadata);
     } catch (const Error& e) {
       fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
       return kExitBadInput;
@@ -152,6 +161,11 @@ int run_grade(const GradeCliOptions& o) {
     spec_grader = std::make_unique<AssignmentGrader>(*spec, spec_bank->problems, options);
     ids = spec_grader->problem_ids();
     grade_one = [&](const std::string& f) { return spec_grader->grade_file(f); };
+    if (o.format == "gradescope") {
+      // The full feedback too, which Gradescope shows after the due date.
+      options.feedback = FeedbackPolicy::kFull;
+      worked_grader = std::make_unique<AssignmentGrader>(*spec, spec_bank->problems, options);
+    }
   }
   for (const auto& e : setup_errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   std::vector<Diagnostic> errors;
@@ -183,6 +197,8 @@ int run_grade(const GradeCliOptions& o) {
   for (std::size_t i = 0; i < files.size(); ++i) {
     auto start = std::chrono::steady_clock::now();
     SubmissionGrade g = grade_one(files[i]);
+    std::optional<SubmissionGrade> worked;
+    if (worked_grader) worked = worked_grader->grade_file(files[i]);
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!g.gradable) {
@@ -201,11 +217,11 @@ int run_grade(const GradeCliOptions& o) {
       // Each file appears whole or not at all (rename); the batch reaches the disk in one
       // flush at the end instead of one per file.
       write_file_atomically(std::filesystem::path(o.out) / (name + extension(o.format)),
-                            render(g, o.format, seconds), false);
+                            render(g, o.format, seconds, worked ? &*worked : nullptr), false);
     } else if (o.format == "json") {
       json_out.add(g);
     } else {
-      std::cout << render(g, o.format, seconds);
+      std::cout << render(g, o.format, seconds, worked ? &*worked : nullptr);
     }
     progress.step(i + 1);
   }
@@ -268,6 +284,9 @@ Runner setup_grade(CLI::App& sub) {
                  "with --assignment: a roster CSV (id, name, email); every student must be on it");
   sub.add_option("--feedback", o->feedback,
                  "with --assignment: score, mistakes or full, whatever the assignment says");
+  sub.add_option("--gradescope-metadata", o->gradescope_metadata,
+                 "with --assignment: Gradescope's submission_metadata.json; the student a "
+                 "submission names must be the account that uploaded it");
   sub.add_option("--now", o->now,
                  "with --assignment: the time compared with the due date (default: now)");
   return [o, problems] {

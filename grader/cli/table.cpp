@@ -11,6 +11,7 @@ Runner setup_grade(CLI::App& sub);
 Runner setup_check(CLI::App& sub);
 Runner setup_generate(CLI::App& sub);
 Runner setup_handout(CLI::App& sub);
+Runner setup_export(CLI::App& sub);
 
 const std::vector<Command>& command_table() {
   static const std::vector<Command> table = {
@@ -27,6 +28,7 @@ const std::vector<Command>& command_table() {
        &setup_generate},
       {"handout", "each student's problems as a page with answer inputs, and a template",
        &setup_handout},
+      {"export", "an assignment as a Gradescope autograder (autograder.zip)", &setup_export},
   };
   return table;
 }

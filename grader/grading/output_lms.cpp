@@ -30,19 +30,31 @@ std::string summary(const SubmissionGrade& g) {
 
 }  // namespace
 
-nlohmann::json gradescope_json(const SubmissionGrade& g, double execution_seconds) {
+nlohmann::json gradescope_json(const SubmissionGrade& g, double execution_seconds,
+                               const SubmissionGrade* worked) {
   nlohmann::json tests = nlohmann::json::array();
-  for (const auto& r : g.results) {
+  for (std::size_t i = 0; i < g.results.size(); ++i) {
+    const GradeResult& r = g.results[i];
+    std::string output = joined(feedback_lines(r));
     tests.push_back({{"name", test_name(r)},
                      {"score", r.score},
                      {"max_score", r.max_score},
                      {"status", r.score >= r.max_score ? "passed" : "failed"},
-                     {"output", joined(feedback_lines(r))},
+                     {"output", output},
+                     {"output_format", "text"},
                      {"visibility", "visible"}});
+    if (!worked || i >= worked->results.size() || r.score >= r.max_score) continue;
+    std::string full = joined(feedback_lines(worked->results[i]));
+    if (full == output) continue;
+    tests.push_back({{"name", test_name(r) + " (worked feedback, after the due date)"},
+                     {"output", full},
+                     {"output_format", "text"},
+                     {"visibility", "after_due_date"}});
   }
   return {{"score", g.gradable ? g.score : 0.0},
           {"execution_time", execution_seconds},
           {"output", summary(g)},
+          {"output_format", "text"},
           {"visibility", "visible"},
           {"tests", tests}};
 }

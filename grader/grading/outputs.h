@@ -22,9 +22,14 @@ nlohmann::json submission_json(const SubmissionGrade& g);
 // controls and DEL written as \u escapes too, so that it is safe to show on a terminal.
 std::string json_text(const nlohmann::json& j, int indent = 2);
 
-// Gradescope's autograder results.json: score, execution_time, output, visibility and one
-// test per problem (name, score, max_score, status, output, visibility).
-nlohmann::json gradescope_json(const SubmissionGrade& g, double execution_seconds);
+// Gradescope's autograder results.json: score, execution_time, output, output_format,
+// visibility and one test per problem (name, score, max_score, status, output, output_format,
+// visibility). Every output is plain text ("output_format": "text"), never read as HTML or
+// Markdown. `worked`, when given, is the same submission graded with full feedback: each
+// problem not fully right whose feedback it changes gets a second test, without points, that
+// shows the full feedback after the due date ("visibility": "after_due_date").
+nlohmann::json gradescope_json(const SubmissionGrade& g, double execution_seconds,
+                               const SubmissionGrade* worked = nullptr);
 
 // PrairieLearn's external grader results.json: gradable, score in [0, 1], message, output
 // and one test per problem (name, description, points, max_points, message, output).

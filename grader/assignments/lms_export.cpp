@@ -1,0 +1,159 @@
+// The Gradescope autograder of an assignment.
+#include "assignments/lms_export.h"
+
+#include <elf.h>
+#include <fmt/format.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "core/atomic_file.h"
+#include "json/cursor.h"
+#include "json/source.h"
+
+namespace raygrade {
+namespace {
+
+// Run once by Gradescope when it builds the autograder's image, in /autograder/source.
+constexpr const char* kSetup = R"sh(#!/usr/bin/env bash
+# raygrade is linked statically: nothing to install.
+set -euo pipefail
+cd "$(dirname "$0")"
+chmod 755 raygrade run_autograder
+./raygrade --version
+)sh";
+
+// Run by Gradescope for each submission. Whatever is uploaded, it writes results.json and
+// exits 0: a file it cannot grade is a result with the reason and no points.
+constexpr const char* kRunAutograder = R"sh(#!/usr/bin/env bash
+# Grades one upload with raygrade: the one .json file in submission/, as the variant of the
+# student it names, who must be the account that uploaded it (submission_metadata.json).
+# AUTOGRADER_ROOT (default /autograder) is where Gradescope's folders are.
+set -u
+root="${AUTOGRADER_ROOT:-/autograder}"
+source="$root/source"
+results="$root/results"
+mkdir -p "$results"
+rm -f "$results/results.json"
+
+# A result with a message and no points; the message is plain text without quotes.
+reject() {
+  printf '{"score": 0, "output": "%s", "output_format": "text", "visibility": "visible", "tests": []}\n' \
+    "$1" > "$results/results.json"
+  echo "run_autograder: $1" >&2
+  exit 0
+}
+
+files=()
+if [ -d "$root/submission" ]; then
+  while IFS= read -r -d '' f; do files+=("$f"); done \
+    < <(find "$root/submission" -type f -iname '*.json' -print0)
+fi
+if [ "${#files[@]}" -eq 0 ]; then
+  reject "No answers file found. Upload one file ending in .json: the answers-template.json of your handout, filled in."
+fi
+if [ "${#files[@]}" -gt 1 ]; then
+  reject "${#files[@]} files ending in .json were uploaded. Upload one: the answers-template.json of your handout, filled in."
+fi
+
+# raygrade's exit status 2 (the file was rejected) still leaves results.json with the reason.
+"$source/raygrade" grade --assignment "$source/assignment.json" --format gradescope \
+  --gradescope-metadata "$root/submission_metadata.json" --out "$results" "${files[0]}"
+status=$?
+if [ ! -s "$results/results.json" ]; then
+  reject "The autograder could not grade this upload (raygrade exited with status $status). Please tell your instructor."
+fi
+exit 0
+)sh";
+
+std::string read_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  if (!in || s.fail()) {
+    Diagnostic d;
+    d.file = path.string();
+    d.message = "cannot read the file";
+    d.code = "unreadable";
+    throw Error(d);
+  }
+  return s.str();
+}
+
+}  // namespace
+
+std::vector<StudentIdentity> read_gradescope_users(const std::string& path) {
+  Cursor root(load_json_file(path));
+  if (!root.is_object()) root.fail("submission_metadata.json is a JSON object", "type");
+  std::vector<StudentIdentity> users;
+  for (const auto& u : root.at("users").items()) {
+    if (!u.is_object()) u.fail("a user is an object with email and name", "type");
+    users.push_back(StudentIdentity{u.string_or("name", ""), "", u.at("email").string()});
+  }
+  if (users.empty()) root.at("users").fail("no user uploaded this submission");
+  return users;
+}
+
+bool is_static_executable(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  Elf64_Ehdr header{};
+  if (!in.read(reinterpret_cast<char*>(&header), sizeof header)) return false;
+  if (std::string_view(reinterpret_cast<const char*>(header.e_ident), 4) != ELFMAG ||
+      header.e_ident[EI_CLASS] != ELFCLASS64 || header.e_phentsize != sizeof(Elf64_Phdr)) {
+    return false;
+  }
+  for (int i = 0; i < header.e_phnum; ++i) {
+    Elf64_Phdr ph{};
+    in.seekg(static_cast<std::streamoff>(header.e_phoff + i * sizeof ph));
+    if (!in.read(reinterpret_cast<char*>(&ph), sizeof ph)) return false;
+    if (ph.p_type == PT_INTERP) return false;
+  }
+  return header.e_type == ET_EXEC || header.e_type == ET_DYN;
+}
+
+std::optional<std::filesystem::path> find_static_raygrade(const std::filesystem::path& running) {
+  if (is_static_executable(running)) return running;
+  // running is <build>/<preset>/grader/raygrade.
+  auto candidate =
+      running.parent_path().parent_path().parent_path() / "static" / "grader" / "raygrade";
+  if (is_static_executable(candidate)) return candidate;
+  return std::nullopt;
+}
+
+std::vector<ZipEntry> gradescope_autograder(const AssignmentSpec& spec, const Bank& bank,
+                                            const std::filesystem::path& binary) {
+  std::vector<ZipEntry> entries = {{"setup.sh", kSetup, true},
+                                   {"run_autograder", kRunAutograder, true},
+                                   {"raygrade", read_bytes(binary), true}};
+  std::set<std::string> names;
+  for (const auto& f : bank.files) {
+    std::filesystem::path p(f);
+    std::string name = p.filename().string();
+    for (int k = 2; !names.insert(name).second; ++k)
+      name = fmt::format("{}-{}{}", p.stem().string(), k, p.extension().string());
+    entries.push_back({"bank/" + name, read_bytes(p), false});
+  }
+  // The assignment as written, with its bank in bank/ (its $schema path would point nowhere).
+  nlohmann::json a = load_json_file(spec.file)->root;
+  a.erase("$schema");
+  a["bank"] = "bank";
+  entries.push_back({"assignment.json", a.dump(2) + "\n", false});
+  return entries;
+}
+
+void write_entries(const std::filesystem::path& folder, const std::vector<ZipEntry>& entries) {
+  for (const auto& e : entries) {
+    std::filesystem::path p = folder / e.name;
+    std::filesystem::create_directories(p.parent_path());
+    write_file_atomically(p, e.bytes);
+    using std::filesystem::perms;
+    std::filesystem::permissions(
+        p, e.executable
+               ? perms::owner_all | perms::group_read | perms::group_exec | perms::others_read |
+                     perms::others_exec
+               : perms::owner_read | perms::owner_write | perms::group_read | perms::others_read);
+  }
+}
+
+}  // namespace raygrade

@@ -1,0 +1,39 @@
+// An assignment made ready for a learning platform: the Gradescope autograder (setup.sh,
+// run_autograder, the assignment, its bank and a static raygrade) and what run_autograder reads
+// from Gradescope (docs/assignments.md).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "assignments/assignment.h"
+#include "core/zip.h"
+#include "grading/submission.h"
+
+namespace raygrade {
+
+// The accounts that uploaded a submission, from Gradescope's submission_metadata.json: the
+// "users" list, each with "email", "name" and Gradescope's numeric "id" (not the student's id,
+// so it is not used). The other keys are Gradescope's and are not read. Throws Error naming
+// the file and JSON path when "users" is missing, empty or malformed.
+std::vector<StudentIdentity> read_gradescope_users(const std::string& path);
+
+// Whether a file is an ELF executable linked statically (it asks for no program interpreter).
+bool is_static_executable(const std::filesystem::path& path);
+
+// A statically linked raygrade near the running one: the running binary itself when it is
+// static, else build/static/grader/raygrade of the same build tree.
+std::optional<std::filesystem::path> find_static_raygrade(const std::filesystem::path& running);
+
+// The files of the Gradescope autograder, as paths inside its zip: setup.sh, run_autograder,
+// raygrade (`binary`'s bytes), assignment.json (the assignment with "bank": "bank") and
+// bank/*.json (the files of its bank). Throws Error when a file cannot be read.
+std::vector<ZipEntry> gradescope_autograder(const AssignmentSpec& spec, const Bank& bank,
+                                            const std::filesystem::path& binary);
+
+// Writes the entries under `folder` (executables with mode 0755).
+void write_entries(const std::filesystem::path& folder, const std::vector<ZipEntry>& entries);
+
+}  // namespace raygrade

@@ -1,0 +1,87 @@
+// raygrade export: an assignment made ready for a learning platform (Gradescope).
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "assignments/lms_export.h"
+#include "cli/command.h"
+#include "core/atomic_file.h"
+#include "core/zip.h"
+
+namespace raygrade::cli {
+namespace {
+
+struct ExportOptions {
+  std::string platform;
+  std::string assignment;
+  std::string out;
+  std::string binary;
+};
+
+int run_export(const ExportOptions& o) {
+  if (o.platform != "gradescope") {
+    fmt::print(stderr, "raygrade export: unknown platform '{}' (gradescope)\n", o.platform);
+    return kExitBadInput;
+  }
+  std::filesystem::path binary;
+  if (!o.binary.empty()) {
+    binary = o.binary;
+    if (!is_static_executable(binary)) {
+      fmt::print(stderr,
+                 "raygrade export: warning: {} is not a statically linked executable; it may "
+                 "not run on Gradescope's images\n",
+                 o.binary);
+    }
+  } else {
+    std::error_code ec;
+    auto running = std::filesystem::read_symlink("/proc/self/exe", ec);
+    auto found = ec ? std::nullopt : find_static_raygrade(running);
+    if (!found) {
+      fmt::print(stderr,
+                 "raygrade export: no statically linked raygrade found (this one, {}, links "
+                 "shared libraries that Gradescope's images lack). Build it with `cmake --preset "
+                 "static && cmake --build --preset static`, or give --binary PATH.\n",
+                 running.string());
+      return kExitBadInput;
+    }
+    binary = *found;
+  }
+  try {
+    AssignmentSpec spec = load_assignment(o.assignment);
+    AssignmentBank bank = load_assignment_bank(spec);
+    if (!bank.errors.empty()) {
+      for (const auto& e : bank.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
+      return kExitBadInput;
+    }
+    std::vector<ZipEntry> entries = gradescope_autograder(spec, bank.bank, binary);
+    std::filesystem::path out(o.out);
+    write_entries(out / "autograder", entries);
+    write_file_atomically(out / "autograder.zip", zip_archive(entries));
+    fmt::print(stderr,
+               "Wrote {0}/autograder.zip (and the same files in {0}/autograder/): {1} problems "
+               "of {2}, raygrade from {3}. Upload the zip as the autograder of a Gradescope "
+               "programming assignment.\n",
+               o.out, spec.problems.size(), spec.id, binary.string());
+  } catch (const Error& e) {
+    fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
+    return kExitBadInput;
+  } catch (const std::filesystem::filesystem_error& e) {
+    fmt::print(stderr, "raygrade export: {}\n", e.what());
+    return kExitBadInput;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Runner setup_export(CLI::App& sub) {
+  auto o = std::make_shared<ExportOptions>();
+  sub.add_option("platform", o->platform, "gradescope")->required();
+  sub.add_option("assignment", o->assignment, "the assignment file")->required();
+  sub.add_option("--out", o->out, "the folder to write into")->required();
+  sub.add_option("--binary", o->binary,
+                 "the raygrade to ship (default: a static one next to this build)");
+  return [o] { return run_export(*o); };
+}
+
+}  // namespace raygrade::cli
