@@ -81,10 +81,17 @@ def driver_for(downloads, profile):
     return driver
 
 
+def click(driver, el):
+    """Scrolls an element to the middle of the window, as a person would, and clicks it."""
+    driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", el)
+    el.click()
+
+
 def fill(driver, answers):
     """Types every answer into the page, as a student would, field by field."""
     def put(name, value):
         el = driver.find_element(By.NAME, name)
+        driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", el)
         el.clear()
         el.send_keys(value)
 
@@ -101,11 +108,11 @@ def fill(driver, answers):
             if kind == "hits":
                 hits = a.get("hits", [])
                 if not hits:
-                    driver.find_element(By.NAME, prefix + ".miss").click()
+                    click(driver, driver.find_element(By.NAME, prefix + ".miss"))
                 for n, hit in enumerate(hits):
                     if n > 0:
                         buttons = driver.find_elements(By.CSS_SELECTOR, f"#problem-{p['index']} button.add")
-                        buttons[0].click()
+                        click(driver, buttons[0])
                     for c in f["columns"]:
                         if c["key"] not in hit:
                             continue
@@ -142,7 +149,7 @@ def fill(driver, answers):
                             put(name, typed(mine[c["key"]]))
             elif kind == "set":
                 for option in a.get(f["key"], []):
-                    driver.find_element(By.NAME, f"{prefix}.{option}").click()
+                    click(driver, driver.find_element(By.NAME, f"{prefix}.{option}"))
             elif kind == "json":
                 put(prefix, json.dumps({k: v for k, v in a.items()}))
 
@@ -217,7 +224,7 @@ def main():
             driver.refresh()
             kept = driver.find_element(By.NAME, "variant-sphere.0.0.t").get_attribute("value")
             check(kept != "", "the answers were not kept after a reload")
-            driver.find_element(By.ID, "download").click()
+            click(driver, driver.find_element(By.ID, "download"))
             downloaded = wait_for_file(downloads, "answers.json")
             check(downloaded is not None, "answers.json was not downloaded")
             driver.save_screenshot(os.path.join(OUT, "handout-downloaded.png"))

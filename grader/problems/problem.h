@@ -80,14 +80,14 @@ struct Problem {
   std::string method;  // the worked solution's method; empty for the kind's default
   int precision = -1;  // decimals shown in worked solutions; -1 for significant digits
   std::optional<nlohmann::json> expected;
-  nlohmann::json tolerance;  // as written; the grader reads it
-  nlohmann::json points;     // as written; the grader reads it
-  nlohmann::json tests;      // sample answers with the scores they must get
-  Conventions conventions;   // the bank file's, then the problem's own
+  nlohmann::json tolerance;      // as written; the grader reads it
+  nlohmann::json points;         // as written; the grader reads it
+  nlohmann::json tests;          // sample answers with the scores they must get
+  Conventions conventions;       // the bank file's, then the problem's own
   Conventions file_conventions;  // the bank file's alone (to read the problem again)
-  nlohmann::json source;     // the whole problem object as written
-  std::string file;          // where it came from
-  std::string path;          // its JSON pointer in that file ("" or "/problems/3")
+  nlohmann::json source;         // the whole problem object as written
+  std::string file;              // where it came from
+  std::string path;              // its JSON pointer in that file ("" or "/problems/3")
   std::shared_ptr<const SourceFile> source_file;
   std::unique_ptr<Task> task;
   // A problem with parameters (problems/parameters.h): the set, the problem as written (with
