@@ -306,7 +306,7 @@
       const cells = f.columns.map((c) => ({key: c.key, box: box(c.type, prefix + "." + i + "." + c.key, c.label + " for " + r.label)}));
       list.push({fixed: r.fixed, cells: cells});
       node.appendChild(el("div", {class: "row"}, [el("span", {class: "label", text: r.label})].concat(
-        cells.map((c) => labelled(c.box.node.tagName === "SELECT" ? c.key.replace(/_/g, " ") : c.key.replace(/_/g, " "), c.box.node)))));
+        cells.map((c) => labelled(c.key.replace(/_/g, " "), c.box.node)))));
     });
     return {node: node, value: () => {
       const out = [];

@@ -249,11 +249,6 @@ Parameter read_parameter(const Cursor& c, const std::string& name) {
   return p;
 }
 
-bool nice_value(double v, int decimals) {
-  double scaled = v * std::pow(10.0, decimals);
-  return std::abs(scaled - std::round(scaled)) <= 1e-9 * std::max(1.0, std::abs(scaled));
-}
-
 }  // namespace
 
 std::uint64_t Parameter::size() const {
@@ -364,7 +359,7 @@ bool has_nice_numbers(const nlohmann::json& answer, const NiceNumbers& nice) {
   bool ok = true;
   auto all_nice = [&](const nlohmann::json& v, auto&& self) -> void {
     if (v.is_number()) {
-      ok = ok && nice_value(v.get<double>(), nice.decimals);
+      ok = ok && decimals_of(v.get<double>()) <= nice.decimals;
     } else if (v.is_array()) {
       for (const auto& x : v) self(x, self);
     }
