@@ -180,6 +180,23 @@ TEST(Parts, ClaimedMissCarriesTheErrorForward) {
   EXPECT_TRUE(r.carried_forward);
 }
 
+// An empty steps object gives no step: when steps carry points they are missing, and the
+// feedback names the steps of the worked solution (the geometric method's t_ca and t_hc among
+// them, the first method of a sphere), not an
+// internal error; when they carry none, they are left out as any part not asked.
+TEST(Parts, EmptyStepsAreMissing) {
+  std::string graded_steps = kSphere1;
+  graded_steps.insert(graded_steps.size() - 1, R"(, "points": {"steps": 2})");
+  GradeResult r = grade(graded_steps, R"({"steps": {}, "hits": []})");
+  ASSERT_NE(part(r, "steps"), nullptr);
+  EXPECT_EQ(part(r, "steps")->status, PartStatus::kMissing);
+  EXPECT_EQ(part(r, "steps")->points, 0);
+  EXPECT_TRUE(says(part(r, "steps")->feedback, "the steps object is empty"));
+  EXPECT_TRUE(says(part(r, "steps")->feedback, "t_ca"));
+  EXPECT_TRUE(says(part(r, "steps")->feedback, "t_hc"));
+  EXPECT_EQ(part(grade(kSphere1, R"({"steps": {}, "hits": []})"), "steps"), nullptr);
+}
+
 TEST(Parts, BlankFirstHitObject) {
   GradeResult r = grade(R"({"id": "f", "kind": "first-hit",
     "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},

@@ -14,6 +14,7 @@ enum ExitCode : int {
   kExitOk = 0,        // everything solved, graded or checked as expected
   kExitFailed = 1,    // wrong answers, failed checks or stale files
   kExitBadInput = 2,  // bad usage, or some input could not be read
+  kExitInternal = 3,  // a bug of raygrade (an internal error), whatever the input
 };
 
 using Runner = std::function<int()>;

@@ -38,6 +38,10 @@ int main(int argc, char** argv) {
     if (sub->parsed()) {
       try {
         return run();
+      } catch (const std::logic_error& e) {
+        fmt::print(stderr, "raygrade: internal error: {}; please report it with the input\n",
+                   e.what());
+        return kExitInternal;
       } catch (const std::exception& e) {
         fmt::print(stderr, "raygrade: {}\n", e.what());
         return kExitBadInput;

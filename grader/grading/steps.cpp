@@ -2,6 +2,7 @@
 #include "grading/steps.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "derivation/number_format.h"
 #include "json/cursor.h"
@@ -98,6 +99,14 @@ StepsGrade grade_steps(const GradingContext& c, const Task& task,
   out.method = best->method;
   std::vector<std::string> known;
   for (const auto& s : best->derivation.steps) known.push_back(s.name);
+  if (steps.json().empty()) {
+    out.part = missing_part(
+        c, "steps",
+        fmt::format("No steps given: the steps object is empty (its steps are named as in the "
+                    "worked solution: {}).",
+                    fmt::join(known, ", ")));
+    return out;
+  }
   for (const auto& [name, v] : steps.json().items()) {
     if (best->derivation.find(name)) continue;
     std::string hint = closest_match(name, known);

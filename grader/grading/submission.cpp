@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <stdexcept>
 #include <tuple>
 
 #include "json/cursor.h"
@@ -162,6 +163,21 @@ SubmissionGrade Assignment::grade(const std::shared_ptr<const SourceFile>& file)
       d.column = column;
     }
     g.fault = d;
+    return g;
+  } catch (const std::logic_error& e) {
+    // A bug of the grader, not of the file: this submission is set aside with what went wrong,
+    // and the rest of the batch is graded.
+    g.gradable = false;
+    g.results.clear();
+    g.fault = Diagnostic{file->name,
+                         "",
+                         0,
+                         0,
+                         Severity::kError,
+                         fmt::format("raygrade could not grade this file: an internal error ({}); "
+                                     "the file is not at fault, please report it with the file",
+                                     e.what()),
+                         "internal"};
     return g;
   }
   for (const auto& r : g.results) {
