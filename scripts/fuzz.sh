@@ -40,7 +40,7 @@ for t in $targets; do
     echo "fuzz: $t: ${runs:-?} runs in ${seconds} s, no crash"
   else
     echo "fuzz: $t: FAILED, see $log and $artifacts/" >&2
-    grep -m 20 -E 'ERROR|SUMMARY|runtime error|Test unit written' "$log" >&2 || true
+    grep -m 20 -E 'ERROR|SUMMARY|runtime error|terminate called|what\(\)|Test unit written' "$log" >&2 || true
     status=1
   fi
 done

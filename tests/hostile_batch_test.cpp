@@ -229,5 +229,42 @@ TEST_F(HostileBatch, GradebookNeutralisesFormulas) {
   EXPECT_TRUE(saw_name) << "the student named =HYPERLINK(...) is listed, neutralised";
 }
 
+// Threads change nothing a person reads: a batch larger than one window of files, graded on
+// one, two and five threads, gives the same gradebook, report and errors, in the same order.
+TEST_F(HostileBatch, ThreadsChangeNothing) {
+  // Right answers for even students: 3 points a problem (t 2, point 1: the default weights of
+  // docs/grading.md). Odd students say the ray misses the plane it meets at t = 2, and earn the
+  // sphere's 3 points alone.
+  std::string wrong = kRightAnswers;
+  std::string plane_hit = R"([{"t": 2, "point": [2, 0, 0]}])";
+  wrong.replace(wrong.find(plane_hit), plane_hit.size(), "[]");
+  for (int i = 0; i < 300; ++i) {
+    write_text(subs_ / ("batch-" + std::to_string(1000 + i) + ".json"),
+               "{\"student\": \"batch " + std::to_string(i) +
+                   "\", \"answers\": " + (i % 2 ? wrong : std::string(kRightAnswers)) + "}");
+  }
+  auto one = grade("--format csv --jobs 1");
+  ASSERT_EQ(one.exit_code, 2);
+  for (const char* jobs : {"2", "5"}) {
+    auto many = grade(std::string("--format csv --jobs ") + jobs);
+    EXPECT_EQ(many.exit_code, one.exit_code) << jobs;
+    EXPECT_EQ(many.out, one.out) << jobs << " threads";
+    EXPECT_EQ(many.err, one.err) << jobs << " threads";
+  }
+  EXPECT_EQ(grade("--format json --jobs 1").out, grade("--format json --jobs 2").out);
+  // The rows themselves: each generated student's total, in the files' order.
+  std::size_t seen = 0;
+  std::size_t at = 0;
+  for (int i = 0; i < 300; ++i) {
+    std::string name = "batch " + std::to_string(i) + ",";
+    at = one.out.find("\n" + name, at);
+    ASSERT_NE(at, std::string::npos) << name;
+    std::string row = one.out.substr(at + 1, one.out.find('\n', at + 1) - at - 1);
+    EXPECT_NE(row.find(i % 2 ? ",3,0,3,6," : ",3,3,6,6,"), std::string::npos) << row;
+    ++seen;
+  }
+  EXPECT_EQ(seen, 300u);
+}
+
 }  // namespace
 }  // namespace raygrade

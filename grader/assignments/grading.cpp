@@ -27,12 +27,18 @@ AssignmentGrader::~AssignmentGrader() = default;
 
 const AssignmentGrader::Student& AssignmentGrader::student(const std::string& key) {
   std::string k = spec_.per_student ? key : "";
-  auto it = students_.find(k);
-  if (it != students_.end()) return *it->second;
+  {
+    std::lock_guard lock(students_mutex_);
+    auto it = students_.find(k);
+    if (it != students_.end()) return *it->second;
+  }
+  // Drawn outside the lock, so that threads grading different students draw at once; two
+  // threads drawing the same student draw the same problems, and the first one kept is used.
   auto s = std::make_unique<Student>();
   s->problems = student_problems(spec_, problems_, k);
   s->graders = std::make_unique<Assignment>(s->problems);
   if (!s->graders->errors().empty()) throw Error(s->graders->errors().front());
+  std::lock_guard lock(students_mutex_);
   return *students_.emplace(k, std::move(s)).first->second;
 }
 

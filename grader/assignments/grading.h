@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,8 +32,9 @@ class AssignmentGrader {
                    AssignmentGradeOptions options);
   ~AssignmentGrader();
 
-  // Grades one file. A submission that names no student, or a student not on the roster, is
-  // rejected with the reason; so is one whose variant cannot be drawn.
+  // Grades one file; safe to call from several threads at once. A submission that names no student,
+  // or a student not on the roster, is rejected with the reason; so is one whose variant cannot be
+  // drawn.
   SubmissionGrade grade_file(const std::string& path);
 
   // The student a submission names, completed from the roster; throws Error when it names
@@ -49,6 +51,7 @@ class AssignmentGrader {
   std::vector<const Problem*> problems_;
   AssignmentGradeOptions options_;
   std::vector<std::string> ids_;
+  std::mutex students_mutex_;
   std::map<std::string, std::unique_ptr<Student>> students_;
 };
 

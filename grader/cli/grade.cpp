@@ -17,6 +17,7 @@
 #include "core/atomic_file.h"
 #include "core/escape.h"
 #include "core/folder_lock.h"
+#include "core/parallel.h"
 #include "grading/outputs.h"
 #include "grading/submission.h"
 
@@ -34,6 +35,7 @@ struct GradeCliOptions {
   std::string feedback;             // overrides the assignment's feedback policy
   std::string now;                  // the time the due date is compared with (default: the clock)
   std::string gradescope_metadata;  // submission_metadata.json: who uploaded the submission
+  unsigned jobs = 0;                // threads that grade (0: one per core)
 };
 
 // A progress bar on standard error, only when it is a terminal.
@@ -193,37 +195,60 @@ int run_grade(const GradeCliOptions& o) {
   if (o.format == "csv") (o.out.empty() ? std::cout : csv_file) << gradebook_csv_header(ids);
   JsonArrayStream json_out;
   Progress progress(files.size());
-  std::size_t rejected = 0;
-  for (std::size_t i = 0; i < files.size(); ++i) {
+  std::size_t rejected = 0, internal = 0;
+  // What a thread makes of one file; the main thread writes them out in the files' order.
+  struct Graded {
+    SubmissionGrade grade;
+    std::string text;  // the gradebook row, or the file or page rendered
+  };
+  bool json_stream = o.format == "json" && o.out.empty();
+  auto grade_at = [&](std::size_t i) {
     auto start = std::chrono::steady_clock::now();
-    SubmissionGrade g = grade_one(files[i]);
+    Graded r{grade_one(files[i]), {}};
     std::optional<SubmissionGrade> worked;
     if (worked_grader) worked = worked_grader->grade_file(files[i]);
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!g.gradable) {
-      ++rejected;
-      if (!single || o.format == "csv") fmt::print(stderr, "{}\n", format_diagnostic(*g.fault));
+    if (o.format == "csv")
+      r.text = gradebook_csv_row(r.grade, ids);
+    else if (!json_stream)
+      r.text = render(r.grade, o.format, seconds, worked ? &*worked : nullptr);
+    return r;
+  };
+  // A window of files at a time, so that memory stays bounded whatever the batch's size.
+  unsigned jobs = o.jobs > 0 ? o.jobs : default_jobs();
+  std::size_t window = 64 * std::size_t{jobs};
+  for (std::size_t begin = 0; begin < files.size(); begin += window) {
+    std::size_t count = std::min(window, files.size() - begin);
+    auto graded =
+        parallel_map<Graded>(count, jobs, [&](std::size_t k) { return grade_at(begin + k); });
+    for (std::size_t k = 0; k < count; ++k) {
+      const SubmissionGrade& g = graded[k].grade;
+      if (!g.gradable) {
+        ++rejected;
+        internal += g.fault && g.fault->code == "internal";
+        if (!single || o.format == "csv") fmt::print(stderr, "{}\n", format_diagnostic(*g.fault));
+      }
+      for (const auto& d : g.findings) fmt::print(stderr, "{}\n", format_diagnostic(d));
+      if (o.format == "csv") {
+        (o.out.empty() ? std::cout : csv_file) << graded[k].text;
+      } else if (!o.out.empty()) {
+        std::string base = single && (o.format == "gradescope" || o.format == "prairielearn")
+                               ? "results"
+                               : safe_file_name(g.student);
+        std::string name = base;
+        for (int n = 2; !names.insert(name).second; ++n) name = fmt::format("{}-{}", base, n);
+        // Each file appears whole or not at all (rename); the batch reaches the disk in one
+        // flush at the end instead of one per file.
+        write_file_atomically(std::filesystem::path(o.out) / (name + extension(o.format)),
+                              graded[k].text, false);
+      } else if (json_stream) {
+        json_out.add(g);
+      } else {
+        std::cout << graded[k].text;
+      }
+      progress.step(begin + k + 1);
     }
-    for (const auto& d : g.findings) fmt::print(stderr, "{}\n", format_diagnostic(d));
-    if (o.format == "csv") {
-      (o.out.empty() ? std::cout : csv_file) << gradebook_csv_row(g, ids);
-    } else if (!o.out.empty()) {
-      std::string base = single && (o.format == "gradescope" || o.format == "prairielearn")
-                             ? "results"
-                             : safe_file_name(g.student);
-      std::string name = base;
-      for (int k = 2; !names.insert(name).second; ++k) name = fmt::format("{}-{}", base, k);
-      // Each file appears whole or not at all (rename); the batch reaches the disk in one
-      // flush at the end instead of one per file.
-      write_file_atomically(std::filesystem::path(o.out) / (name + extension(o.format)),
-                            render(g, o.format, seconds, worked ? &*worked : nullptr), false);
-    } else if (o.format == "json") {
-      json_out.add(g);
-    } else {
-      std::cout << render(g, o.format, seconds, worked ? &*worked : nullptr);
-    }
-    progress.step(i + 1);
   }
   if (o.format == "csv" && !o.out.empty())
     write_file_atomically(std::filesystem::path(o.out) / "gradebook.csv", csv_file.str(), false);
@@ -235,7 +260,7 @@ int run_grade(const GradeCliOptions& o) {
                rejected ? fmt::format(" ({} rejected)", rejected) : "");
   }
   bool bad = rejected || !errors.empty() || !setup_errors.empty();
-  return bad ? kExitBadInput : kExitOk;
+  return internal ? kExitInternal : bad ? kExitBadInput : kExitOk;
 }
 
 }  // namespace
@@ -287,6 +312,8 @@ Runner setup_grade(CLI::App& sub) {
   sub.add_option("--gradescope-metadata", o->gradescope_metadata,
                  "with --assignment: Gradescope's submission_metadata.json; the student a "
                  "submission names must be the account that uploaded it");
+  sub.add_option("-j,--jobs", o->jobs,
+                 "threads that grade at once (default: one per core); the output is the same");
   sub.add_option("--now", o->now,
                  "with --assignment: the time compared with the due date (default: now)");
   return [o, problems] {

@@ -3,14 +3,22 @@
 
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <numeric>
 
 #include "derivation/number_format.h"
 
 namespace raygrade {
 
+namespace {
+// The caches below are filled once per radius and only read after that; the lock makes the
+// first fill safe when problems are drawn on several threads.
+std::mutex lattice_mutex;
+}  // namespace
+
 const std::vector<Vec3d>& lattice_sphere(int r) {
   static std::map<int, std::vector<Vec3d>> cache;
+  std::lock_guard lock(lattice_mutex);
   auto [it, fresh] = cache.try_emplace(r);
   if (fresh) {
     for (int x = -r; x <= r; ++x) {
@@ -27,6 +35,7 @@ const std::vector<Vec3d>& lattice_sphere(int r) {
 
 const std::vector<Vec3d>& lattice_circle(int r) {
   static std::map<int, std::vector<Vec3d>> cache;
+  std::lock_guard lock(lattice_mutex);
   auto [it, fresh] = cache.try_emplace(r);
   if (fresh) {
     for (int x = -r; x <= r; ++x) {

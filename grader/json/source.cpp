@@ -357,6 +357,7 @@ struct LocateIndex {
 };
 
 std::pair<int, int> SourceFile::locate(std::string_view path) const {
+  std::lock_guard lock(index_mutex_);
   if (!index_) index_ = std::make_shared<LocateIndex>();
   Locator loc(text, &index_->elements);
   auto offset = loc.find(pointer_tokens(path));

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -40,11 +41,12 @@ struct SourceFile {
   // locate() in `text`, in time proportional to the path's depth and the size of what it
   // passes through the first time, and to the depth alone after that: the offsets of the
   // lines and of the elements of each array walked are kept, so that a diagnostic for each
-  // of 10,000 problems of one file costs no scan of the whole file each. Not to be called
-  // from two threads at once.
+  // of 10,000 problems of one file costs no scan of the whole file each. Safe to call from
+  // several threads at once (a bank is shared by the threads that grade a batch).
   std::pair<int, int> locate(std::string_view path) const;
 
  private:
+  mutable std::mutex index_mutex_;
   mutable std::shared_ptr<LocateIndex> index_;
 };
 
