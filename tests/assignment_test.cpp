@@ -301,7 +301,9 @@ TEST(Assignment, TheMistakesPolicyQuotesANumberItCouldNotRead) {
   TempDir dir("unreadable");
   write_text(dir.path() / "ada.json",
              submission("s001", {{"variant-shade", {{"intensity", "7.2.7"}}},
-                                 {"variant-sphere", {{"hits", {{{"t", "9..1"}}}}}}}));
+                                 {"variant-sphere", {{"hits", {{{"t", "9..1"}}}}}},
+                                 {"scene-first-hit-only",
+                                  {{"object", "ball"}, {"hits", {{{"t", "5,5"}}}}}}}));
   AssignmentGradeOptions options;
   options.now = kDue - 60;  // before the due date: the mistakes policy
   AssignmentGrader grader(spec, bank.problems, options);
@@ -311,6 +313,7 @@ TEST(Assignment, TheMistakesPolicyQuotesANumberItCouldNotRead) {
   for (const auto& r : ada.results) all += fmt::format("{}\n", fmt::join(feedback_lines(r), "\n"));
   EXPECT_NE(all.find("could not read '7.2.7'"), std::string::npos) << all;
   EXPECT_NE(all.find("could not read '9..1'"), std::string::npos) << all;
+  EXPECT_NE(all.find("t: could not read '5,5'"), std::string::npos) << all;
 }
 
 TEST(Assignment, TheCheckDrawsSampleVariants) {

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
+
 #include "grading/mistakes.h"
 
 namespace raygrade {
@@ -20,11 +22,14 @@ std::string status_sentence(PartStatus s) {
 }
 
 // A sentence about what the student typed and the grader could not read quotes only the
-// student's own text, so it stays; the graders may start it with the part's name ("t: ").
-bool quotes_only_the_student(const std::string& sentence, const std::string& part) {
+// student's own text, so it stays; the graders may start it with the name of the value ("t: ",
+// "intensity: ").
+bool quotes_only_the_student(std::string_view s) {
   constexpr std::string_view kUnreadable = "could not read '";
-  std::string_view s = sentence;
-  if (s.starts_with(part + ": ")) s.remove_prefix(part.size() + 2);
+  std::size_t name = 0;
+  while (name < s.size() && (std::isalnum(static_cast<unsigned char>(s[name])) || s[name] == '_'))
+    ++name;
+  if (name > 0 && s.substr(name).starts_with(": ")) s.remove_prefix(name + 2);
   return s.starts_with(kUnreadable);
 }
 
@@ -42,7 +47,7 @@ void apply_feedback_policy(GradeResult& r, FeedbackPolicy policy) {
     std::vector<std::string> kept;
     if (p.status != PartStatus::kRight) kept.push_back(status_sentence(p.status));
     for (const auto& s : p.feedback) {
-      if (quotes_only_the_student(s, p.name)) kept.push_back(s);
+      if (quotes_only_the_student(s)) kept.push_back(s);
     }
     p.feedback = std::move(kept);
   }
