@@ -9,8 +9,8 @@ partial_scores, score, feedback, variant_seed, options), for a right, a wrong an
 malformed answer to every problem of the assignment.
 
 The right answers are `raygrade solve ASSIGNMENT --student prairielearn-SEED`, typed into the
-inputs as a student types them; the sphere's are also checked against values worked by hand
-from the numbers the statement shows.
+inputs as a student types them; the sphere's t values and the camera ray's direction are also
+checked against values worked by hand from the numbers the statement shows.
 
 Usage: prairielearn_export.py RAYGRADE ASSIGNMENT [STATIC_RAYGRADE]
 Without STATIC_RAYGRADE, RAYGRADE itself is shipped (--binary), which runs on this machine.
@@ -336,6 +336,17 @@ def main(raygrade, assignment, static=None):
             statement = reference[seed]["variant-sphere"]["statement"]
             check(f"({ox}, 0, 0)" in statement and f"(0, 0, {cz})" in statement,
                   f"sphere seed {seed}: the statement does not show ox={ox}, cz={cz}")
+            # The camera looks along d = (0, 0, -1) with up u = (0, 1, 0), so d × u = (1, 0, 0)
+            # and the ray through the centre of pixel (x, y) of a W × H image at focal length
+            # f runs along (x + 0.5 - W/2, y + 0.5 - H/2, -f).
+            camera = reference[seed]["variant-camera-ray"]
+            m = re.search(r"focal length (\S+) and an image of (\d+) × (\d+) pixels.*pixel "
+                          r"\((\d+), (\d+)\)", camera["statement"])
+            f, res_x, res_y, x, y = (float(g) for g in m.groups())
+            want = [x + 0.5 - res_x / 2, y + 0.5 - res_y / 2, -f]
+            got = camera["answer"]["ray"]["direction"]
+            check(all(math.isclose(a, b, abs_tol=1e-12) for a, b in zip(got, want)),
+                  f"camera seed {seed}: direction {got}, by hand {want}")
     for f in failures:
         print("FAIL:", f)
     print(f"prairielearn_export: {len(failures)} failures")
