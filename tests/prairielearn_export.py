@@ -25,6 +25,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import uuid
 
 try:
     import jsonschema
@@ -73,6 +74,25 @@ class Elements(html.parser.HTMLParser):
         if tag == "pl-answer" and self.current:
             self.inputs[self.current][1].append(self.text.strip())
             self.text = None
+
+
+def fnv1a(pieces):
+    """64-bit FNV-1a over each piece's UTF-8 bytes followed by the byte 0xFF."""
+    h = 0xcbf29ce484222325
+    for piece in pieces:
+        for byte in piece.encode("utf-8") + b"\xff":
+            h = ((h ^ byte) * 0x100000001b3) % 2**64
+    return h
+
+
+def expected_uuid(assignment, problem):
+    """docs/assignments.md: two variant seeds, version 8 and the RFC 9562 variant bits."""
+    hi, lo = (fnv1a(["raygrade variant", assignment, "0", f"prairielearn-uuid-{k}", problem])
+              for k in (1, 2))
+    hi = (hi & ~0xf000) | 0x8000
+    lo = (lo & ~(0xc << 60)) | (0x8 << 60)
+    h = f"{hi:016x}{lo:016x}"
+    return f"{h[:8]}-{h[8:12]}-{h[12:16]}-{h[16:20]}-{h[20:]}"
 
 
 def load_server(path, index):
@@ -244,6 +264,11 @@ def main(raygrade, assignment, static=None):
             check(not errors, f"{pid}/info.json: {errors}")
             check(info["type"] == "v3", f"{pid}: type {info['type']}")
             uuids.add(info["uuid"])
+            parsed = uuid.UUID(info["uuid"])
+            check(parsed.version == 8 and parsed.variant == uuid.RFC_4122,
+                  f"{pid}: uuid {info['uuid']} is not a version 8 RFC 9562 uuid")
+            check(info["uuid"] == expected_uuid(aid, pid),
+                  f"{pid}: uuid {info['uuid']}, documented {expected_uuid(aid, pid)}")
             has_parameters = "parameters" in reference[SEEDS[0]][pid]
             check(info["singleVariant"] == (not has_parameters), f"{pid}: singleVariant")
             elements = Elements()
