@@ -13,7 +13,8 @@ namespace {
 using testing::TempDir;
 using testing::write_text;
 
-// An assignment of one first-hit problem whose object names carry markup and mustache tags.
+// An assignment whose id climbs out of its folder, of one first-hit problem whose object names
+// carry markup and mustache tags.
 std::map<std::string, ZipEntry> export_hostile_names(const TempDir& dir) {
   write_text(dir.path() / "bank.json", R"({"problems": [{
     "id": "names", "kind": "first-hit", "title": "Which is hit first?",
@@ -22,7 +23,7 @@ std::map<std::string, ZipEntry> export_hostile_names(const TempDir& dir) {
       {"name": "<script>alert(1)</script>", "type": "sphere", "center": [5, 0, 0], "radius": 1},
       {"name": "{{params.secret}}", "type": "sphere", "center": [9, 0, 0], "radius": 1}]}]})");
   write_text(dir.path() / "hw.json",
-             R"({"assignment": "hw", "bank": "bank.json", "problems": ["names"]})");
+             R"({"assignment": "../hw", "bank": "bank.json", "problems": ["names"]})");
   write_text(dir.path() / "raygrade", "not really a binary");
   AssignmentSpec spec = load_assignment((dir.path() / "hw.json").string());
   AssignmentBank bank = load_assignment_bank(spec);
@@ -36,16 +37,22 @@ std::map<std::string, ZipEntry> export_hostile_names(const TempDir& dir) {
 TEST(PrairieLearnExport, WritesOneQuestionPerProblemAndTheServerFiles) {
   TempDir dir("pl-export");
   auto files = export_hostile_names(dir);
-  for (const char* name : {"questions/hw/names/info.json", "questions/hw/names/question.html",
-                           "questions/hw/names/server.py", "questions/hw/names/raygrade.json",
-                           "serverFilesCourse/raygrade/hw/assignment.json",
-                           "serverFilesCourse/raygrade/hw/bank/bank.json"}) {
+  for (const char* name :
+       {"questions/_._hw/names/info.json", "questions/_._hw/names/question.html",
+        "questions/_._hw/names/server.py", "questions/_._hw/names/raygrade.json",
+        "serverFilesCourse/raygrade/_._hw/assignment.json",
+        "serverFilesCourse/raygrade/_._hw/bank/bank.json", "serverFilesCourse/raygrade/raygrade"}) {
     EXPECT_TRUE(files.count(name)) << name;
   }
+  EXPECT_EQ(files.size(), 7u);
+  nlohmann::json question =
+      nlohmann::json::parse(files["questions/_._hw/names/raygrade.json"].bytes);
+  EXPECT_EQ(question["assignment"], "_._hw");  // server.py's folder under serverFilesCourse
+  EXPECT_EQ(question["problem"], "names");
   ASSERT_TRUE(files.count("serverFilesCourse/raygrade/raygrade"));
   EXPECT_TRUE(files["serverFilesCourse/raygrade/raygrade"].executable);
   EXPECT_EQ(files["serverFilesCourse/raygrade/raygrade"].bytes, "not really a binary");
-  nlohmann::json info = nlohmann::json::parse(files["questions/hw/names/info.json"].bytes);
+  nlohmann::json info = nlohmann::json::parse(files["questions/_._hw/names/info.json"].bytes);
   EXPECT_EQ(info["type"], "v3");
   // Without per-student variants every seed gives the same problem.
   EXPECT_EQ(info["singleVariant"], true);
@@ -53,7 +60,7 @@ TEST(PrairieLearnExport, WritesOneQuestionPerProblemAndTheServerFiles) {
 
 TEST(PrairieLearnExport, ObjectNamesAreTextInQuestionHtml) {
   TempDir dir("pl-names");
-  std::string html = export_hostile_names(dir)["questions/hw/names/question.html"].bytes;
+  std::string html = export_hostile_names(dir)["questions/_._hw/names/question.html"].bytes;
   EXPECT_EQ(html.find("<script>"), std::string::npos) << html;
   EXPECT_EQ(html.find("{{params.secret}}"), std::string::npos) << html;
   EXPECT_NE(html.find("<pl-answer>&lt;script&gt;alert(1)&lt;/script&gt;</pl-answer>"),

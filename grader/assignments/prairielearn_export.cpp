@@ -2,6 +2,8 @@
 // with the assignment in serverFilesCourse.
 #include <fmt/format.h>
 
+#include <set>
+
 #include "assignments/answer_form.h"
 #include "assignments/lms_export.h"
 #include "assignments/prairielearn_assets.h"
@@ -168,16 +170,22 @@ std::vector<ZipEntry> prairielearn_course(const AssignmentSpec& spec,
                                           const Bank& bank, const std::filesystem::path& binary) {
   std::vector<ZipEntry> entries;
   std::string files = "serverFilesCourse/raygrade/";
+  // Folder names from ids: never a path outside the course, never two the same.
+  std::string assignment_folder = safe_file_name(spec.id);
+  std::set<std::string> question_folders;
   entries.push_back({files + "raygrade", read_file_bytes(binary), true});
   for (auto& e : assignment_files(spec, bank)) {
-    e.name = files + spec.id + "/" + e.name;
+    e.name = files + assignment_folder + "/" + e.name;
     entries.push_back(std::move(e));
   }
   for (std::size_t i = 0; i < problems.size(); ++i) {
     const Problem& p = *problems[i];
     bool varies =
         spec.per_student && spec.problems[i].variants && p.parameters && !p.parameters->empty();
-    std::string folder = fmt::format("questions/{}/{}/", spec.id, p.id);
+    std::string name = safe_file_name(p.id);
+    for (int k = 2; !question_folders.insert(name).second; ++k)
+      name = fmt::format("{}-{}", safe_file_name(p.id), k);
+    std::string folder = fmt::format("questions/{}/{}/", assignment_folder, name);
     json info = {{"uuid", question_uuid(spec.id, p.id)},
                  {"type", "v3"},
                  {"title", p.title.empty() ? p.id : p.title},
@@ -187,7 +195,8 @@ std::vector<ZipEntry> prairielearn_course(const AssignmentSpec& spec,
                  {"showCorrectAnswer", false},
                  {"partialCredit", true}};
     json form = answer_form(p);
-    json question = {{"assignment", spec.id}, {"problem", p.id}, {"blank", blank_answer(form)}};
+    json question = {
+        {"assignment", assignment_folder}, {"problem", p.id}, {"blank", blank_answer(form)}};
     std::vector<Input> inputs;
     for (const auto& f : form["fields"]) inputs_of_field(f, inputs, question);
     question["inputs"] = json::array();

@@ -6,6 +6,7 @@
 #include "assignments/lms_export.h"
 #include "cli/command.h"
 #include "core/atomic_file.h"
+#include "core/escape.h"
 #include "core/zip.h"
 
 namespace raygrade::cli {
@@ -72,7 +73,7 @@ int run_export(const ExportOptions& o) {
                  "Wrote {0}/questions/{1}/ ({2} questions) and {0}/serverFilesCourse/raygrade/ "
                  "(raygrade from {3}). Copy both folders into the PrairieLearn course's "
                  "repository and list the questions in an assessment.\n",
-                 o.out, spec.id, spec.problems.size(), binary.string());
+                 o.out, safe_file_name(spec.id), spec.problems.size(), binary.string());
     }
   } catch (const Error& e) {
     fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
