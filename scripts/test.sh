@@ -10,12 +10,14 @@ cmake --build --preset release
 ctest --preset release
 # The static binary the LMS exports ship (a second build of the library, without tests): the
 # conformance set, every subcommand against the release binary's output, and the Gradescope
-# autograder run with it.
+# autograder and the PrairieLearn questions run with it.
 cmake --preset static >/dev/null
 cmake --build --preset static
 python3 tests/conformance.py build/static/grader/raygrade tests/data/conformance
 bash scripts/static-check.sh build/static/grader/raygrade build/release/grader/raygrade
 /usr/bin/python3 tests/gradescope_autograder.py build/release/grader/raygrade \
+  assignments/homework-rays.json build/static/grader/raygrade
+/usr/bin/python3 tests/prairielearn_export.py build/release/grader/raygrade \
   assignments/homework-rays.json build/static/grader/raygrade
 # The whole suite again with ASan and UBSan (the asan preset).
 cmake --preset asan >/dev/null

@@ -293,6 +293,29 @@ TEST(Assignment, TheMistakesPolicyStillNamesTheMistakeAndThePart) {
   EXPECT_TRUE(score.parts[0].feedback.empty());
 }
 
+// The graders say which part they could not read ("t: could not read '7.2.7': ..."); the
+// mistakes policy keeps that sentence, which quotes the student's own text alone.
+TEST(Assignment, TheMistakesPolicyQuotesANumberItCouldNotRead) {
+  AssignmentSpec spec = load_assignment(kExample);
+  AssignmentBank bank = load_assignment_bank(spec);
+  TempDir dir("unreadable");
+  write_text(dir.path() / "ada.json",
+             submission("s001", {{"variant-shade", {{"intensity", "7.2.7"}}},
+                                 {"variant-sphere", {{"hits", {{{"t", "9..1"}}}}}},
+                                 {"scene-first-hit-only",
+                                  {{"object", "ball"}, {"hits", {{{"t", "5,5"}}}}}}}));
+  AssignmentGradeOptions options;
+  options.now = kDue - 60;  // before the due date: the mistakes policy
+  AssignmentGrader grader(spec, bank.problems, options);
+  SubmissionGrade ada = grader.grade_file((dir.path() / "ada.json").string());
+  ASSERT_TRUE(ada.gradable) << format_diagnostic(*ada.fault);
+  std::string all;
+  for (const auto& r : ada.results) all += fmt::format("{}\n", fmt::join(feedback_lines(r), "\n"));
+  EXPECT_NE(all.find("could not read '7.2.7'"), std::string::npos) << all;
+  EXPECT_NE(all.find("could not read '9..1'"), std::string::npos) << all;
+  EXPECT_NE(all.find("t: could not read '5,5'"), std::string::npos) << all;
+}
+
 TEST(Assignment, TheCheckDrawsSampleVariants) {
   TempDir dir("check");
   // ox = 4.99999999 makes every draw nearly tangent to the sphere of radius 5: no variant

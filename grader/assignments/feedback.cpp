@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
+
 #include "grading/mistakes.h"
 
 namespace raygrade {
@@ -20,9 +22,15 @@ std::string status_sentence(PartStatus s) {
 }
 
 // A sentence about what the student typed and the grader could not read quotes only the
-// student's own text, so it stays.
-bool quotes_only_the_student(const std::string& sentence) {
-  return sentence.rfind("could not read '", 0) == 0;
+// student's own text, so it stays; the graders may start it with the name of the value ("t: ",
+// "intensity: ").
+bool quotes_only_the_student(std::string_view s) {
+  constexpr std::string_view kUnreadable = "could not read '";
+  std::size_t name = 0;
+  while (name < s.size() && (std::isalnum(static_cast<unsigned char>(s[name])) || s[name] == '_'))
+    ++name;
+  if (name > 0 && s.substr(name).starts_with(": ")) s.remove_prefix(name + 2);
+  return s.starts_with(kUnreadable);
 }
 
 }  // namespace

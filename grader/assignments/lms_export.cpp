@@ -67,7 +67,9 @@ fi
 exit 0
 )sh";
 
-std::string read_bytes(const std::filesystem::path& path) {
+}  // namespace
+
+std::string read_file_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;
   s << in.rdbuf();
@@ -80,8 +82,6 @@ std::string read_bytes(const std::filesystem::path& path) {
   }
   return s.str();
 }
-
-}  // namespace
 
 std::vector<StudentIdentity> read_gradescope_users(const std::string& path) {
   Cursor root(load_json_file(path));
@@ -121,24 +121,30 @@ std::optional<std::filesystem::path> find_static_raygrade(const std::filesystem:
   return std::nullopt;
 }
 
-std::vector<ZipEntry> gradescope_autograder(const AssignmentSpec& spec, const Bank& bank,
-                                            const std::filesystem::path& binary) {
-  std::vector<ZipEntry> entries = {{"setup.sh", kSetup, true},
-                                   {"run_autograder", kRunAutograder, true},
-                                   {"raygrade", read_bytes(binary), true}};
+std::vector<ZipEntry> assignment_files(const AssignmentSpec& spec, const Bank& bank) {
+  std::vector<ZipEntry> entries;
   std::set<std::string> names;
   for (const auto& f : bank.files) {
     std::filesystem::path p(f);
     std::string name = p.filename().string();
     for (int k = 2; !names.insert(name).second; ++k)
       name = fmt::format("{}-{}{}", p.stem().string(), k, p.extension().string());
-    entries.push_back({"bank/" + name, read_bytes(p), false});
+    entries.push_back({"bank/" + name, read_file_bytes(p), false});
   }
   // The assignment as written, with its bank in bank/ (its $schema path would point nowhere).
   nlohmann::json a = load_json_file(spec.file)->root;
   a.erase("$schema");
   a["bank"] = "bank";
   entries.push_back({"assignment.json", a.dump(2) + "\n", false});
+  return entries;
+}
+
+std::vector<ZipEntry> gradescope_autograder(const AssignmentSpec& spec, const Bank& bank,
+                                            const std::filesystem::path& binary) {
+  std::vector<ZipEntry> entries = {{"setup.sh", kSetup, true},
+                                   {"run_autograder", kRunAutograder, true},
+                                   {"raygrade", read_file_bytes(binary), true}};
+  for (auto& e : assignment_files(spec, bank)) entries.push_back(std::move(e));
   return entries;
 }
 

@@ -1,6 +1,6 @@
 // An assignment made ready for a learning platform: the Gradescope autograder (setup.sh,
-// run_autograder, the assignment, its bank and a static raygrade) and what run_autograder reads
-// from Gradescope (docs/assignments.md).
+// run_autograder, the assignment, its bank and a static raygrade), what run_autograder reads
+// from Gradescope, and a PrairieLearn course's questions (docs/assignments.md).
 #pragma once
 
 #include <filesystem>
@@ -27,11 +27,27 @@ bool is_static_executable(const std::filesystem::path& path);
 // static, else build/static/grader/raygrade of the same build tree.
 std::optional<std::filesystem::path> find_static_raygrade(const std::filesystem::path& running);
 
+// A file's bytes. Throws Error naming the file when it cannot be read.
+std::string read_file_bytes(const std::filesystem::path& path);
+
+// The assignment as shipped to a platform: bank/*.json (the files of its bank, renamed when two
+// share a name) and assignment.json (the assignment as written, with "bank": "bank").
+std::vector<ZipEntry> assignment_files(const AssignmentSpec& spec, const Bank& bank);
+
 // The files of the Gradescope autograder, as paths inside its zip: setup.sh, run_autograder,
 // raygrade (`binary`'s bytes), assignment.json (the assignment with "bank": "bank") and
 // bank/*.json (the files of its bank). Throws Error when a file cannot be read.
 std::vector<ZipEntry> gradescope_autograder(const AssignmentSpec& spec, const Bank& bank,
                                             const std::filesystem::path& binary);
+
+// A PrairieLearn course fragment: questions/<assignment>/<problem>/ with info.json, question.html
+// (one input per value the student types), server.py (prairielearn_server.py) and
+// raygrade.json (what server.py needs: the ids, the blank answer and where each input goes),
+// and serverFilesCourse/raygrade/ with raygrade (`binary`'s bytes) and
+// <assignment>/assignment.json with its bank. `problems` are the assignment's, in its order.
+std::vector<ZipEntry> prairielearn_course(const AssignmentSpec& spec,
+                                          const std::vector<const Problem*>& problems,
+                                          const Bank& bank, const std::filesystem::path& binary);
 
 // Writes the entries under `folder` (executables with mode 0755).
 void write_entries(const std::filesystem::path& folder, const std::vector<ZipEntry>& entries);

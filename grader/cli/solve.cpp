@@ -18,12 +18,13 @@ struct SolveOptions {
   std::string method;
   int precision = -1;
   bool steps = false;
-  std::string student;  // with an assignment: that student's variant
+  std::string student;      // with an assignment: that student's variant
+  bool assignment = false;  // set when the one path is an assignment file
 };
 
 // The problems to solve: a bank's, or an assignment's (one student's variant, or the
 // generic set with the default numbers).
-Bank problems_to_solve(const SolveOptions& o) {
+Bank problems_to_solve(SolveOptions& o) {
   bool assignment = o.paths.size() == 1 && is_assignment_file(o.paths[0]);
   if (!assignment) {
     if (!o.student.empty()) {
@@ -32,6 +33,7 @@ Bank problems_to_solve(const SolveOptions& o) {
     }
     return load_bank(o.paths);
   }
+  o.assignment = true;
   AssignmentSpec spec = load_assignment(o.paths[0]);
   AssignmentBank from = load_assignment_bank(spec);
   Bank out;
@@ -41,7 +43,7 @@ Bank problems_to_solve(const SolveOptions& o) {
   return out;
 }
 
-int run_solve(const SolveOptions& o) {
+int run_solve(SolveOptions& o) {
   Bank bank;
   try {
     bank = problems_to_solve(o);
@@ -59,6 +61,12 @@ int run_solve(const SolveOptions& o) {
       if (o.format == "json") {
         nlohmann::json s = {{"id", p.id}, {"kind", p.kind}, {"answer", p.task->answer()}};
         if (auto level = p.task->level()) s["level"] = *level;
+        // An assignment's problem as the student reads it: their numbers in the text.
+        if (o.assignment) {
+          s["title"] = p.title;
+          s["statement"] = p.statement;
+          if (!p.values.empty()) s["parameters"] = p.values;
+        }
         if (o.steps) {
           nlohmann::json all = nlohmann::json::array();
           for (const auto& m : make_solution(p, o.method, numbers).methods) {

@@ -28,7 +28,8 @@ const std::vector<Command>& command_table() {
        &setup_generate},
       {"handout", "each student's problems as a page with answer inputs, and a template",
        &setup_handout},
-      {"export", "an assignment as a Gradescope autograder (autograder.zip)", &setup_export},
+      {"export", "an assignment as a Gradescope autograder or PrairieLearn questions",
+       &setup_export},
   };
   return table;
 }

@@ -1,0 +1,219 @@
+// The PrairieLearn course fragment of an assignment: one question per problem, and raygrade
+// with the assignment in serverFilesCourse.
+#include <fmt/format.h>
+
+#include <set>
+
+#include "assignments/answer_form.h"
+#include "assignments/lms_export.h"
+#include "assignments/prairielearn_assets.h"
+#include "assignments/variants.h"
+#include "core/escape.h"
+
+namespace raygrade {
+namespace {
+
+using json = nlohmann::json;
+
+// Text in question.html: HTML-escaped, with braces as entities so that PrairieLearn's
+// mustache pass leaves it alone.
+std::string html_text(std::string_view s) {
+  std::string out;
+  for (char c : html_escape(s)) {
+    if (c == '{') {
+      out += "&#123;";
+    } else if (c == '}') {
+      out += "&#125;";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+// How one input of question.html reads: its element, and where server.py puts its value in
+// the answer (raygrade.json's "inputs").
+struct Input {
+  json spec;         // name, type, path, and list/column/words/options
+  std::string html;  // the element
+};
+
+std::string string_input(const std::string& name, const std::string& label,
+                         const std::string& placeholder, bool multiline = false) {
+  return fmt::format(
+      "<pl-string-input answers-name=\"{}\" label=\"{}\" placeholder=\"{}\" allow-blank=\"true\" "
+      "remove-leading-trailing=\"true\" size=\"40\"{}></pl-string-input>",
+      name, html_text(label), html_text(placeholder), multiline ? " multiline=\"true\"" : "");
+}
+
+// A choice among fixed options; raygrade grades it, not the element.
+std::string choice_input(const std::string& name, const std::string& label, const json& options) {
+  std::string html = fmt::format(
+      "<p>{}</p>\n<pl-multiple-choice answers-name=\"{}\" "
+      "builtin-grading=\"false\" order=\"fixed\" allow-blank=\"true\">",
+      html_text(label), name);
+  for (const auto& o : options) {
+    html += fmt::format("\n  <pl-answer>{}</pl-answer>", html_text(o["text"].get<std::string>()));
+  }
+  return html + "\n</pl-multiple-choice>";
+}
+
+json yes_no() {
+  return json::array({{{"text", "yes"}, {"value", true}}, {{"text", "no"}, {"value", false}}});
+}
+
+std::string placeholder_of(const std::string& type) {
+  if (type == "vector") return "x, y, z";
+  if (type == "formula") return "a formula";
+  if (type == "set") return "names separated by commas";
+  return "a number or an expression, e.g. 9 - sqrt(3)";
+}
+
+// One input per value the student types: a field of the answer form, a column of its hits (all
+// the hits' values in one input, separated by semicolons), or a cell of its rows.
+void inputs_of_field(const json& f, std::vector<Input>& out, json& question) {
+  std::string type = f["type"], key = f["key"], label = f["label"];
+  json path = json::array();
+  std::string name;
+  for (std::size_t start = 0;;) {
+    std::size_t slash = key.find('/', start);
+    path.push_back(key.substr(start, slash - start));
+    if (slash == std::string::npos) break;
+    start = slash + 1;
+  }
+  for (const auto& p : path) name += (name.empty() ? "" : "_") + p.get<std::string>();
+  if (type == "hits") {
+    question["hits_key"] = key;
+    bool several = f.value("several", false);
+    json words = {{"none", "none"}};
+    std::string hint = "none when the ray misses";
+    if (f.contains("contained")) {
+      words["contained"] = "contained";
+      hint += ", contained when it lies in the surface";
+    }
+    for (const auto& c : f["columns"]) {
+      std::string column = c["key"], ctype = c["type"];
+      json spec = {{"name", column}, {"type", ctype}, {"list", true}, {"column", column}};
+      if (column == "t") spec["words"] = words;
+      std::string what = several ? column + " of every hit, in the same order, separated by ;"
+                                 : column + " of the first hit";
+      if (column == "t") what += " (" + hint + ")";
+      out.push_back({spec, string_input(column, what, placeholder_of(ctype))});
+    }
+    return;
+  }
+  if (type == "rows") {
+    for (std::size_t r = 0; r < f["rows"].size(); ++r) {
+      const json& row = f["rows"][r];
+      for (const auto& c : f["columns"]) {
+        std::string column = c["key"], ctype = c["type"];
+        std::string cell = fmt::format("{}_{}_{}", name, r, column);
+        json spec = {{"name", cell}, {"type", ctype}, {"path", {key, r, column}}};
+        std::string what =
+            fmt::format("{}, {}", row["label"].get<std::string>(), c["label"].get<std::string>());
+        if (ctype == "yesno") {
+          spec["options"] = yes_no();
+          out.push_back({spec, choice_input(cell, what, spec["options"])});
+        } else {
+          out.push_back({spec, string_input(cell, what, placeholder_of(ctype))});
+        }
+      }
+    }
+    return;
+  }
+  json spec = {{"name", name.empty() ? "answer" : name}, {"type", type}, {"path", path}};
+  if (type == "choice" || type == "yesno") {
+    spec["options"] = type == "yesno" ? yes_no() : f["options"];
+    out.push_back({spec, choice_input(spec["name"], label, spec["options"])});
+    return;
+  }
+  if (type == "json") spec["path"] = json::array();
+  std::string hint = label;
+  if (type == "set") {
+    for (std::size_t k = 0; k < f["options"].size(); ++k)
+      hint += (k ? ", " : " (") + f["options"][k].get<std::string>();
+    hint += ")";
+  }
+  out.push_back(
+      {spec, string_input(spec["name"], hint, type == "json" ? "JSON" : placeholder_of(type),
+                          type == "json")});
+}
+
+// A PrairieLearn uuid that is the same at every export of a problem of an assignment: its two
+// halves are raygrade variant seeds (FNV-1a) of the assignment and problem ids, with the
+// version (8, vendor-defined) and variant bits of RFC 9562.
+std::string question_uuid(const std::string& assignment, const std::string& problem) {
+  std::uint64_t hi = variant_seed(assignment, 0, "prairielearn-uuid-1", problem);
+  std::uint64_t lo = variant_seed(assignment, 0, "prairielearn-uuid-2", problem);
+  hi = (hi & ~0xf000ULL) | 0x8000ULL;
+  lo = (lo & ~(0xc000ULL << 48)) | (0x8000ULL << 48);
+  return fmt::format("{:08x}-{:04x}-{:04x}-{:04x}-{:012x}", hi >> 32, (hi >> 16) & 0xffff,
+                     hi & 0xffff, lo >> 48, lo & 0xffffffffffffULL);
+}
+
+const char* kFeedbackPanel = R"html(<pl-submission-panel>
+{{#feedback.raygrade}}
+<ul>
+{{#parts}}<li><strong>{{name}}</strong> ({{status}}): {{feedback}}</li>
+{{/parts}}
+{{#lines}}<li>{{.}}</li>
+{{/lines}}
+</ul>
+{{/feedback.raygrade}}
+</pl-submission-panel>
+)html";
+
+}  // namespace
+
+std::vector<ZipEntry> prairielearn_course(const AssignmentSpec& spec,
+                                          const std::vector<const Problem*>& problems,
+                                          const Bank& bank, const std::filesystem::path& binary) {
+  std::vector<ZipEntry> entries;
+  std::string files = "serverFilesCourse/raygrade/";
+  // Folder names from ids: never a path outside the course, never two the same.
+  std::string assignment_folder = safe_file_name(spec.id);
+  std::set<std::string> question_folders;
+  entries.push_back({files + "raygrade", read_file_bytes(binary), true});
+  for (auto& e : assignment_files(spec, bank)) {
+    e.name = files + assignment_folder + "/" + e.name;
+    entries.push_back(std::move(e));
+  }
+  for (std::size_t i = 0; i < problems.size(); ++i) {
+    const Problem& p = *problems[i];
+    bool varies =
+        spec.per_student && spec.problems[i].variants && p.parameters && !p.parameters->empty();
+    std::string name = safe_file_name(p.id);
+    for (int k = 2; !question_folders.insert(name).second; ++k)
+      name = fmt::format("{}-{}", safe_file_name(p.id), k);
+    std::string folder = fmt::format("questions/{}/{}/", assignment_folder, name);
+    json info = {{"uuid", question_uuid(spec.id, p.id)},
+                 {"type", "v3"},
+                 {"title", p.title.empty() ? p.id : p.title},
+                 {"topic", "Ray intersection"},
+                 {"tags", json::array({"raygrade", spec.id, p.kind})},
+                 {"singleVariant", !varies},
+                 {"showCorrectAnswer", false},
+                 {"partialCredit", true}};
+    json form = answer_form(p);
+    json question = {
+        {"assignment", assignment_folder}, {"problem", p.id}, {"blank", blank_answer(form)}};
+    std::vector<Input> inputs;
+    for (const auto& f : form["fields"]) inputs_of_field(f, inputs, question);
+    question["inputs"] = json::array();
+    std::string html =
+        "<pl-question-panel>\n<p><strong>{{params.title}}</strong></p>\n<p>{{params.statement}}"
+        "</p>\n</pl-question-panel>\n\n";
+    for (const auto& in : inputs) {
+      question["inputs"].push_back(in.spec);
+      html += in.html + "\n\n";
+    }
+    html += kFeedbackPanel;
+    entries.push_back({folder + "info.json", info.dump(2) + "\n", false});
+    entries.push_back({folder + "question.html", html, false});
+    entries.push_back({folder + "server.py", std::string(kPrairieLearnServer), false});
+    entries.push_back({folder + "raygrade.json", question.dump(2) + "\n", false});
+  }
+  return entries;
+}
+
+}  // namespace raygrade

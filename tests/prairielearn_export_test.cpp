@@ -1,0 +1,77 @@
+// The PrairieLearn questions of an assignment: their layout, and text from the bank kept inert
+// in question.html (tests/prairielearn_export.py drives their server.py).
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "assignments/lms_export.h"
+#include "run_binary.h"
+
+namespace raygrade {
+namespace {
+
+using testing::TempDir;
+using testing::write_text;
+
+// An assignment whose id climbs out of its folder, of one first-hit problem whose object names
+// carry markup and mustache tags.
+std::map<std::string, ZipEntry> export_hostile_names(const TempDir& dir) {
+  write_text(dir.path() / "bank.json", R"({"problems": [{
+    "id": "names", "kind": "first-hit", "title": "Which is hit first?",
+    "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+    "objects": [
+      {"name": "<script>alert(1)</script>", "type": "sphere", "center": [5, 0, 0], "radius": 1},
+      {"name": "{{params.secret}}", "type": "sphere", "center": [9, 0, 0], "radius": 1}]}]})");
+  write_text(dir.path() / "hw.json",
+             R"({"assignment": "../hw", "bank": "bank.json", "problems": ["names"]})");
+  write_text(dir.path() / "raygrade", "not really a binary");
+  AssignmentSpec spec = load_assignment((dir.path() / "hw.json").string());
+  AssignmentBank bank = load_assignment_bank(spec);
+  EXPECT_TRUE(bank.errors.empty());
+  std::map<std::string, ZipEntry> files;
+  for (auto& e : prairielearn_course(spec, bank.problems, bank.bank, dir.path() / "raygrade"))
+    files[e.name] = e;
+  return files;
+}
+
+TEST(PrairieLearnExport, WritesOneQuestionPerProblemAndTheServerFiles) {
+  TempDir dir("pl-export");
+  auto files = export_hostile_names(dir);
+  for (const char* name :
+       {"questions/_._hw/names/info.json", "questions/_._hw/names/question.html",
+        "questions/_._hw/names/server.py", "questions/_._hw/names/raygrade.json",
+        "serverFilesCourse/raygrade/_._hw/assignment.json",
+        "serverFilesCourse/raygrade/_._hw/bank/bank.json", "serverFilesCourse/raygrade/raygrade"}) {
+    EXPECT_TRUE(files.count(name)) << name;
+  }
+  EXPECT_EQ(files.size(), 7u);
+  nlohmann::json question =
+      nlohmann::json::parse(files["questions/_._hw/names/raygrade.json"].bytes);
+  EXPECT_EQ(question["assignment"], "_._hw");  // server.py's folder under serverFilesCourse
+  EXPECT_EQ(question["problem"], "names");
+  ASSERT_TRUE(files.count("serverFilesCourse/raygrade/raygrade"));
+  EXPECT_TRUE(files["serverFilesCourse/raygrade/raygrade"].executable);
+  EXPECT_EQ(files["serverFilesCourse/raygrade/raygrade"].bytes, "not really a binary");
+  nlohmann::json info = nlohmann::json::parse(files["questions/_._hw/names/info.json"].bytes);
+  EXPECT_EQ(info["type"], "v3");
+  // Without per-student variants every seed gives the same problem.
+  EXPECT_EQ(info["singleVariant"], true);
+}
+
+TEST(PrairieLearnExport, ObjectNamesAreTextInQuestionHtml) {
+  TempDir dir("pl-names");
+  std::string html = export_hostile_names(dir)["questions/_._hw/names/question.html"].bytes;
+  EXPECT_EQ(html.find("<script>"), std::string::npos) << html;
+  EXPECT_EQ(html.find("{{params.secret}}"), std::string::npos) << html;
+  EXPECT_NE(html.find("<pl-answer>&lt;script&gt;alert(1)&lt;/script&gt;</pl-answer>"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("<pl-answer>&#123;&#123;params.secret&#125;&#125;</pl-answer>"),
+            std::string::npos)
+      << html;
+  // The statement and the title come from generate() through mustache, which escapes them.
+  EXPECT_NE(html.find("{{params.statement}}"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace raygrade
