@@ -168,6 +168,9 @@ def submit(server, qdir, course, seed, params, inputs):
     before = copy.deepcopy(data)
     server.grade(data)
     check(changed(before, data) <= GRADE_KEYS, f"grade changed {changed(before, data)}")
+    # What students read names no folder of the server (the file raygrade grades is a
+    # temporary one).
+    check(tempfile.gettempdir() not in feedback_text(data), f"a path shown: {feedback_text(data)}")
     return data
 
 
@@ -335,6 +338,14 @@ def main(raygrade, assignment, static=None):
                              "score": 0.0})
                 server.grade(data)
                 check(data["score"] == 0, f"{pid}/{seed}: grade without parse scored")
+                # An answer raygrade rejects (here a key no answer has): the reason is what is
+                # wrong with it, without the server's temporary folder.
+                try:
+                    server._grade_with_raygrade(data, server._question(data), {"bogus": 1})
+                    check(False, f"{pid}/{seed}: an answer with an unknown key was graded")
+                except RuntimeError as e:
+                    check("unknown key 'bogus'" in str(e) and tempfile.gettempdir() not in str(e),
+                          f"{pid}/{seed}: {e}")
             if has_parameters:
                 values = [json.dumps(drawn[s]["values"], sort_keys=True) for s in SEEDS]
                 check(len(set(values)) > 1, f"{pid}: every seed drew {values[0]}")

@@ -19,16 +19,17 @@ def _question(data):
         return json.load(f)
 
 
-def _raygrade(data, q, args):
-    """Runs raygrade with `args`, ASSIGNMENT standing for the question's assignment; its standard
-    output as JSON, or raises."""
-    root = os.path.join(data["options"]["server_files_course_path"], "raygrade")
+def _raygrade(data, q, args, cwd=None):
+    """Runs raygrade with `args` in folder `cwd`, ASSIGNMENT standing for the question's
+    assignment; its standard output as JSON, or raises. Exit code 2 (some input rejected) still
+    gives the JSON report, whose fault says what is wrong."""
+    root = os.path.abspath(os.path.join(data["options"]["server_files_course_path"], "raygrade"))
     binary = os.path.join(root, "raygrade")
     assignment = os.path.join(root, q["assignment"], "assignment.json")
     args = [assignment if a == "ASSIGNMENT" else a for a in args]
     proc = subprocess.run([binary] + args, capture_output=True, text=True, timeout=TIMEOUT,
-                          check=False)
-    if proc.returncode not in (0, 1) or not proc.stdout:
+                          check=False, cwd=cwd)
+    if proc.returncode not in (0, 1, 2) or not proc.stdout:
         raise RuntimeError("raygrade exited with status %d: %s" % (proc.returncode, proc.stderr))
     return json.loads(proc.stdout)
 
@@ -174,10 +175,11 @@ def parse(data):
 def _grade_with_raygrade(data, q, answer):
     submission = {"student": {"id": _student(data)}, "answers": {q["problem"]: answer}}
     with tempfile.TemporaryDirectory() as folder:
-        path = os.path.join(folder, "answers.json")
-        with open(path, "w", encoding="utf-8") as f:
+        # Run in the folder, so that a message about the file names "answers.json" alone.
+        with open(os.path.join(folder, "answers.json"), "w", encoding="utf-8") as f:
             json.dump(submission, f)
-        out = _raygrade(data, q, ["grade", "--assignment", "ASSIGNMENT", "--format", "json", path])
+        out = _raygrade(data, q, ["grade", "--assignment", "ASSIGNMENT", "--format", "json",
+                                  "answers.json"], cwd=folder)
     g = out["submissions"][0]
     if not g.get("gradable", False):
         raise RuntimeError(g.get("fault", {}).get("message", "raygrade could not read the answer"))
