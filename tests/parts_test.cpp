@@ -197,6 +197,17 @@ TEST(Parts, EmptyStepsAreMissing) {
   EXPECT_EQ(part(grade(kSphere1, R"({"steps": {}, "hits": []})"), "steps"), nullptr);
 }
 
+// The plane x = 2 meets the ray along +x once, at t = 2. A second hit listed with a point and
+// no t is a hit too many: half the t part (one right t of two hits), and the feedback says why.
+TEST(Parts, AHitWithoutTBesideOneWithT) {
+  GradeResult r = grade(R"({"id": "p", "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+    "object": {"type": "plane", "point": [2, 0, 0], "normal": [-1, 0, 0]}})",
+                        R"({"hits": [{"t": 2, "point": [2, 0, 0]}, {"point": [5, 0, 0]}]})");
+  EXPECT_EQ(part(r, "t")->status, PartStatus::kPartial);
+  EXPECT_DOUBLE_EQ(part(r, "t")->points, part(r, "t")->max_points / 2);
+  EXPECT_TRUE(says(part(r, "t")->feedback, "Hit 2 gives no t."));
+}
+
 TEST(Parts, BlankFirstHitObject) {
   GradeResult r = grade(R"({"id": "f", "kind": "first-hit",
     "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},

@@ -395,9 +395,13 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
   std::vector<double> carried_roots;
   if (steps && steps->carried) carried_roots = derivation_roots(*steps->carried);
   double dlen = length(ray_.direction);
+  std::vector<std::size_t> without_t;  // hits that give no t (nor an unreadable one)
   for (std::size_t i = 0; i < n_stu; ++i) {
     if (!hits[i].t) {
-      if (!hits[i].t_fault.empty()) t_feedback.push_back("t: " + hits[i].t_fault);
+      if (!hits[i].t_fault.empty())
+        t_feedback.push_back("t: " + hits[i].t_fault);
+      else
+        without_t.push_back(i);
       continue;
     }
     any_t = true;
@@ -463,6 +467,10 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
       explained = true;
     }
     if (!explained) t_feedback.push_back(fmt::format("t = {} is not a hit of this ray.", typed));
+  }
+  // Beside hits that give their t, one that gives none counts as a hit with a wrong t.
+  if (any_t) {
+    for (std::size_t i : without_t) t_feedback.push_back(fmt::format("Hit {} gives no t.", i + 1));
   }
   std::size_t denom = std::max(n_ref, n_stu - n_twice);
   for (std::size_t j = 0; j < n_ref; ++j) {
