@@ -3,11 +3,13 @@
 # checking banks of 10,000 and 100,000 problems, and checking the single problems that used to
 # take quadratic time (a first hit among thousands of spheres, a polygon of thousands of
 # vertices, a bank of thousands of faulty problems). Quotes wall time, CPU time and peak memory
-# of each run. Usage: scripts/bench-batch.sh [RAYGRADE] [SUBMISSIONS]
+# of each run. Usage: scripts/bench-batch.sh [RAYGRADE] [SUBMISSIONS] [all|grade] (grade: the
+# grading runs alone).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 raygrade=$(realpath "${1:-build/release/grader/raygrade}")
 count=${2:-10000}
+what=${3:-all}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -53,10 +55,13 @@ echo "Grading $count submissions ($answers answers) against 10 problems, $(nproc
 echo "| run | wall | CPU | peak memory | exit |"
 echo "| --- | --- | --- | --- | --- |"
 grade=("$raygrade" grade --problems "$work/bank.json" "$work/subs")
+measure "grade, CSV on standard output, one thread (--jobs 1)" "$work/grades1.csv" "${grade[@]}" --format csv --jobs 1
 measure "grade, CSV on standard output" "$work/grades.csv" "${grade[@]}" --format csv
+cmp -s "$work/grades1.csv" "$work/grades.csv" || echo "(the gradebooks of one thread and of $(nproc) differ)"
 measure "grade, JSON on standard output" "$work/grades.json" "${grade[@]}" --format json
 measure "grade, HTML pages (--out)" /dev/null "$raygrade" grade --problems "$work/bank.json" "$work/subs" --format html --out "$work/html"
 echo "(rows: $(($(wc -l < "$work/grades.csv") - 1)), pages: $(find "$work/html" -name '*.html' | wc -l))"
+[ "$what" = grade ] && exit 0
 
 # Banks of 10,000 and 100,000 problems: files of 10,000 problems each (one file may hold at
 # most 16 MiB), different seeds.

@@ -74,8 +74,8 @@ std::string render(const SubmissionGrade& g, const std::string& format, double s
 // that a batch of any size is never held whole; the text is what one dump of it would be.
 class JsonArrayStream {
  public:
-  void add(const SubmissionGrade& g) {
-    std::string item = json_text(submission_json(g));
+  // `item`: json_text(submission_json(g)) of one graded submission.
+  void add(const std::string& item) {
     std::string indented = first_ ? "{\n  \"submissions\": [\n    " : ",\n    ";
     for (char c : item) {
       indented += c;
@@ -199,7 +199,7 @@ int run_grade(const GradeCliOptions& o) {
   // What a thread makes of one file; the main thread writes them out in the files' order.
   struct Graded {
     SubmissionGrade grade;
-    std::string text;  // the gradebook row, or the file or page rendered
+    std::string text;  // the gradebook row, the submission's JSON, or the file or page rendered
   };
   bool json_stream = o.format == "json" && o.out.empty();
   auto grade_at = [&](std::size_t i) {
@@ -211,7 +211,9 @@ int run_grade(const GradeCliOptions& o) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (o.format == "csv")
       r.text = gradebook_csv_row(r.grade, ids);
-    else if (!json_stream)
+    else if (json_stream)
+      r.text = json_text(submission_json(r.grade));
+    else
       r.text = render(r.grade, o.format, seconds, worked ? &*worked : nullptr);
     return r;
   };
@@ -243,7 +245,7 @@ int run_grade(const GradeCliOptions& o) {
         write_file_atomically(std::filesystem::path(o.out) / (name + extension(o.format)),
                               graded[k].text, false);
       } else if (json_stream) {
-        json_out.add(g);
+        json_out.add(graded[k].text);
       } else {
         std::cout << graded[k].text;
       }
