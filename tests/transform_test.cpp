@@ -1,6 +1,6 @@
 // Transformed objects: rays taken into object space, t kept, normals by the inverse transpose;
 // and spawned rays that never re-hit the surface they leave.
-#include "scenes/transform.h"
+#include "shapes/transform.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "math/vec3.h"
-#include "scenes/transform.h"
+#include "shapes/transform.h"
 #include "shapes/ray.h"
 
 namespace raygrade {

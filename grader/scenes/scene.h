@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "json/cursor.h"
-#include "scenes/transform.h"
+#include "shapes/transform.h"
 #include "shapes/shape.h"
 
 namespace raygrade {
