@@ -193,6 +193,27 @@ TEST(Transformed, UntransformedAnswerIsGradedWrong) {
   EXPECT_LT(r.score, r.max_score);
 }
 
+// The ellipsoid of EllipsoidNormalsByTheInverseTranspose: at (−1.8, 1.6, 0) the object-space
+// normal is N' = (−0.6, 0.8, 0); taken back by A = diag(3, 2, 1) it would be (−1.8, 1.6, 0),
+// not the right (−0.2, 0.4, 0) ∝ (−1, 2, 0) that (A⁻¹)ᵀ = diag(1/3, 1/2, 1) gives.
+TEST(Transformed, NormalByTheMatrixIsNamed) {
+  Problem p = testing::problem(R"({"id": "e", "kind": "intersect",
+      "ray": {"origin": [-5, 1.6, 0], "direction": [1, 0, 0]},
+      "object": {"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                 "transform": [{"scale": [3, 2, 1]}]}})");
+  GradeResult wrong = grade_answer(p, json::parse(R"({"hits": [
+      {"t": 3.2, "point": [-1.8, 1.6, 0], "normal": [-1.8, 1.6, 0]},
+      {"t": 6.8, "point": [1.8, 1.6, 0], "normal": [1, 2, 0]}]})"));
+  ASSERT_EQ(wrong.mistakes.size(), 1u);
+  EXPECT_EQ(wrong.mistakes[0].id, "normal-not-inverse-transpose");
+  EXPECT_EQ(status_of(wrong, "normal"), PartStatus::kPartial);
+  GradeResult right = grade_answer(p, json::parse(R"({"hits": [
+      {"t": 3.2, "point": [-1.8, 1.6, 0], "normal": [-1, 2, 0]},
+      {"t": 6.8, "point": [1.8, 1.6, 0], "normal": [1, 2, 0]}]})"));
+  EXPECT_TRUE(right.mistakes.empty());
+  EXPECT_DOUBLE_EQ(right.score, right.max_score);
+}
+
 void expect_error_at(const char* problem, const std::string& path) {
   try {
     testing::problem(problem);
