@@ -86,6 +86,20 @@ bool singular(const Affine& a) {
   return false;
 }
 
+// cos and sin of an angle in degrees, exact at the quarter turns: cos(π/2) in double is
+// 6.1e-17, not 0, and a box turned 90° would show a slab of d_y = 6.1e-17 and t = −8e15 in its
+// worked solution. Other angles are computed from their remainder modulo 360.
+std::pair<double, double> cos_sin_degrees(double degrees) {
+  double r = std::fmod(degrees, 360.0);  // exact
+  if (r < 0) r += 360;
+  if (r == 0 || r == 360) return {1, 0};  // 360 when a tiny negative angle rounds up
+  if (r == 90) return {0, 1};
+  if (r == 180) return {-1, 0};
+  if (r == 270) return {0, -1};
+  double a = r * std::numbers::pi / 180;
+  return {std::cos(a), std::sin(a)};
+}
+
 Affine step_matrix(const TransformStep& s) {
   Affine m;
   if (s.op == "translate") {
@@ -97,8 +111,8 @@ Affine step_matrix(const TransformStep& s) {
   } else {
     // Rodrigues' rotation formula about the unit axis k, by the right-hand rule.
     Vec3d k = normalized(s.vector);
-    double a = s.degrees * std::numbers::pi / 180;
-    double c = std::cos(a), sn = std::sin(a), v = 1 - c;
+    auto [c, sn] = cos_sin_degrees(s.degrees);
+    double v = 1 - c;
     m.rows = {Vec3d{c + k.x * k.x * v, k.x * k.y * v - k.z * sn, k.x * k.z * v + k.y * sn},
               Vec3d{k.y * k.x * v + k.z * sn, c + k.y * k.y * v, k.y * k.z * v - k.x * sn},
               Vec3d{k.z * k.x * v - k.y * sn, k.z * k.y * v + k.x * sn, c + k.z * k.z * v}};
