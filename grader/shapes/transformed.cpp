@@ -18,22 +18,25 @@ bool same(double a, double b) {
   return std::abs(a - b) <= kSameValueRelative * std::max(1.0, std::abs(b));
 }
 
-// The first computed step of `inner` named like `prefix...` whose value is `v`.
+// The last computed step of `inner` named like `prefix...` whose value is `v`: the last, since
+// a method's result comes after the pieces that may share its value (a box's t_enter after
+// t_low_x).
 const Step* step_with_value(const Derivation& inner, char prefix, const Value& v) {
+  const Step* found = nullptr;
   for (const auto& s : inner.steps) {
     if (s.given || s.name.empty() || std::tolower(s.name[0]) != prefix || s.value.kind != v.kind) {
       continue;
     }
-    if (v.is_scalar() && same(s.value.scalar, v.scalar)) return &s;
-    if (v.is_vector() && same(s.value.vector.x, v.vector.x) && same(s.value.vector.y, v.vector.y) &&
-        same(s.value.vector.z, v.vector.z)) {
-      return &s;
+    if ((v.is_scalar() && same(s.value.scalar, v.scalar)) ||
+        (v.is_vector() && same(s.value.vector.x, v.vector.x) &&
+         same(s.value.vector.y, v.vector.y) && same(s.value.vector.z, v.vector.z))) {
+      found = &s;
     }
   }
-  return nullptr;
+  return found;
 }
 
-// The matrix product of `rows` (givens named `name1`..`name3`) and the vector `v`.
+// The matrix with rows `rows` (givens) times the vector `v`.
 E times(const std::array<E, 3>& rows, const E& v) {
   return tuple(dot(rows[0], v), dot(rows[1], v), dot(rows[2], v));
 }
