@@ -193,6 +193,24 @@ TEST(Transformed, UntransformedAnswerIsGradedWrong) {
   EXPECT_LT(r.score, r.max_score);
 }
 
+// The ray taken into object space by M instead of M⁻¹: O' = 2·(0, 0, −5) = (0, 0, −10) and
+// D' = (0, 0, 2). Then |−10 + 2t| = 1 gives t = 4.5 and 5.5, the world points (0, 0, −5) + t·ẑ
+// = (0, 0, −0.5) and (0, 0, 0.5). They follow from the wrong steps: error carried forward, half
+// of the t part's 2 points.
+TEST(Transformed, RayTakenByTheMatrixIsCarriedForward) {
+  Problem p = testing::problem(kScaledSphereProblem);
+  GradeResult r = grade_answer(p, json::parse(R"({"steps": {"O_obj": [0, 0, -10],
+      "D_obj": [0, 0, 2]},
+      "hits": [{"t": 4.5, "point": [0, 0, -0.5]}, {"t": 5.5, "point": [0, 0, 0.5]}]})"));
+  EXPECT_TRUE(r.carried_forward);
+  for (const auto& x : r.parts) {
+    if (x.name == "t") {
+      EXPECT_DOUBLE_EQ(x.points, 1);
+    }
+  }
+  EXPECT_EQ(status_of(r, "steps"), PartStatus::kWrong);  // both steps given are wrong
+}
+
 // The ellipsoid of EllipsoidNormalsByTheInverseTranspose: at (−1.8, 1.6, 0) the object-space
 // normal is N' = (−0.6, 0.8, 0); taken back by A = diag(3, 2, 1) it would be (−1.8, 1.6, 0),
 // not the right (−0.2, 0.4, 0) ∝ (−1, 2, 0) that (A⁻¹)ᵀ = diag(1/3, 1/2, 1) gives.
