@@ -2,6 +2,7 @@
 // hits back in the world, as derivation steps.
 #include "shapes/transformed.h"
 
+#include <cctype>
 #include <cmath>
 
 #include "derivation/number_format.h"
