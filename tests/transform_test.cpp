@@ -1,6 +1,6 @@
 // Transformed objects: rays taken into object space, t kept, normals by the inverse transpose;
 // and spawned rays that never re-hit the surface they leave.
-#include "scenes/transform.h"
+#include "shapes/transform.h"
 
 #include <gtest/gtest.h>
 
@@ -62,6 +62,22 @@ TEST(Transform, ZeroScaleIsAnError) {
   } catch (const Error& e) {
     EXPECT_EQ(e.diagnostic().path, "/objects/0/transform/1/scale");
   }
+}
+
+// Quarter turns about z: (x, y) → (−y, x) for 90°, so (1, 0, 0) goes to (0, 1, 0) exactly,
+// and to (−1, 0, 0) after 180°, (0, −1, 0) after 270° and −90°. From cos(π/2) in double the
+// zeros would be 6.1e-17.
+TEST(Transform, QuarterTurnsAreExact) {
+  auto turned = [](const char* degrees) {
+    auto f = testing::json_file(
+        fmt::format(R"([{{"rotate": {{"axis": [0, 0, 1], "degrees": {}}}}}])", degrees));
+    return read_transform(Cursor(f)).to_world.point({1, 0, 0});
+  };
+  EXPECT_EQ(turned("90"), Vec3d(0, 1, 0));
+  EXPECT_EQ(turned("180"), Vec3d(-1, 0, 0));
+  EXPECT_EQ(turned("270"), Vec3d(0, -1, 0));
+  EXPECT_EQ(turned("-90"), Vec3d(0, -1, 0));
+  EXPECT_EQ(turned("450"), Vec3d(0, 1, 0));
 }
 
 TEST(Transform, ComposesInTheOrderWritten) {

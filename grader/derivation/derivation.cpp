@@ -77,6 +77,14 @@ const Value& Deriver::value(const std::string& name) const {
   return it->second;
 }
 
+void Deriver::append(const Derivation& inner) {
+  for (const auto& s : inner.steps) {
+    symbols_[s.name] = s.symbol;
+    env_[s.name] = s.value;
+    d_.steps.push_back(s);
+  }
+}
+
 void Deriver::note(std::string text) {
   if (d_.steps.empty()) return;
   auto& n = d_.steps.back().note;

@@ -78,6 +78,9 @@ class Deriver {
   E sym(const std::string& name) const;
   const Value& value(const std::string& name) const;
   double scalar(const std::string& name) const { return value(name).scalar; }
+  // Takes the steps of a derivation worked on its own (a primitive's, inside a transformed
+  // object's) into this one: later formulas may use them; their conclusions are not taken.
+  void append(const Derivation& inner);
   // Adds a note to the last step.
   void note(std::string text);
   void conclude(std::string sentence);

@@ -11,9 +11,31 @@
 #include "grading/parts.h"
 #include "grading/steps.h"
 #include "kinds/intersect.h"
+#include "shapes/transformed.h"
 
 namespace raygrade {
 namespace {
+
+// Two unit normals this far apart are different directions: the normal a matrix gives differs
+// from the inverse transpose's by far more (the ellipsoid's (−1.8, 1.6, 0)/|·| against
+// (−1, 2, 0)/√5 by 0.2) unless A is a rotation with a uniform scale, where they agree.
+constexpr double kDistinctNormals = 1e-6;
+
+// The normal of a transformed object's hit taken to the world by A instead of (A⁻¹)ᵀ, when
+// that differs from the right one: the normal-not-inverse-transpose mistake.
+std::optional<Vec3d> normal_by_matrix(const Shape* shape, const Ray& ray, const Hit& ref) {
+  const auto* moved = dynamic_cast<const TransformedShape*>(shape);
+  if (!moved) return std::nullopt;
+  Intersection x = moved->object().intersect(moved->transform().ray_to_object(ray));
+  const Hit* same = nullptr;
+  for (const auto& h : x.hits) {
+    if (!same || std::abs(h.t - ref.t) < std::abs(same->t - ref.t)) same = &h;
+  }
+  if (!same) return std::nullopt;
+  Vec3d wrong = normalized(moved->transform().to_world.linear(same->normal));
+  if (length(wrong - ref.normal) <= kDistinctNormals) return std::nullopt;
+  return wrong;
+}
 
 // How wrong the discriminant of a student's hand computation may be, relative to the size of
 // its terms b² and 4|ac|: four significant figures carried through. Near a tangent
@@ -595,6 +617,20 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
                           "normal {}.",
                           format_vector(r, numbers_)));
         }
+      } else if (auto by_matrix = normal_by_matrix(shape_, ray_, ref_[j]);
+                 by_matrix &&
+                 compare_direction(h.normal->c, *by_matrix, tn).verdict.match == Match::kRight) {
+        const char* id = "normal-not-inverse-transpose";
+        out.mistakes.push_back(make_mistake(
+            id, "normal",
+            fmt::format("your normal {} is the object's normal taken to the world by the matrix "
+                        "A; by the inverse transpose (A⁻¹)ᵀ it is {}.",
+                        format_vector(mine, numbers_), format_vector(r, numbers_))));
+        n_credit += mistake_info(id).credit;
+        n_feedback.push_back(
+            fmt::format("The normal at t = {} is {}: normals go back by the "
+                        "inverse transpose of the transform's matrix.",
+                        fmt_t(ref_[j].t), format_vector(r, numbers_)));
       } else {
         n_feedback.push_back(fmt::format("The normal at t = {} is {}.", fmt_t(ref_[j].t),
                                          format_vector(r, numbers_)));
@@ -626,6 +662,10 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
 
 // The outward normal of this object's shape, in words, for the inward-normal mistake.
 std::string HitsGrader::normal_formula() const {
+  if (dynamic_cast<const TransformedShape*>(shape_)) {
+    return " A transformed object's outward normal is its primitive's, taken back to the world "
+           "by the inverse transpose (A⁻¹)ᵀ and normalized.";
+  }
   std::string type(shape_ ? shape_->type() : "");
   if (type == "sphere") return " A sphere's outward normal is (P − C)/r.";
   if (type == "cylinder") {

@@ -37,6 +37,11 @@ const std::vector<MistakeInfo>& mistake_catalogue() {
        0.5},
       {"inward-normal", "orientation", "Normal pointing inward",
        "A closed surface's normal points outward, away from its inside.", 0.5},
+      {"normal-not-inverse-transpose", "orientation", "Normal transformed by the matrix",
+       "A transformed object's normal goes back to the world by the inverse transpose (A⁻¹)ᵀ, "
+       "which keeps it perpendicular to the surface; the matrix A itself tilts it whenever it "
+       "scales unevenly.",
+       0},
       {"pixel-corner", "convention", "Pixel corner instead of pixel centre",
        "The offsets x − resX/2 aim at the pixel's lower-left corner; the centre needs half a "
        "pixel more, x + 0.5 − resX/2.",

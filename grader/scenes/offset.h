@@ -4,8 +4,8 @@
 #pragma once
 
 #include "math/vec3.h"
-#include "scenes/transform.h"
 #include "shapes/ray.h"
+#include "shapes/transform.h"
 
 namespace raygrade {
 

@@ -94,7 +94,7 @@ Scene read_scene(const Cursor& c) {
   if (items.empty()) c.at("objects").fail("the scene has no objects", "invalid");
   for (const auto& item : items) {
     SceneObject o;
-    o.shape = read_shape(item);
+    o.shape = read_primitive(item);
     std::string type(o.shape->type());
     int n = ++per_type[type];
     o.name = item.has("name") ? item.at("name").string() : fmt::format("{} {}", type, n);
@@ -115,11 +115,7 @@ Scene read_scene(const Cursor& c) {
         o.material = read_material(*m);
       }
     }
-    if (auto t = item.find("transform")) {
-      o.transform = read_transform(*t);
-      if (o.transform.to_world.determinant() == 0)
-        t->fail("the transform is singular", "degenerate");
-    }
+    if (auto t = item.find("transform")) o.transform = read_transform(*t);
     o.solid = encloses_volume(*o.shape);
     s.objects.push_back(std::move(o));
   }
@@ -166,14 +162,13 @@ std::optional<SceneHit> object_hit(const SceneObject& o, int index, const Ray& r
   bool moved = !o.transform.identity();
   Ray local = moved ? o.transform.ray_to_object(ray) : ray;
   Intersection x = o.shape->intersect(local);
+  if (moved) x = o.transform.hits_to_world(ray, std::move(x));
   if (x.hits.empty()) return std::nullopt;
   SceneHit h;
   h.object = index;
   h.object_ray = local;
   h.hit = x.hits.front();
-  // t is the world ray's t: the direction went into object space by A⁻¹ without normalizing.
-  h.hit.point = ray.at(h.hit.t);
-  if (moved) h.hit.normal = o.transform.normal_to_world_unit(h.hit.normal);
+  if (!moved) h.hit.point = ray.at(h.hit.t);
   h.point_error = hit_point_error(ray, h.hit.t, moved ? &o.transform : nullptr);
   return h;
 }

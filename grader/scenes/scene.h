@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "json/cursor.h"
-#include "scenes/transform.h"
 #include "shapes/shape.h"
+#include "shapes/transform.h"
 
 namespace raygrade {
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "math/robust.h"
+#include "shapes/transformed.h"
 
 namespace raygrade {
 
@@ -13,7 +14,7 @@ const std::vector<std::string>& common_object_keys() {
   return keys;
 }
 
-std::unique_ptr<Shape> read_shape(const Cursor& object) {
+std::unique_ptr<Shape> read_primitive(const Cursor& object) {
   if (!object.is_object()) object.fail("expected an object with a 'type'", "type");
   std::string type = object.at("type").string();
   std::vector<std::string> names;
@@ -27,6 +28,20 @@ std::unique_ptr<Shape> read_shape(const Cursor& object) {
           ? fmt::format("unknown object type '{}' (known: {})", type, fmt::join(names, ", "))
           : fmt::format("unknown object type '{}' (did you mean '{}'?)", type, hint),
       "unknown-type");
+}
+
+std::unique_ptr<Shape> read_shape(const Cursor& object) {
+  std::unique_ptr<Shape> shape = read_primitive(object);
+  if (auto m = object.find("material")) {
+    m->fail("a material is used in scenes only: this kind neither shades nor traces", "unused-key");
+  }
+  if (auto t = object.find("transform")) {
+    Transform transform = read_transform(*t);
+    if (!transform.identity()) {
+      return std::make_unique<TransformedShape>(std::move(shape), std::move(transform));
+    }
+  }
+  return shape;
 }
 
 int direction_exponent(const Vec3d& direction) { return scale_exponent(direction); }

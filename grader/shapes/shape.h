@@ -62,8 +62,12 @@ struct ShapeEntry {
 // Every primitive, in the order the docs list them.
 const std::vector<ShapeEntry>& shape_table();
 
-// Reads an object by its `type`; unknown types get a "did you mean" error. `extra_keys` are
-// keys the caller allows beside the primitive's own (a `name` in a first-hit list).
+// Reads a primitive by its `type`; unknown types get a "did you mean" error. Its `material`
+// and `transform` are left to the caller (a scene keeps them beside the primitive).
+std::unique_ptr<Shape> read_primitive(const Cursor& object);
+
+// Reads an object of the kinds outside scenes: the primitive placed by its `transform` (a
+// TransformedShape). A `material` is an error: nothing outside a scene uses one.
 std::unique_ptr<Shape> read_shape(const Cursor& object);
 
 // The keys every object may carry beside its type's own parameters.

@@ -27,11 +27,13 @@ struct Affine {
 };
 
 // One step of a transform as written: {"translate": v}, {"scale": v or s},
-// {"rotate": {"axis": v, "degrees": a}}.
+// {"rotate": {"axis": v, "degrees": a}}, {"matrix": [[a, b, c], [d, e, f], [g, h, i]]} (a
+// linear map by its rows).
 struct TransformStep {
-  std::string op;  // "translate", "scale", "rotate"
+  std::string op;  // "translate", "scale", "rotate", "matrix"
   Vec3d vector{};  // the translation, the scale factors, or the rotation axis
   double degrees = 0;
+  std::array<Vec3d, 3> rows{};  // the matrix's rows
 };
 
 // An object's transform: the steps in the order they apply to the object (the first listed is
@@ -47,11 +49,19 @@ struct Transform {
   Ray ray_to_object(const Ray& world) const;
   // A unit object-space normal back in the world, normalized.
   Vec3d normal_to_world_unit(const Vec3d& n) const;
+  // An object-space intersection of ray_to_object(world) back in the world: t kept, each point
+  // on the world ray at that t, each normal by the inverse transpose.
+  Intersection hits_to_world(const Ray& world, Intersection object_hits) const;
   nlohmann::json to_json() const;
 };
 
-// Reads a `transform`: a list of steps. Zero scale factors, a zero rotation axis and unknown
-// steps are errors naming the step's path.
+// A transform whose linear part, each row scaled to unit length, has |det| at most this is
+// singular up to rounding: its rows lie in one plane to within about 1e-12 radians, and A⁻¹
+// would have entries beyond any exercise's digits.
+constexpr double kSingularRelative = 1e-12;
+
+// Reads a `transform`: a list of steps. Zero scale factors, a zero rotation axis, a singular
+// matrix, a singular product of the steps and unknown steps are errors naming their path.
 Transform read_transform(const Cursor& list);
 
 // The steps as a formula in words: "translate (1, 0, 0) · rotate 30° about (0, 1, 0)".

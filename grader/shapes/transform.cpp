@@ -1,5 +1,5 @@
 // Transforms: reading the steps, composing them, and moving rays and normals between spaces.
-#include "scenes/transform.h"
+#include "shapes/transform.h"
 
 #include <cmath>
 #include <numbers>
@@ -57,7 +57,48 @@ Vec3d Transform::normal_to_world_unit(const Vec3d& n) const {
   return normalized(normal_to_world.linear(n));
 }
 
+Intersection Transform::hits_to_world(const Ray& world, Intersection x) const {
+  for (Hit& h : x.hits) {
+    // t is the world ray's t: the direction went into object space by A⁻¹ without normalizing.
+    h.point = world.at(h.t);
+    h.normal = normal_to_world_unit(h.normal);
+  }
+  return x;
+}
+
 namespace {
+
+// Whether the linear part of `a` is singular up to rounding: a zero row, rows that are
+// parallel within kSingularRelative (the determinant of the rows scaled to unit length), or an
+// inverse beyond double's range (scales of 1e-200 whose determinant underflows).
+bool singular(const Affine& a) {
+  Affine unit;
+  for (int i = 0; i < 3; ++i) {
+    double len = length(a.rows[i]);
+    if (!(len > 0) || !std::isfinite(len)) return true;
+    unit.rows[i] = a.rows[i] / len;
+  }
+  if (!(std::abs(unit.determinant()) > kSingularRelative)) return true;
+  Affine inv = a.inverse();
+  for (const auto& r : inv.rows) {
+    if (!std::isfinite(r.x) || !std::isfinite(r.y) || !std::isfinite(r.z)) return true;
+  }
+  return false;
+}
+
+// cos and sin of an angle in degrees, exact at the quarter turns: cos(π/2) in double is
+// 6.1e-17, not 0, and a box turned 90° would show a slab of d_y = 6.1e-17 and t = −8e15 in its
+// worked solution. Other angles are computed from their remainder modulo 360.
+std::pair<double, double> cos_sin_degrees(double degrees) {
+  double r = std::fmod(degrees, 360.0);  // exact
+  if (r < 0) r += 360;
+  if (r == 0 || r == 360) return {1, 0};  // 360 when a tiny negative angle rounds up
+  if (r == 90) return {0, 1};
+  if (r == 180) return {-1, 0};
+  if (r == 270) return {0, -1};
+  double a = r * std::numbers::pi / 180;
+  return {std::cos(a), std::sin(a)};
+}
 
 Affine step_matrix(const TransformStep& s) {
   Affine m;
@@ -65,11 +106,13 @@ Affine step_matrix(const TransformStep& s) {
     m.translation = s.vector;
   } else if (s.op == "scale") {
     m.rows = {Vec3d{s.vector.x, 0, 0}, Vec3d{0, s.vector.y, 0}, Vec3d{0, 0, s.vector.z}};
+  } else if (s.op == "matrix") {
+    m.rows = s.rows;
   } else {
     // Rodrigues' rotation formula about the unit axis k, by the right-hand rule.
     Vec3d k = normalized(s.vector);
-    double a = s.degrees * std::numbers::pi / 180;
-    double c = std::cos(a), sn = std::sin(a), v = 1 - c;
+    auto [c, sn] = cos_sin_degrees(s.degrees);
+    double v = 1 - c;
     m.rows = {Vec3d{c + k.x * k.x * v, k.x * k.y * v - k.z * sn, k.x * k.z * v + k.y * sn},
               Vec3d{k.y * k.x * v + k.z * sn, c + k.y * k.y * v, k.y * k.z * v - k.x * sn},
               Vec3d{k.z * k.x * v - k.y * sn, k.z * k.y * v + k.x * sn, c + k.z * k.z * v}};
@@ -83,7 +126,8 @@ Transform read_transform(const Cursor& list) {
   Transform t;
   for (const auto& item : list.items()) {
     if (!item.is_object() || item.json().size() != 1) {
-      item.fail("a transform step is an object with one key: translate, rotate or scale", "type");
+      item.fail("a transform step is an object with one key: translate, rotate, scale or matrix",
+                "type");
     }
     TransformStep s;
     if (item.has("translate")) {
@@ -102,13 +146,25 @@ Transform read_transform(const Cursor& list) {
       c.allow_only({"axis", "degrees"});
       s.vector = c.at("axis").nonzero_vec3();
       s.degrees = c.at("degrees").number();
+    } else if (item.has("matrix")) {
+      s.op = "matrix";
+      Cursor c = item.at("matrix");
+      auto rows = c.items();
+      if (rows.size() != 3) c.fail("a matrix is a list of 3 rows of 3 numbers", "type");
+      for (int i = 0; i < 3; ++i) s.rows[i] = rows[i].vec3();
+      Affine m;
+      m.rows = s.rows;
+      if (singular(m)) c.fail("the matrix is singular: it has no inverse", "degenerate");
     } else {
-      item.allow_only({"translate", "rotate", "scale"});
-      item.fail("a transform step is translate, rotate or scale", "type");
+      item.allow_only({"translate", "rotate", "scale", "matrix"});
+      item.fail("a transform step is translate, rotate, scale or matrix", "type");
     }
     t.to_world = t.to_world.then(step_matrix(s));
     t.steps.push_back(s);
   }
+  // Each step is invertible, but their product may round to a singular matrix (scales of
+  // 1e-200 and 1e-200).
+  if (singular(t.to_world)) list.fail("the transform is singular: it has no inverse", "degenerate");
   t.to_object = t.to_world.inverse();
   t.normal_to_world = t.to_object.transpose_linear();
   return t;
@@ -120,6 +176,10 @@ nlohmann::json Transform::to_json() const {
     nlohmann::json v = nlohmann::json::array({s.vector.x, s.vector.y, s.vector.z});
     if (s.op == "rotate") {
       out.push_back({{"rotate", {{"axis", v}, {"degrees", s.degrees}}}});
+    } else if (s.op == "matrix") {
+      nlohmann::json rows = nlohmann::json::array();
+      for (const auto& r : s.rows) rows.push_back({r.x, r.y, r.z});
+      out.push_back({{"matrix", rows}});
     } else {
       out.push_back({{s.op, v}});
     }
@@ -133,6 +193,9 @@ std::string describe_transform(const Transform& t) {
     if (!out.empty()) out += ", then ";
     if (s.op == "rotate") {
       out += fmt::format("rotate {}° about {}", format_number(s.degrees), format_vector(s.vector));
+    } else if (s.op == "matrix") {
+      out += fmt::format("the matrix with rows {}, {}, {}", format_vector(s.rows[0]),
+                         format_vector(s.rows[1]), format_vector(s.rows[2]));
     } else {
       out += fmt::format("{} by {}", s.op, format_vector(s.vector));
     }
