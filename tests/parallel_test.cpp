@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <mutex>
 #include <set>
 #include <stdexcept>
@@ -37,8 +38,11 @@ TEST(ParallelMap, RunsOnSeveralThreads) {
       seen.insert(std::this_thread::get_id());
     }
     // Both items are taken at once, by two threads: each waits until the other has started.
+    // On one thread the wait would never end; it gives up after 10 s and the test fails.
     ++waiting;
-    while (waiting.load() < 2) std::this_thread::yield();
+    auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (waiting.load() < 2 && std::chrono::steady_clock::now() < give_up)
+      std::this_thread::yield();
     return 0;
   });
   EXPECT_EQ(seen.size(), 2u);
