@@ -19,7 +19,7 @@ constexpr double kMinTimingSeconds = 0.03;
 // moments another process took the core (the noise is one-sided). The timings of one primitive
 // go in rounds, every level once per round, so that a slow spell of the machine, which can last
 // longer than one timing, spoils at most one timing of each level rather than all of one.
-constexpr int kTimingRounds = 5;
+constexpr int kTimingRounds = 9;
 
 double time_once(NearestHit f, const std::vector<AccuracyCase>& cases) {
   if (cases.empty()) return 0;

@@ -70,6 +70,33 @@ T difference_of_products(T a, T b, T c, T d) {
   }
 }
 
+// The dot product and the cross product with fused multiply-adds where the type has them in
+// hardware (float and double): fewer operations and roundings than the plain ones, and within
+// the same error bounds (each fused step rounds once where the plain one rounds twice). The
+// results are the same on every machine: std::fma rounds once whether or not the processor
+// fuses it.
+template <typename T>
+inline constexpr bool kFusedArithmetic = std::is_same_v<T, float> || std::is_same_v<T, double>;
+
+template <typename T>
+[[gnu::always_inline]] inline T dot_fused(const Vec3<T>& u, const Vec3<T>& v) {
+  if constexpr (kFusedArithmetic<T>) {
+    return std::fma(u.x, v.x, std::fma(u.y, v.y, u.z * v.z));
+  } else {
+    return dot(u, v);
+  }
+}
+
+template <typename T>
+[[gnu::always_inline]] inline Vec3<T> cross_fused(const Vec3<T>& a, const Vec3<T>& b) {
+  if constexpr (kFusedArithmetic<T>) {
+    return {std::fma(a.y, b.z, -(a.z * b.y)), std::fma(a.z, b.x, -(a.x * b.z)),
+            std::fma(a.x, b.y, -(a.y * b.x))};
+  } else {
+    return cross(a, b);
+  }
+}
+
 // The cross product with every component computed by difference_of_products.
 template <typename T>
 Vec3<T> cross_accurate(const Vec3<T>& a, const Vec3<T>& b) {

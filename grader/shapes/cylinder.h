@@ -116,10 +116,10 @@ template <typename T>
   T a = dot(dp, dp), rr = r * r;
   T s = dot(cross(f, d), axis), ar = a * rr, disc = ar - s * s;
   T magnitude = ar + dot(f, f) * dot(d, d);
-  // a and r² are normal numbers, and no product overflows.
+  // a and r² are normal numbers, and no product overflows (two comparisons, not a min: see
+  // sphere_quadratic_fast).
   auto certain = [&] {
-    return (std::min(a, rr) >= lo) & (magnitude <= hi) &
-           (abs(disc) >= kCylinderDisc<T> * magnitude);
+    return (a >= lo) & (rr >= lo) & (magnitude <= hi) & (abs(disc) >= kCylinderDisc<T> * magnitude);
   };
   if (disc < T(0)) return certain() ? FastPath::kMiss : FastPath::kUndecided;
   T ff = dot(fp, fp), c = ff - rr;

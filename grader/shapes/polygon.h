@@ -39,8 +39,9 @@ bool watertight_polygon(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Ve
       if (between_x && between_y) return true;
     } else {
       // The edge crosses the x axis at e / (b_y − a_y): on the +x side when the signs agree.
+      // (Without a branch: whether an edge crosses is as unpredictable as the ray.)
       bool a_up = a[1] > T(0), b_up = b[1] > T(0);
-      if (a_up != b_up && (e > T(0)) == b_up) inside = !inside;
+      inside ^= (a_up != b_up) & ((e > T(0)) == b_up);
     }
     a = b;
   }

@@ -72,7 +72,11 @@ TriangleHit<T> watertight_triangle(const Vec3<T>& o, const Vec3<T>& d, const Vec
   // ray through an edge or vertex hits, whatever the shear's rounding.
   snap_edge_functions(u, v, w, {ax, ay, A[kx], A[ky], A[kz]}, {bx, by, B[kx], B[ky], B[kz]},
                       {cx, cy, C[kx], C[ky], C[kz]}, sx, sy);
-  if ((u < T(0) || v < T(0) || w < T(0)) && (u > T(0) || v > T(0) || w > T(0))) return out;
+  // Signs combined without short circuits: one branch, which goes wrong as often as rays miss,
+  // rather than up to six.
+  bool negative = (u < T(0)) | (v < T(0)) | (w < T(0));
+  bool positive = (u > T(0)) | (v > T(0)) | (w > T(0));
+  if (negative & positive) return out;
   T det = u + v + w;
   if (det == T(0)) return out;
   out.hit = true;
