@@ -58,6 +58,10 @@ const BadCase kCases[] = {
      "/problems/1/ray/direction", "overflows"},
     {"FlatBox", kGoodRay, R"({"type": "box", "min": [0, 0, 0], "max": [1, 0, 1]})",
      "/problems/1/object/max", "degenerate box"},
+    // A name labels an object among others; an intersect problem has one.
+    {"NameOnTheOnlyObject", kGoodRay,
+     R"({"type": "sphere", "name": "ball", "center": [2, 0, 0], "radius": 1})",
+     "/problems/1/object/name", "this kind has one object"},
 };
 
 // Test names and failure messages show the case's name, not its bytes.

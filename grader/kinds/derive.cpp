@@ -3,6 +3,7 @@
 
 #include <set>
 
+#include "kinds/intersect.h"
 #include "kinds/sketch.h"
 
 namespace raygrade {
@@ -31,7 +32,7 @@ std::string typed_display(const E& s) {
 
 std::unique_ptr<Task> DeriveTask::read(const Cursor& problem) {
   Ray ray = read_ray(problem.at("ray"));
-  std::unique_ptr<Shape> object = read_shape(problem.at("object"));
+  std::unique_ptr<Shape> object = read_lone_object(problem.at("object"));
   Derivation d = object->derive(ray, problem.string_or("method", ""));
   Cursor find = problem.at("find");
   auto items = find.items();

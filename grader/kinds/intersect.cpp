@@ -11,7 +11,7 @@ namespace raygrade {
 
 std::unique_ptr<Task> IntersectTask::read(const Cursor& problem) {
   return std::make_unique<IntersectTask>(read_ray(problem.at("ray")),
-                                         read_shape(problem.at("object")),
+                                         read_lone_object(problem.at("object")),
                                          problem.string_or("method", ""));
 }
 
@@ -39,6 +39,15 @@ Sketch IntersectTask::sketch() const {
   sketch_ray(f, ray_, {object_.get()}, x.hits);
   for (const auto& h : x.hits) sketch_hit(f, h, Ink::kHit);
   return f;
+}
+
+std::unique_ptr<Shape> read_lone_object(const Cursor& object) {
+  std::unique_ptr<Shape> shape = read_shape(object);
+  if (auto name = object.find("name")) {
+    name->fail("a name tells an object apart from others, and this kind has one object",
+               "unused-key");
+  }
+  return shape;
 }
 
 std::vector<NamedShape> read_named_objects(const Cursor& list) {

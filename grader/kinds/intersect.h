@@ -72,4 +72,8 @@ class FirstHitTask final : public Task {
 // Reads a list of objects, each with a unique `name`.
 std::vector<NamedShape> read_named_objects(const Cursor& list);
 
+// The one object of a kind that has a single object (intersect, derive): a name would label it
+// among others, and there are none, so a name is an unused key.
+std::unique_ptr<Shape> read_lone_object(const Cursor& object);
+
 }  // namespace raygrade
