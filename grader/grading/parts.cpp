@@ -67,7 +67,7 @@ const std::map<std::string, std::vector<PartSpec>, std::less<>>& table() {
       {"ray-tree",
        {{"hit", "ask \"hit\": the object the ray hits first and its t", 1, C::kHits},
         {"tree", "the hit points of the tree and their objects", 1, C::kTree},
-        {"shadows", "which hit points are in shadow", 1, C::kFlag},
+        {"shadows", "which hit points are in shadow, and by what when named", 1, C::kFlag},
         {"terms", "which Phong terms apply at each hit point", 1, C::kNames},
         {"intensity", "ask \"intensity\": the intensity along the primary ray", 1, C::kScalar}}},
       {"derive", {{"<quantity>", "each quantity the problem names in find", 1, C::kFormula}}},

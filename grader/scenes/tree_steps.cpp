@@ -191,7 +191,13 @@ Derivation node_steps(const RayTree& tree, const Scene& scene, const TreeNode& n
   if (scene.lights.empty()) {
     d.conclude("The scene has no lights: only the ambient term applies.");
   } else if (in_shadow(node)) {
-    d.conclude(fmt::format("No light reaches {}: only the ambient term applies.", node.label));
+    d.conclude(fmt::format("{} is in shadow, blocked by {}: only the ambient term applies.",
+                           node.label, names_list(shadow_blockers(tree, scene, node))));
+  } else if (faces_away(node)) {
+    d.conclude(fmt::format(
+        "{} faces away from every light (N·L ≤ 0), which is not a shadow: only the ambient "
+        "term applies.",
+        node.label));
   } else {
     d.conclude(fmt::format("Phong terms at {}: {}.", node.label, fmt::join(terms, ", ")));
   }
