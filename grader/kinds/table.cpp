@@ -2,6 +2,7 @@
 #include "kinds/camera_ray.h"
 #include "kinds/derive.h"
 #include "kinds/intersect.h"
+#include "kinds/normal_at.h"
 #include "kinds/ray_tree.h"
 #include "kinds/reflect.h"
 #include "kinds/refract.h"
@@ -34,6 +35,10 @@ const std::vector<KindEntry>& kind_table() {
        "the Phong intensity at a point, term by term",
        {"point", "normal", "eye", "material", "lights", "ambient_light"},
        &ShadeTask::read},
+      {"normal",
+       "the unit normal of an object at a point of its surface",
+       {"object", "point"},
+       &NormalTask::read},
       {"derive",
        "quantities of a derivation as formulas",
        {"ray", "object", "find"},
