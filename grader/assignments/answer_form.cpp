@@ -85,6 +85,13 @@ json normal_form(const Problem& p) {
   return {{"fields", fields}};
 }
 
+json fresnel_form() {
+  return {{"fields", json::array({field("number", "reflectance", "The reflectance F"),
+                                  field("number", "transmittance", "The transmitted share 1 − F"),
+                                  field("yesno", "total_internal_reflection",
+                                        "Total internal reflection?")})}};
+}
+
 json refract_form() {
   return {
       {"fields",
@@ -183,6 +190,7 @@ json answer_form(const Problem& p) {
   if (p.kind == "reflect") return reflect_form();
   if (p.kind == "refract") return refract_form();
   if (p.kind == "normal") return normal_form(p);
+  if (p.kind == "fresnel") return fresnel_form();
   if (p.kind == "shade") return shade_form(p);
   if (p.kind == "ray-tree") return ray_tree_form(p);
   if (p.kind == "derive") return derive_form(p);

@@ -138,13 +138,17 @@ class RayTreeGrader final : public KindGrader {
     std::vector<StudentNode> out;
     if (!a.has("nodes")) return out;
     for (const auto& n : a.at("nodes").items()) {
-      n.allow_only({"label",       "path",       "parent",
-                    "ray",         "object",     "in_shadow",
-                    "shadowed_by", "faces_away", "terms",
-                    "lights",      "children",   "depth",
-                    "origin",      "direction",  "hit",
-                    "t",           "point",      "normal",
-                    "inside",      "intensity",  "total_internal_reflection",
+      n.allow_only({"label",       "path",
+                    "parent",      "ray",
+                    "object",      "in_shadow",
+                    "shadowed_by", "faces_away",
+                    "terms",       "lights",
+                    "children",    "depth",
+                    "origin",      "direction",
+                    "hit",         "t",
+                    "point",       "normal",
+                    "inside",      "fresnel",
+                    "intensity",   "total_internal_reflection",
                     "background"});
       StudentNode s;
       s.where = n.path();

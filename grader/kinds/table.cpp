@@ -1,6 +1,7 @@
 // The table of problem kinds: adding one is one line here plus its own file pair.
 #include "kinds/camera_ray.h"
 #include "kinds/derive.h"
+#include "kinds/fresnel.h"
 #include "kinds/intersect.h"
 #include "kinds/normal_at.h"
 #include "kinds/ray_tree.h"
@@ -35,6 +36,10 @@ const std::vector<KindEntry>& kind_table() {
        "the Phong intensity at a point, term by term",
        {"point", "normal", "eye", "material", "lights", "ambient_light"},
        &ShadeTask::read},
+      {"fresnel",
+       "the share of light a boundary reflects: the Fresnel equations or Schlick's approximation",
+       {"n1", "n2", "model", "angle", "direction", "normal"},
+       &FresnelTask::read},
       {"normal",
        "the unit normal of an object at a point of its surface",
        {"object", "point"},

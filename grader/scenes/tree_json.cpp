@@ -73,6 +73,7 @@ nlohmann::json node_json(const RayTree& tree, const Scene& scene, const TreeNode
   j["point"] = vec_json(n.point);
   j["normal"] = vec_json(n.normal);
   if (n.inside) j["inside"] = true;
+  if (n.fresnel) j["fresnel"] = *n.fresnel;
   if (n.shaded) {
     nlohmann::json lights = nlohmann::json::array();
     for (const auto& s : n.lights) {
