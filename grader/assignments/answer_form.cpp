@@ -85,6 +85,11 @@ json normal_form(const Problem& p) {
   return {{"fields", fields}};
 }
 
+json view_ray_form() {
+  return {{"fields", json::array({field("vector", "origin", "Where the ray starts"),
+                                  field("vector", "direction", "The ray's direction")})}};
+}
+
 json fresnel_form() {
   return {{"fields", json::array({field("number", "reflectance", "The reflectance F"),
                                   field("number", "transmittance", "The transmitted share 1 − F"),
@@ -191,6 +196,7 @@ json answer_form(const Problem& p) {
   if (p.kind == "refract") return refract_form();
   if (p.kind == "normal") return normal_form(p);
   if (p.kind == "fresnel") return fresnel_form();
+  if (p.kind == "view-ray") return view_ray_form();
   if (p.kind == "shade") return shade_form(p);
   if (p.kind == "ray-tree") return ray_tree_form(p);
   if (p.kind == "derive") return derive_form(p);

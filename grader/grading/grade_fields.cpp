@@ -84,6 +84,7 @@ class FieldsGrader final : public KindGrader {
       case Comparison::kDirection:
       case Comparison::kUnitDirection: return grade_direction(spec, s, vec_of(*ref));
       case Comparison::kFlag: return grade_flag(spec.name, s, ref->get<bool>());
+      case Comparison::kPoint: return grade_point(spec.name, s, vec_of(*ref));
       case Comparison::kNames: return grade_names(spec.name, s, *ref);
       default: return grade_scalar(spec.name, s, ref->get<double>());
     }
@@ -132,6 +133,20 @@ class FieldsGrader final : public KindGrader {
     return {
         0,
         {fmt::format("{} is {}{}, not {}.", name, number(ref), angle ? "°" : "", n.value->text)}};
+  }
+
+  Verdict grade_point(const std::string& name, const AnswerReader& s, const Vec3d& ref) const {
+    AnswerReader::Vector v = s.vector();
+    if (!v.ok) return {0, {fmt::format("{}: {}", name, v.fault)}};
+    const Tolerance& tol = context_.tolerance.for_field(name);
+    NumberVerdict verdict = compare_vector(v.c, ref, tol);
+    if (verdict.match == Match::kRight) return {1, {}};
+    if (verdict.match == Match::kInsufficientPrecision) {
+      return {tol.precision_credit, {fmt::format("{}: {}", name, verdict.message)}};
+    }
+    return {0,
+            {fmt::format("The {} is {}, not {}.", name, format_vector(ref, numbers_),
+                         format_vector(v.value(), numbers_))}};
   }
 
   Verdict grade_direction(const PartSpec& spec, const AnswerReader& s, const Vec3d& ref) const {

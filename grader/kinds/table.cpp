@@ -8,6 +8,7 @@
 #include "kinds/reflect.h"
 #include "kinds/refract.h"
 #include "kinds/shade.h"
+#include "kinds/view_ray.h"
 #include "problems/problem.h"
 
 namespace raygrade {
@@ -20,6 +21,11 @@ const std::vector<KindEntry>& kind_table() {
        "the ray a perspective camera shoots through a pixel",
        {"camera", "pixel", "convention"},
        &CameraRayTask::read},
+      {"view-ray",
+       "the ray through a pixel of a look-at camera: u, v, w, the image plane (bounds or field "
+       "of view), perspective or orthographic",
+       {"camera", "pixel", "convention"},
+       &ViewRayTask::read},
       {"ray-tree",
        "the tree of rays one ray spawns in a scene: shadows, reflection, refraction, Phong",
        {"scene", "ray", "camera", "pixel", "convention", "ask", "labels"},
