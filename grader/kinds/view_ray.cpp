@@ -276,6 +276,8 @@ Sketch ViewRayTask::sketch() const {
   const ViewCamera& c = cam_;
   f.across = -c.w;
   f.across_name = "the view direction −w";
+  f.up = c.v;
+  f.up_name = "the camera's v";
   Vec3d centre = c.projection == Projection::kOrthographic ? c.eye : c.eye - c.focal_length * c.w;
   f.path({centre + c.l * c.u + c.b * c.v, centre + c.r * c.u + c.b * c.v,
           centre + c.r * c.u + c.t * c.v, centre + c.l * c.u + c.t * c.v},
