@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "derivation/number_format.h"
 #include "kinds/sketch.h"
@@ -50,7 +51,8 @@ SurfacePoint nearest_flat(const std::vector<Vec3d>& v, const Vec3d& p) {
     winding += std::atan2(dot(cross(a, b), u), dot(a, b));
   }
   SurfacePoint s{q, n, "", ""};
-  if (std::abs(winding) > 3.14) return s;  // 2π inside, 0 outside
+  // The winding is 2π inside and 0 outside (π on an edge, where the edge point is as near).
+  if (std::abs(winding) > std::numbers::pi) return s;
   double best = kInfinity;
   for (std::size_t i = 0; i < v.size(); ++i) {
     Vec3d e = nearest_on_segment(q, v[i], v[(i + 1) % v.size()]);
