@@ -108,15 +108,31 @@ TEST(NormalKind, EdgesAndRimsHaveNoNormal) {
   EXPECT_NE(e.find("side meets its top cap"), std::string::npos) << e;
 }
 
+// The ellipsoid of EllipsoidNormalGoesBackByTheInverseTranspose: N' = (√2/2, √2/2, 0) taken
+// by A = diag(2, 1, 1) is (√2, √2/2, 0) ∥ (2, 1, 0), not (1, 2, 0).
+TEST(NormalKind, NormalByTheMatrixIsNamed) {
+  Problem p = testing::problem(R"({"id": "n", "kind": "normal",
+    "object": {"type": "sphere", "center": [0, 0, 0], "radius": 1,
+               "transform": [{"scale": [2, 1, 1]}]},
+    "point": [1.4142135623730951, 0.7071067811865476, 0]})");
+  GradeResult right = grade_answer(p, nlohmann::json::parse(R"({"normal": [1, 2, 0]})"));
+  EXPECT_DOUBLE_EQ(right.score, right.max_score);
+  GradeResult by_a = grade_answer(p, nlohmann::json::parse(R"({"normal": [2, 1, 0]})"));
+  EXPECT_DOUBLE_EQ(by_a.score, 0);
+  EXPECT_TRUE(by_a.has_mistake("normal-not-inverse-transpose"));
+}
+
 TEST(NormalKind, InwardNormalIsGradedWrong) {
   Problem p = testing::problem(R"({"id": "n", "kind": "normal",
     "object": {"type": "sphere", "center": [1, 1, 1], "radius": 3}, "point": [3, 2, 3]})");
   GradeResult right = grade_answer(p, nlohmann::json::parse(R"({"normal": [2, 1, 2]})"));
   EXPECT_DOUBLE_EQ(right.score, right.max_score);
   GradeResult inward = grade_answer(p, nlohmann::json::parse(R"({"normal": [-2, -1, -2]})"));
-  EXPECT_DOUBLE_EQ(inward.score, 0);
+  // The inward-normal mistake keeps half the credit (grading/mistakes.cpp).
+  EXPECT_DOUBLE_EQ(inward.score, 0.5 * inward.max_score);
+  EXPECT_TRUE(inward.has_mistake("inward-normal"));
   ASSERT_FALSE(inward.parts.empty());
-  EXPECT_NE(inward.parts[0].feedback[0].find("opposite"), std::string::npos);
+  EXPECT_NE(inward.parts[0].feedback[0].find("points into the object"), std::string::npos);
 }
 
 }  // namespace

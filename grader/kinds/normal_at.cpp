@@ -201,6 +201,20 @@ Vec3d NormalTask::world_normal() const {
   return m ? normalized(m->normal_to_world.linear(n)) : n;
 }
 
+std::optional<Vec3d> NormalTask::normal_by_matrix() const {
+  const Transform* m = transform();
+  if (!m) return std::nullopt;
+  Vec3d n = normalized(nearest_surface(primitive(), m->to_object.point(point_)).normal);
+  Vec3d wrong = normalized(m->to_world.linear(n));
+  if (length(wrong - world_normal()) <= kOnSurfaceRelative) return std::nullopt;
+  return wrong;
+}
+
+bool NormalTask::solid() const {
+  std::string_view t = primitive().type();
+  return t == "sphere" || t == "cylinder" || t == "box";
+}
+
 nlohmann::json NormalTask::answer() const {
   nlohmann::json j = {{"normal", vec_json(world_normal())}};
   if (const Transform* m = transform()) {

@@ -39,6 +39,12 @@ class NormalTask final : public Task {
                                    const Overrides* overrides) const override;
   Sketch sketch() const override;
 
+  // A transformed object's normal taken to the world by its matrix A instead of (A⁻¹)ᵀ, when
+  // the two differ (an uneven scale): the normal-not-inverse-transpose mistake.
+  std::optional<Vec3d> normal_by_matrix() const;
+  // Whether the object is closed (its normal points out of it): a sphere, cylinder or box.
+  bool solid() const;
+
  private:
   const Shape& primitive() const;
   const Transform* transform() const;
