@@ -219,6 +219,60 @@ TEST(ProbeBoundaries, ClearMissAndClearHitPass) {
   EXPECT_TRUE(probe_boundaries(sphere_at_height("0.5")).diagnostics.empty());
 }
 
+// Shadow rays as courses set them up: leaving P = (0, 1, 0) on the unit sphere with
+// t_min = 1e-9. The sideways probe moves P into or out of the sphere, which is not the ray
+// grazing anything.
+Problem shadow_ray_from_sphere(const std::string& direction, const std::string& objects) {
+  return testing::problem(R"({"id": "p", "kind": "first-hit",
+    "ray": {"origin": [0, 1, 0], "direction": )" +
+                          direction + R"(, "t_min": 1e-9, "t_max": 1},
+    "objects": [{"name": "ball", "type": "sphere", "center": [0, 0, 0], "radius": 1})" +
+                          objects + "]}");
+}
+
+TEST(ProbeBoundaries, ShadowRayLeavingASurfaceIsNotNearlyTangent) {
+  // Toward a light at (4, 5, 0), 45° off the surface, past a blocker at (2, 3, 0) that the ray
+  // meets through its centre.
+  auto blocked = shadow_ray_from_sphere(
+      "[4, 4, 0]",
+      R"(, {"name": "blocker", "type": "sphere", "center": [2, 3, 0], "radius": 0.5})");
+  EXPECT_TRUE(probe_boundaries(blocked).diagnostics.empty());
+  // Nothing in the way: the light is visible.
+  EXPECT_TRUE(probe_boundaries(shadow_ray_from_sphere("[4, 4, 0]", "")).diagnostics.empty());
+  // The same ray as an intersect problem with the sphere it leaves.
+  auto own = testing::problem(R"({"id": "p", "ray": {"origin": [0, 1, 0], "direction": [1, 1, 0],
+    "t_min": 1e-9}, "object": {"type": "sphere", "center": [0, 0, 0], "radius": 1}})");
+  EXPECT_TRUE(probe_boundaries(own).diagnostics.empty());
+}
+
+TEST(ProbeBoundaries, GrazingDepartureIsStillNearlyTangent) {
+  // Leaving the top of the sphere at 0.06° above its tangent plane (slope 0.001): a ray moved
+  // sideways by the tolerance re-enters the sphere far from the start.
+  auto grazing = testing::problem(R"({"id": "p", "ray": {"origin": [0, 1, 0],
+    "direction": [1, 0.001, 0], "t_min": 1e-9}, "object": {"type": "sphere",
+    "center": [0, 0, 0], "radius": 1}})");
+  BoundaryProbe probe = probe_boundaries(grazing);
+  ASSERT_EQ(probe.diagnostics.size(), 1u);
+  EXPECT_EQ(probe.diagnostics[0].code, "nearly-tangent");
+}
+
+// A floor z = 4 and a ball resting on it, both met at t = 4 by the ray along +z.
+Problem exact_tie(const std::string& expected) {
+  return testing::problem(R"({"id": "p", "kind": "first-hit",
+    "ray": {"origin": [0, 0, 0], "direction": [0, 0, 1]},
+    "objects": [{"name": "floor", "type": "plane", "point": [0, 0, 4], "normal": [0, 0, -1]},
+                {"name": "ball", "type": "sphere", "center": [0, 0, 5], "radius": 1}])" +
+                          expected + "}");
+}
+
+TEST(ProbeBoundaries, ExactTieIsWarnedUnlessTheProblemSaysSo) {
+  BoundaryProbe unsaid = probe_boundaries(exact_tie(""));
+  ASSERT_EQ(unsaid.diagnostics.size(), 1u);
+  EXPECT_EQ(unsaid.diagnostics[0].code, "tie");
+  EXPECT_TRUE(probe_boundaries(exact_tie(R"(, "expected": {"object": "floor", "tie": true})"))
+                  .diagnostics.empty());
+}
+
 TEST(Conditioning, ShortDecimalsAreExactAndWellPosedInputsPass) {
   // Seed 000's sphere case 4 has its centre at z = 0.8: exact, not perturbed. Printed as 0.800
   // it is perturbed by 0.0005, and t moves by about as much: well-conditioned.

@@ -73,6 +73,23 @@ TEST(RayTreeGrade, DiffuseAtAShadowedPointIsWrongWithTheReason) {
   EXPECT_DOUBLE_EQ(shadows->points, 0.8);  // "diffuse" says the student thought I4 lit
 }
 
+// I4's shadow ray meets the glass sphere: a student who names the blocker is graded on it.
+TEST(RayTreeGrade, TheBlockerNamedIsGraded) {
+  nlohmann::json a = seed_answer();
+  a["nodes"][3]["shadowed_by"] = {"glass sphere"};
+  a["nodes"][4]["shadowed_by"] = "glass sphere";
+  GradeResult right = grade_answer(seed(), a);
+  EXPECT_DOUBLE_EQ(right.score, right.max_score);
+  a["nodes"][3]["shadowed_by"] = {"back wall"};
+  GradeResult r = grade_answer(seed(), a);
+  const PartResult* shadows = part(r, "shadows");
+  ASSERT_NE(shadows, nullptr);
+  EXPECT_DOUBLE_EQ(shadows->points, 0.8);  // four of the five points right
+  std::string fb = all_feedback(*shadows);
+  EXPECT_NE(fb.find("I4 is in shadow, blocked by glass sphere, not back wall"), std::string::npos)
+      << fb;
+}
+
 TEST(RayTreeGrade, LitPointGivenAmbientOnlyIsNamed) {
   nlohmann::json a = seed_answer();
   a["all_terms"] = {"I1", "I3"};

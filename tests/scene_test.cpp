@@ -50,6 +50,41 @@ TEST(RayTree, OpaqueBlockerShadowsThePoint) {
   EXPECT_EQ(node_terms(n), std::vector<std::string>{"ambient"});
 }
 
+// The same floor and ray, the light 5 below the floor: the floor faces away from it (N·L = −1
+// at the origin), which is not a shadow; nothing blocks anything.
+TEST(RayTree, FacingAwayFromTheLightIsNotAShadow) {
+  Problem p = testing::problem(R"({"id": "b", "kind": "ray-tree",
+    "ray": {"origin": [0, 10, 5], "direction": [0, -10, -5]},
+    "scene": {"objects": [
+      {"name": "floor", "type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0]}],
+      "lights": [{"name": "lamp", "position": [0, -5, 0]}]}})");
+  const TreeNode& n = tree_task(p).tree().nodes[0];
+  ASSERT_EQ(n.lights.size(), 1u);
+  EXPECT_EQ(n.lights[0].status, LightStatus::kBehind);
+  EXPECT_FALSE(in_shadow(n));
+  EXPECT_TRUE(faces_away(n));
+  nlohmann::json a = p.task->answer();
+  EXPECT_FALSE(a["nodes"][0]["in_shadow"].get<bool>());
+  EXPECT_TRUE(a["nodes"][0]["faces_away"].get<bool>());
+  EXPECT_FALSE(a["nodes"][0].contains("shadowed_by"));
+  auto parts = p.task->derive("");
+  std::string said;
+  for (const auto& part : parts) {
+    for (const auto& c : part.derivation.conclusion) said += c + "\n";
+  }
+  EXPECT_NE(said.find("I1 faces away from every light"), std::string::npos) << said;
+  EXPECT_EQ(said.find("in shadow"), std::string::npos) << said;
+}
+
+// In shadow, the answer names what blocks the light: the ball (see above).
+TEST(RayTree, InShadowNamesTheBlocker) {
+  Problem p = testing::problem(blocker_problem(R"({"diffuse": 0.5})", "block"));
+  nlohmann::json node = p.task->answer()["nodes"][0];
+  EXPECT_TRUE(node["in_shadow"].get<bool>());
+  EXPECT_EQ(node["shadowed_by"], nlohmann::json::array({"ball"}));
+  EXPECT_FALSE(node.contains("faces_away"));
+}
+
 const char* kGlass = R"({"transparency": 0.8, "refractive_index": 1.5})";
 
 TEST(RayTree, TransparentBlockerBlocksInBlockMode) {

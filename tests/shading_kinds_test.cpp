@@ -84,6 +84,23 @@ TEST(ShadeKind, TermByTerm) {
   EXPECT_NEAR(total->value.scalar, 0.9, 1e-14);
 }
 
+// The same point with k_s = 0: light A still gives its diffuse 0.4, and the specular term,
+// whose coefficient is 0, is neither listed nor worked (no R_1, no specular_1).
+TEST(ShadeKind, NoSpecularTermWhenItsCoefficientIsZero) {
+  std::string text = testing::kTwoLightShade;
+  text.replace(text.find("\"specular\": 0.3"), 15, "\"specular\": 0  ");
+  Problem p = testing::problem(text);
+  nlohmann::json a = p.task->answer();
+  EXPECT_EQ(a["terms"], nlohmann::json::array({"ambient", "diffuse"}));
+  EXPECT_NEAR(a["intensity"].get<double>(), 0.6, 1e-15);
+  auto parts = p.task->derive("");
+  EXPECT_EQ(parts[0].derivation.find("specular_1"), nullptr);
+  EXPECT_EQ(parts[0].derivation.find("R_1"), nullptr);
+  const Step* total = parts[0].derivation.find("I");
+  ASSERT_NE(total, nullptr);
+  EXPECT_NEAR(total->value.scalar, 0.6, 1e-15);
+}
+
 TEST(ShadeKind, UnknownLightKeyIsAnError) {
   EXPECT_THROW(testing::problem(R"({"id": "s", "kind": "shade",
     "point": [0, 0, 0], "normal": [0, 1, 0], "eye": [0, 1, 0],

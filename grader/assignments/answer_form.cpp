@@ -77,6 +77,26 @@ json reflect_form() {
                                         "The reflected direction as a unit vector")})}};
 }
 
+json normal_form(const Problem& p) {
+  json fields = json::array({field("vector", "normal", "The outward unit normal at P")});
+  if (p.task->answer().contains("object_normal")) {
+    fields.push_back(field("vector", "object_normal", "The normal in object space, before (A⁻¹)ᵀ"));
+  }
+  return {{"fields", fields}};
+}
+
+json view_ray_form() {
+  return {{"fields", json::array({field("vector", "origin", "Where the ray starts"),
+                                  field("vector", "direction", "The ray's direction")})}};
+}
+
+json fresnel_form() {
+  return {{"fields", json::array({field("number", "reflectance", "The reflectance F"),
+                                  field("number", "transmittance", "The transmitted share 1 − F"),
+                                  field("yesno", "total_internal_reflection",
+                                        "Total internal reflection?")})}};
+}
+
 json refract_form() {
   return {
       {"fields",
@@ -174,6 +194,9 @@ json answer_form(const Problem& p) {
   if (p.kind == "camera-ray") return camera_ray_form();
   if (p.kind == "reflect") return reflect_form();
   if (p.kind == "refract") return refract_form();
+  if (p.kind == "normal") return normal_form(p);
+  if (p.kind == "fresnel") return fresnel_form();
+  if (p.kind == "view-ray") return view_ray_form();
   if (p.kind == "shade") return shade_form(p);
   if (p.kind == "ray-tree") return ray_tree_form(p);
   if (p.kind == "derive") return derive_form(p);

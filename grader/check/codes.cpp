@@ -15,6 +15,7 @@ const std::vector<DiagnosticCode>& check_codes() {
       {"range", "a number is out of range (not finite, a precision above 15)"},
       {"invalid", "a value breaks a rule of the format (t_max below t_min, an empty id)"},
       {"degenerate", "degenerate geometry: zero direction or radius, collinear vertices"},
+      {"off-surface", "the point of a normal problem is not on the object's surface (how far off)"},
       {"unknown-kind", "an unknown problem kind"},
       {"unknown-type", "an unknown object type"},
       {"unknown-method", "a method the problem's kind does not have"},

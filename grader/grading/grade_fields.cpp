@@ -10,15 +10,20 @@
 
 #include "derivation/number_format.h"
 #include "grading/kind_grader.h"
+#include "grading/mistakes.h"
 #include "grading/parts.h"
+#include "kinds/normal_at.h"
 
 namespace raygrade {
 namespace {
 
 // A part's verdict: its credit and the sentences that explain it, made together.
 struct Verdict {
-  double credit = 0;
+  Verdict(double c = 0, std::vector<std::string> f = {}, std::vector<FoundMistake> m = {})
+      : credit(c), feedback(std::move(f)), mistakes(std::move(m)) {}
+  double credit;
   std::vector<std::string> feedback;
+  std::vector<FoundMistake> mistakes;  // the named mistakes the part's answer shows
 };
 
 Vec3d vec_of(const nlohmann::json& j) {
@@ -30,7 +35,10 @@ constexpr double kLengthNoteTolerance = 1e-3;
 
 class FieldsGrader final : public KindGrader {
  public:
-  explicit FieldsGrader(const Problem& p) : kind_(p.kind), reference_(p.task->answer()) {
+  explicit FieldsGrader(const Problem& p)
+      : kind_(p.kind),
+        reference_(p.task->answer()),
+        normal_task_(dynamic_cast<const NormalTask*>(p.task.get())) {
     context_.problem = &p;
     context_.tolerance = read_tolerance_policy(p);
     if (p.precision >= 0) numbers_.decimals = p.precision;
@@ -54,6 +62,7 @@ class FieldsGrader final : public KindGrader {
         continue;
       }
       Verdict v = grade_part(spec, *given);
+      for (auto& m : v.mistakes) out.mistakes.push_back(std::move(m));
       if (v.credit >= 1 && v.feedback.empty()) v.feedback.push_back("Right.");
       out.parts.push_back(make_part(context_, spec.name, v.credit, std::move(v.feedback)));
     }
@@ -84,6 +93,7 @@ class FieldsGrader final : public KindGrader {
       case Comparison::kDirection:
       case Comparison::kUnitDirection: return grade_direction(spec, s, vec_of(*ref));
       case Comparison::kFlag: return grade_flag(spec.name, s, ref->get<bool>());
+      case Comparison::kPoint: return grade_point(spec.name, s, vec_of(*ref));
       case Comparison::kNames: return grade_names(spec.name, s, *ref);
       default: return grade_scalar(spec.name, s, ref->get<double>());
     }
@@ -134,6 +144,47 @@ class FieldsGrader final : public KindGrader {
         {fmt::format("{} is {}{}, not {}.", name, number(ref), angle ? "°" : "", n.value->text)}};
   }
 
+  // The named mistakes of a normal problem's normal: the inward normal of a closed object, and a
+  // transformed object's normal taken back by A instead of (A⁻¹)ᵀ.
+  std::optional<Verdict> normal_mistake(const std::string& name, const AnswerReader::Vector& v,
+                                        const Vec3d& ref, bool opposite) const {
+    if (!normal_task_ || name != "normal") return std::nullopt;
+    std::string mine = format_vector(v.value(), numbers_);
+    std::string right = format_vector(ref, numbers_);
+    if (opposite && normal_task_->solid()) {
+      const char* id = "inward-normal";
+      std::string msg =
+          fmt::format("your normal {} points into the object; outward it is {}.", mine, right);
+      return Verdict{mistake_info(id).credit, {msg}, {make_mistake(id, name, msg)}};
+    }
+    auto by_matrix = normal_task_->normal_by_matrix();
+    if (by_matrix &&
+        compare_direction(v.c, *by_matrix, context_.tolerance.for_field(name)).verdict.match ==
+            Match::kRight) {
+      const char* id = "normal-not-inverse-transpose";
+      std::string msg = fmt::format(
+          "your normal {} is the object's normal taken to the world by the matrix A; by the "
+          "inverse transpose (A⁻¹)ᵀ it is {}.",
+          mine, right);
+      return Verdict{mistake_info(id).credit, {msg}, {make_mistake(id, name, msg)}};
+    }
+    return std::nullopt;
+  }
+
+  Verdict grade_point(const std::string& name, const AnswerReader& s, const Vec3d& ref) const {
+    AnswerReader::Vector v = s.vector();
+    if (!v.ok) return {0, {fmt::format("{}: {}", name, v.fault)}};
+    const Tolerance& tol = context_.tolerance.for_field(name);
+    NumberVerdict verdict = compare_vector(v.c, ref, tol);
+    if (verdict.match == Match::kRight) return {1, {}};
+    if (verdict.match == Match::kInsufficientPrecision) {
+      return {tol.precision_credit, {fmt::format("{}: {}", name, verdict.message)}};
+    }
+    return {0,
+            {fmt::format("The {} is {}, not {}.", name, format_vector(ref, numbers_),
+                         format_vector(v.value(), numbers_))}};
+  }
+
   Verdict grade_direction(const PartSpec& spec, const AnswerReader& s, const Vec3d& ref) const {
     const std::string& name = spec.name;
     if (s.json().is_null()) {
@@ -148,6 +199,7 @@ class FieldsGrader final : public KindGrader {
       return {0, {fmt::format("{}: a direction cannot be the zero vector.", name)}};
     Vec3d unit = normalized(ref);
     if (d.verdict.match == Match::kWrong) {
+      if (std::optional<Verdict> m = normal_mistake(name, v, ref, d.opposite)) return *m;
       if (d.opposite) {
         return {
             0,
@@ -276,6 +328,7 @@ class FieldsGrader final : public KindGrader {
   static inline const nlohmann::json kNull = nullptr;
   std::string kind_;
   nlohmann::json reference_;
+  const NormalTask* normal_task_;  // for a normal problem's named mistakes
   NumberFormat numbers_;
   double d_length_ = 1;
 };

@@ -24,6 +24,7 @@ struct StudentNode {
   std::string where;  // its JSON path in the answer
   std::optional<std::string> path, parent, ray, object;
   std::optional<bool> in_shadow;
+  std::optional<std::set<std::string>> shadowed_by;  // the objects the student says block
   std::optional<std::set<std::string>> terms;
   std::string resolved;  // the path in the tree it stands for ("" when it cannot be placed)
 };
@@ -137,25 +138,17 @@ class RayTreeGrader final : public KindGrader {
     std::vector<StudentNode> out;
     if (!a.has("nodes")) return out;
     for (const auto& n : a.at("nodes").items()) {
-      n.allow_only({"label",
-                    "path",
-                    "parent",
-                    "ray",
-                    "object",
-                    "in_shadow",
-                    "terms",
-                    "lights",
-                    "children",
-                    "depth",
-                    "origin",
-                    "direction",
-                    "hit",
-                    "t",
-                    "point",
-                    "normal",
-                    "inside",
-                    "intensity",
-                    "total_internal_reflection",
+      n.allow_only({"label",       "path",
+                    "parent",      "ray",
+                    "object",      "in_shadow",
+                    "shadowed_by", "faces_away",
+                    "terms",       "lights",
+                    "children",    "depth",
+                    "origin",      "direction",
+                    "hit",         "t",
+                    "point",       "normal",
+                    "inside",      "fresnel",
+                    "intensity",   "total_internal_reflection",
                     "background"});
       StudentNode s;
       s.where = n.path();
@@ -168,6 +161,16 @@ class RayTreeGrader final : public KindGrader {
         if (!n.at("in_shadow").json().is_boolean())
           n.at("in_shadow").fail("expected true or false", "type");
         s.in_shadow = n.at("in_shadow").json().get<bool>();
+      }
+      if (n.has("shadowed_by")) {
+        std::set<std::string> by;
+        AnswerReader c = n.at("shadowed_by");
+        if (c.json().is_string()) {
+          by.insert(c.string());
+        } else {
+          for (const auto& x : c.items()) by.insert(x.string());
+        }
+        s.shadowed_by = by;
       }
       if (n.has("terms")) {
         std::set<std::string> t;
@@ -301,6 +304,13 @@ class RayTreeGrader final : public KindGrader {
     return fmt::format("{}", fmt::join(parts, "; "));
   }
 
+  // "" when the student's blockers are the point's; else what blocks it instead.
+  std::string blocker_fault(const TreeNode& n, const std::set<std::string>& said) const {
+    std::vector<std::string> by = shadow_blockers(tree(), scene(), n);
+    if (std::set<std::string>(by.begin(), by.end()) == said) return "";
+    return fmt::format("blocked by {}, not {}", fmt::join(by, ", "), fmt::join(said, ", "));
+  }
+
   void grade_lighting(const std::map<int, const StudentNode*>& match, const Lists& lists,
                       bool no_nodes, GradeResult& out) const {
     int total = 0, shadows_right = 0, terms_right = 0;
@@ -321,14 +331,23 @@ class RayTreeGrader final : public KindGrader {
       }
       // In shadow: 1, lit: 0, not said: −1 (an int: GCC misreads an optional<bool> here).
       int shadow = s && s->in_shadow ? int(*s->in_shadow) : -1;
-      if (shadow < 0 && terms && !scene().lights.empty()) shadow = terms->count("diffuse") ? 0 : 1;
       std::set<std::string> want = term_set(node_terms(n));
       bool want_shadow = in_shadow(n);
+      // Terms without in_shadow say only whether some light reaches the point: ambient alone
+      // is right at a point in shadow and at one that faces away from every light alike.
+      if (shadow < 0 && terms && !scene().lights.empty()) {
+        shadow = terms->count("diffuse") ? 0 : (n.diffuse ? 1 : int(want_shadow));
+      }
       std::string reason = light_reason(n);
       if (shadow >= 0) {
         any_shadow = true;
-        if ((shadow == 1) == want_shadow) {
+        std::string wrong_blocker = s && s->shadowed_by && shadow == 1 && want_shadow
+                                        ? blocker_fault(n, *s->shadowed_by)
+                                        : "";
+        if ((shadow == 1) == want_shadow && wrong_blocker.empty()) {
           ++shadows_right;
+        } else if (!wrong_blocker.empty()) {
+          shadow_fb.push_back(fmt::format("{} is in shadow, {}.", label, wrong_blocker));
         } else {
           shadow_fb.push_back(fmt::format("{} is {}: {}.", label,
                                           want_shadow ? "in shadow" : "not in shadow", reason));

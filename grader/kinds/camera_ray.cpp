@@ -2,6 +2,7 @@
 #include "kinds/camera_ray.h"
 
 #include "derivation/number_format.h"
+#include "kinds/view_ray.h"
 
 namespace raygrade {
 
@@ -42,9 +43,7 @@ PixelConvention read_pixel_convention(const Cursor& problem) {
 
 std::unique_ptr<Task> CameraRayTask::read(const Cursor& problem) {
   Camera cam = read_camera(problem.at("camera"));
-  auto pixel = problem.at("pixel").items();
-  if (pixel.size() != 2) problem.at("pixel").fail("expected [x, y]", "type");
-  double x = pixel[0].number(), y = pixel[1].number();
+  auto [x, y] = read_pixel(problem, cam.res_x, cam.res_y);
   return std::make_unique<CameraRayTask>(cam, x, y, read_pixel_convention(problem));
 }
 

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "kinds/camera_ray.h"
+#include "kinds/view_ray.h"
 #include "scenes/tree_json.h"
 #include "scenes/tree_steps.h"
 
@@ -16,11 +17,14 @@ Ray read_primary_ray(const Cursor& problem) {
     return read_ray(problem.at("ray"));
   }
   if (!problem.has("camera")) problem.fail("a ray or a camera and pixel is needed", "missing");
+  if (is_view_camera(problem.at("camera"))) {
+    ViewCamera view = read_view_camera(problem.at("camera"));
+    auto [i, j] = read_pixel(problem, view.nx, view.ny);
+    return view_ray(view, i, j, read_pixel_convention(problem));
+  }
   Camera cam = read_camera(problem.at("camera"));
-  auto pixel = problem.at("pixel").items();
-  if (pixel.size() != 2) problem.at("pixel").fail("expected [x, y]", "type");
-  Vec3d d = camera_ray_direction(cam, pixel[0].number(), pixel[1].number(),
-                                 read_pixel_convention(problem));
+  auto [x, y] = read_pixel(problem, cam.res_x, cam.res_y);
+  Vec3d d = camera_ray_direction(cam, x, y, read_pixel_convention(problem));
   return Ray{cam.eye, d, 0, kInfinity};
 }
 

@@ -60,8 +60,10 @@ nlohmann::json ShadeTask::answer() const {
     per.push_back(std::move(j));
   }
   double ambient = m_.ambient * ambient_light_;
+  // A term whose coefficient is 0 does not apply, whatever the lights do.
   nlohmann::json terms = {"ambient"};
-  if (any) terms = {"ambient", "diffuse", "specular"};
+  if (any && m_.diffuse > 0) terms.push_back("diffuse");
+  if (any && m_.specular > 0) terms.push_back("specular");
   return {{"ambient", ambient},   {"diffuse", diffuse},
           {"specular", specular}, {"intensity", ambient + diffuse + specular},
           {"lights", per},        {"terms", terms}};
@@ -100,6 +102,11 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
     E ip = d.given("Ip_" + i, "I_p" + i, l.intensity);
     d.step("diffuse_" + i, "I_d" + i, m_.diffuse * ip * d.sym("NL_" + i),
            fmt::format("k_d·I_p·(N·L) with k_d = {}", format_number(m_.diffuse)));
+    sum.push_back(d.sym("diffuse_" + i));
+    if (m_.specular == 0) {
+      d.note(fmt::format("k_s = 0: no specular term for {}.", l.name));
+      continue;
+    }
     d.step("R_" + i, "R_" + i, 2 * d.sym("NL_" + i) * N - d.sym("L_" + i),
            "the mirror direction of the light");
     Value rv = d.step("RV_" + i, "R·V_" + i, dot(d.sym("R_" + i), d.sym("V")));
@@ -109,7 +116,6 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
             rv.scalar > 0 ? fmt::format("k_s·I_p·(R·V)^n with k_s = {}, n = {}",
                                         format_number(m_.specular), format_number(m_.shininess))
                           : "R·V ≤ 0: no highlight");
-    sum.push_back(d.sym("diffuse_" + i));
     sum.push_back(d.sym("specular_" + i));
   }
   E total = sum.front();
@@ -142,7 +148,7 @@ Sketch ShadeTask::sketch() const {
       continue;
     }
     f.arrow(point_, point_ + l, Ink::kRay, fmt::format("L_{}, light {}", i, sl.light.name));
-    f.arrow(point_, point_ + 2 * n_dot_l * normal_ - l, Ink::kGuide, "R_" + i);
+    if (m_.specular > 0) f.arrow(point_, point_ + 2 * n_dot_l * normal_ - l, Ink::kGuide, "R_" + i);
   }
   return f;
 }

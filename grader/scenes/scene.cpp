@@ -29,7 +29,7 @@ bool encloses_volume(const Shape& s) {
 
 Material read_material(const Cursor& c) {
   c.allow_only({"ambient", "diffuse", "specular", "shininess", "reflectivity", "transparency",
-                "refractive_index"});
+                "refractive_index", "fresnel"});
   Material m;
   m.ambient = coefficient(c, "ambient", m.ambient);
   m.diffuse = coefficient(c, "diffuse", m.diffuse);
@@ -43,6 +43,19 @@ Material read_material(const Cursor& c) {
     c.fail("a transparent material needs its refractive_index (1.5 for glass)", "missing");
   }
   if (c.has("refractive_index")) m.refractive_index = c.at("refractive_index").positive_number();
+  if (c.has("fresnel")) {
+    std::string model = c.at("fresnel").string();
+    if (model != "schlick" && model != "exact") {
+      c.at("fresnel").fail("expected \"schlick\" or \"exact\"", "invalid");
+    }
+    if (!m.transmits()) {
+      c.at("fresnel").fail(
+          "fresnel shares the light between reflection and refraction: the material must be "
+          "transparent (transparency > 0)",
+          "invalid");
+    }
+    m.fresnel = model == "schlick" ? FresnelModel::kSchlick : FresnelModel::kExact;
+  }
   return m;
 }
 
@@ -51,6 +64,7 @@ nlohmann::json material_json(const Material& m) {
                       {"specular", m.specular},         {"shininess", m.shininess},
                       {"reflectivity", m.reflectivity}, {"transparency", m.transparency}};
   if (m.transmits()) j["refractive_index"] = m.refractive_index;
+  if (m.fresnel != FresnelModel::kNone) j["fresnel"] = to_string(m.fresnel);
   return j;
 }
 

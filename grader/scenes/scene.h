@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "json/cursor.h"
+#include "scenes/fresnel.h"
 #include "shapes/shape.h"
 #include "shapes/transform.h"
 
@@ -23,6 +24,9 @@ struct Material {
   double reflectivity = 0;      // k_r: weight of the reflection ray; 0 spawns none
   double transparency = 0;      // k_t: weight of the refraction ray; 0 spawns none
   double refractive_index = 1;  // η of the object's inside (used when transparency > 0)
+  // How reflection and refraction share the light: by k_r and k_t alone (kNone), or weighted
+  // by the reflectance F of a Fresnel model, F·k_r and (1 − F)·k_t.
+  FresnelModel fresnel = FresnelModel::kNone;
 
   bool reflects() const { return reflectivity > 0; }
   bool transmits() const { return transparency > 0; }

@@ -202,8 +202,18 @@ class Tracer {
       tree_.nodes[index].n2 = n2;
     }
     double reflect_weight = m.reflectivity;
+    double refract_weight = m.transparency;
     bool tir = m.transmits() && refr.total_internal_reflection;
-    if (tir) reflect_weight += m.transparency;
+    if (m.fresnel != FresnelModel::kNone && obj.solid) {
+      // The reflectance F shares the light: F·k_r to the reflection, (1 − F)·k_t to the
+      // refraction; under total internal reflection F = 1.
+      double f = fresnel_reflectance(m.fresnel, refr.cos_i, n1, n2).reflectance;
+      tree_.nodes[index].fresnel = f;
+      reflect_weight = f * m.reflectivity;
+      refract_weight = (1 - f) * m.transparency;
+    } else if (tir) {
+      reflect_weight += m.transparency;
+    }
     if (reflect_weight > 0) {
       if (internal_skipped) {
         note(tir ? "Total internal reflection: no refraction ray, and the internal reflection "
@@ -218,9 +228,10 @@ class Tracer {
         tree_.nodes[index].reflection = child;
         if (tir) {
           tree_.nodes[child].total_internal_reflection = true;
-          note(
-              "Total internal reflection: no refraction ray; the reflection ray carries the "
-              "transmitted share too.");
+          note(m.fresnel != FresnelModel::kNone
+                   ? "Total internal reflection: no refraction ray; the reflectance is 1."
+                   : "Total internal reflection: no refraction ray; the reflection ray carries "
+                     "the transmitted share too.");
         }
       }
     }
@@ -230,7 +241,7 @@ class Tracer {
       Vec3d o = offset_ray_origin(node.point, node.point_error, side, t);
       int child =
           trace_ray(Ray{o, t, 0, kInfinity}, node.point, RayKind::kRefraction, index, depth + 1,
-                    node.path + ".T", m.transparency, offset_distance(node.point_error, side));
+                    node.path + ".T", refract_weight, offset_distance(node.point_error, side));
       tree_.nodes[index].refraction = child;
     }
   }

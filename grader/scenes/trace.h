@@ -83,6 +83,7 @@ struct TreeNode {
   std::vector<std::string> notes;        // why a secondary ray was not cast, and other remarks
   Refraction refraction_math;            // when a refraction was attempted
   double n1 = 1, n2 = 1;
+  std::optional<double> fresnel;  // the reflectance F, when the material mixes by a Fresnel model
 
   // Intensities (when asked): local = ambient + Σ lights; total = local + k_r·I_r + k_t·I_t.
   double ambient_term = 0, local = 0, reflected = 0, transmitted = 0, intensity = 0;

@@ -1,6 +1,8 @@
 // Answer data of ray trees.
 #include "scenes/tree_json.h"
 
+#include <algorithm>
+
 #include "problems/problem.h"
 
 namespace raygrade {
@@ -12,13 +14,25 @@ std::vector<std::string> node_terms(const TreeNode& node) {
   return out;
 }
 
-bool in_shadow(const TreeNode& node) {
+namespace {
+
+// No light reaches the hit node, and the scene has lights.
+bool unlit(const TreeNode& node) {
   if (!node.hit || !node.shaded || node.lights.empty()) return false;
-  for (const auto& s : node.lights) {
-    if (s.reaches()) return false;
-  }
-  return true;
+  return std::none_of(node.lights.begin(), node.lights.end(),
+                      [](const ShadowCheck& s) { return s.reaches(); });
 }
+
+bool any_blocked(const TreeNode& node) {
+  return std::any_of(node.lights.begin(), node.lights.end(),
+                     [](const ShadowCheck& s) { return s.status == LightStatus::kBlocked; });
+}
+
+}  // namespace
+
+bool in_shadow(const TreeNode& node) { return unlit(node) && any_blocked(node); }
+
+bool faces_away(const TreeNode& node) { return unlit(node) && !any_blocked(node); }
 
 std::vector<std::string> shadow_blockers(const RayTree& /*tree*/, const Scene& scene,
                                          const TreeNode& node) {
@@ -59,6 +73,7 @@ nlohmann::json node_json(const RayTree& tree, const Scene& scene, const TreeNode
   j["point"] = vec_json(n.point);
   j["normal"] = vec_json(n.normal);
   if (n.inside) j["inside"] = true;
+  if (n.fresnel) j["fresnel"] = *n.fresnel;
   if (n.shaded) {
     nlohmann::json lights = nlohmann::json::array();
     for (const auto& s : n.lights) {
@@ -74,6 +89,8 @@ nlohmann::json node_json(const RayTree& tree, const Scene& scene, const TreeNode
     j["lights"] = lights;
     j["terms"] = node_terms(n);
     j["in_shadow"] = in_shadow(n);
+    if (in_shadow(n)) j["shadowed_by"] = shadow_blockers(tree, scene, n);
+    if (faces_away(n)) j["faces_away"] = true;
   }
   nlohmann::json children = nlohmann::json::array();
   for (int c : tree.children(n.index)) children.push_back(tree.nodes[c].label);

@@ -14,8 +14,11 @@ namespace raygrade {
 // light reaches it.
 std::vector<std::string> node_terms(const TreeNode& node);
 
-// A hit node is in shadow when the scene has lights and none of them reaches it.
+// A hit node is in shadow when the scene has lights, none of them reaches it, and an object
+// blocks at least one: a point whose surface faces away from every light (N·L ≤ 0) is not in
+// shadow, it faces away (self-shadowed, the "attached shadow" of some texts).
 bool in_shadow(const TreeNode& node);
+bool faces_away(const TreeNode& node);
 
 // The objects that block a node's lights, by name, nearest first for each light.
 std::vector<std::string> shadow_blockers(const RayTree& tree, const Scene& scene,

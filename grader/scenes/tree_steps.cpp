@@ -112,9 +112,17 @@ void secondary_steps(Deriver& d, const Scene& scene, const TreeNode& node) {
     d.step("cos_i", "cos_i", -dot(d.sym("D_hat"), d.sym("N_f")), "the angle of incidence");
     Value k = d.step("k", "k", 1 - square(d.sym("eta")) * (1 - square(d.sym("cos_i"))),
                      "cos²θt by Snell's law");
-    if (k.scalar < 0) {
-      d.note("k < 0: total internal reflection, there is no refracted ray.");
-    } else {
+    if (k.scalar < 0) d.note("k < 0: total internal reflection, there is no refracted ray.");
+    if (node.fresnel) {
+      fresnel_steps(d, m.fresnel, k.scalar < 0);
+      d.note(
+          fmt::format("The {} reflectance shares the light: F·k_r = {} to the reflection, "
+                      "(1 − F)·k_t = {} to the refraction.",
+                      m.fresnel == FresnelModel::kSchlick ? "Schlick" : "Fresnel",
+                      format_number(*node.fresnel * m.reflectivity),
+                      format_number((1 - *node.fresnel) * m.transparency)));
+    }
+    if (k.scalar >= 0) {
       d.step(
           "T_dir", "T",
           d.sym("eta") * d.sym("D_hat") +
@@ -191,7 +199,13 @@ Derivation node_steps(const RayTree& tree, const Scene& scene, const TreeNode& n
   if (scene.lights.empty()) {
     d.conclude("The scene has no lights: only the ambient term applies.");
   } else if (in_shadow(node)) {
-    d.conclude(fmt::format("No light reaches {}: only the ambient term applies.", node.label));
+    d.conclude(fmt::format("{} is in shadow, blocked by {}: only the ambient term applies.",
+                           node.label, names_list(shadow_blockers(tree, scene, node))));
+  } else if (faces_away(node)) {
+    d.conclude(fmt::format(
+        "{} faces away from every light (N·L ≤ 0), which is not a shadow: only the ambient "
+        "term applies.",
+        node.label));
   } else {
     d.conclude(fmt::format("Phong terms at {}: {}.", node.label, fmt::join(terms, ", ")));
   }
@@ -211,8 +225,10 @@ Derivation node_steps(const RayTree& tree, const Scene& scene, const TreeNode& n
   if (intensity) {
     d.given("local", "I_local", node.local, "ambient + every light's diffuse and specular");
     d.given("total", "I", node.intensity,
-            fmt::format("I_local + k_r·I_R + k_t·I_T = {} + {} + {}", format_number(node.local),
-                        format_number(node.reflected), format_number(node.transmitted)));
+            fmt::format("I_local + {} = {} + {} + {}",
+                        node.fresnel ? "F·k_r·I_R + (1 − F)·k_t·I_T" : "k_r·I_R + k_t·I_T",
+                        format_number(node.local), format_number(node.reflected),
+                        format_number(node.transmitted)));
   }
   return std::move(d).finish();
 }

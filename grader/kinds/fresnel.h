@@ -1,0 +1,33 @@
+// Kind `fresnel`: the share of light a boundary reflects, by the exact Fresnel equations or by
+// Schlick's approximation, with total internal reflection past the critical angle.
+#pragma once
+
+#include "problems/problem.h"
+#include "scenes/fresnel.h"
+
+namespace raygrade {
+
+class FresnelTask final : public Task {
+ public:
+  // The incidence as an angle in degrees, or as a direction and a normal.
+  FresnelTask(FresnelModel model, double n1, double n2, std::optional<double> angle,
+              Vec3d direction, Vec3d normal)
+      : model_(model), n1_(n1), n2_(n2), angle_(angle), d_(direction), n_(normal) {}
+  static std::unique_ptr<Task> read(const Cursor& problem);
+
+  std::string_view kind() const override { return "fresnel"; }
+  nlohmann::json answer() const override;
+  std::vector<std::string> methods() const override { return {"fresnel"}; }
+  std::vector<SolutionPart> derive(std::string_view method,
+                                   const Overrides* overrides) const override;
+  Sketch sketch() const override;
+
+ private:
+  double cos_i() const;
+  FresnelModel model_;
+  double n1_, n2_;
+  std::optional<double> angle_;
+  Vec3d d_, n_;
+};
+
+}  // namespace raygrade

@@ -1,0 +1,77 @@
+// Exercises from a textbook with the answers it publishes (tests/data/ray-tracer-challenge.json,
+// sources in tests/data/README.md): raygrade reads each, and grades the published answer right
+// in every part the book answers, within the book's own EPSILON of 0.0001.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "core/error.h"
+#include "grading/grade.h"
+#include "problems/problem.h"
+#include "test_util.h"
+
+namespace raygrade {
+namespace {
+
+const std::string kPublished =
+    std::string(RAYGRADE_SOURCE_DIR) + "/tests/data/ray-tracer-challenge.json";
+
+TEST(Published, RayTracerChallengeAnswersAreGradedRight) {
+  Bank bank = load_bank({kPublished});
+  ASSERT_TRUE(bank.errors.empty()) << bank.errors.front().message;
+  ASSERT_GE(bank.problems.size(), 10u);
+  std::set<std::string> kinds;
+  for (const auto& p : bank.problems) {
+    ASSERT_TRUE(p.expected.has_value()) << p.id;
+    kinds.insert(p.kind);
+    GradeResult r = grade_answer(p, *p.expected);
+    int graded = 0;
+    for (const auto& part : r.parts) {
+      if (!p.expected->contains(part.name)) continue;
+      ++graded;
+      EXPECT_EQ(part.status, PartStatus::kRight)
+          << p.id << " part " << part.name << ": "
+          << (part.feedback.empty() ? "" : part.feedback.front());
+    }
+    EXPECT_EQ(graded, static_cast<int>(p.expected->size())) << p.id;
+  }
+  // The new kinds are all exercised.
+  for (const char* k : {"normal", "fresnel", "view-ray", "shade"}) EXPECT_TRUE(kinds.count(k)) << k;
+}
+
+// A published answer changed in its fourth decimal is graded wrong: the comparison is real.
+TEST(Published, AChangedAnswerIsGradedWrong) {
+  Bank bank = load_bank({kPublished});
+  int changed = 0;
+  for (const auto& p : bank.problems) {
+    if (p.id != "rtc-schlick-small-angle" && p.id != "rtc-camera-ray-corner") continue;
+    ++changed;
+    nlohmann::json wrong = *p.expected;
+    if (wrong.contains("reflectance")) wrong["reflectance"] = 0.4890;
+    if (wrong.contains("direction")) wrong["direction"] = {0.6655, 0.3326, -0.6685};
+    GradeResult r = grade_answer(p, wrong);
+    EXPECT_LT(r.score, r.max_score) << p.id;
+  }
+  EXPECT_EQ(changed, 2);
+}
+
+// The book's "Computing the normal on a transformed sphere" (spheres.feature, ch. 6) asks for
+// the normal of scaling(1, 0.5, 1)·rotation_z(π/5)·sphere at (0, √2/2, −√2/2) and publishes
+// (0, 0.97014, −0.24254). That point is not on the surface: M⁻¹P = rotation_z(−π/5)(0, √2,
+// −√2/2), of length √2.5 ≈ 1.58, not 1. raygrade refuses it and says how far off it is.
+TEST(Published, TheBooksOffSurfaceNormalIsRefused) {
+  try {
+    testing::problem(R"({"id": "n", "kind": "normal",
+      "object": {"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                 "transform": [{"rotate": {"axis": [0, 0, 1], "degrees": 36}},
+                               {"scale": [1, 0.5, 1]}]},
+      "point": [0, 0.7071067811865476, -0.7071067811865476]})");
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.diagnostic().code, "off-surface");
+    EXPECT_NE(e.diagnostic().message.find("is not on the sphere"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace raygrade
