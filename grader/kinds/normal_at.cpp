@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "derivation/number_format.h"
+#include "kinds/intersect.h"
 #include "kinds/sketch.h"
 #include "shapes/transformed.h"
 
@@ -162,8 +163,8 @@ const Transform* NormalTask::transform() const {
 }
 
 std::unique_ptr<Task> NormalTask::read(const Cursor& problem) {
-  auto task =
-      std::make_unique<NormalTask>(read_shape(problem.at("object")), problem.at("point").vec3());
+  auto task = std::make_unique<NormalTask>(read_lone_object(problem.at("object")),
+                                           problem.at("point").vec3());
   const Transform* m = task->transform();
   Vec3d p = m ? m->to_object.point(task->point_) : task->point_;
   SurfacePoint s = nearest_surface(task->primitive(), p);
