@@ -11,6 +11,7 @@
 
 #include "shapes/box.h"
 #include "shapes/cylinder.h"
+#include "shapes/disk.h"
 #include "shapes/plane.h"
 #include "shapes/polygon.h"
 #include "shapes/shape.h"
@@ -39,7 +40,7 @@ struct TypeList {
 
 // Every primitive, in the order the docs list them. Adding one is its file pair and one name
 // here.
-using Primitives = TypeList<Sphere, Plane, Triangle, Polygon, Cylinder, Box>;
+using Primitives = TypeList<Sphere, Plane, Triangle, Polygon, Cylinder, Box, Disk>;
 
 template <typename... Ts>
 constexpr bool every_primitive_type(TypeList<Ts...>) {
