@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "shapes/box.h"
+#include "shapes/cone.h"
 #include "shapes/cylinder.h"
 #include "shapes/disk.h"
 #include "shapes/plane.h"
@@ -40,7 +41,7 @@ struct TypeList {
 
 // Every primitive, in the order the docs list them. Adding one is its file pair and one name
 // here.
-using Primitives = TypeList<Sphere, Plane, Triangle, Polygon, Cylinder, Box, Disk>;
+using Primitives = TypeList<Sphere, Plane, Triangle, Polygon, Cylinder, Box, Disk, Cone>;
 
 template <typename... Ts>
 constexpr bool every_primitive_type(TypeList<Ts...>) {
