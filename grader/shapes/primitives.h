@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "shapes/box.h"
+#include "shapes/capsule.h"
 #include "shapes/cone.h"
 #include "shapes/cylinder.h"
 #include "shapes/disk.h"
@@ -41,7 +42,7 @@ struct TypeList {
 
 // Every primitive, in the order the docs list them. Adding one is its file pair and one name
 // here.
-using Primitives = TypeList<Sphere, Plane, Triangle, Polygon, Cylinder, Box, Disk, Cone>;
+using Primitives = TypeList<Sphere, Plane, Triangle, Polygon, Cylinder, Box, Disk, Cone, Capsule>;
 
 template <typename... Ts>
 constexpr bool every_primitive_type(TypeList<Ts...>) {
