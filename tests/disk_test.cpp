@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/error.h"
+#include "shape_error.h"
 #include "test_util.h"
 
 namespace raygrade {
@@ -109,20 +109,16 @@ TEST(Disk, DerivationStepsCarryTheHandValues) {
 
 // Reading: a zero radius, a zero normal and an unknown key are errors at their paths.
 TEST(Disk, BadParametersAreErrorsAtTheirPaths) {
-  auto fails_at = [](const std::string& text, const std::string& path) {
-    try {
-      testing::shape(text);
-    } catch (const Error& e) {
-      EXPECT_EQ(e.diagnostic().path, path) << text;
-      return;
-    }
-    ADD_FAILURE() << "no error for " << text;
-  };
-  fails_at(R"({"type": "disk", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 0})", "/radius");
-  fails_at(R"({"type": "disk", "center": [0, 0, 0], "normal": [0, 0, 0], "radius": 1})", "/normal");
-  fails_at(R"({"type": "disk", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1,
-               "height": 2})",
-           "/height");
+  EXPECT_EQ(testing::shape_error_path(
+                R"({"type": "disk", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 0})"),
+            "/radius");
+  EXPECT_EQ(testing::shape_error_path(
+                R"({"type": "disk", "center": [0, 0, 0], "normal": [0, 0, 0], "radius": 1})"),
+            "/normal");
+  EXPECT_EQ(testing::shape_error_path(
+                R"({"type": "disk", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1,
+               "height": 2})"),
+            "/height");
 }
 
 }  // namespace

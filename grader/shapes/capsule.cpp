@@ -1,27 +1,15 @@
 // Capsule: reading, reference intersection, the side-and-ends derivation and the sketch.
 #include "shapes/capsule.h"
 
-#include <algorithm>
 #include <cmath>
 
 #include "math/unit_vector.h"
 #include "shapes/cylinder.h"
 #include "shapes/describe.h"
+#include "shapes/round.h"
 #include "shapes/sphere.h"
 
 namespace raygrade {
-namespace {
-
-// Relative size below which |â × D| counts as zero (the ray runs parallel to the axis): the
-// cylinder's, a few ulps (double epsilon 2.2e-16) of |D|.
-constexpr double kAxisParallelRelative = 8 * 2.220446049250313e-16;
-
-// Tolerance of the rims, relative to the size of the figure (the cylinder's): a point within
-// this of a rim belongs to the side and to the end, and two hits closer than this are one.
-constexpr double kSeamRelative = 64 * 2.220446049250313e-16;
-
-}  // namespace
-
 Capsule::Capsule(Vec3d a, Vec3d b, double radius)
     : a_(a), b_(b), radius_(radius), height_(length(b - a)) {
   axis_ = (b - a) / height_;
@@ -168,18 +156,7 @@ Derivation Capsule::derive(const Ray& ray, std::string_view /*method*/,
     }
   }
   // A rim point is found twice (side and end) and a tangent twice over: each hit once.
-  std::sort(candidates.begin(), candidates.end(),
-            [](const Candidate& x, const Candidate& y) { return x.t < y.t; });
-  std::vector<Candidate> once;
-  for (auto& c : candidates) {
-    bool seen = false;
-    for (const auto& k : once) {
-      seen = seen || (k.rejected.empty() && c.rejected.empty() &&
-                      length(k.point - c.point) <= kSeamRelative * (1 + length(c.point)));
-    }
-    if (!seen) once.push_back(std::move(c));
-  }
-  conclude_candidates(d, "capsule", ray, once, true);
+  conclude_candidates(d, "capsule", ray, each_hit_once(std::move(candidates)), true);
   return std::move(d).finish();
 }
 

@@ -2,20 +2,14 @@
 #include "shapes/cone.h"
 
 #include <cmath>
-#include <numbers>
 
 #include "math/robust.h"
 #include "math/unit_vector.h"
 #include "shapes/describe.h"
+#include "shapes/round.h"
 
 namespace raygrade {
 namespace {
-
-// Tolerance of the rim and the apex, relative to the size of the figure (the cylinder's): a
-// point within this of the rim belongs to the side and the cap, two hits closer than this are
-// one, and a side hit within it of the apex takes the apex's normal. Far below any exercise's
-// precision, far above rounding.
-constexpr double kSeamRelative = 64 * 2.220446049250313e-16;
 
 using DD = DoubleDouble;
 
@@ -213,35 +207,19 @@ Derivation Cone::derive(const Ray& ray, std::string_view /*method*/,
                               : range_reason(ray, t)});
   }
   // A rim point is found by the side and the cap: each hit once.
-  std::sort(candidates.begin(), candidates.end(),
-            [](const Candidate& x, const Candidate& y) { return x.t < y.t; });
-  std::vector<Candidate> once;
-  for (auto& k : candidates) {
-    bool seen = false;
-    for (const auto& m : once) {
-      seen = seen || (m.rejected.empty() && k.rejected.empty() &&
-                      length(m.point - k.point) <= kSeamRelative * (1 + length(k.point)));
-    }
-    if (!seen) once.push_back(std::move(k));
-  }
-  conclude_candidates(d, "cone", ray, once, capped_);
+  conclude_candidates(d, "cone", ray, each_hit_once(std::move(candidates)), capped_);
   return std::move(d).finish();
 }
 
 void Cone::sketch(Sketch& figure, const std::string& label) const {
-  // The base circle as 48 points, and lines from it to the apex every eighth of a turn.
-  Vec3d helper = std::abs(axis_.x) < 0.9 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
-  Vec3d u = normalized(cross(axis_, helper));
-  Vec3d v = cross(axis_, u);
+  // The base circle as 48 points, and lines from it to the apex every eighth of a turn (a
+  // side hit within the seam tolerance of the apex takes the apex's normal).
   Vec3d apex = base_ + height_ * axis_;
   constexpr int kRimPoints = 48;
-  std::vector<Vec3d> rim;
-  for (int i = 0; i < kRimPoints; ++i) {
-    double angle = 2 * std::numbers::pi * i / kRimPoints;
-    rim.push_back(base_ + radius_ * (std::cos(angle) * u + std::sin(angle) * v));
-  }
-  for (int i = 0; i < kRimPoints; i += kRimPoints / 8)
+  std::vector<Vec3d> rim = circle_points(base_, axis_, radius_, kRimPoints);
+  for (int i = 0; i < kRimPoints; i += kRimPoints / 8) {
     figure.path({rim[i], apex}, false, Ink::kObject);
+  }
   figure.path(std::move(rim), true, Ink::kObject, label);
 }
 

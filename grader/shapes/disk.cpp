@@ -2,12 +2,12 @@
 #include "shapes/disk.h"
 
 #include <cmath>
-#include <numbers>
 
 #include "math/unit_vector.h"
 #include "shapes/describe.h"
 #include "shapes/flat.h"
 #include "shapes/plane.h"
+#include "shapes/round.h"
 #include "shapes/sphere.h"
 
 namespace raygrade {
@@ -100,18 +100,8 @@ Derivation Disk::derive(const Ray& ray, std::string_view /*method*/,
 
 void Disk::sketch(Sketch& figure, const std::string& label) const {
   // The rim as a polygon of 48 points: edge-on it is a segment, face-on a circle.
-  Vec3d n = normal_ / length(normal_);
-  Vec3d helper = std::abs(n.x) < 0.9 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
-  Vec3d u = cross(n, helper);
-  u = u / length(u);
-  Vec3d v = cross(n, u);
-  constexpr int kRimPoints = 48;
-  std::vector<Vec3d> rim;
-  for (int i = 0; i < kRimPoints; ++i) {
-    double a = 2 * std::numbers::pi * i / kRimPoints;
-    rim.push_back(center_ + radius_ * (std::cos(a) * u + std::sin(a) * v));
-  }
-  figure.path(std::move(rim), true, Ink::kObject, label);
+  figure.path(circle_points(center_, normal_ / length(normal_), radius_, 48), true, Ink::kObject,
+              label);
 }
 
 nlohmann::ordered_json Disk::schema() {
