@@ -19,6 +19,10 @@ struct SchemaOptions {
 
 int run_schema(const SchemaOptions& o) {
   std::string text = problem_schema_text();
+  if (o.check && o.out.empty()) {
+    fmt::print(stderr, "raygrade schema: --check compares with a file: give it with --out\n");
+    return kExitBadInput;
+  }
   if (o.out.empty()) {
     fmt::print("{}", text);
     return kExitOk;
