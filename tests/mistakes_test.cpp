@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.h"
+#include "core/internal_error.h"
 #include "grading/grade.h"
 #include "grading/submission.h"
 #include "test_util.h"
@@ -151,7 +153,20 @@ TEST(Mistakes, CatalogueIsComplete) {
                          "pixel-centre", "cylinder-b-no-origin", "r-not-squared"}) {
     EXPECT_FALSE(mistake_info(id).explanation.empty()) << id;
   }
-  EXPECT_THROW(mistake_info("no-such-mistake"), Error);
+}
+
+// A mistake id missing from the catalogue is a bug of raygrade, never bad input: an
+// InternalError, which no handler of Error (the input's faults) takes for the file's fault.
+TEST(Mistakes, UnknownIdIsAnInternalErrorNotBadInput) {
+  EXPECT_THROW(mistake_info("no-such-mistake"), InternalError);
+  bool reported_as_input = false;
+  try {
+    mistake_info("no-such-mistake");
+  } catch (const Error&) {
+    reported_as_input = true;
+  } catch (const InternalError&) {
+  }
+  EXPECT_FALSE(reported_as_input);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@ Runner setup_check(CLI::App& sub);
 Runner setup_generate(CLI::App& sub);
 Runner setup_handout(CLI::App& sub);
 Runner setup_export(CLI::App& sub);
+Runner setup_schema(CLI::App& sub);
 
 const std::vector<Command>& command_table() {
   static const std::vector<Command> table = {
@@ -30,6 +31,8 @@ const std::vector<Command>& command_table() {
        &setup_handout},
       {"export", "an assignment as a Gradescope autograder or PrairieLearn questions",
        &setup_export},
+      {"schema", "the problem schema, from the list of primitives (docs/problem.schema.json)",
+       &setup_schema},
   };
   return table;
 }

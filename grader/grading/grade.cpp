@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 
+#include "core/internal_error.h"
 #include "grading/kind_grader.h"
 #include "json/cursor.h"
 
@@ -66,8 +67,8 @@ PartResult make_part(const GradingContext& c, const std::string& name, double cr
                           : PartStatus::kWrong;
   p.feedback = std::move(feedback);
   if (credit < 1 && p.feedback.empty()) {
-    throw std::logic_error(fmt::format("part {} of {} earns {} without a reason", name,
-                                       c.problem ? c.problem->id : "?", credit));
+    throw InternalError(fmt::format("part {} of {} earns {} without a reason", name,
+                                    c.problem ? c.problem->id : "?", credit));
   }
   return p;
 }

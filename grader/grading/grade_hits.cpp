@@ -83,7 +83,6 @@ class HitsGrader final : public KindGrader {
   void grade_contained(bool says_line, bool no_hits, GradeResult& out) const;
   void grade_barycentric(const std::vector<StudentHit>& hits, const std::vector<int>& match,
                          GradeResult& out) const;
-  std::string normal_formula() const;
   double widen_point(std::size_t j) const { return widen_[j] * length(ray_.direction); }
   std::string fmt_t(double t) const { return format_number(t, numbers_); }
 
@@ -162,16 +161,14 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()), conventions_(p.c
   // The conditioning of the roots: a quadratic's a, b, c and discriminant, when it has one.
   widen_.assign(ref_.size(), 0);
   if (shape_) {
-    auto methods = shape_->methods();
-    std::string m = std::find(methods.begin(), methods.end(), "algebraic") != methods.end()
-                        ? "algebraic"
-                        : methods.front();
+    std::optional<Shape::QuadraticSteps> q = shape_->quadratic();
     Derivation d;
     try {
-      d = shape_->derive(ray_, m);
+      if (q) d = shape_->derive(ray_, q->method);
     } catch (const Error&) {
     }
-    const Step *a = d.find("a"), *b = d.find("b"), *c = d.find("c");
+    const Step *a = q ? d.find(q->a) : nullptr, *b = q ? d.find(q->b) : nullptr,
+               *c = q ? d.find(q->c) : nullptr;
     if (a && b && c && a->value.is_scalar() && a->value.scalar != 0) {
       double A = a->value.scalar, B = b->value.scalar, C = c->value.scalar;
       double disc = std::max(0.0, B * B - 4 * A * C);
@@ -263,15 +260,8 @@ void HitsGrader::grade(const AnswerReader& a, GradeResult& out) const {
 // and most ray tracers report that as no intersection; others as the line. By default both
 // are right, with a note that teaches the case; the problem's convention may make one strict.
 void HitsGrader::grade_contained(bool says_line, bool no_hits, GradeResult& out) const {
-  std::string type(shape_ ? shape_->type() : "");
-  bool side = type == "cylinder";
-  std::string line =
-      side ? "The ray runs along the cylinder's side (its distance from the axis is r and it is "
-             "parallel to the axis): it meets the side along a whole line"
-           : fmt::format(
-                 "The ray lies in the {}'s plane (N·D = 0 and its origin is on the "
-                 "plane): it meets the {} along a whole line",
-                 type, type);
+  std::string line = shape_ ? shape_->contained_line()
+                            : "The ray lies in the object's plane: it meets it along a whole line";
   using C = Conventions::Contained;
   double credit = 1;
   std::string message;
@@ -599,15 +589,14 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
         n_credit += tn.precision_credit;
         n_feedback.push_back("normal: " + dv.verdict.message);
       } else if (dv.opposite) {
-        std::string type(shape_ ? shape_->type() : "");
-        bool flat = type == "triangle" || type == "polygon";
-        if (flat || type == "sphere" || type == "cylinder" || type == "box") {
-          const char* id = flat ? "cross-order" : "inward-normal";
+        Shape::NormalRule rule = shape_ ? shape_->normal_rule() : Shape::NormalRule{};
+        if (!rule.mistake.empty()) {
+          const std::string& id = rule.mistake;
           out.mistakes.push_back(
               make_mistake(id, "normal",
                            fmt::format("your normal {} points the opposite way to {}.{}",
                                        format_vector(mine, numbers_), format_vector(r, numbers_),
-                                       flat ? "" : normal_formula())));
+                                       rule.sentence)));
           n_credit += mistake_info(id).credit;
           n_feedback.push_back(fmt::format("Your normal points the opposite way to {}.",
                                            format_vector(r, numbers_)));
@@ -658,25 +647,6 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
   add("point", p_credit, n_points, std::move(p_feedback));
   add("normal", n_credit, n_normals, std::move(n_feedback));
   grade_barycentric(hits, match, out);
-}
-
-// The outward normal of this object's shape, in words, for the inward-normal mistake.
-std::string HitsGrader::normal_formula() const {
-  if (dynamic_cast<const TransformedShape*>(shape_)) {
-    return " A transformed object's outward normal is its primitive's, taken back to the world "
-           "by the inverse transpose (A⁻¹)ᵀ and normalized.";
-  }
-  std::string type(shape_ ? shape_->type() : "");
-  if (type == "sphere") return " A sphere's outward normal is (P − C)/r.";
-  if (type == "cylinder") {
-    return " A cylinder's side has the outward normal (P − Q)/r, Q the nearest point of the "
-           "axis; a cap's is the axis direction, away from the cylinder.";
-  }
-  if (type == "box") {
-    return " A box's outward normal is the axis of the slab hit, pointing away from the box's "
-           "centre.";
-  }
-  return "";
 }
 
 // Barycentric weights (w_a, w_b, w_c) of a triangle hit, in the order of the vertices, or

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/internal_error.h"
 
 namespace raygrade {
 
@@ -72,8 +73,7 @@ const MistakeInfo& mistake_info(std::string_view id) {
   for (const auto& m : mistake_catalogue()) {
     if (m.id == id) return m;
   }
-  throw Error(Diagnostic{"", "", 0, 0, Severity::kError,
-                         fmt::format("no mistake named '{}' in the catalogue", id), "internal"});
+  throw InternalError(fmt::format("no mistake named '{}' in the catalogue", id));
 }
 
 FoundMistake make_mistake(std::string_view id, std::string part, const std::string& specific) {

@@ -16,15 +16,6 @@ double coefficient(const Cursor& c, std::string_view key, double fallback) {
   return v;
 }
 
-bool encloses_volume(const Shape& s) {
-  if (s.type() == "sphere" || s.type() == "box") return true;
-  if (s.type() == "cylinder") {
-    nlohmann::json j = s.to_json();
-    return j.contains("height") && j.value("capped", false);
-  }
-  return false;
-}
-
 }  // namespace
 
 Material read_material(const Cursor& c) {
@@ -130,7 +121,7 @@ Scene read_scene(const Cursor& c) {
       }
     }
     if (auto t = item.find("transform")) o.transform = read_transform(*t);
-    o.solid = encloses_volume(*o.shape);
+    o.solid = o.shape->solid();
     s.objects.push_back(std::move(o));
   }
   if (auto lights = c.find("lights")) {

@@ -158,4 +158,38 @@ void Box::sketch(Sketch& figure, const std::string& label) const {
   }
 }
 
+nlohmann::ordered_json Box::schema() {
+  return nlohmann::ordered_json::parse(R"json(
+{
+  "required": [
+    "min",
+    "max"
+  ],
+  "properties": {
+    "min": {
+      "$ref": "#/$defs/vec3"
+    },
+    "max": {
+      "$ref": "#/$defs/vec3"
+    }
+  },
+  "examples": [
+    {
+      "type": "box",
+      "min": [
+        -1,
+        -1,
+        3
+      ],
+      "max": [
+        1,
+        1,
+        5
+      ]
+    }
+  ]
+}
+)json");
+}
+
 }  // namespace raygrade

@@ -47,7 +47,18 @@ class Box final : public Shape {
   Box(Vec3d lo, Vec3d hi) : lo_(lo), hi_(hi) {}
   static std::unique_ptr<Shape> read(const Cursor& object);
 
-  std::string_view type() const override { return "box"; }
+  static constexpr std::string_view kType = "box";
+  static constexpr std::string_view kSummary = "axis-aligned, min and max corners";
+  // Its fragment of the problem schema: its own keys, and examples.
+  static nlohmann::ordered_json schema();
+
+  std::string_view type() const override { return kType; }
+  bool solid() const override { return true; }
+  NormalRule normal_rule() const override {
+    return {"inward-normal",
+            " A box's outward normal is the axis of the slab hit, pointing away from the box's "
+            "centre."};
+  }
   Intersection intersect(const Ray& ray) const override;
   std::vector<std::string> methods() const override { return {"slab"}; }
   Derivation derive(const Ray& ray, std::string_view method,

@@ -5,6 +5,7 @@
 
 #include "math/unit_vector.h"
 #include "shapes/describe.h"
+#include "shapes/round.h"
 
 namespace raygrade {
 
@@ -43,20 +44,6 @@ nlohmann::json Cylinder::to_json() const {
 Vec3d Cylinder::center() const { return height_ ? base_ + (*height_ / 2) * axis_ : base_; }
 
 double Cylinder::extent() const { return height_ ? std::max(radius_, *height_ / 2) : 2 * radius_; }
-
-namespace {
-
-// Relative size below which |A × D| counts as zero (the ray runs parallel to the axis): a few
-// ulps (double epsilon 2.2e-16) of |D|. Without it, the rounding of a tilted unit axis leaves
-// D − (D·A)A at 1e-16 instead of 0, and the side's quadratic reports roots near t = 1e16.
-constexpr double kAxisParallelRelative = 8 * 2.220446049250313e-16;
-
-// Tolerance of the seams, relative to the size of the figure: a point within this of a rim
-// belongs to both the side and the cap (each computes it with its own rounding), and two hits
-// closer than this are one. Far below any exercise's precision, far above rounding.
-constexpr double kSeamRelative = 64 * 2.220446049250313e-16;
-
-}  // namespace
 
 Intersection Cylinder::intersect(const Ray& ray) const {
   if (std::optional<Intersection> x = intersect_rescaled(*this, ray)) return *x;
@@ -251,6 +238,89 @@ void Cylinder::sketch_symbols(Sketch& figure, const Ray& ray,
     toward = cross(axis_, helper);
   }
   figure.path({base_ + radius_ * normalized(toward), base_}, false, Ink::kGuide, "r");
+}
+
+Shape::NormalRule Cylinder::normal_rule() const {
+  return {"inward-normal",
+          " A cylinder's side has the outward normal (P − Q)/r, Q the nearest point of the axis; "
+          "a cap's is the axis direction, away from the cylinder."};
+}
+
+std::string Cylinder::contained_line() const {
+  return "The ray runs along the cylinder's side (its distance from the axis is r and it is "
+         "parallel to the axis): it meets the side along a whole line";
+}
+
+nlohmann::ordered_json Cylinder::schema() {
+  return nlohmann::ordered_json::parse(R"json(
+{
+  "required": [
+    "base",
+    "radius"
+  ],
+  "properties": {
+    "base": {
+      "$ref": "#/$defs/vec3"
+    },
+    "axis": {
+      "$ref": "#/$defs/nonzero_vec3",
+      "default": [
+        0,
+        0,
+        1
+      ]
+    },
+    "radius": {
+      "$ref": "#/$defs/positive"
+    },
+    "height": {
+      "$ref": "#/$defs/positive",
+      "description": "finite from base along the unit axis; infinite when left out"
+    },
+    "capped": {
+      "type": "boolean",
+      "default": false
+    }
+  },
+  "dependentRequired": {
+    "capped": [
+      "height"
+    ]
+  },
+  "examples": [
+    {
+      "type": "cylinder",
+      "base": [
+        0,
+        0,
+        0
+      ],
+      "axis": [
+        0,
+        1,
+        0
+      ],
+      "radius": 1
+    },
+    {
+      "type": "cylinder",
+      "base": [
+        0,
+        -1,
+        4
+      ],
+      "axis": [
+        0,
+        1,
+        0
+      ],
+      "radius": 1,
+      "height": 2,
+      "capped": true
+    }
+  ]
+}
+)json");
 }
 
 }  // namespace raygrade

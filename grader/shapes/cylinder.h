@@ -170,7 +170,17 @@ class Cylinder final : public Shape {
   Cylinder(Vec3d base, Vec3d axis, double radius, std::optional<double> height, bool capped);
   static std::unique_ptr<Shape> read(const Cursor& object);
 
-  std::string_view type() const override { return "cylinder"; }
+  static constexpr std::string_view kType = "cylinder";
+  static constexpr std::string_view kSummary = "base, axis, radius, optional height and caps";
+  // Its fragment of the problem schema: its own keys, and examples.
+  static nlohmann::ordered_json schema();
+
+  std::string_view type() const override { return kType; }
+  // Closed when it has a height and both caps.
+  bool solid() const override { return height_.has_value() && capped_; }
+  NormalRule normal_rule() const override;
+  std::string contained_line() const override;
+  std::optional<QuadraticSteps> quadratic() const override { return QuadraticSteps{}; }
   Intersection intersect(const Ray& ray) const override;
   std::vector<std::string> methods() const override { return {"quadratic"}; }
   Derivation derive(const Ray& ray, std::string_view method,

@@ -3,7 +3,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "derivation/number_format.h"
+#include "shapes/round.h"
 
 namespace raygrade {
 
@@ -14,6 +17,21 @@ std::string range_reason(const Ray& ray, double t) {
   }
   if (t > ray.t_max) return fmt::format("it lies past t_max = {}", format_number(ray.t_max));
   return "";
+}
+
+std::vector<Candidate> each_hit_once(std::vector<Candidate> candidates) {
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& x, const Candidate& y) { return x.t < y.t; });
+  std::vector<Candidate> once;
+  for (auto& c : candidates) {
+    bool seen = false;
+    for (const auto& kept : once) {
+      seen = seen || (kept.rejected.empty() && c.rejected.empty() &&
+                      length(kept.point - c.point) <= kSeamRelative * (1 + length(c.point)));
+    }
+    if (!seen) once.push_back(std::move(c));
+  }
+  return once;
 }
 
 void conclude_candidates(Deriver& d, const std::string& object, const Ray& /*ray*/,

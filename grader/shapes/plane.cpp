@@ -131,4 +131,69 @@ void Plane::sketch(Sketch& figure, const std::string& label) const {
   figure.plane(some_point(), normal_, Ink::kObject, label);
 }
 
+nlohmann::ordered_json Plane::schema() {
+  return nlohmann::ordered_json::parse(R"json(
+{
+  "description": "{point, normal} or {normal, d} with n·p + d = 0",
+  "required": [
+    "normal"
+  ],
+  "properties": {
+    "normal": {
+      "$ref": "#/$defs/nonzero_vec3"
+    },
+    "point": {
+      "$ref": "#/$defs/vec3"
+    },
+    "d": {
+      "anyOf": [
+        {
+          "type": "number"
+        },
+        {
+          "$ref": "#/$defs/expression"
+        }
+      ]
+    }
+  },
+  "oneOf": [
+    {
+      "required": [
+        "point"
+      ]
+    },
+    {
+      "required": [
+        "d"
+      ]
+    }
+  ],
+  "examples": [
+    {
+      "type": "plane",
+      "point": [
+        0,
+        0,
+        4
+      ],
+      "normal": [
+        0,
+        0,
+        -1
+      ]
+    },
+    {
+      "type": "plane",
+      "normal": [
+        0,
+        1,
+        0
+      ],
+      "d": -3
+    }
+  ]
+}
+)json");
+}
+
 }  // namespace raygrade

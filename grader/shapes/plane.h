@@ -56,7 +56,12 @@ class Plane final : public Shape {
       : normal_(normal), point_(point), d_(d) {}
   static std::unique_ptr<Shape> read(const Cursor& object);
 
-  std::string_view type() const override { return "plane"; }
+  static constexpr std::string_view kType = "plane";
+  static constexpr std::string_view kSummary = "point and normal, or normal and d (n·p + d = 0)";
+  // Its fragment of the problem schema: its own keys, and examples.
+  static nlohmann::ordered_json schema();
+
+  std::string_view type() const override { return kType; }
   Intersection intersect(const Ray& ray) const override;
   std::vector<std::string> methods() const override;
   Derivation derive(const Ray& ray, std::string_view method,

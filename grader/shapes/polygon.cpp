@@ -178,4 +178,51 @@ void Polygon::sketch(Sketch& figure, const std::string& label) const {
   figure.path(v_, true, Ink::kObject, label);
 }
 
+nlohmann::ordered_json Polygon::schema() {
+  return nlohmann::ordered_json::parse(R"json(
+{
+  "required": [
+    "vertices"
+  ],
+  "properties": {
+    "vertices": {
+      "type": "array",
+      "items": {
+        "$ref": "#/$defs/vec3"
+      },
+      "minItems": 3,
+      "description": "a planar simple polygon, convex or not; the normal follows the vertex order"
+    }
+  },
+  "examples": [
+    {
+      "type": "polygon",
+      "vertices": [
+        [
+          -2,
+          -2,
+          3
+        ],
+        [
+          2,
+          -2,
+          3
+        ],
+        [
+          2,
+          2,
+          3
+        ],
+        [
+          -2,
+          2,
+          3
+        ]
+      ]
+    }
+  ]
+}
+)json");
+}
+
 }  // namespace raygrade

@@ -53,7 +53,14 @@ class Polygon final : public Shape {
   explicit Polygon(std::vector<Vec3d> vertices);
   static std::unique_ptr<Shape> read(const Cursor& object);
 
-  std::string_view type() const override { return "polygon"; }
+  static constexpr std::string_view kType = "polygon";
+  static constexpr std::string_view kSummary = "planar vertices, convex or not";
+  // Its fragment of the problem schema: its own keys, and examples.
+  static nlohmann::ordered_json schema();
+
+  std::string_view type() const override { return kType; }
+  // A normal the other way is the cross product's factors swapped.
+  NormalRule normal_rule() const override { return {"cross-order", ""}; }
   Intersection intersect(const Ray& ray) const override;
   std::vector<std::string> methods() const override;
   Derivation derive(const Ray& ray, std::string_view method,

@@ -50,16 +50,45 @@ class Shape {
   // The default, for a primitive whose derivation has no such symbols, labels nothing.
   virtual void sketch_symbols(Sketch& /*figure*/, const Ray& /*ray*/,
                               const std::vector<std::string>& /*symbols*/) const {}
+
+  // Whether the object encloses a volume (a ray inside it leaves through its surface): a scene
+  // tells entering from leaving by it. The default, for a surface that encloses nothing, is no.
+  virtual bool solid() const { return false; }
+
+  // How grading names a normal that points the wrong way: the mistake's id ("inward-normal",
+  // "cross-order"; empty: no named mistake) and the sentence, led by a space, that explains the
+  // outward normal (empty: none).
+  struct NormalRule {
+    std::string mistake;
+    std::string sentence;
+  };
+  virtual NormalRule normal_rule() const { return {}; }
+
+  // What a ray that meets the object along a whole line does, for a problem whose answer is
+  // "contained". The default is the flat objects' sentence: the ray lies in the object's plane.
+  virtual std::string contained_line() const;
+
+  // The steps of the quadratic a t² + b t + c = 0 whose roots are the hits, and the method that
+  // derives them (empty: the default method): grading widens the tolerance of t near a tangent
+  // from them. None for a primitive solved without a quadratic.
+  struct QuadraticSteps {
+    std::string method;
+    std::string a = "a", b = "b", c = "c";
+  };
+  virtual std::optional<QuadraticSteps> quadratic() const { return std::nullopt; }
 };
 
-// One row of the table of primitives: the `type` key in problem files and its reader.
+// One row of the table of primitives: the `type` key in problem files, its reader and its
+// fragment of the problem schema. The rows are derived from the list `Primitives`
+// (shapes/primitives.h).
 struct ShapeEntry {
   std::string_view type;
   std::string_view summary;
   std::unique_ptr<Shape> (*read)(const Cursor& object);
+  nlohmann::ordered_json (*schema)();
 };
 
-// Every primitive, in the order the docs list them.
+// Every primitive, in the order of the list (the order the docs list them).
 const std::vector<ShapeEntry>& shape_table();
 
 // Reads a primitive by its `type`; unknown types get a "did you mean" error. Its `material`

@@ -153,4 +153,34 @@ void Sphere::sketch(Sketch& figure, const std::string& label) const {
   figure.circle(center_, radius_, Ink::kObject, label);
 }
 
+nlohmann::ordered_json Sphere::schema() {
+  return nlohmann::ordered_json::parse(R"json(
+{
+  "required": [
+    "center",
+    "radius"
+  ],
+  "properties": {
+    "center": {
+      "$ref": "#/$defs/vec3"
+    },
+    "radius": {
+      "$ref": "#/$defs/positive"
+    }
+  },
+  "examples": [
+    {
+      "type": "sphere",
+      "center": [
+        0,
+        0,
+        5
+      ],
+      "radius": 2
+    }
+  ]
+}
+)json");
+}
+
 }  // namespace raygrade

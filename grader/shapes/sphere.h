@@ -263,7 +263,17 @@ class Sphere final : public Shape {
   Sphere(Vec3d center, double radius) : center_(center), radius_(radius) {}
   static std::unique_ptr<Shape> read(const Cursor& object);
 
-  std::string_view type() const override { return "sphere"; }
+  static constexpr std::string_view kType = "sphere";
+  static constexpr std::string_view kSummary = "center, radius";
+  // Its fragment of the problem schema: its own keys, and examples.
+  static nlohmann::ordered_json schema();
+
+  std::string_view type() const override { return kType; }
+  bool solid() const override { return true; }
+  NormalRule normal_rule() const override {
+    return {"inward-normal", " A sphere's outward normal is (P − C)/r."};
+  }
+  std::optional<QuadraticSteps> quadratic() const override { return QuadraticSteps{"algebraic"}; }
   Intersection intersect(const Ray& ray) const override;
   std::vector<std::string> methods() const override { return {"geometric", "algebraic"}; }
   Derivation derive(const Ray& ray, std::string_view method,

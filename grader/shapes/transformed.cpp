@@ -44,6 +44,16 @@ E times(const std::array<E, 3>& rows, const E& v) {
 
 }  // namespace
 
+Shape::NormalRule TransformedShape::normal_rule() const {
+  NormalRule rule = object_->normal_rule();
+  if (!rule.sentence.empty()) {
+    rule.sentence =
+        " A transformed object's outward normal is its primitive's, taken back to the world by "
+        "the inverse transpose (A⁻¹)ᵀ and normalized.";
+  }
+  return rule;
+}
+
 Intersection TransformedShape::intersect(const Ray& ray) const {
   return transform_.hits_to_world(ray, object_->intersect(transform_.ray_to_object(ray)));
 }

@@ -27,6 +27,11 @@ class TransformedShape final : public Shape {
   nlohmann::json to_json() const override;
   Vec3d center() const override;
   double extent() const override;
+  bool solid() const override { return object_->solid(); }
+  // The primitive's mistake; its sentence on the outward normal, taken to the world.
+  NormalRule normal_rule() const override;
+  std::string contained_line() const override { return object_->contained_line(); }
+  std::optional<QuadraticSteps> quadratic() const override { return object_->quadratic(); }
 
   const Shape& object() const { return *object_; }
   const Transform& transform() const { return transform_; }

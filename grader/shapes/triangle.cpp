@@ -128,4 +128,47 @@ void Triangle::sketch(Sketch& figure, const std::string& label) const {
   figure.path({v_[0], v_[1], v_[2]}, true, Ink::kObject, label);
 }
 
+nlohmann::ordered_json Triangle::schema() {
+  return nlohmann::ordered_json::parse(R"json(
+{
+  "required": [
+    "vertices"
+  ],
+  "properties": {
+    "vertices": {
+      "type": "array",
+      "items": {
+        "$ref": "#/$defs/vec3"
+      },
+      "minItems": 3,
+      "maxItems": 3,
+      "description": "[a, b, c]; the normal is (b − a) × (c − a)"
+    }
+  },
+  "examples": [
+    {
+      "type": "triangle",
+      "vertices": [
+        [
+          -1,
+          -1,
+          5
+        ],
+        [
+          2,
+          -1,
+          5
+        ],
+        [
+          -1,
+          2,
+          5
+        ]
+      ]
+    }
+  ]
+}
+)json");
+}
+
 }  // namespace raygrade

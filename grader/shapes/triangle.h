@@ -117,7 +117,14 @@ class Triangle final : public Shape {
   Triangle(Vec3d a, Vec3d b, Vec3d c) : v_{a, b, c} {}
   static std::unique_ptr<Shape> read(const Cursor& object);
 
-  std::string_view type() const override { return "triangle"; }
+  static constexpr std::string_view kType = "triangle";
+  static constexpr std::string_view kSummary = "vertices [a, b, c]";
+  // Its fragment of the problem schema: its own keys, and examples.
+  static nlohmann::ordered_json schema();
+
+  std::string_view type() const override { return kType; }
+  // A normal the other way is the cross product's factors swapped.
+  NormalRule normal_rule() const override { return {"cross-order", ""}; }
   Intersection intersect(const Ray& ray) const override;
   std::vector<std::string> methods() const override { return {"edge-tests"}; }
   Derivation derive(const Ray& ray, std::string_view method,

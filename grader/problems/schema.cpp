@@ -1,0 +1,67 @@
+// The problem schema: problem_schema_base.json with a definition per primitive of the table.
+#include "problems/schema.h"
+
+#include "problems/schema_assets.h"
+#include "shapes/shape.h"
+
+namespace raygrade {
+namespace {
+
+// A primitive's definition: the keys every object may carry, then its own from its fragment
+// (description, required keys, properties, constraints such as oneOf, examples); no other key.
+nlohmann::ordered_json primitive_definition(std::string_view type,
+                                            const nlohmann::ordered_json& fragment) {
+  nlohmann::ordered_json def = {{"type", "object"}};
+  if (fragment.contains("description")) def["description"] = fragment["description"];
+  nlohmann::ordered_json required = {"type"};
+  const nlohmann::ordered_json own_required =
+      fragment.value("required", nlohmann::ordered_json::array());
+  for (const auto& key : own_required) required.push_back(key);
+  def["required"] = std::move(required);
+  nlohmann::ordered_json properties = {
+      {"type", {{"const", type}}},
+      {"name", {{"$ref", "#/$defs/name"}}},
+      {"material",
+       {{"description", "read in scenes only: an object's material in any other kind is an error"},
+        {"oneOf", {{{"$ref", "#/$defs/material"}}, {{"type", "string"}}}}}},
+      {"transform", {{"$ref", "#/$defs/transform"}}},
+  };
+  const nlohmann::ordered_json own_properties =
+      fragment.value("properties", nlohmann::ordered_json::object());
+  for (const auto& [key, value] : own_properties.items()) properties[key] = value;
+  def["properties"] = std::move(properties);
+  for (const auto& [key, value] : fragment.items()) {
+    if (key != "description" && key != "required" && key != "properties") def[key] = value;
+  }
+  def["additionalProperties"] = false;
+  return def;
+}
+
+}  // namespace
+
+nlohmann::ordered_json problem_schema() {
+  nlohmann::ordered_json base = nlohmann::ordered_json::parse(kProblemSchemaBase);
+  nlohmann::ordered_json defs = nlohmann::ordered_json::object();
+  nlohmann::ordered_json types = nlohmann::ordered_json::array();
+  nlohmann::ordered_json cases = nlohmann::ordered_json::array();
+  for (auto& [key, value] : base["$defs"].items()) {
+    if (key == "object") {
+      // The primitives' definitions come before the object that chooses among them.
+      for (const ShapeEntry& entry : shape_table()) {
+        defs[std::string(entry.type)] = primitive_definition(entry.type, entry.schema());
+        types.push_back(entry.type);
+        cases.push_back({{"if", {{"properties", {{"type", {{"const", entry.type}}}}}}},
+                         {"then", {{"$ref", fmt::format("#/$defs/{}", entry.type)}}}});
+      }
+      value["properties"]["type"] = {{"enum", types}};
+      value["allOf"] = cases;
+    }
+    defs[key] = value;
+  }
+  base["$defs"] = std::move(defs);
+  return base;
+}
+
+std::string problem_schema_text() { return problem_schema().dump(2) + "\n"; }
+
+}  // namespace raygrade

@@ -1,0 +1,187 @@
+// Capsule: reading, reference intersection, the side-and-ends derivation and the sketch.
+#include "shapes/capsule.h"
+
+#include <cmath>
+
+#include "math/unit_vector.h"
+#include "shapes/cylinder.h"
+#include "shapes/describe.h"
+#include "shapes/round.h"
+#include "shapes/sphere.h"
+
+namespace raygrade {
+Capsule::Capsule(Vec3d a, Vec3d b, double radius)
+    : a_(a), b_(b), radius_(radius), height_(length(b - a)) {
+  axis_ = (b - a) / height_;
+}
+
+std::unique_ptr<Shape> Capsule::read(const Cursor& object) {
+  std::vector<std::string> keys = common_object_keys();
+  keys.insert(keys.end(), {"a", "b", "radius"});
+  object.allow_only(keys);
+  Vec3d a = object.at("a").vec3(), b = object.at("b").vec3();
+  if (a == b) object.at("b").fail("b is a: the capsule would be a sphere", "degenerate");
+  return std::make_unique<Capsule>(a, b, object.at("radius").positive_number());
+}
+
+nlohmann::json Capsule::to_json() const {
+  return {{"type", "capsule"},
+          {"a", {a_.x, a_.y, a_.z}},
+          {"b", {b_.x, b_.y, b_.z}},
+          {"radius", radius_}};
+}
+
+Shape::NormalRule Capsule::normal_rule() const {
+  return {"inward-normal",
+          " A capsule's outward normal is (P − Q)/r, Q the nearest point of the segment ab: on "
+          "the side the foot of P on the axis, on an end that end's centre a or b."};
+}
+
+Intersection Capsule::intersect(const Ray& ray) const {
+  if (std::optional<Intersection> x = intersect_rescaled(*this, ray)) return *x;
+  Intersection out;
+  double scale = length(ray.origin - a_) + length(ray.direction) + radius_ + height_;
+  double seam = kSeamRelative * scale;
+  // The roots and normals in double-double, rounded once, as the sphere's and the cylinder's.
+  Vec3dd o(ray.origin), d(ray.direction), a(a_), b(b_);
+  Vec3dd axis = unit_dd(b - a);
+  DoubleDouble r(radius_);
+  auto height_of = [&](const Vec3d& p) { return dot(p - a_, axis_); };
+  // The side
+  if (length(cross(axis_, ray.direction)) > kAxisParallelRelative * length(ray.direction)) {
+    Roots<DoubleDouble> roots = cylinder_side_roots(o, d, a, axis, r);
+    DoubleDouble ts[2] = {roots.t0, roots.t1};
+    for (int i = 0; i < roots.count; ++i) {
+      double t = static_cast<double>(ts[i]);
+      if (!ray.accepts(t)) continue;
+      Vec3d p = ray.at(t);
+      double s = height_of(p);
+      if (s < -seam || s > height_ + seam) continue;
+      Vec3dd v = (o - a) + ts[i] * d;
+      out.hits.push_back(Hit{t, p, unit_rounded(v - dot(v, axis) * axis), std::nullopt, "side"});
+    }
+  }
+  // The ends: each sphere where it lies beyond its end of the segment
+  for (int end = 0; end < 2; ++end) {
+    const Vec3dd& c = end == 0 ? a : b;
+    Roots<DoubleDouble> roots = sphere_roots(o, d, c, r);
+    DoubleDouble ts[2] = {roots.t0, roots.t1};
+    for (int i = 0; i < roots.count; ++i) {
+      double t = static_cast<double>(ts[i]);
+      if (!ray.accepts(t)) continue;
+      Vec3d p = ray.at(t);
+      double s = height_of(p);
+      if (end == 0 ? s > seam : s < height_ - seam) continue;
+      out.hits.push_back(
+          Hit{t, p, unit_rounded((o - c) + ts[i] * d), std::nullopt, end == 0 ? "end a" : "end b"});
+    }
+  }
+  finish_hits(out.hits, seam);
+  return out;
+}
+
+Derivation Capsule::derive(const Ray& ray, std::string_view /*method*/,
+                           const Overrides* overrides) const {
+  Deriver d("side-and-ends", "Capsule: the side's quadratic, then the end spheres", overrides);
+  E O = d.given("O", "O", ray.origin, "the ray's origin");
+  E D = d.given("D", "D", ray.direction, "the ray's direction");
+  E A = d.given("A", "A", a_, "one end of the segment");
+  E B = d.given("B", "B", b_, "the other end");
+  E r = d.given("r", "r", radius_, "the radius");
+  d.step("h", "h", norm(B - A), "the length of the segment");
+  d.step("u", "û", (B - A) / d.sym("h"), "the unit axis from A to B");
+  E u = d.sym("u");
+  std::vector<Candidate> candidates;
+  // The side: the infinite cylinder around the axis, kept where 0 ≤ s ≤ h
+  d.step("f", "f", O - A, "from A to the origin");
+  d.step("f_perp", "f⊥", d.sym("f") - dot(d.sym("f"), u) * u, "f across the axis");
+  d.step("D_perp", "D⊥", D - dot(D, u) * u, "D across the axis");
+  double qa = d.step("a", "a", dot(d.sym("D_perp"), d.sym("D_perp"))).scalar;
+  d.step("b", "b", 2 * dot(d.sym("f_perp"), d.sym("D_perp")));
+  d.step("c", "c", dot(d.sym("f_perp"), d.sym("f_perp")) - square(r));
+  if (qa == 0) {
+    d.note("a = 0: the ray runs parallel to the axis and never crosses the side.");
+  } else {
+    double disc =
+        d.step("discriminant", "Δ", square(d.sym("b")) - 4 * d.sym("a") * d.sym("c")).scalar;
+    if (disc < 0) {
+      d.note("Δ < 0: the ray misses the side's cylinder.");
+    } else {
+      for (int i = 0; i < 2; ++i) {
+        std::string n = std::to_string(i);
+        E root = (-d.sym("b") + (i == 0 ? -1 : 1) * sqrt(d.sym("discriminant"))) / (2 * d.sym("a"));
+        double t = d.step("t_side" + n, "t_side" + n, root).scalar;
+        Value p = d.step("P_side" + n, "P_side" + n, O + d.sym("t_side" + n) * D);
+        double s = d.step("s_side" + n, "s_side" + n, dot(d.sym("P_side" + n) - A, u),
+                          "its height along the axis: the side when 0 ≤ s ≤ h")
+                       .scalar;
+        std::string reason = s < 0 || s > height_
+                                 ? "it lies on the side's cylinder beyond the segment (s outside "
+                                   "[0, h]): an end covers it"
+                                 : range_reason(ray, t);
+        candidates.push_back({t, p.vector, reason});
+      }
+    }
+  }
+  // The ends: the spheres around A and B, kept beyond their end (s ≤ 0 at A, s ≥ h at B)
+  d.step("a_end", "a_e", dot(D, D), "a of both end spheres: D·D");
+  for (int end = 0; end < 2; ++end) {
+    std::string e = end == 0 ? "A" : "B";
+    E C = end == 0 ? A : B;
+    d.step("f_" + e, "f_" + e, O - C, "from " + e + " to the origin");
+    d.step("b_" + e, "b_" + e, 2 * dot(D, d.sym("f_" + e)));
+    d.step("c_" + e, "c_" + e, dot(d.sym("f_" + e), d.sym("f_" + e)) - square(r));
+    double disc = d.step("disc_" + e, "Δ_" + e,
+                         square(d.sym("b_" + e)) - 4 * d.sym("a_end") * d.sym("c_" + e))
+                      .scalar;
+    if (disc < 0) {
+      d.note("Δ_" + e + " < 0: the ray misses the sphere around " + e + ".");
+      continue;
+    }
+    for (int i = 0; i < 2; ++i) {
+      std::string n = e + std::to_string(i);
+      E root =
+          (-d.sym("b_" + e) + (i == 0 ? -1 : 1) * sqrt(d.sym("disc_" + e))) / (2 * d.sym("a_end"));
+      double t = d.step("t_" + n, "t_" + n, root).scalar;
+      Value p = d.step("P_" + n, "P_" + n, O + d.sym("t_" + n) * D);
+      double s = d.step("s_" + n, "s_" + n, dot(d.sym("P_" + n) - A, u)).scalar;
+      bool beyond = end == 0 ? s <= 0 : s >= height_;
+      std::string reason =
+          beyond ? range_reason(ray, t)
+                 : fmt::format(
+                       "it lies on the sphere around {} inside the segment's span ({}): "
+                       "the side covers it",
+                       e, end == 0 ? "s > 0" : "s < h");
+      candidates.push_back({t, p.vector, reason});
+    }
+  }
+  // A rim point is found twice (side and end) and a tangent twice over: each hit once.
+  conclude_candidates(d, "capsule", ray, each_hit_once(std::move(candidates)), true);
+  return std::move(d).finish();
+}
+
+void Capsule::sketch(Sketch& figure, const std::string& label) const {
+  figure.cylinder(a_, axis_, radius_, height_, Ink::kObject, label);
+  figure.circle(a_, radius_, Ink::kObject);
+  figure.circle(b_, radius_, Ink::kObject);
+}
+
+nlohmann::ordered_json Capsule::schema() {
+  return nlohmann::ordered_json::parse(R"json(
+{
+  "description": "the points within radius of the segment from a to b: a cylinder with two hemispherical ends",
+  "required": ["a", "b", "radius"],
+  "properties": {
+    "a": {"$ref": "#/$defs/vec3"},
+    "b": {"$ref": "#/$defs/vec3"},
+    "radius": {"$ref": "#/$defs/positive"}
+  },
+  "examples": [
+    {"type": "capsule", "a": [0, 0, 0], "b": [0, 0, 4], "radius": 1},
+    {"type": "capsule", "a": [-1, 2, 3], "b": [2, 2, 3], "radius": 0.5}
+  ]
+}
+)json");
+}
+
+}  // namespace raygrade

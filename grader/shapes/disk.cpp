@@ -1,0 +1,125 @@
+// Disk: reading, reference intersection, the plane-then-distance derivation and the sketch.
+#include "shapes/disk.h"
+
+#include <cmath>
+
+#include "math/unit_vector.h"
+#include "shapes/describe.h"
+#include "shapes/flat.h"
+#include "shapes/plane.h"
+#include "shapes/round.h"
+#include "shapes/sphere.h"
+
+namespace raygrade {
+
+// A point whose squared distance from the centre exceeds r² by no more than this fraction of r²
+// is on the rim: the rounding of P = O + tD and of the squares, a few ulps each, so that a ray
+// worked by hand through the rim (|P − C| = r exactly) hits.
+constexpr double kRimRelative = 16 * 2.220446049250313e-16;
+
+std::unique_ptr<Shape> Disk::read(const Cursor& object) {
+  std::vector<std::string> keys = common_object_keys();
+  keys.insert(keys.end(), {"center", "normal", "radius"});
+  object.allow_only(keys);
+  return std::make_unique<Disk>(object.at("center").vec3(), object.at("normal").nonzero_vec3(),
+                                object.at("radius").positive_number());
+}
+
+nlohmann::json Disk::to_json() const {
+  return {{"type", "disk"},
+          {"center", {center_.x, center_.y, center_.z}},
+          {"normal", {normal_.x, normal_.y, normal_.z}},
+          {"radius", radius_}};
+}
+
+bool Disk::inside(const Vec3d& point) const {
+  double r2 = radius_ * radius_;
+  return length_squared(point - center_) <= r2 * (1 + kRimRelative);
+}
+
+Intersection Disk::intersect(const Ray& ray) const {
+  if (std::optional<Intersection> x = intersect_rescaled(*this, ray)) return *x;
+  Intersection out;
+  if (parallel_to_plane(normal_, ray.direction)) {
+    // In the plane, the ray meets the disk along a segment when its line passes within r of
+    // the centre inside the ray's interval: the circle's roots, as a sphere's.
+    if (in_plane(normal_, center_, ray.origin)) {
+      Roots<double> roots = sphere_roots(ray.origin, ray.direction, center_, radius_);
+      double last = roots.count == 2 ? roots.t1 : roots.t0;
+      out.contained = roots.count > 0 && roots.t0 <= ray.t_max && last >= ray.t_min;
+    }
+    return out;
+  }
+  std::optional<double> t = plane_t(ray.origin, ray.direction, normal_, center_);
+  if (!t || !ray.accepts(*t)) return out;
+  Vec3d p = ray.at(*t);
+  if (!inside(p)) return out;
+  Hit h;
+  h.t = *t;
+  h.point = p;
+  h.normal = unit_rounded(Vec3dd(normal_));
+  out.hits.push_back(h);
+  return out;
+}
+
+Derivation Disk::derive(const Ray& ray, std::string_view /*method*/,
+                        const Overrides* overrides) const {
+  Deriver d("plane-then-distance", "Disk: the plane, then the distance from the centre", overrides);
+  E O = d.given("O", "O", ray.origin, "the ray's origin");
+  E D = d.given("D", "D", ray.direction, "the ray's direction");
+  E C = d.given("C", "C", center_, "the disk's centre");
+  E N = d.given("N", "N", normal_, "the disk's normal");
+  E r = d.given("r", "r", radius_, "the disk's radius");
+  // The plane
+  double den = d.step("denominator", dot(N, D), dot(N, D)).scalar;
+  if (den == 0) {
+    double s = d.step("numerator", dot(N, C - O), dot(N, C - O)).scalar;
+    d.note("N·D = 0: the ray is parallel to the disk's plane.");
+    d.conclude(s == 0 ? "The ray lies in the disk's plane: where it crosses the disk it meets it "
+                        "along a segment, not at a point."
+                      : "The ray is parallel to the disk's plane and off it: no hit.");
+    return std::move(d).finish();
+  }
+  d.step("numerator", dot(N, C - O), dot(N, C - O));
+  double t = d.step("t", "t", d.sym("numerator") / d.sym("denominator"),
+                    "where the ray meets the plane N·(P − C) = 0")
+                 .scalar;
+  Value p = d.step("P", "P", O + d.sym("t") * D, "the point where the ray meets the plane");
+  // The distance from the centre
+  double dist2 = d.step("dist2", "|P − C|²", dot(d.sym("P") - C, d.sym("P") - C),
+                        "the squared distance of P from the centre")
+                     .scalar;
+  double r2 = d.step("r2", "r²", square(r)).scalar;
+  bool in = dist2 <= r2 * (1 + kRimRelative);
+  std::string reason =
+      in ? range_reason(ray, t)
+         : "the plane point P lies outside the disk (|P − C|² > r²: farther than r from C)";
+  conclude_candidates(d, "disk", ray, {{t, p.vector, reason}}, false);
+  return std::move(d).finish();
+}
+
+void Disk::sketch(Sketch& figure, const std::string& label) const {
+  // The rim as a polygon of 48 points: edge-on it is a segment, face-on a circle.
+  figure.path(circle_points(center_, normal_ / length(normal_), radius_, 48), true, Ink::kObject,
+              label);
+}
+
+nlohmann::ordered_json Disk::schema() {
+  return nlohmann::ordered_json::parse(R"json(
+{
+  "description": "the closed disk of radius r around center in the plane through it with the given normal: the rim hits",
+  "required": ["center", "normal", "radius"],
+  "properties": {
+    "center": {"$ref": "#/$defs/vec3"},
+    "normal": {"$ref": "#/$defs/nonzero_vec3"},
+    "radius": {"$ref": "#/$defs/positive"}
+  },
+  "examples": [
+    {"type": "disk", "center": [0, 0, 5], "normal": [0, 0, -1], "radius": 2},
+    {"type": "disk", "center": [1, 2, 0], "normal": [0, 1, 1], "radius": 0.5}
+  ]
+}
+)json");
+}
+
+}  // namespace raygrade

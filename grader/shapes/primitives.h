@@ -1,0 +1,66 @@
+// The list of primitives: every primitive is one type in `Primitives`, and the concept
+// PrimitiveType says what each provides. The shape table (and through it reading, the schema's
+// object types and the docs' table) is derived from this list.
+#pragma once
+
+#include <concepts>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string_view>
+#include <type_traits>
+
+#include "shapes/box.h"
+#include "shapes/capsule.h"
+#include "shapes/cone.h"
+#include "shapes/cylinder.h"
+#include "shapes/disk.h"
+#include "shapes/plane.h"
+#include "shapes/polygon.h"
+#include "shapes/shape.h"
+#include "shapes/sphere.h"
+#include "shapes/triangle.h"
+
+namespace raygrade {
+
+// What a primitive provides beside Shape's virtual functions (the reference intersection, the
+// derivations, the sketch, solidity, the normal rule, the quadratic's steps): its `type` key and
+// a one-line summary of its parameters, its reader, and its fragment of the problem schema
+// (docs/problem.schema.json, written by `raygrade schema`).
+template <typename T>
+concept PrimitiveType = std::derived_from<T, Shape> && std::is_final_v<T> &&
+    requires(const Cursor& object) {
+  { T::kType } -> std::convertible_to<std::string_view>;
+  { T::kSummary } -> std::convertible_to<std::string_view>;
+  { T::read(object) } -> std::same_as<std::unique_ptr<Shape>>;
+  { T::schema() } -> std::same_as<nlohmann::ordered_json>;
+};
+
+template <typename... Ts>
+struct TypeList {
+  static constexpr std::size_t size = sizeof...(Ts);
+};
+
+// Every primitive, in the order the docs list them. Adding one is its file pair and one name
+// here.
+using Primitives = TypeList<Sphere, Plane, Triangle, Polygon, Cylinder, Box, Disk, Cone, Capsule>;
+
+template <typename... Ts>
+constexpr bool every_primitive_type(TypeList<Ts...>) {
+  return (PrimitiveType<Ts> && ...);
+}
+static_assert(every_primitive_type(Primitives{}),
+              "each type of Primitives must satisfy PrimitiveType (shapes/primitives.h)");
+
+// Calls f.template operator()<T>() for each type T of a list, in its order.
+template <typename F, typename... Ts>
+void for_each_type(F&& f, TypeList<Ts...> /*list*/) {
+  (f.template operator()<Ts>(), ...);
+}
+
+// The same for each primitive.
+template <typename F>
+void for_each_primitive(F&& f) {
+  for_each_type(f, Primitives{});
+}
+
+}  // namespace raygrade

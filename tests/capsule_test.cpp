@@ -1,0 +1,119 @@
+// Capsule: the reference intersection and reading, against values worked by hand.
+#include "shapes/capsule.h"
+
+#include <gtest/gtest.h>
+
+#include "shape_error.h"
+#include "test_util.h"
+
+namespace raygrade {
+namespace {
+
+using testing::ray;
+
+// The capsule of radius 1 around the segment from (0, 0, 0) to (0, 0, 4).
+Capsule upright() { return Capsule({0, 0, 0}, {0, 0, 4}, 1); }
+
+void expect_hit(const Hit& h, double t, Vec3d point, Vec3d normal) {
+  EXPECT_EQ(h.t, t);
+  EXPECT_EQ(h.point, point);
+  EXPECT_EQ(h.normal, normal);
+}
+
+// Across the side at height 2: (−5 + t)² = 1, t = 4 and 6; s = 2 lies in [0, 4]; the normals
+// are (P − Q)/r with Q = (0, 0, 2).
+TEST(Capsule, RayAcrossTheSide) {
+  auto x = upright().intersect(ray({-5, 0, 2}, {1, 0, 0}));
+  ASSERT_EQ(x.hits.size(), 2u);
+  expect_hit(x.hits[0], 4, {-1, 0, 2}, {-1, 0, 0});
+  expect_hit(x.hits[1], 6, {1, 0, 2}, {1, 0, 0});
+}
+
+// Along the axis from (0, 0, −5): the side is never crossed. The sphere around a gives t = 4
+// (z = −1, s = −1 ≤ 0: kept) and t = 6 (z = 1, inside the span: dropped); the sphere around b
+// gives t = 8 (z = 3: dropped) and t = 10 (z = 5, s = 5 ≥ 4: kept).
+TEST(Capsule, RayAlongTheAxisHitsBothEnds) {
+  auto x = upright().intersect(ray({0, 0, -5}, {0, 0, 1}));
+  ASSERT_EQ(x.hits.size(), 2u);
+  expect_hit(x.hits[0], 4, {0, 0, -1}, {0, 0, -1});
+  expect_hit(x.hits[1], 10, {0, 0, 5}, {0, 0, 1});
+}
+
+// Two from the axis: no root on the side, none on the ends.
+TEST(Capsule, RayPastTheSideMisses) {
+  EXPECT_TRUE(upright().intersect(ray({-5, 2, 2}, {1, 0, 0})).hits.empty());
+}
+
+// One from the axis at height 2: the side's double root t = 5 at (0, 1, 2), one hit.
+TEST(Capsule, TangentToTheSideHitsOnce) {
+  auto x = upright().intersect(ray({-5, 1, 2}, {1, 0, 0}));
+  ASSERT_EQ(x.hits.size(), 1u);
+  expect_hit(x.hits[0], 5, {0, 1, 2}, {0, 1, 0});
+}
+
+// Across the rim at a (height 0): the side and the sphere around a both give t = 4 at
+// (−1, 0, 0) and t = 6 at (1, 0, 0); each point is listed once.
+TEST(Capsule, RimBetweenSideAndEndIsListedOnce) {
+  auto x = upright().intersect(ray({-5, 0, 0}, {1, 0, 0}));
+  ASSERT_EQ(x.hits.size(), 2u);
+  expect_hit(x.hits[0], 4, {-1, 0, 0}, {-1, 0, 0});
+  expect_hit(x.hits[1], 6, {1, 0, 0}, {1, 0, 0});
+}
+
+// Parallel to the axis at distance r: it runs along the side and touches the two ends' spheres
+// where they meet the side, at (1, 0, 0), t = 5, and (1, 0, 4), t = 9.
+TEST(Capsule, RayParallelToTheAxisOnTheSideTouchesBothRims) {
+  auto x = upright().intersect(ray({1, 0, -5}, {0, 0, 1}));
+  ASSERT_EQ(x.hits.size(), 2u);
+  expect_hit(x.hits[0], 5, {1, 0, 0}, {1, 0, 0});
+  expect_hit(x.hits[1], 9, {1, 0, 4}, {1, 0, 0});
+}
+
+// From inside, at (0, 0, 2) along +x: the side's roots are t = −1 and 1; only t = 1 is ahead.
+TEST(Capsule, RayFromInsideLeavesOnce) {
+  auto x = upright().intersect(ray({0, 0, 2}, {1, 0, 0}));
+  ASSERT_EQ(x.hits.size(), 1u);
+  expect_hit(x.hits[0], 1, {1, 0, 2}, {1, 0, 0});
+}
+
+// From (5, 0, 2) along +x the capsule is behind: roots t = −6 and −4.
+TEST(Capsule, CapsuleBehindTheOriginMisses) {
+  EXPECT_TRUE(upright().intersect(ray({5, 0, 2}, {1, 0, 0})).hits.empty());
+}
+
+// A tilted capsule, a = (−1, 2, 3), b = (2, 2, 3), r = 0.5, along −y from (3, 5, 3): the sphere
+// around b alone (x = 3 is beyond b): (5 − t − 2)² + 1 = 0.25 has no root, a miss; from
+// (0.5, 5, 3) the side at y = 2.5 and 1.5, t = 2.5 and 3.5.
+TEST(Capsule, TiltedCapsule) {
+  Capsule c({-1, 2, 3}, {2, 2, 3}, 0.5);
+  EXPECT_TRUE(c.intersect(ray({3, 5, 3}, {0, -1, 0})).hits.empty());
+  auto x = c.intersect(ray({0.5, 5, 3}, {0, -1, 0}));
+  ASSERT_EQ(x.hits.size(), 2u);
+  expect_hit(x.hits[0], 2.5, {0.5, 2.5, 3}, {0, 1, 0});
+  expect_hit(x.hits[1], 3.5, {0.5, 1.5, 3}, {0, -1, 0});
+}
+
+// The worked derivation: the side's a, b, c for the ray across the side (a = 1, b = −10,
+// c = 24) and its hits.
+TEST(Capsule, DerivationStepsCarryTheHandValues) {
+  Derivation d = upright().derive(ray({-5, 0, 2}, {1, 0, 0}), "", nullptr);
+  ASSERT_NE(d.find("a"), nullptr);
+  EXPECT_EQ(d.find("a")->value.scalar, 1);
+  EXPECT_EQ(d.find("b")->value.scalar, -10);
+  EXPECT_EQ(d.find("c")->value.scalar, 24);
+  EXPECT_EQ(d.find("t_side0")->value.scalar, 4);
+  EXPECT_EQ(d.find("t_side1")->value.scalar, 6);
+}
+
+// Reading: b equal to a, and a zero radius, are errors at their paths.
+TEST(Capsule, BadParametersAreErrorsAtTheirPaths) {
+  EXPECT_EQ(testing::shape_error_path(
+                R"({"type": "capsule", "a": [1, 2, 3], "b": [1, 2, 3], "radius": 1})"),
+            "/b");
+  EXPECT_EQ(testing::shape_error_path(
+                R"({"type": "capsule", "a": [0, 0, 0], "b": [0, 0, 1], "radius": 0})"),
+            "/radius");
+}
+
+}  // namespace
+}  // namespace raygrade
