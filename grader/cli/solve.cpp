@@ -33,13 +33,7 @@ Bank problems_to_solve(SolveOptions& o) {
     return load_bank(o.paths);
   }
   o.assignment = true;
-  AssignmentSpec spec = load_assignment(o.paths[0]);
-  AssignmentBank from = load_assignment_bank(spec);
-  Bank out;
-  out.errors = from.errors;
-  if (from.problems.size() != spec.problems.size()) return out;
-  out.problems = student_problems(spec, from.problems, o.student);
-  return out;
+  return student_bank(load_assignment(o.paths[0]), o.student);
 }
 
 int run_solve(SolveOptions& o) {
