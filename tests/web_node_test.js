@@ -2,7 +2,8 @@
 // solved (answers as JSON, and the worked solution in md, html and txt), the whole bank at
 // once, every sample submission graded against the whole bank, and the accuracy study's hard
 // cases (which need the precision ladder's top, SoftFloat in the browser, MPFR natively) as
-// one bank. The standard error lines and exit codes are compared too.
+// one bank; the example assignment's worked solutions and grades. The standard error lines and
+// exit codes are compared too.
 // Usage: node tests/web_node_test.js RAYGRADE_JS NATIVE_RAYGRADE SOURCE_DIR
 'use strict';
 const fs = require('fs');
@@ -96,6 +97,27 @@ require(path.resolve(raygradeJs))().then((raygrade) => {
     const web = raygrade.grade(texts, fs.readFileSync(s, 'utf8'), s);
     compare(`grade ${s}`, web, raygrade.lastErrors(), raygrade.lastStatus(),
             runNative(['grade', '--problems', 'problems', '--format', 'json', s]));
+  }
+  // The example assignment: one student's worked solutions, and every sample submission graded
+  // as that assignment's (before and after its due date, the second time from the cache).
+  const assignment = 'assignments/homework-rays.json';
+  const withAssignment = Object.assign({[assignment]: fs.readFileSync(assignment, 'utf8')}, texts);
+  for (const format of ['json', 'html']) {
+    compare(`solve ${assignment} --student s001 --format ${format}`,
+            raygrade.solveAssignment(withAssignment, assignment, 's001', format),
+            raygrade.lastErrors(), raygrade.lastStatus(),
+            runNative(['solve', assignment, '--student', 's001', '--format', format]));
+  }
+  for (const when of ['2026-11-24T00:00:00Z', '2026-12-24T00:00:00Z']) {
+    for (const s of jsonFiles('submissions')) {
+      for (const cacheKey of ['', 'example']) {
+        const web = raygrade.gradeAssignment(withAssignment, assignment, fs.readFileSync(s, 'utf8'),
+                                             {now: Date.parse(when) / 1000, submissionName: s, cacheKey});
+        compare(`grade --assignment --now ${when} ${s} (cache key "${cacheKey}")`, web,
+                raygrade.lastErrors(), raygrade.lastStatus(),
+                runNative(['grade', '--assignment', assignment, '--now', when, '--format', 'json', s]));
+      }
+    }
   }
   // The hard cases, where the answer needs double-double, the top of the ladder or an exact
   // decision on a boundary; and a problem file with a fault, for the diagnostics.

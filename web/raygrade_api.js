@@ -95,7 +95,9 @@
 
   // raygrade grade --assignment ASSIGNMENT --now NOW --format json SUBMISSION: `files` holds
   // the assignment file (named `assignment`) and its bank's files, at the places its "bank"
-  // names; `now` is in seconds since 1970 UTC (default: this computer's clock).
+  // names; `now` is in seconds since 1970 UTC (default: this computer's clock). With
+  // `cacheKey`, the assignment as read by the last call with the same key is used again (the
+  // files must be the same): a Check then costs the grading alone.
   Module.gradeAssignment = function (files, assignment, submission, options) {
     options = options || {};
     var name = options.submissionName || 'submission.json';
@@ -103,8 +105,9 @@
     all[name] = submission;
     var now = options.now !== undefined ? options.now : Math.floor(Date.now() / 1000);
     return run(all, function () {
-      return Module.ccall('raygrade_grade_assignment', 'string', ['string', 'string', 'number'],
-                          [assignment, name, now]);
+      return Module.ccall('raygrade_grade_assignment', 'string',
+                          ['string', 'string', 'number', 'string'],
+                          [assignment, name, now, options.cacheKey || '']);
     });
   };
 
