@@ -140,6 +140,24 @@ require(path.resolve(raygradeJs))().then((raygrade) => {
           raygrade.lastErrors(), raygrade.lastStatus(),
           runNative(['solve', brokenFile.slice(1), '--format', 'json'], '/'));
   fs.rmSync(path.dirname(brokenFile), {recursive: true});
+  // Misuse of the API is an error that says what is wrong, never silently ignored.
+  const refused = (what, call, words) => {
+    ++compared;
+    try {
+      call();
+    } catch (e) {
+      if (String(e.message).includes(words)) return;
+      console.log(`FAIL ${what}: the error says ${JSON.stringify(e.message)}`);
+      ++failures;
+      return;
+    }
+    console.log(`FAIL ${what}: no error`);
+    ++failures;
+  };
+  refused('an unknown option', () => raygrade.gradeAssignment(withAssignment, assignment, '{}',
+                                                               {cachekey: 'x'}), 'unknown option "cachekey"');
+  refused('a file name outside the folder', () => raygrade.solve({'../p.json': '{}'}), 'must be relative');
+  refused('an unknown format', () => raygrade.solution(texts[bank[0]], 'pdf'), 'unknown format "pdf"');
   console.log(`hard cases by level: ${JSON.stringify(levels)}`);
   console.log(`${compared - failures} of ${compared} outputs identical`);
   process.exit(failures ? 1 : 0);

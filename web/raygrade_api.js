@@ -100,6 +100,11 @@
   // files must be the same): a Check then costs the grading alone.
   Module.gradeAssignment = function (files, assignment, submission, options) {
     options = options || {};
+    Object.keys(options).forEach(function (key) {
+      if (['now', 'submissionName', 'cacheKey'].indexOf(key) < 0) {
+        throw new Error('raygrade: unknown option "' + key + '" (now, submissionName, cacheKey)');
+      }
+    });
     var name = options.submissionName || 'submission.json';
     var all = Object.assign({}, files);
     all[name] = submission;
