@@ -9,11 +9,12 @@ packages=(
   python3-jsonschema pkg-config clang-format strace
   libgmp-dev file
 )
-# Extra groups, asked for by name: RAYGRADE_EXTRA="browser fuzz".
+# Extra groups, asked for by name: RAYGRADE_EXTRA="browser fuzz web".
 for extra in ${RAYGRADE_EXTRA:-}; do
   case "$extra" in
     browser) packages+=(chromium chromium-driver python3-selenium) ;;
     fuzz) packages+=(clang libclang-rt-14-dev) ;;
+    web) packages+=(emscripten nodejs) ;;
     *) echo "install-deps: unknown extra '$extra'" >&2; exit 2 ;;
   esac
 done

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Builds everything and runs every test (unit tests, bank checks, conformance), then the same
-# tests under AddressSanitizer and UndefinedBehaviorSanitizer, then each fuzz target briefly.
+# Builds everything and runs every test (unit tests, bank checks, conformance), the WebAssembly
+# build's tests, then the same tests under AddressSanitizer and UndefinedBehaviorSanitizer, then
+# each fuzz target briefly.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # The browser extra: the HTML worked solutions are checked in headless Chromium.
@@ -8,6 +9,13 @@ RAYGRADE_EXTRA="${RAYGRADE_EXTRA:-} browser" bash scripts/install-deps.sh
 cmake --preset release >/dev/null
 cmake --build --preset release
 ctest --preset release
+# The browser build (docs/web.md): raygrade.js against the native binary, byte for byte, on the
+# whole bank, the sample submissions and the hard cases; then a practice page in headless
+# Chromium, from file:// (screenshots in build/web/practice-check).
+bash scripts/build-web.sh
+node tests/web_node_test.js build/web/web/raygrade.js build/release/grader/raygrade .
+/usr/bin/python3 tests/practice_in_browser.py build/release/grader/raygrade \
+  build/web/web/raygrade.js assignments/homework-rays.json build/web/practice-check
 # The static binary the LMS exports ship (a second build of the library, without tests): the
 # conformance set, every subcommand against the release binary's output, and the Gradescope
 # autograder and the PrairieLearn questions run with it.

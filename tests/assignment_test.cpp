@@ -378,5 +378,35 @@ TEST(Assignment, TheHandoutShowsTheStudentsNumbersAndNoAnswer) {
             answer_form(student_problems(spec, bank.problems, "s002")[0]).dump());
 }
 
+// The example's bank is "../problems": the page names the assignment one folder deep (d1/) and
+// the bank's files beside that folder, so that "d1/../problems" reaches them; the grader's
+// script goes in with a policy that lets it compile, and a handout without practice has neither.
+TEST(Assignment, APracticePageCarriesTheGraderAndTheBank) {
+  AssignmentSpec spec = load_assignment(kExample);
+  AssignmentBank bank = load_assignment_bank(spec);
+  auto problems = student_problems(spec, bank.problems, "s001");
+  PracticeAssets assets = practice_assets(spec, "function createRaygrade() {}");
+  EXPECT_EQ(assets.assignment, "d1/homework-rays.json");
+  std::set<std::string> names;
+  for (const auto& [name, text] : assets.files) names.insert(name);
+  EXPECT_TRUE(names.count("d1/homework-rays.json"));
+  EXPECT_TRUE(names.count("problems/sphere.json"));
+  EXPECT_TRUE(names.count("problems/seeds/seed000-spheres.json"));
+  std::vector<Diagnostic> errors;
+  EXPECT_EQ(assets.files.size(),
+            1 + list_bank_files({std::string(RAYGRADE_SOURCE_DIR) + "/problems"}, errors).size());
+  StudentIdentity who{"", "s001", ""};
+  Handout practice = make_handout(spec, problems, &who, &assets);
+  EXPECT_NE(practice.html.find("<script>function createRaygrade() {}</script>"), std::string::npos);
+  EXPECT_NE(practice.html.find("'wasm-unsafe-eval'"), std::string::npos);
+  EXPECT_NE(practice.html.find("\"unlock_after\":3"), std::string::npos);
+  Handout plain = make_handout(spec, problems, &who);
+  EXPECT_EQ(plain.html.find("wasm-unsafe-eval"), std::string::npos);
+  EXPECT_EQ(plain.html.find("createRaygrade() {}"), std::string::npos);
+  // A script that could close its element is refused, not written.
+  assets.grader_js = "var s = '</script>';";
+  EXPECT_THROW(make_handout(spec, problems, &who, &assets), Error);
+}
+
 }  // namespace
 }  // namespace raygrade

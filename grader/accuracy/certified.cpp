@@ -15,8 +15,8 @@ double down(double x) { return x; }
 double up(double x) { return x; }
 double down(const DoubleDouble& x) { return Rounded<double>::add(x.hi, x.lo, false); }
 double up(const DoubleDouble& x) { return Rounded<double>::add(x.hi, x.lo, true); }
-double down(const Mpfr& x) { return mpfr_get_d(x.get(), MPFR_RNDD); }
-double up(const Mpfr& x) { return mpfr_get_d(x.get(), MPFR_RNDU); }
+double down(const Mpfr& x) { return x.to_double(Rounding::kDown); }
+double up(const Mpfr& x) { return x.to_double(Rounding::kUp); }
 
 template <typename T>
 Certified certify(const AccuracyCase& c) {

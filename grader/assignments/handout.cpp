@@ -3,11 +3,15 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <filesystem>
+
 #include "assignments/answer_form.h"
 #include "assignments/handout_assets.h"
 #include "assignments/variants.h"
 #include "core/escape.h"
 #include "grading/formula.h"
+#include "json/source.h"
 #include "reports/svg_figure.h"
 
 namespace raygrade {
@@ -90,8 +94,44 @@ std::string statement_figure_svg(const Problem& p) {
   return render_svg(s, p.title.empty() ? p.id : p.title).svg;
 }
 
+PracticeAssets practice_assets(const AssignmentSpec& spec, std::string grader_js) {
+  namespace fs = std::filesystem;
+  PracticeAssets out;
+  out.grader_js = std::move(grader_js);
+  std::vector<Diagnostic> errors;
+  std::vector<std::string> bank_files = list_bank_files(spec.bank, errors);
+  if (!errors.empty()) throw Error(errors.front());
+  // Each bank file relative to the assignment's folder; the assignment goes as many folders
+  // deep as the most ".." among them, so that every name stays inside the page's folder.
+  fs::path home = fs::absolute(fs::path(spec.file)).parent_path().lexically_normal();
+  std::vector<fs::path> relative;
+  std::size_t depth = 0;
+  for (const auto& f : bank_files) {
+    fs::path r = fs::absolute(fs::path(f)).lexically_normal().lexically_relative(home);
+    if (r.empty()) {
+      throw Error(Diagnostic{spec.file, "/bank", 0, 0, Severity::kError,
+                             "the bank file '" + f + "' has no name relative to the assignment",
+                             "practice-bank"});
+    }
+    std::size_t ups = 0;
+    for (const auto& part : r) ups += part == "..";
+    depth = std::max(depth, ups);
+    relative.push_back(r);
+  }
+  fs::path folder;
+  for (std::size_t k = 0; k < depth; ++k) folder /= fmt::format("d{}", k + 1);
+  auto read = [](const std::string& file) { return load_json_file(file)->text; };
+  out.assignment = (folder / fs::path(spec.file).filename()).generic_string();
+  out.files.emplace_back(out.assignment, read(spec.file));
+  for (std::size_t i = 0; i < bank_files.size(); ++i) {
+    out.files.emplace_back((folder / relative[i]).lexically_normal().generic_string(),
+                           read(bank_files[i]));
+  }
+  return out;
+}
+
 Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& problems,
-                     const StudentIdentity* student) {
+                     const StudentIdentity* student, const PracticeAssets* practice) {
   Handout out;
   json data = {{"assignment", {{"id", spec.id}, {"title", spec.title}}},
                {"formula",
@@ -121,13 +161,29 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
         figure.empty() ? "" : "<figure>" + figure + "</figure>\n", i);
   }
   data["problems"] = listed;
+  std::string grader_script;
+  if (practice) {
+    json files = json::object();
+    for (const auto& [name, text] : practice->files) files[name] = text;
+    data["practice"] = {{"assignment", practice->assignment},
+                        {"files", files},
+                        {"unlock_after", kPracticeUnlockAfter}};
+    // raygrade.js in a <script> element: nothing in it may close the element.
+    if (practice->grader_js.find("</") != std::string::npos) {
+      throw Error(Diagnostic{"", "", 0, 0, Severity::kError,
+                             "the grader's script holds \"</\", which would end its <script> "
+                             "element: is it raygrade.js?",
+                             "practice-grader"});
+    }
+    grader_script = "<script>" + practice->grader_js + "</script>\n";
+  }
   std::string who = student ? student->display() : "";
   std::string title = spec.title + (who.empty() ? "" : " — " + who);
   out.html = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; "
-      "script-src 'unsafe-inline'; style-src 'unsafe-inline'; img-src data:\">\n"
+      "script-src 'unsafe-inline'{}; style-src 'unsafe-inline'; img-src data:\">\n"
       "<title>{}</title>\n<style>{}</style>\n</head>\n<body>\n<header>\n<h1>{}</h1>\n{}{}"
       "<p>Type each answer as a number or as you would write it: <code>9 - sqrt(3)</code>, "
       "<code>2√2</code>, <code>1/3</code>, <code>pi/4</code>. Each input says at once whether "
@@ -136,14 +192,15 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
       "</header>\n{}<div id=\"actions\"><button type=\"button\" id=\"download\">Download "
       "answers.json</button><button type=\"button\" id=\"clear\">Clear my answers</button> "
       "<span id=\"saved\" class=\"muted\"></span></div>\n"
-      "<script type=\"application/json\" id=\"handout-data\">{}</script>\n<script>{}</script>\n"
+      "<script type=\"application/json\" id=\"handout-data\">{}</script>\n{}<script>{}</script>\n"
       "</body>\n</html>\n",
-      html_escape(title), kHandoutStyle, html_escape(spec.title),
+      practice ? " 'wasm-unsafe-eval'" : "", html_escape(title), kHandoutStyle,
+      html_escape(spec.title),
       who.empty() ? "" : fmt::format("<p class=\"student\">For {}</p>\n", html_escape(who)),
       spec.due_text.empty()
           ? ""
           : fmt::format("<p class=\"due\">Due {}</p>\n", html_escape(spec.due_text)),
-      sections, script_json(data), kHandoutScript);
+      sections, script_json(data), grader_script, kHandoutScript);
   out.template_json = json::object();
   if (student) out.template_json["student"] = identity_json(*student);
   out.template_json["answers"] = answers;

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "assignments/assignment.h"
@@ -17,10 +18,29 @@ struct Handout {
   nlohmann::json template_json;  // answers-template.json: the submission with every input blank
 };
 
+// What a practice page carries besides the handout: raygrade.js, and the files its grader
+// reads (the assignment and every file of its bank), named so that the bank's paths relative
+// to the assignment still hold in the page's in-memory file system (docs/web.md).
+struct PracticeAssets {
+  std::string grader_js;                                   // raygrade.js
+  std::string assignment;                                  // the assignment's name among `files`
+  std::vector<std::pair<std::string, std::string>> files;  // name, text
+};
+
+// The assets of `spec`'s practice pages. Throws Error when a file cannot be read, or when its
+// bank lies where no relative name reaches (another drive, say).
+PracticeAssets practice_assets(const AssignmentSpec& spec, std::string grader_js);
+
+// Attempts after which a practice page shows a problem's worked solution, if no attempt got
+// full marks before.
+inline constexpr int kPracticeUnlockAfter = 3;
+
 // The handout of `problems` (one student's variant, in the assignment's order) for `student`
-// (nobody: the generic handout, whose downloads name no student).
+// (nobody: the generic handout, whose downloads name no student). With `practice`, the page
+// grades in the browser: a Check button per problem, feedback under the assignment's policy,
+// attempts counted, the worked solution after kPracticeUnlockAfter attempts or full marks.
 Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& problems,
-                     const StudentIdentity* student);
+                     const StudentIdentity* student, const PracticeAssets* practice = nullptr);
 
 // The figure of a problem's statement: its sketch without hit points, rejected candidates or
 // any label that states a result. Empty when the kind draws no sketch.

@@ -432,9 +432,117 @@
   });
   document.getElementById("clear").addEventListener("click", () => {
     if (!confirm("Clear every answer on this page?")) return;
-    try { localStorage.removeItem(storageKey); } catch (e) { /* storage off */ }
+    try { localStorage.removeItem(storageKey); localStorage.removeItem(storageKey + ":practice"); } catch (e) { /* storage off */ }
     location.reload();
   });
+
+  // --- Practice (raygrade handout --practice): graded in this page by raygrade.js, with the
+  // assignment's feedback policy; attempts and results kept in this browser (docs/web.md).
+  function practice() {
+    const setup = data.practice;
+    const progressKey = storageKey + ":practice";
+    let progress = {};
+    try { progress = JSON.parse(localStorage.getItem(progressKey) || "{}") || {}; } catch (e) { progress = {}; }
+    const keep = () => { try { localStorage.setItem(progressKey, JSON.stringify(progress)); } catch (e) { /* storage off */ } };
+    const views = {};
+    let grader = null;
+    const timing = {};
+    window.raygradePractice = {timing: timing, ready: false};
+
+    function showSolution(id, view) {
+      if (view.solution.querySelector("iframe") || !grader) return;
+      view.solution.textContent = "";
+      const html = grader.solveAssignment(setup.files, setup.assignment, data.student.key, "html", id);
+      const frame = el("iframe", {class: "solution", title: "Worked solution", sandbox: ""});
+      frame.srcdoc = html;
+      view.solution.appendChild(el("h3", {text: "Worked solution"}));
+      view.solution.appendChild(frame);
+    }
+    // Points as people read them: 2, 1.5, 0.33.
+    const pts = (x) => String(Number(Number(x).toFixed(2)));
+    function render(id, result) {
+      const view = views[id];
+      const p = progress[id];
+      view.attempts.textContent = "Attempts: " + p.attempts + (p.full ? " \u2014 full marks" : "");
+      view.feedback.textContent = "";
+      if (!result) return;
+      const full = result.score >= result.max_score;
+      view.feedback.className = "practice-feedback " + (full ? "right" : "wrong");
+      view.feedback.appendChild(el("p", {class: "score", text: "Score: " + pts(result.score) + " / " + pts(result.max_score)}));
+      const list = el("ul", {class: "parts"});
+      for (const part of result.parts || []) {
+        const item = el("li", {class: "part " + part.status, "data-part": part.name});
+        const points = part.points !== undefined ? " (" + pts(part.points) + " / " + pts(part.max_points) + ")" : "";
+        item.appendChild(el("strong", {text: part.name + ": " + part.status + points}));
+        for (const line of part.feedback || []) item.appendChild(el("div", {text: line}));
+        list.appendChild(item);
+      }
+      view.feedback.appendChild(list);
+      for (const m of result.mistakes || []) {
+        view.feedback.appendChild(el("p", {class: "mistake", "data-mistake": m.id, text: m.message}));
+      }
+      for (const n of result.notes || []) view.feedback.appendChild(el("p", {class: "note", text: n}));
+      if (p.full || p.attempts >= setup.unlock_after) showSolution(id, view);
+      else view.solution.textContent = "The worked solution opens with full marks or after " + setup.unlock_after + " attempts.";
+    }
+    function checkProblem(id) {
+      const answer = answers()[id];
+      const submission = {answers: {}};
+      if (data.student.identity) submission.student = data.student.identity;
+      if (answer) submission.answers[id] = answer;
+      const start = performance.now();
+      // The files never change while the page is open: the assignment is read once.
+      const out = grader.gradeAssignment(setup.files, setup.assignment, JSON.stringify(submission),
+                                         {cacheKey: "page"});
+      timing.lastCheckMs = performance.now() - start;
+      let graded = null;
+      try { graded = JSON.parse(out).submissions[0]; } catch (e) { graded = null; }
+      const view = views[id];
+      if (!graded || !graded.gradable) {
+        view.feedback.className = "practice-feedback wrong";
+        view.feedback.textContent = "Could not grade: " + (graded && graded.fault ? graded.fault.message : grader.lastErrors().join("; "));
+        return;
+      }
+      const result = graded.problems.find((r) => r.problem === id);
+      const p = progress[id] = progress[id] || {attempts: 0, full: false};
+      p.attempts += 1;
+      p.full = p.full || (result && result.answered && result.score >= result.max_score);
+      p.last = result;
+      keep();
+      render(id, result);
+    }
+    for (const p of data.problems) {
+      const section = document.getElementById("problem-" + p.index);
+      const button = el("button", {type: "button", class: "check", "data-problem": p.id, text: "Check", disabled: ""});
+      const view = {button: button, attempts: el("span", {class: "attempts muted"}),
+                    feedback: el("div", {class: "practice-feedback"}), solution: el("div", {class: "solution-box"})};
+      views[p.id] = view;
+      button.addEventListener("click", () => checkProblem(p.id));
+      section.appendChild(el("div", {class: "practice"}, [button, view.attempts, view.feedback, view.solution]));
+    }
+    const status = el("span", {id: "grader-status", class: "muted", text: "Loading the grader\u2026"});
+    document.getElementById("actions").appendChild(status);
+    const start = performance.now();
+    createRaygrade().then((g) => {
+      grader = g;
+      timing.readyMs = performance.now() - start;
+      status.textContent = "The grader runs in this page; nothing is sent anywhere.";
+      for (const id of Object.keys(views)) {
+        views[id].button.removeAttribute("disabled");
+        if (progress[id]) render(id, progress[id].last);
+      }
+      window.raygradePractice.ready = true;
+      // Read the assignment and draw this student's variants once, right away, so that the
+      // first Check costs the grading alone (and the module's code is compiled by then).
+      setTimeout(() => {
+        const warm = performance.now();
+        const empty = data.student.identity ? {student: data.student.identity, answers: {}} : {answers: {}};
+        grader.gradeAssignment(setup.files, setup.assignment, JSON.stringify(empty), {cacheKey: "page"});
+        timing.warmUpMs = performance.now() - warm;
+      }, 0);
+    }, (e) => { status.textContent = "The grader could not start: " + e; });
+  }
+  if (data.practice) practice();
   restore();
   window.raygradeHandout = {readFormula: readFormula, submission: submission};
 })();

@@ -120,4 +120,13 @@ std::vector<Problem> student_problems(const AssignmentSpec& spec,
   return out;
 }
 
+Bank student_bank(const AssignmentSpec& spec, const std::string& student) {
+  AssignmentBank from = load_assignment_bank(spec);
+  Bank out;
+  out.errors = from.errors;
+  if (from.problems.size() != spec.problems.size()) return out;
+  out.problems = student_problems(spec, from.problems, student);
+  return out;
+}
+
 }  // namespace raygrade

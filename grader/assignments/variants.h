@@ -40,4 +40,9 @@ std::vector<Problem> student_problems(const AssignmentSpec& spec,
                                       const std::vector<const Problem*>& bank_problems,
                                       const std::string& student);
 
+// What `raygrade solve ASSIGNMENT --student KEY` solves: load_assignment_bank, then
+// student_problems; no problems when an id of the assignment is missing from its bank (the
+// errors say which).
+Bank student_bank(const AssignmentSpec& spec, const std::string& student);
+
 }  // namespace raygrade

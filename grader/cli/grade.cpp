@@ -70,26 +70,6 @@ std::string render(const SubmissionGrade& g, const std::string& format, double s
   return json_text(submission_json(g)) + "\n";
 }
 
-// {"submissions": [...]} on standard output, one submission at a time as it is graded, so
-// that a batch of any size is never held whole; the text is what one dump of it would be.
-class JsonArrayStream {
- public:
-  // `item`: json_text(submission_json(g)) of one graded submission.
-  void add(const std::string& item) {
-    std::string indented = first_ ? "{\n  \"submissions\": [\n    " : ",\n    ";
-    for (char c : item) {
-      indented += c;
-      if (c == '\n') indented += "    ";
-    }
-    std::cout << indented;
-    first_ = false;
-  }
-  void finish() { std::cout << (first_ ? "{\n  \"submissions\": []\n}\n" : "\n  ]\n}\n"); }
-
- private:
-  bool first_ = true;
-};
-
 int run_grade(const GradeCliOptions& o) {
   static const std::set<std::string> formats = {"text",         "json", "gradescope",
                                                 "prairielearn", "csv",  "html"};
@@ -193,7 +173,7 @@ int run_grade(const GradeCliOptions& o) {
   // The gradebook on standard output goes a row at a time; a file is written whole at the end.
   std::ostringstream csv_file;
   if (o.format == "csv") (o.out.empty() ? std::cout : csv_file) << gradebook_csv_header(ids);
-  JsonArrayStream json_out;
+  JsonArrayStream json_out(std::cout);
   Progress progress(files.size());
   std::size_t rejected = 0, internal = 0;
   // What a thread makes of one file; the main thread writes them out in the files' order.

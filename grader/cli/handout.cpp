@@ -4,6 +4,9 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
 #include <set>
 
 #include "assignments/roster.h"
@@ -20,6 +23,8 @@ struct HandoutOptions {
   std::string out;
   std::vector<std::string> students;
   std::string roster;
+  bool practice = false;
+  std::string grader_js = "build/web/web/raygrade.js";
 };
 
 void write_handout(const std::filesystem::path& folder, const Handout& h) {
@@ -43,6 +48,24 @@ int run_handout(const HandoutOptions& o) {
     return kExitBadInput;
   }
   for (const auto& id : o.students) students.push_back(StudentIdentity{"", id, ""});
+  std::optional<PracticeAssets> practice;
+  if (o.practice) {
+    std::ifstream in(o.grader_js, std::ios::binary);
+    if (!in) {
+      fmt::print(stderr,
+                 "raygrade handout: cannot read {} (--grader-js; scripts/build-web.sh builds it)\n",
+                 o.grader_js);
+      return kExitBadInput;
+    }
+    std::string js((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    try {
+      practice = practice_assets(spec, std::move(js));
+    } catch (const Error& e) {
+      fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
+      return kExitBadInput;
+    }
+  }
+  const PracticeAssets* assets = practice ? &*practice : nullptr;
   AssignmentBank bank = load_assignment_bank(spec);
   for (const auto& e : bank.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   if (bank.problems.size() != spec.problems.size()) return kExitBadInput;
@@ -50,7 +73,8 @@ int run_handout(const HandoutOptions& o) {
   int status = bank.errors.empty() ? kExitOk : kExitBadInput;
   if (students.empty()) {
     try {
-      write_handout(out, make_handout(spec, student_problems(spec, bank.problems, ""), nullptr));
+      write_handout(out,
+                    make_handout(spec, student_problems(spec, bank.problems, ""), nullptr, assets));
     } catch (const Error& e) {
       fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
       return kExitBadInput;
@@ -69,7 +93,7 @@ int run_handout(const HandoutOptions& o) {
       folder = fmt::format("{}-{}", safe_file_name(key), k);
     try {
       write_handout(out / folder,
-                    make_handout(spec, student_problems(spec, bank.problems, key), &s));
+                    make_handout(spec, student_problems(spec, bank.problems, key), &s, assets));
       index += fmt::format("{},{},{},{}\n", csv_cell(s.id), csv_cell(s.name), csv_cell(s.email),
                            csv_cell(folder));
       ++written;
@@ -95,6 +119,11 @@ Runner setup_handout(CLI::App& sub) {
   sub.add_option("--out", o->out, "the folder to write into")->required();
   sub.add_option("--student", o->students, "a student's id (repeat for more)");
   sub.add_option("--roster", o->roster, "a roster CSV with the columns id, name, email");
+  sub.add_flag("--practice", o->practice,
+               "pages that grade in the browser: a Check button per problem, feedback, the worked "
+               "solution after a few attempts (needs raygrade.js, docs/web.md)");
+  sub.add_option("--grader-js", o->grader_js, "with --practice: raygrade.js")
+      ->capture_default_str();
   return [o] { return run_handout(*o); };
 }
 

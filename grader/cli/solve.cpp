@@ -6,8 +6,7 @@
 #include "assignments/variants.h"
 #include "cli/command.h"
 #include "problems/problem.h"
-#include "reports/json_report.h"
-#include "reports/render.h"
+#include "reports/solve_output.h"
 
 namespace raygrade::cli {
 namespace {
@@ -34,13 +33,7 @@ Bank problems_to_solve(SolveOptions& o) {
     return load_bank(o.paths);
   }
   o.assignment = true;
-  AssignmentSpec spec = load_assignment(o.paths[0]);
-  AssignmentBank from = load_assignment_bank(spec);
-  Bank out;
-  out.errors = from.errors;
-  if (from.problems.size() != spec.problems.size()) return out;
-  out.problems = student_problems(spec, from.problems, o.student);
-  return out;
+  return student_bank(load_assignment(o.paths[0]), o.student);
 }
 
 int run_solve(SolveOptions& o) {
@@ -52,53 +45,11 @@ int run_solve(SolveOptions& o) {
     return kExitBadInput;
   }
   for (const auto& e : bank.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
-  nlohmann::json solutions = nlohmann::json::array();
-  std::vector<Solution> worked;
-  worked.reserve(bank.problems.size());
-  for (const auto& p : bank.problems) {
-    NumberFormat numbers = number_format_for(p, o.precision);
-    try {
-      if (o.format == "json") {
-        nlohmann::json s = {{"id", p.id}, {"kind", p.kind}, {"answer", p.task->answer()}};
-        if (auto level = p.task->level()) s["level"] = *level;
-        // An assignment's problem as the student reads it: their numbers in the text.
-        if (o.assignment) {
-          s["title"] = p.title;
-          s["statement"] = p.statement;
-          if (!p.values.empty()) s["parameters"] = p.values;
-        }
-        if (o.steps) {
-          nlohmann::json all = nlohmann::json::array();
-          for (const auto& m : make_solution(p, o.method, numbers).methods) {
-            for (auto& part : parts_json(m.parts, numbers)) all.push_back(part);
-          }
-          s["derivations"] = all;
-        }
-        solutions.push_back(std::move(s));
-      } else {
-        worked.push_back(make_solution(p, o.method, numbers));
-      }
-    } catch (const Error& e) {
-      Diagnostic d = e.diagnostic();
-      if (d.file.empty()) d.file = p.file;
-      if (d.path.empty()) d.path = p.path;
-      fmt::print(stderr, "{}\n", format_diagnostic(d));
-      bank.errors.push_back(d);
-    }
-  }
-  if (o.format == "json") {
-    nlohmann::json out = {{"solutions", solutions}};
-    if (!bank.errors.empty()) {
-      nlohmann::json errors = nlohmann::json::array();
-      for (const auto& e : bank.errors) errors.push_back(diagnostic_json(e));
-      out["errors"] = errors;
-    }
-    std::cout << out.dump(2) << "\n";
-  } else {
-    std::vector<const Solution*> list;
-    for (const auto& w : worked) list.push_back(&w);
-    std::cout << render_document(*parse_format(o.format), list);
-  }
+  std::vector<Diagnostic> failures;
+  std::string out = solve_output(
+      bank, SolveOutputOptions{o.format, o.method, o.precision, o.steps, o.assignment}, failures);
+  for (const auto& d : failures) fmt::print(stderr, "{}\n", format_diagnostic(d));
+  std::cout << out;
   return bank.errors.empty() ? kExitOk : kExitBadInput;
 }
 

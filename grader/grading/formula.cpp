@@ -3,8 +3,10 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
 
@@ -83,6 +85,18 @@ double Formula::evaluate(const std::vector<double>& values) const {
 }
 
 namespace {
+
+// A decimal number as the whole of `text`, correctly rounded; false when it is not one or is
+// beyond the doubles (to ±∞ or to 0). strtod in the C locale, not std::from_chars, whose
+// floating-point overloads Emscripten's libc++ lacks.
+bool read_double(std::string_view text, double& v) {
+  std::string copy(text);
+  char* end = nullptr;
+  errno = 0;
+  v = std::strtod(copy.c_str(), &end);
+  if (copy.empty() || end != copy.c_str() + copy.size()) return false;
+  return !(errno == ERANGE && (std::isinf(v) || v == 0));
+}
 
 using Op = Formula::Op;
 
@@ -358,8 +372,7 @@ class Parser {
       }
     }
     double v = 0;
-    auto [end, ec] = std::from_chars(text_.data() + start, text_.data() + pos_, v);
-    if (ec != std::errc() || end != text_.data() + pos_) {
+    if (!read_double(text_.substr(start, pos_ - start), v)) {
       fail(start, fmt::format("'{}' is not a number", text_.substr(start, pos_ - start)));
       return;
     }

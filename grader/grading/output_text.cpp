@@ -100,4 +100,18 @@ nlohmann::json submission_json(const SubmissionGrade& g) {
   return j;
 }
 
+void JsonArrayStream::add(const std::string& item) {
+  std::string indented = first_ ? "{\n  \"submissions\": [\n    " : ",\n    ";
+  for (char c : item) {
+    indented += c;
+    if (c == '\n') indented += "    ";
+  }
+  out_ << indented;
+  first_ = false;
+}
+
+void JsonArrayStream::finish() {
+  out_ << (first_ ? "{\n  \"submissions\": []\n}\n" : "\n  ]\n}\n");
+}
+
 }  // namespace raygrade

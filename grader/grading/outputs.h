@@ -3,6 +3,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,20 @@ nlohmann::json submission_json(const SubmissionGrade& g);
 // JSON as text (nlohmann's dump, `indent` spaces, ill-formed UTF-8 replaced) with the C1
 // controls and DEL written as \u escapes too, so that it is safe to show on a terminal.
 std::string json_text(const nlohmann::json& j, int indent = 2);
+
+// {"submissions": [...]} written to `out` one submission at a time as it is graded, so that a
+// batch of any size is never held whole; the text is what one json_text of it would be.
+class JsonArrayStream {
+ public:
+  explicit JsonArrayStream(std::ostream& out) : out_(out) {}
+  // `item`: json_text(submission_json(g)) of one graded submission.
+  void add(const std::string& item);
+  void finish();
+
+ private:
+  std::ostream& out_;
+  bool first_ = true;
+};
 
 // Gradescope's autograder results.json: score, execution_time, output, output_format,
 // visibility and one test per problem (name, score, max_score, status, output, output_format,

@@ -58,20 +58,11 @@ struct Rounded<double> {
 // Mpfr: MPFR's own directed rounding modes.
 template <>
 struct Rounded<Mpfr> {
-  template <typename F>
-  static Mpfr op(F f, const Mpfr& a, const Mpfr& b, bool up) {
-    Mpfr r;
-    f(r.get(), a.get(), b.get(), up ? MPFR_RNDU : MPFR_RNDD);
-    return r;
-  }
-  static Mpfr add(const Mpfr& a, const Mpfr& b, bool up) { return op(mpfr_add, a, b, up); }
-  static Mpfr mul(const Mpfr& a, const Mpfr& b, bool up) { return op(mpfr_mul, a, b, up); }
-  static Mpfr div(const Mpfr& a, const Mpfr& b, bool up) { return op(mpfr_div, a, b, up); }
-  static Mpfr sqrt(const Mpfr& a, bool up) {
-    Mpfr r;
-    mpfr_sqrt(r.get(), a.get(), up ? MPFR_RNDU : MPFR_RNDD);
-    return r;
-  }
+  static Rounding mode(bool up) { return up ? Rounding::kUp : Rounding::kDown; }
+  static Mpfr add(const Mpfr& a, const Mpfr& b, bool up) { return Mpfr::add(a, b, mode(up)); }
+  static Mpfr mul(const Mpfr& a, const Mpfr& b, bool up) { return Mpfr::mul(a, b, mode(up)); }
+  static Mpfr div(const Mpfr& a, const Mpfr& b, bool up) { return Mpfr::div(a, b, mode(up)); }
+  static Mpfr sqrt(const Mpfr& a, bool up) { return Mpfr::sqrt(a, mode(up)); }
 };
 
 // DoubleDouble operations err by at most 15u² = 15·2^-106 < 2^-102 relative (the division,

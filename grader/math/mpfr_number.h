@@ -1,10 +1,16 @@
 // Mpfr: an MPFR number at the precision of the current MpfrPrecision scope, with the
 // operators the intersection templates use (ground truth and the top of the precision ladder).
+// Built with RAYGRADE_SOFT_MPFR (WebAssembly, where there is no MPFR), the same class computes
+// with SoftFloat instead, rounding every operation the way MPFR does (docs/web.md).
 #pragma once
 
-#include <mpfr.h>
-
 #include <utility>
+
+#include "math/soft_float.h"
+
+#if !RAYGRADE_SOFT_MPFR
+#include <mpfr.h>
+#endif
 
 namespace raygrade {
 
@@ -23,6 +29,68 @@ class MpfrPrecision {
  private:
   int saved_;
 };
+
+#if RAYGRADE_SOFT_MPFR
+
+// Every operation rounds its exact result once to the current precision, as MPFR rounds to
+// the precision of a destination created in the same scope.
+class Mpfr {
+ public:
+  Mpfr() = default;
+  Mpfr(double x) : v_(x, mpfr_precision()) {}  // NOLINT
+
+  explicit operator double() const { return v_.to_double(Rounding::kNearest); }
+  double to_double(Rounding r) const { return v_.to_double(r); }
+
+  static Mpfr add(const Mpfr& a, const Mpfr& b, Rounding r) {
+    return Mpfr(SoftFloat::add(a.v_, b.v_, mpfr_precision(), r));
+  }
+  static Mpfr mul(const Mpfr& a, const Mpfr& b, Rounding r) {
+    return Mpfr(SoftFloat::mul(a.v_, b.v_, mpfr_precision(), r));
+  }
+  static Mpfr div(const Mpfr& a, const Mpfr& b, Rounding r) {
+    return Mpfr(SoftFloat::div(a.v_, b.v_, mpfr_precision(), r));
+  }
+  static Mpfr sqrt(const Mpfr& a, Rounding r) {
+    return Mpfr(SoftFloat::sqrt(a.v_, mpfr_precision(), r));
+  }
+
+  friend Mpfr operator+(const Mpfr& a, const Mpfr& b) { return add(a, b, Rounding::kNearest); }
+  friend Mpfr operator-(const Mpfr& a, const Mpfr& b) {
+    return Mpfr(SoftFloat::sub(a.v_, b.v_, mpfr_precision(), Rounding::kNearest));
+  }
+  friend Mpfr operator*(const Mpfr& a, const Mpfr& b) { return mul(a, b, Rounding::kNearest); }
+  friend Mpfr operator/(const Mpfr& a, const Mpfr& b) { return div(a, b, Rounding::kNearest); }
+  friend Mpfr operator-(const Mpfr& a) { return Mpfr(SoftFloat::neg(a.v_, mpfr_precision())); }
+  Mpfr& operator+=(const Mpfr& b) { return *this = *this + b; }
+  Mpfr& operator-=(const Mpfr& b) { return *this = *this - b; }
+  Mpfr& operator*=(const Mpfr& b) { return *this = *this * b; }
+
+  friend bool operator==(const Mpfr& a, const Mpfr& b) { return order(a, b) == 0; }
+  friend bool operator<(const Mpfr& a, const Mpfr& b) { return order(a, b) == -1; }
+  friend bool operator>(const Mpfr& a, const Mpfr& b) { return order(a, b) == 1; }
+  friend bool operator<=(const Mpfr& a, const Mpfr& b) { return order(a, b) <= 0; }
+  friend bool operator>=(const Mpfr& a, const Mpfr& b) {
+    int o = order(a, b);
+    return o == 0 || o == 1;
+  }
+
+  friend Mpfr sqrt(const Mpfr& a) { return sqrt(a, Rounding::kNearest); }
+  friend Mpfr abs(const Mpfr& a) { return Mpfr(SoftFloat::abs(a.v_, mpfr_precision())); }
+  friend bool isfinite(const Mpfr& a) { return a.v_.is_finite(); }
+
+ private:
+  explicit Mpfr(SoftFloat v) : v_(std::move(v)) {}
+  // −1, 0 or 1; 2 when either is NaN (every comparison is then false, as MPFR's).
+  static int order(const Mpfr& a, const Mpfr& b) {
+    bool unordered = false;
+    int c = SoftFloat::compare(a.v_, b.v_, unordered);
+    return unordered ? 2 : c;
+  }
+  SoftFloat v_;
+};
+
+#else
 
 class Mpfr {
  public:
@@ -47,8 +115,18 @@ class Mpfr {
   ~Mpfr() { mpfr_clear(v_); }
 
   explicit operator double() const { return mpfr_get_d(v_, MPFR_RNDN); }
+  double to_double(Rounding r) const { return mpfr_get_d(v_, mode(r)); }
   mpfr_ptr get() { return v_; }
   mpfr_srcptr get() const { return v_; }
+
+  static Mpfr add(const Mpfr& a, const Mpfr& b, Rounding r) { return apply(mpfr_add, a, b, r); }
+  static Mpfr mul(const Mpfr& a, const Mpfr& b, Rounding r) { return apply(mpfr_mul, a, b, r); }
+  static Mpfr div(const Mpfr& a, const Mpfr& b, Rounding r) { return apply(mpfr_div, a, b, r); }
+  static Mpfr sqrt(const Mpfr& a, Rounding r) {
+    Mpfr s;
+    mpfr_sqrt(s.v_, a.v_, mode(r));
+    return s;
+  }
 
   friend Mpfr operator+(const Mpfr& a, const Mpfr& b) { return apply(mpfr_add, a, b); }
   friend Mpfr operator-(const Mpfr& a, const Mpfr& b) { return apply(mpfr_sub, a, b); }
@@ -82,13 +160,18 @@ class Mpfr {
   friend bool isfinite(const Mpfr& a) { return mpfr_number_p(a.v_); }
 
  private:
+  static mpfr_rnd_t mode(Rounding r) {
+    return r == Rounding::kUp ? MPFR_RNDU : r == Rounding::kDown ? MPFR_RNDD : MPFR_RNDN;
+  }
   template <typename F>
-  static Mpfr apply(F f, const Mpfr& a, const Mpfr& b) {
+  static Mpfr apply(F f, const Mpfr& a, const Mpfr& b, Rounding rounding = Rounding::kNearest) {
     Mpfr r;
-    f(r.v_, a.v_, b.v_, MPFR_RNDN);
+    f(r.v_, a.v_, b.v_, mode(rounding));
     return r;
   }
   mpfr_t v_;
 };
+
+#endif
 
 }  // namespace raygrade

@@ -1,0 +1,55 @@
+// SoftFloat: binary floating point of any precision in portable C++, correctly rounded (to
+// nearest even, down or up), for builds without MPFR (WebAssembly; docs/web.md).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace raygrade {
+
+enum class Rounding { kNearest, kDown, kUp };
+
+// A value is zero, ±∞, NaN or m·2^e with m a natural number whose lowest bit is set (one
+// representation per value). The operations take the precision of their result in bits, as
+// MPFR's do from their destination, and round the exact result once, as MPFR does; the
+// exponent is unbounded (no overflow or underflow before a conversion to double).
+class SoftFloat {
+ public:
+  SoftFloat() = default;  // +0
+  SoftFloat(double x, int precision, Rounding rounding = Rounding::kNearest);
+  static SoftFloat nan();
+
+  static SoftFloat add(const SoftFloat& a, const SoftFloat& b, int precision, Rounding r);
+  static SoftFloat sub(const SoftFloat& a, const SoftFloat& b, int precision, Rounding r);
+  static SoftFloat mul(const SoftFloat& a, const SoftFloat& b, int precision, Rounding r);
+  static SoftFloat div(const SoftFloat& a, const SoftFloat& b, int precision, Rounding r);
+  static SoftFloat sqrt(const SoftFloat& a, int precision, Rounding r);
+  // −a and |a|, rounded to `precision`.
+  static SoftFloat neg(const SoftFloat& a, int precision);
+  static SoftFloat abs(const SoftFloat& a, int precision);
+
+  // The nearest double below or above (kDown, kUp) or the nearest (kNearest), with
+  // subnormals and overflow as IEEE 754 rounds them.
+  double to_double(Rounding r) const;
+
+  bool is_nan() const { return kind_ == Kind::kNaN; }
+  bool is_finite() const { return kind_ == Kind::kZero || kind_ == Kind::kFinite; }
+
+  // −1, 0 or 1; `unordered` when either is NaN (and then 0 is returned).
+  static int compare(const SoftFloat& a, const SoftFloat& b, bool& unordered);
+
+ private:
+  enum class Kind : std::uint8_t { kZero, kFinite, kInf, kNaN };
+  // Rounds ±(m + a fraction, when `sticky`)·2^e to `precision` bits. With `sticky`, m must
+  // hold at least precision + 2 bits.
+  static SoftFloat round(bool negative, std::vector<std::uint32_t> m, std::int64_t e, bool sticky,
+                         int precision, Rounding r);
+  static SoftFloat special(Kind kind, bool negative);
+
+  Kind kind_ = Kind::kZero;
+  bool negative_ = false;
+  std::vector<std::uint32_t> m_;  // little-endian 32-bit limbs, no zero limb on top
+  std::int64_t e_ = 0;
+};
+
+}  // namespace raygrade

@@ -1,0 +1,167 @@
+// raygrade.js against the native raygrade, byte for byte: every file of the bundled bank
+// solved (answers as JSON, and the worked solution in md, html and txt), the whole bank at
+// once, every sample submission graded against the whole bank, and the accuracy study's hard
+// cases (which need the precision ladder's top, SoftFloat in the browser, MPFR natively) as
+// one bank; the example assignment's worked solutions and grades. The standard error lines and
+// exit codes are compared too.
+// Usage: node tests/web_node_test.js RAYGRADE_JS NATIVE_RAYGRADE SOURCE_DIR
+'use strict';
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+const {spawnSync} = require('child_process');
+
+const [raygradeJs, native, sourceDir] = process.argv.slice(2);
+if (!sourceDir) {
+  console.error('usage: node web_node_test.js RAYGRADE_JS NATIVE_RAYGRADE SOURCE_DIR');
+  process.exit(2);
+}
+process.chdir(sourceDir);
+
+// The .json files under `folder`, in the order raygrade lists a folder (sorted paths).
+function jsonFiles(folder) {
+  const out = [];
+  for (const entry of fs.readdirSync(folder, {withFileTypes: true})) {
+    const p = path.join(folder, entry.name);
+    if (entry.isDirectory()) out.push(...jsonFiles(p));
+    else if (entry.name.endsWith('.json')) out.push(p);
+  }
+  return out.sort();
+}
+
+function runNative(args, cwd = '.') {
+  const r = spawnSync(path.resolve(native), args, {encoding: 'utf8', maxBuffer: 1 << 30, cwd});
+  if (r.error) throw r.error;
+  const errors = r.stderr.split('\n').filter((line) => line !== '');
+  return {out: r.stdout, errors, status: r.status};
+}
+
+let failures = 0, compared = 0;
+function compare(what, web, errors, status, expected) {
+  ++compared;
+  const problems = [];
+  if (web !== expected.out) {
+    let i = 0;
+    while (i < web.length && web[i] === expected.out[i]) ++i;
+    problems.push(`output differs at byte ${i}: native ${JSON.stringify(expected.out.slice(i, i + 80))}` +
+                  `, raygrade.js ${JSON.stringify(web.slice(i, i + 80))}`);
+  }
+  if (JSON.stringify(errors) !== JSON.stringify(expected.errors)) {
+    problems.push(`standard error: native ${JSON.stringify(expected.errors)}, raygrade.js ${JSON.stringify(errors)}`);
+  }
+  if (status !== expected.status) problems.push(`exit code: native ${expected.status}, raygrade.js ${status}`);
+  if (problems.length) {
+    ++failures;
+    console.log(`FAIL ${what}\n  ${problems.join('\n  ')}`);
+  }
+}
+
+// The hard cases of the accuracy study as one bank of intersect problems.
+function hardCaseBank() {
+  const cases = JSON.parse(fs.readFileSync('tests/data/hard_cases.json', 'utf8')).cases;
+  const objects = {
+    sphere: (c) => ({type: 'sphere', center: c.points[0], radius: c.radius}),
+    plane: (c) => ({type: 'plane', normal: c.points[0], point: c.points[1]}),
+    triangle: (c) => ({type: 'triangle', vertices: c.points}),
+    polygon: (c) => ({type: 'polygon', vertices: c.points}),
+    cylinder: (c) => ({type: 'cylinder', base: c.points[0], axis: c.points[1], radius: c.radius}),
+    box: (c) => ({type: 'box', min: c.points[0], max: c.points[1]}),
+  };
+  const problems = cases.map((c) => ({
+    id: c.id, kind: 'intersect', ray: {origin: c.origin, direction: c.direction},
+    object: objects[c.primitive](c)}));
+  return JSON.stringify({problems}, null, 1);
+}
+
+require(path.resolve(raygradeJs))().then((raygrade) => {
+  const bank = jsonFiles('problems');
+  const texts = {};
+  for (const f of bank) texts[f] = fs.readFileSync(f, 'utf8');
+  const one = (f) => ({[f]: texts[f]});
+
+  // Each file: the answers, and the worked solution in every format.
+  for (const f of bank) {
+    compare(`solve ${f}`, raygrade.solve(one(f)), raygrade.lastErrors(), raygrade.lastStatus(),
+            runNative(['solve', f, '--format', 'json']));
+    for (const format of ['md', 'html', 'txt']) {
+      compare(`solve ${f} --format ${format}`, raygrade.solution(one(f), format),
+              raygrade.lastErrors(), raygrade.lastStatus(),
+              runNative(['solve', f, '--format', format]));
+    }
+  }
+  // The whole bank at once.
+  compare('solve problems', raygrade.solve(texts), raygrade.lastErrors(), raygrade.lastStatus(),
+          runNative(['solve', 'problems', '--format', 'json']));
+  // Every sample submission against the whole bank.
+  for (const s of jsonFiles('submissions')) {
+    const web = raygrade.grade(texts, fs.readFileSync(s, 'utf8'), s);
+    compare(`grade ${s}`, web, raygrade.lastErrors(), raygrade.lastStatus(),
+            runNative(['grade', '--problems', 'problems', '--format', 'json', s]));
+  }
+  // The example assignment: one student's worked solutions, and every sample submission graded
+  // as that assignment's (before and after its due date, the second time from the cache).
+  const assignment = 'assignments/homework-rays.json';
+  const withAssignment = Object.assign({[assignment]: fs.readFileSync(assignment, 'utf8')}, texts);
+  for (const format of ['json', 'html']) {
+    compare(`solve ${assignment} --student s001 --format ${format}`,
+            raygrade.solveAssignment(withAssignment, assignment, 's001', format),
+            raygrade.lastErrors(), raygrade.lastStatus(),
+            runNative(['solve', assignment, '--student', 's001', '--format', format]));
+  }
+  for (const when of ['2026-11-24T00:00:00Z', '2026-12-24T00:00:00Z']) {
+    for (const s of jsonFiles('submissions')) {
+      for (const cacheKey of ['', 'example']) {
+        const web = raygrade.gradeAssignment(withAssignment, assignment, fs.readFileSync(s, 'utf8'),
+                                             {now: Date.parse(when) / 1000, submissionName: s, cacheKey});
+        compare(`grade --assignment --now ${when} ${s} (cache key "${cacheKey}")`, web,
+                raygrade.lastErrors(), raygrade.lastStatus(),
+                runNative(['grade', '--assignment', assignment, '--now', when, '--format', 'json', s]));
+      }
+    }
+  }
+  // The hard cases, where the answer needs double-double, the top of the ladder or an exact
+  // decision on a boundary; and a problem file with a fault, for the diagnostics.
+  const scratch = fs.mkdtempSync(path.join(os.tmpdir(), 'raygrade-web-'));
+  const hard = path.join(scratch, 'hard-cases.json');
+  fs.writeFileSync(hard, hardCaseBank());
+  compare('solve hard cases', raygrade.solve({[hard.slice(1)]: fs.readFileSync(hard, 'utf8')}),
+          raygrade.lastErrors(), raygrade.lastStatus(),
+          runNative(['solve', hard.slice(1), '--format', 'json'], '/'));
+  const levels = {};
+  for (const s of JSON.parse(raygrade.solve({'hard.json': fs.readFileSync(hard, 'utf8')})).solutions) {
+    levels[s.level] = (levels[s.level] || 0) + 1;
+  }
+  fs.rmSync(scratch, {recursive: true});
+  const broken = '{"problems": [{"id": "p", "kind": "intersect", "ray": {"origin": [0, 0, 0],\n' +
+                 '  "direction": [0, 0, 0]}, "object": {"type": "sphere", "radius": 1}, "colour": 1}]}';
+  const brokenFile = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'raygrade-web-')), 'broken.json');
+  fs.writeFileSync(brokenFile, broken);
+  compare('solve a faulty file', raygrade.solve({[brokenFile.slice(1)]: broken}),
+          raygrade.lastErrors(), raygrade.lastStatus(),
+          runNative(['solve', brokenFile.slice(1), '--format', 'json'], '/'));
+  fs.rmSync(path.dirname(brokenFile), {recursive: true});
+  // Misuse of the API is an error that says what is wrong, never silently ignored.
+  const refused = (what, call, words) => {
+    ++compared;
+    try {
+      call();
+    } catch (e) {
+      if (String(e.message).includes(words)) return;
+      console.log(`FAIL ${what}: the error says ${JSON.stringify(e.message)}`);
+      ++failures;
+      return;
+    }
+    console.log(`FAIL ${what}: no error`);
+    ++failures;
+  };
+  refused('an unknown option', () => raygrade.gradeAssignment(withAssignment, assignment, '{}',
+                                                               {cachekey: 'x'}), 'unknown option "cachekey"');
+  refused('a file name outside the folder', () => raygrade.solve({'../p.json': '{}'}), 'must be relative');
+  refused('an unknown format', () => raygrade.solution(texts[bank[0]], 'pdf'), 'unknown format "pdf"');
+  console.log(`hard cases by level: ${JSON.stringify(levels)}`);
+  console.log(`${compared - failures} of ${compared} outputs identical`);
+  process.exit(failures ? 1 : 0);
+}).catch((e) => {
+  console.error(e);
+  process.exit(1);
+});
