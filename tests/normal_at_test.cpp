@@ -97,6 +97,17 @@ TEST(NormalKind, PointOffTheSurfaceSaysHowFar) {
   EXPECT_NE(e.find("it is 0.7071 from the surface point (1, 1, 0)"), std::string::npos) << e;
 }
 
+// A primitive the normal kind does not take is the problem's fault, named at its type, not
+// an internal error.
+TEST(NormalKind, APrimitiveItDoesNotTakeIsAnErrorAtItsType) {
+  std::string e = error_of(
+      R"({"type": "disk", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1})", "[0.5, 0, 0]");
+  EXPECT_NE(e.find("/object/type: unknown-type: the normal kind takes a sphere, plane"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(e.find("not a disk"), std::string::npos) << e;
+}
+
 TEST(NormalKind, EdgesAndRimsHaveNoNormal) {
   std::string e =
       error_of(R"({"type": "box", "min": [-1, -1, -1], "max": [1, 1, 1]})", "[1, 1, 0]");

@@ -9,6 +9,7 @@
 #include "derivation/number_format.h"
 #include "kinds/intersect.h"
 #include "kinds/sketch.h"
+#include "shapes/flat.h"
 #include "shapes/transformed.h"
 
 namespace raygrade {
@@ -31,17 +32,9 @@ Vec3d nearest_on_segment(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
   return a + s * ab;
 }
 
-// Newell's normal of a polygon: the sum of v_i × v_(i+1), by vertex order (as the polygon
-// and the triangle orient theirs).
-Vec3d newell(const std::vector<Vec3d>& v) {
-  Vec3d n{};
-  for (std::size_t i = 0; i < v.size(); ++i) n = n + cross(v[i], v[(i + 1) % v.size()]);
-  return n;
-}
-
 // A flat polygon: p projected on its plane, kept when inside, else the nearest edge point.
 SurfacePoint nearest_flat(const std::vector<Vec3d>& v, const Vec3d& p) {
-  Vec3d n = newell(v);
+  Vec3d n = newell_normal(v);
   Vec3d u = normalized(n);
   Vec3d q = p - dot(p - v[0], u) * u;
   // Inside: q is on the inner side of every edge when the polygon is convex; in general, by
@@ -129,7 +122,7 @@ SurfacePoint nearest_box(const nlohmann::json& j, const Vec3d& p, double tie) {
 
 }  // namespace
 
-SurfacePoint nearest_surface(const Shape& primitive, const Vec3d& p) {
+std::optional<SurfacePoint> nearest_surface(const Shape& primitive, const Vec3d& p) {
   nlohmann::json j = primitive.to_json();
   std::string type = j.at("type");
   double tie = kOnSurfaceRelative * std::max(1.0, primitive.extent());
@@ -138,18 +131,18 @@ SurfacePoint nearest_surface(const Shape& primitive, const Vec3d& p) {
     double r = j.at("radius").get<double>();
     Vec3d pc = p - c;
     Vec3d dir = length(pc) > 0 ? normalized(pc) : Vec3d{0, 0, 1};
-    return {c + r * dir, pc, "", ""};
+    return SurfacePoint{c + r * dir, pc, "", ""};
   }
   if (type == "plane") {
     Vec3d n = vec_of(j.at("normal"));
     Vec3d on = j.contains("point") ? vec_of(j.at("point"))
                                    : -j.at("d").get<double>() / length_squared(n) * n;
-    return {p - dot(p - on, n) / length_squared(n) * n, n, "", ""};
+    return SurfacePoint{p - dot(p - on, n) / length_squared(n) * n, n, "", ""};
   }
   if (type == "triangle" || type == "polygon") return nearest_flat(vertices_of(j), p);
   if (type == "cylinder") return nearest_cylinder(j, p, tie);
   if (type == "box") return nearest_box(j, p, tie);
-  throw std::logic_error("normal: no nearest point for type " + type);
+  return std::nullopt;
 }
 
 const Shape& NormalTask::primitive() const {
@@ -167,7 +160,14 @@ std::unique_ptr<Task> NormalTask::read(const Cursor& problem) {
                                            problem.at("point").vec3());
   const Transform* m = task->transform();
   Vec3d p = m ? m->to_object.point(task->point_) : task->point_;
-  SurfacePoint s = nearest_surface(task->primitive(), p);
+  std::optional<SurfacePoint> found = nearest_surface(task->primitive(), p);
+  if (!found) {
+    problem.at("object").at("type").fail(
+        fmt::format("the normal kind takes a {}; not a {}", fmt::join(kNormalKindTypes, ", "),
+                    task->primitive().type()),
+        "unknown-type");
+  }
+  const SurfacePoint& s = *found;
   Vec3d nearest = m ? m->to_world.point(s.nearest) : s.nearest;
   double off = length(nearest - task->point_);
   double tol = kOnSurfaceRelative * std::max(1.0, task->object_->extent());
@@ -198,14 +198,14 @@ std::unique_ptr<Task> NormalTask::read(const Cursor& problem) {
 Vec3d NormalTask::world_normal() const {
   const Transform* m = transform();
   Vec3d p = m ? m->to_object.point(point_) : point_;
-  Vec3d n = normalized(nearest_surface(primitive(), p).normal);
+  Vec3d n = normalized(nearest_surface(primitive(), p)->normal);
   return m ? normalized(m->normal_to_world.linear(n)) : n;
 }
 
 std::optional<Vec3d> NormalTask::normal_by_matrix() const {
   const Transform* m = transform();
   if (!m) return std::nullopt;
-  Vec3d n = normalized(nearest_surface(primitive(), m->to_object.point(point_)).normal);
+  Vec3d n = normalized(nearest_surface(primitive(), m->to_object.point(point_))->normal);
   Vec3d wrong = normalized(m->to_world.linear(n));
   if (length(wrong - world_normal()) <= kOnSurfaceRelative) return std::nullopt;
   return wrong;
@@ -220,7 +220,7 @@ nlohmann::json NormalTask::answer() const {
   nlohmann::json j = {{"normal", vec_json(world_normal())}};
   if (const Transform* m = transform()) {
     j["object_normal"] =
-        vec_json(normalized(nearest_surface(primitive(), m->to_object.point(point_)).normal));
+        vec_json(normalized(nearest_surface(primitive(), m->to_object.point(point_))->normal));
   }
   return j;
 }
@@ -248,7 +248,7 @@ std::vector<SolutionPart> NormalTask::derive(std::string_view /*method*/,
   nlohmann::json j = primitive().to_json();
   std::string type = j.at("type");
   Vec3d p = m ? m->to_object.point(point_) : point_;
-  SurfacePoint s = nearest_surface(primitive(), p);
+  SurfacePoint s = *nearest_surface(primitive(), p);
   std::string N = m ? "N_obj" : "N";
   std::string Nd = m ? "N'" : "N";
   if (type == "sphere") {

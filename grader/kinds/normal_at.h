@@ -4,6 +4,10 @@
 // that says how far off it is.
 #pragma once
 
+#include <array>
+#include <optional>
+#include <string_view>
+
 #include "problems/problem.h"
 #include "shapes/shape.h"
 #include "shapes/transform.h"
@@ -23,8 +27,13 @@ struct SurfacePoint {
   std::string other;  // a second part as near (a rim or an edge): the normal is not defined
 };
 
-// The part of `primitive`'s surface nearest to `p` (object space), read from its parameters.
-SurfacePoint nearest_surface(const Shape& primitive, const Vec3d& p);
+// The primitives the normal kind takes.
+inline constexpr std::array<std::string_view, 6> kNormalKindTypes = {
+    "sphere", "plane", "triangle", "polygon", "cylinder", "box"};
+
+// The part of `primitive`'s surface nearest to `p` (object space), read from its parameters;
+// nothing for a primitive the normal kind does not take.
+std::optional<SurfacePoint> nearest_surface(const Shape& primitive, const Vec3d& p);
 
 class NormalTask final : public Task {
  public:
