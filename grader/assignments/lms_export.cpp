@@ -6,7 +6,6 @@
 
 #include <fstream>
 #include <set>
-#include <sstream>
 
 #include "core/atomic_file.h"
 #include "json/cursor.h"
@@ -70,17 +69,15 @@ exit 0
 }  // namespace
 
 std::string read_file_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (!in || s.fail()) {
+  std::optional<std::string> bytes = read_whole_file(path);
+  if (!bytes) {
     Diagnostic d;
     d.file = path.string();
     d.message = "cannot read the file";
     d.code = "unreadable";
     throw Error(d);
   }
-  return s.str();
+  return std::move(*bytes);
 }
 
 std::vector<StudentIdentity> read_gradescope_users(const std::string& path) {

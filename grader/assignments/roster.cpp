@@ -4,11 +4,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "assignments/variants.h"
+#include "core/atomic_file.h"
 
 namespace raygrade {
 namespace {
@@ -78,11 +77,9 @@ std::string trimmed(std::string s) {
 }  // namespace
 
 std::vector<StudentIdentity> load_roster(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, 0, 0, "cannot open the roster");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  std::string text = buffer.str();
+  std::optional<std::string> bytes = read_whole_file(path);
+  if (!bytes) fail(path, 0, 0, "cannot open the roster");
+  std::string text = std::move(*bytes);
   if (text.size() > kMaxRosterBytes) fail(path, 0, 0, "the roster is larger than 4 MiB");
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // a spreadsheet's byte order mark
   auto rows = csv_rows(text, path);

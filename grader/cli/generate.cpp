@@ -10,6 +10,7 @@
 #include "core/atomic_file.h"
 #include "core/escape.h"
 #include "json/cursor.h"
+#include "reports/render.h"
 #include "reports/solutions_folder.h"
 
 namespace raygrade::cli {
@@ -102,7 +103,7 @@ Runner setup_generate(CLI::App& sub) {
                  "the bank as JSON on standard output)");
   sub.add_option("--solution-format", o->formats,
                  "with --out: formats of the worked solutions (default: md)")
-      ->check(CLI::IsMember({"md", "html", "txt", "json"}))
+      ->check(CLI::IsMember(solution_format_names()))
       ->delimiter(',');
   return [o] { return run_generate(*o); };
 }

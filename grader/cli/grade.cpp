@@ -55,28 +55,14 @@ class Progress {
   bool on_;
 };
 
-std::string extension(const std::string& format) {
-  if (format == "text") return ".txt";
-  if (format == "html") return ".html";
-  return ".json";
-}
-
-std::string render(const SubmissionGrade& g, const std::string& format, double seconds,
-                   const SubmissionGrade* worked = nullptr) {
-  if (format == "text") return text_report(g);
-  if (format == "html") return feedback_html(g);
-  if (format == "gradescope") return json_text(gradescope_json(g, seconds, worked)) + "\n";
-  if (format == "prairielearn") return json_text(prairielearn_json(g)) + "\n";
-  return json_text(submission_json(g)) + "\n";
-}
-
 int run_grade(const GradeCliOptions& o) {
-  static const std::set<std::string> formats = {"text",         "json", "gradescope",
-                                                "prairielearn", "csv",  "html"};
-  if (!formats.count(o.format)) {
-    fmt::print(stderr, "raygrade grade: unknown format '{}'\n", o.format);
+  const GradeFormat* format = find_grade_format(o.format);
+  if (!format) {
+    fmt::print(stderr, "raygrade grade: unknown format '{}' ({})\n", o.format,
+               grade_format_names());
     return kExitBadInput;
   }
+  bool gradebook = format->layout == GradeLayout::kGradebook;
   // What grades one file, and the problems in gradebook order: the bank's, or an assignment's.
   std::function<SubmissionGrade(const std::string&)> grade_one;
   std::vector<std::string> ids;
@@ -143,7 +129,7 @@ int run_grade(const GradeCliOptions& o) {
     spec_grader = std::make_unique<AssignmentGrader>(*spec, spec_bank->problems, options);
     ids = spec_grader->problem_ids();
     grade_one = [&](const std::string& f) { return spec_grader->grade_file(f); };
-    if (o.format == "gradescope") {
+    if (format->full_feedback_too) {
       // The full feedback too, which Gradescope shows after the due date.
       options.feedback = FeedbackPolicy::kFull;
       worked_grader = std::make_unique<AssignmentGrader>(*spec, spec_bank->problems, options);
@@ -154,8 +140,7 @@ int run_grade(const GradeCliOptions& o) {
   std::vector<std::string> files = submission_files(o.submissions, errors);
   for (const auto& e : errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   bool single = files.size() == 1 && errors.empty();
-  bool needs_out = (o.format == "gradescope" || o.format == "prairielearn" || o.format == "html");
-  if (needs_out && !single && o.out.empty()) {
+  if (format->needs_out && !single && o.out.empty()) {
     fmt::print(stderr, "raygrade grade: --format {} with several submissions needs --out DIR\n",
                o.format);
     return kExitBadInput;
@@ -172,7 +157,7 @@ int run_grade(const GradeCliOptions& o) {
   std::set<std::string> names;
   // The gradebook on standard output goes a row at a time; a file is written whole at the end.
   std::ostringstream csv_file;
-  if (o.format == "csv") (o.out.empty() ? std::cout : csv_file) << gradebook_csv_header(ids);
+  if (gradebook) (o.out.empty() ? std::cout : csv_file) << gradebook_csv_header(ids);
   JsonArrayStream json_out(std::cout);
   Progress progress(files.size());
   std::size_t rejected = 0, internal = 0;
@@ -181,7 +166,7 @@ int run_grade(const GradeCliOptions& o) {
     SubmissionGrade grade;
     std::string text;  // the gradebook row, the submission's JSON, or the file or page rendered
   };
-  bool json_stream = o.format == "json" && o.out.empty();
+  bool json_stream = format->layout == GradeLayout::kJsonArray && o.out.empty();
   auto grade_at = [&](std::size_t i) {
     auto start = std::chrono::steady_clock::now();
     Graded r{grade_one(files[i]), {}};
@@ -189,12 +174,12 @@ int run_grade(const GradeCliOptions& o) {
     if (worked_grader) worked = worked_grader->grade_file(files[i]);
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (o.format == "csv")
+    if (gradebook)
       r.text = gradebook_csv_row(r.grade, ids);
     else if (json_stream)
       r.text = json_text(submission_json(r.grade));
     else
-      r.text = render(r.grade, o.format, seconds, worked ? &*worked : nullptr);
+      r.text = format->render(r.grade, seconds, worked ? &*worked : nullptr);
     return r;
   };
   // A window of files at a time, so that memory stays bounded whatever the batch's size.
@@ -209,21 +194,20 @@ int run_grade(const GradeCliOptions& o) {
       if (!g.gradable) {
         ++rejected;
         internal += g.fault && g.fault->code == "internal";
-        if (!single || o.format == "csv") fmt::print(stderr, "{}\n", format_diagnostic(*g.fault));
+        if (!single || gradebook) fmt::print(stderr, "{}\n", format_diagnostic(*g.fault));
       }
       for (const auto& d : g.findings) fmt::print(stderr, "{}\n", format_diagnostic(d));
-      if (o.format == "csv") {
+      if (gradebook) {
         (o.out.empty() ? std::cout : csv_file) << graded[k].text;
       } else if (!o.out.empty()) {
-        std::string base = single && (o.format == "gradescope" || o.format == "prairielearn")
-                               ? "results"
-                               : safe_file_name(g.student);
+        std::string base = single && format->results_file ? "results" : safe_file_name(g.student);
         std::string name = base;
         for (int n = 2; !names.insert(name).second; ++n) name = fmt::format("{}-{}", base, n);
         // Each file appears whole or not at all (rename); the batch reaches the disk in one
         // flush at the end instead of one per file.
-        write_file_atomically(std::filesystem::path(o.out) / (name + extension(o.format)),
-                              graded[k].text, false);
+        write_file_atomically(
+            std::filesystem::path(o.out) / (name + std::string(format->extension)), graded[k].text,
+            false);
       } else if (json_stream) {
         json_out.add(graded[k].text);
       } else {
@@ -232,9 +216,11 @@ int run_grade(const GradeCliOptions& o) {
       progress.step(begin + k + 1);
     }
   }
-  if (o.format == "csv" && !o.out.empty())
-    write_file_atomically(std::filesystem::path(o.out) / "gradebook.csv", csv_file.str(), false);
-  if (o.format == "json" && o.out.empty()) json_out.finish();
+  if (gradebook && !o.out.empty())
+    write_file_atomically(
+        std::filesystem::path(o.out) / ("gradebook" + std::string(format->extension)),
+        csv_file.str(), false);
+  if (json_stream) json_out.finish();
   std::cout.flush();
   if (!o.out.empty()) {
     flush_folder(o.out);
@@ -280,8 +266,9 @@ Runner setup_grade(CLI::App& sub) {
           ->allow_extra_args(false)
           ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   sub.add_option("submissions", o->submissions, "submission files or folders")->required();
-  sub.add_option("--format", o->format,
-                 "text, json, gradescope, prairielearn, csv (a gradebook) or html");
+  std::string formats;
+  for (const auto& f : grade_formats()) formats += fmt::format("\n  {:<13} {}", f.name, f.summary);
+  sub.add_option("--format", o->format, "one of (default: text):" + formats);
   sub.add_option("--out", o->out, "a folder for one file per student (or gradebook.csv)");
   sub.add_flag("--answered-only", o->answered_only,
                "count only the problems each submission answers");

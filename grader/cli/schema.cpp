@@ -3,9 +3,6 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "cli/command.h"
 #include "core/atomic_file.h"
 
@@ -28,10 +25,8 @@ int run_schema(const SchemaOptions& o) {
     return kExitOk;
   }
   if (o.check) {
-    std::ifstream in(o.out, std::ios::binary);
-    std::stringstream have;
-    have << in.rdbuf();
-    if (!in || have.str() != text) {
+    std::optional<std::string> have = read_whole_file(o.out);
+    if (have != text) {
       fmt::print("{} is out of date: run `raygrade schema --out {}`.\n", o.out, o.out);
       return kExitFailed;
     }

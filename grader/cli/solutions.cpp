@@ -1,5 +1,6 @@
 // raygrade solutions: regenerate (or check) the folder of worked solutions of a bank.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "cli/command.h"
 #include "reports/solutions_folder.h"
@@ -10,7 +11,7 @@ namespace {
 struct SolutionsOptions {
   std::vector<std::string> paths;
   std::string out = "solutions";
-  std::vector<std::string> formats = {"md", "html", "txt", "json"};
+  std::vector<std::string> formats = solution_format_names();
   bool check = false;
 };
 
@@ -46,8 +47,10 @@ Runner setup_solutions(CLI::App& sub) {
   auto o = std::make_shared<SolutionsOptions>();
   sub.add_option("paths", o->paths, "problem files or folders")->required();
   sub.add_option("--out", o->out, "the solutions folder (default: solutions)");
-  sub.add_option("--format", o->formats, "formats to write (default: md html txt json)")
-      ->check(CLI::IsMember({"md", "html", "txt", "json"}))
+  sub.add_option("--format", o->formats,
+                 fmt::format("formats to write, separated by commas (default: {})",
+                             fmt::join(solution_format_names(), ",")))
+      ->check(CLI::IsMember(solution_format_names()))
       ->delimiter(',');
   sub.add_flag("--check", o->check,
                "change nothing; exit 1 listing files that are stale, missing or no longer "

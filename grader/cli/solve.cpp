@@ -6,6 +6,7 @@
 #include "assignments/variants.h"
 #include "cli/command.h"
 #include "problems/problem.h"
+#include "reports/render.h"
 #include "reports/solve_output.h"
 
 namespace raygrade::cli {
@@ -61,7 +62,7 @@ Runner setup_solve(CLI::App& sub) {
   sub.add_option("--format", o->format,
                  "json (answers; with --steps, the steps too), or a worked solution as md, html "
                  "or txt")
-      ->check(CLI::IsMember({"json", "txt", "md", "html"}));
+      ->check(CLI::IsMember(solution_format_names()));
   sub.add_option("--method", o->method, "a method name, or 'all' to show every method");
   sub.add_option("--precision", o->precision,
                  "decimals shown in worked solutions (default: the problem's precision, else 4 "

@@ -13,12 +13,13 @@ Runner setup_generate(CLI::App& sub);
 Runner setup_handout(CLI::App& sub);
 Runner setup_export(CLI::App& sub);
 Runner setup_schema(CLI::App& sub);
+Runner setup_tables(CLI::App& sub);
 
 const std::vector<Command>& command_table() {
   static const std::vector<Command> table = {
       {"run", "the main job: solve the bank, write worked solutions, grade submissions",
        &setup_run},
-      {"grade", "grade submissions: text, json, gradescope, prairielearn, csv, html", &setup_grade},
+      {"grade", "grade submissions, for a person, a gradebook or an LMS (--format)", &setup_grade},
       {"solve", "print the reference answers (and worked solutions) of problems", &setup_solve},
       {"solutions", "write (or --check) the worked solutions of a bank, one file per problem",
        &setup_solutions},
@@ -33,6 +34,8 @@ const std::vector<Command>& command_table() {
        &setup_export},
       {"schema", "the problem schema, from the list of primitives (docs/problem.schema.json)",
        &setup_schema},
+      {"tables", "the docs' tables of primitives, kinds and formats, from the code's own",
+       &setup_tables},
   };
   return table;
 }

@@ -1,4 +1,4 @@
-// Atomic file writes: a temporary file in the same folder, fsync, rename.
+// Atomic file writes (a temporary file in the same folder, fsync, rename), and whole reads.
 #include "core/atomic_file.h"
 
 #include <fcntl.h>
@@ -7,6 +7,8 @@
 
 #include <cerrno>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -75,6 +77,14 @@ void flush_folder(const std::filesystem::path& folder) {
   int error = errno;
   ::close(fd);
   if (rc != 0) fail(folder, "flushing to disk", error);
+}
+
+std::optional<std::string> read_whole_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) return std::nullopt;
+  return bytes;
 }
 
 }  // namespace raygrade

@@ -1,7 +1,10 @@
-// Writing output files so that a crash or a full disk never leaves a half-written file.
+// Files read and written whole: output written so that a crash or a full disk never leaves a
+// half-written file, and input read in one piece.
 #pragma once
 
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <string_view>
 
 namespace raygrade {
@@ -17,5 +20,8 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
 
 // Flushes the file system holding `folder` to disk once (after writes with flush = false).
 void flush_folder(const std::filesystem::path& folder);
+
+// The bytes of the file at `path`, or nothing when it cannot be opened or read.
+std::optional<std::string> read_whole_file(const std::filesystem::path& path);
 
 }  // namespace raygrade

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "grading/submission.h"
@@ -61,5 +62,32 @@ std::string gradebook_csv_row(const SubmissionGrade& g,
 
 // A self-contained HTML feedback page for one student; all text escaped.
 std::string feedback_html(const SubmissionGrade& g);
+
+// How the documents of a grade format go out.
+enum class GradeLayout {
+  kDocument,   // one document per submission: standard output for one, one file each in --out
+  kJsonArray,  // json: {"submissions": [...]} on standard output, one file each in --out
+  kGradebook,  // csv: a header, then a row per submission; in --out, one gradebook.csv
+};
+
+// One row of the table of grade formats (`raygrade grade --format NAME`).
+struct GradeFormat {
+  std::string_view name;
+  std::string_view summary;    // for --help and the docs
+  std::string_view extension;  // of the files written in --out: ".txt", ".json", ".html"
+  GradeLayout layout;
+  bool needs_out;          // several submissions need --out (one file each), not standard output
+  bool results_file;       // an LMS's: one submission in --out is written as results.json
+  bool full_feedback_too;  // with --assignment, graded with full feedback too (for `worked`)
+  // A submission's document; `seconds` is the time it took to grade, `worked` the same graded
+  // with full feedback (when full_feedback_too), else null. A gradebook's row.
+  std::string (*render)(const SubmissionGrade& g, double seconds, const SubmissionGrade* worked);
+};
+
+// text, json, gradescope, prairielearn, csv, html.
+const std::vector<GradeFormat>& grade_formats();
+const GradeFormat* find_grade_format(std::string_view name);
+// The names, in the table's order, separated by ", ".
+std::string grade_format_names();
 
 }  // namespace raygrade

@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
-#include <sstream>
 
 #include "core/atomic_file.h"
 #include "core/escape.h"
@@ -41,15 +40,6 @@ std::string index_file(const std::vector<std::pair<const Problem*, std::string>>
   return out;
 }
 
-bool read_file(const fs::path& path, std::string& out) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream s;
-  s << in.rdbuf();
-  out = s.str();
-  return true;
-}
-
 bool is_generated(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::string first;
@@ -71,8 +61,7 @@ FolderSync compare(const std::string& folder, const std::vector<GeneratedFile>& 
   for (const auto& f : files) {
     produced.insert(f.name);
     fs::path path = fs::path(folder) / f.name;
-    std::string old;
-    if (read_file(path, old) && old == f.bytes) {
+    if (read_whole_file(path) == f.bytes) {
       ++sync.unchanged;
       continue;
     }

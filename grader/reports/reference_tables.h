@@ -1,0 +1,27 @@
+// The reference tables of the docs, derived from the tables of the code: the primitives (from
+// the list of primitives), the problem kinds, the solution formats and the grade formats. A
+// doc holds a table between two markers, and `raygrade tables` rewrites what lies between them:
+//
+//   <!-- raygrade tables: primitives -->
+//   ...
+//   <!-- raygrade tables: end -->
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace raygrade {
+
+struct ReferenceTable {
+  std::string name;      // "primitives", "kinds", "solution-formats", "grade-formats"
+  std::string markdown;  // the table, ending with a newline
+};
+
+const std::vector<ReferenceTable>& reference_tables();
+
+// `text` (the doc `file_name`) with every marked table written afresh. Throws Error naming the
+// file and line for a marker of an unknown table, or one with no end marker.
+std::string with_reference_tables(std::string_view text, const std::string& file_name);
+
+}  // namespace raygrade
