@@ -117,6 +117,19 @@ TEST(Submission, MalformedIsReportedWithPath) {
   EXPECT_DOUBLE_EQ(named.score, named.max_score);
 }
 
+// A bank where a submission goes (`grade --problems a.json b.json` takes b.json as a
+// submission) is named as a bank, at its problems, rather than as an unknown key.
+TEST(Submission, ABankGivenAsASubmissionIsNamedAsOne) {
+  const Assignment& a = samples().assignment;
+  SubmissionGrade g =
+      a.grade_file(write_temp("bank-as-submission.json", "{\"title\": \"t\",\n \"problems\": []}"));
+  ASSERT_FALSE(g.gradable);
+  EXPECT_EQ(g.fault->code, "not-a-submission");
+  EXPECT_EQ(g.fault->path, "/problems");
+  EXPECT_EQ(g.fault->line, 2);
+  EXPECT_NE(g.fault->message.find("problem bank"), std::string::npos);
+}
+
 // A key spelled with escapes ("\u0062ogus" is "bogus") is named at its line and column, as
 // one spelled plainly is: at the value under it (line 3, column 17 for the 1).
 TEST(Submission, EscapedKeyIsLocated) {

@@ -117,6 +117,11 @@ SubmissionGrade Assignment::grade(const std::shared_ptr<const SourceFile>& file)
   Cursor root(file);
   try {
     if (!root.is_object()) root.fail("a submission is a JSON object", "type");
+    // A bank given where a submission goes (a second file after one --problems).
+    if (root.has("problems") && !root.has("answers"))
+      root.at("problems")
+          .fail("this file is a problem bank, not a submission: each bank needs its own --problems",
+                "not-a-submission");
     root.allow_only({"student", "answers", "$schema", "submitted"});
     if (auto who = read_student(root)) {
       g.identity = *who;
