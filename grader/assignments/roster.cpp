@@ -68,12 +68,6 @@ std::vector<std::vector<std::string>> csv_rows(const std::string& text, const st
   return rows;
 }
 
-std::string trimmed(std::string s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.erase(s.begin());
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.pop_back();
-  return s;
-}
-
 }  // namespace
 
 std::vector<StudentIdentity> load_roster(const std::string& path) {

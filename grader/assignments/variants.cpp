@@ -12,12 +12,6 @@
 namespace raygrade {
 namespace {
 
-std::string trimmed(std::string s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.erase(s.begin());
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.pop_back();
-  return s;
-}
-
 void fnv1a(std::uint64_t& h, std::string_view bytes) {
   for (unsigned char c : bytes) {
     h ^= c;
@@ -37,6 +31,12 @@ Problem reread(const Problem& p) {
 }
 
 }  // namespace
+
+std::string trimmed(std::string s) {
+  std::size_t begin = s.find_first_not_of(" \t");
+  if (begin == std::string::npos) return {};
+  return s.substr(begin, s.find_last_not_of(" \t") + 1 - begin);
+}
 
 std::string student_key(const StudentIdentity& s) {
   if (!trimmed(s.id).empty()) return trimmed(s.id);

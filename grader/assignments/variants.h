@@ -16,6 +16,9 @@ namespace raygrade {
 // name; surrounding spaces removed.
 std::string student_key(const StudentIdentity& s);
 
+// `s` without the spaces and tabs at either end: how student_key and a roster's cells read text.
+std::string trimmed(std::string s);
+
 // The seed of one student's variant of one problem: 64-bit FNV-1a over the assignment's id,
 // its seed, the student's key and the problem's id (docs/assignments.md).
 std::uint64_t variant_seed(const std::string& assignment, std::uint64_t seed,
