@@ -29,6 +29,9 @@ TEST(ReferenceTables, OnlyTheTextBetweenTheMarkersIsRewritten) {
   // Written again, it is unchanged; a doc without markers is left alone.
   EXPECT_EQ(with_reference_tables(out, "doc.md"), out);
   EXPECT_EQ(with_reference_tables("no tables here\n", "doc.md"), "no tables here\n");
+  // A marker inside a line is text about markers, not a marker.
+  std::string about = "Write `<!-- raygrade tables: NAME -->` on its own line.\n";
+  EXPECT_EQ(with_reference_tables(about, "doc.md"), about);
 }
 
 TEST(ReferenceTables, EveryRowOfTheCodesTablesIsInTheDocsTable) {

@@ -131,7 +131,10 @@ std::string with_reference_tables(std::string_view text, const std::string& file
   std::string out;
   std::size_t pos = 0;
   while (true) {
+    // A marker starts a line; the same words inside a line are text about the markers.
     std::size_t begin = text.find(kBegin, pos);
+    while (begin != std::string_view::npos && begin > 0 && text[begin - 1] != '\n')
+      begin = text.find(kBegin, begin + 1);
     if (begin == std::string_view::npos) break;
     std::size_t close = text.find("-->", begin);
     std::size_t line_end = text.find('\n', begin);
@@ -150,6 +153,7 @@ std::string with_reference_tables(std::string_view text, const std::string& file
       fault(begin,
             fmt::format("no reference table '{}' (known: {})", name, fmt::join(names, ", ")));
     std::size_t end = text.find(kEnd, line_end);
+    while (end != std::string_view::npos && text[end - 1] != '\n') end = text.find(kEnd, end + 1);
     if (end == std::string_view::npos)
       fault(begin, fmt::format("the table '{}' has no end marker ({})", name, kEnd));
     out += text.substr(pos, line_end + 1 - pos);

@@ -1,6 +1,7 @@
 // The reference tables of the docs, derived from the tables of the code: the primitives (from
 // the list of primitives), the problem kinds, the solution formats and the grade formats. A
-// doc holds a table between two markers, and `raygrade tables` rewrites what lies between them:
+// doc holds a table between two markers, each at the start of its line, and `raygrade tables`
+// rewrites what lies between them:
 //
 //   <!-- raygrade tables: primitives -->
 //   ...
