@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "core/error.h"
+#include "core/internal_error.h"
 
 namespace raygrade {
 
@@ -62,8 +63,7 @@ Value Deriver::record(const std::string& name, const E& s, const E& formula, std
 E Deriver::sym(const std::string& name) const {
   auto it = symbols_.find(name);
   if (it == symbols_.end()) {
-    throw Error(Diagnostic{"", "", 0, 0, Severity::kError,
-                           "derivation: no step named '" + name + "'", "internal"});
+    throw InternalError("derivation: no step named '" + name + "'");
   }
   return it->second;
 }
@@ -71,8 +71,7 @@ E Deriver::sym(const std::string& name) const {
 const Value& Deriver::value(const std::string& name) const {
   auto it = env_.find(name);
   if (it == env_.end()) {
-    throw Error(Diagnostic{"", "", 0, 0, Severity::kError,
-                           "derivation: no value for '" + name + "'", "internal"});
+    throw InternalError("derivation: no value for '" + name + "'");
   }
   return it->second;
 }

@@ -22,6 +22,10 @@ std::shared_ptr<ExprNode> make(Op op, std::vector<E> args = {}) {
 
 E wrap(std::shared_ptr<ExprNode> n) { return E(std::shared_ptr<const ExprNode>(std::move(n))); }
 
+// Values a formula cannot take (a vector where a number goes, a symbol with no value). A
+// mistake's rewritten formula or a student's own values cause it, and the graders that try
+// those catch it as an Error; one that reaches a user keeps the code "internal", which the CLI
+// and the batch report as raygrade's fault (exit 3), never the file's.
 [[noreturn]] void defect(const std::string& what) {
   throw Error(Diagnostic{"", "", 0, 0, Severity::kError, "derivation: " + what, "internal"});
 }
