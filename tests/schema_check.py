@@ -38,7 +38,11 @@ BROKEN = [
     ("missing ray", variant(lambda p: p.pop("ray"))),
     ("missing id", variant(lambda p: p.pop("id"))),
     ("unknown problem key", variant(lambda p: p.update(stament="typo"))),
-    ("unknown type", variant(lambda p: p["object"].update(type="cone"))),
+    ("unknown type", variant(lambda p: p["object"].update(type="torus"))),
+    ("unknown kind", variant(lambda p: p.update(kind="intersekt"))),
+    ("derive without find", variant(lambda p: p.update(kind="derive"))),
+    ("derive with an empty find", variant(lambda p: p.update(kind="derive", find=[]))),
+    ("a key of another kind", variant(lambda p: p.update(find=["t1"]))),
     ("plane with neither point nor d",
      variant(lambda p: p.update(object={"type": "plane", "normal": [0, 0, 1]}))),
     ("plane with both point and d",
@@ -66,6 +70,14 @@ BROKEN = [
 ]
 
 
+# Problems the schema must accept beside the bank's: keys every kind takes, kinds the bank has
+# few of.
+ALSO_GOOD = [
+    ("conventions", variant(lambda p: p.update(conventions={"contained": "line"}))),
+    ("a derive problem", variant(lambda p: p.update(kind="derive", find=["b", "c"]))),
+]
+
+
 def main(argv):
     if len(argv) != 3:
         sys.exit(__doc__)
@@ -82,6 +94,10 @@ def main(argv):
     if not list(validator.iter_errors(GOOD)) == []:
         failures += 1
         print("FAIL the good example is rejected")
+    for what, problem in ALSO_GOOD:
+        for error in validator.iter_errors(problem):
+            failures += 1
+            print(f"FAIL the schema rejects {what}: {error.message}")
     for what, problem in BROKEN:
         if validator.is_valid(problem):
             failures += 1

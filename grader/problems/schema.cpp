@@ -1,6 +1,10 @@
 // The problem schema: problem_schema_base.json with a definition per primitive of the table.
 #include "problems/schema.h"
 
+#include <fmt/format.h>
+
+#include "core/internal_error.h"
+#include "problems/problem.h"
 #include "problems/schema_assets.h"
 #include "shapes/shape.h"
 
@@ -37,6 +41,39 @@ nlohmann::ordered_json primitive_definition(std::string_view type,
   return def;
 }
 
+// The kinds, from the table of kinds: `kind` takes its names, and each kind's case (an `if` on
+// the kind in the problem's allOf, written in problem_schema_base.json with the kind's own
+// properties) allows exactly the keys read_problem allows, the common ones and the kind's own.
+// A kind of the table without a case, or a case of no kind, is a bug of raygrade.
+void derive_kinds(nlohmann::ordered_json& problem) {
+  nlohmann::ordered_json names = nlohmann::ordered_json::array();
+  for (const KindEntry& k : kind_table()) names.push_back(k.name);
+  problem["properties"]["kind"]["enum"] = names;
+  std::size_t matched = 0;
+  for (const KindEntry& k : kind_table()) {
+    nlohmann::ordered_json* then = nullptr;
+    for (auto& c : problem["allOf"]) {
+      if (c["if"]["properties"]["kind"].value("const", "") == k.name) then = &c["then"];
+    }
+    if (!then)
+      throw InternalError(fmt::format(
+          "the problem schema has no case for the kind '{}' (problem_schema_base.json)", k.name));
+    ++matched;
+    nlohmann::ordered_json keys = nlohmann::ordered_json::array();
+    for (const auto& key : common_problem_keys()) keys.push_back(key);
+    for (const auto& key : k.keys) {
+      if (!(*then)["properties"].contains(key))
+        throw InternalError(fmt::format(
+            "the problem schema's case for the kind '{}' does not describe its key '{}'", k.name,
+            key));
+      keys.push_back(key);
+    }
+    (*then)["propertyNames"] = {{"enum", keys}};
+  }
+  if (matched != problem["allOf"].size())
+    throw InternalError("the problem schema has a case for a kind that is not in the table");
+}
+
 }  // namespace
 
 nlohmann::ordered_json problem_schema() {
@@ -56,6 +93,7 @@ nlohmann::ordered_json problem_schema() {
       value["properties"]["type"] = {{"enum", types}};
       value["allOf"] = cases;
     }
+    if (key == "problem") derive_kinds(value);
     defs[key] = value;
   }
   base["$defs"] = std::move(defs);
