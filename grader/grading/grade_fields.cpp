@@ -13,6 +13,7 @@
 #include "grading/mistakes.h"
 #include "grading/parts.h"
 #include "kinds/normal_at.h"
+#include "scenes/colour.h"
 
 namespace raygrade {
 namespace {
@@ -87,7 +88,11 @@ class FieldsGrader final : public KindGrader {
     if (spec.name == "lights") return grade_lights(s);
     if (!ref || ref->is_null()) {
       if (s.json().is_null() || s.json() == false) return {1, {}};
+      if (spec.name == "specular" && kind_ == "shade") return grade_no_specular(s);
       return {0, {absent_reason(spec.name)}};
+    }
+    if (spec.compare == Comparison::kScalar && ref->is_array()) {
+      return grade_colour(spec.name, s, *ref);
     }
     switch (spec.compare) {
       case Comparison::kDirection:
@@ -142,6 +147,60 @@ class FieldsGrader final : public KindGrader {
     return {
         0,
         {fmt::format("{} is {}{}, not {}.", name, number(ref), angle ? "°" : "", n.value->text)}};
+  }
+
+  // k_s = 0: there is no specular term; 0 (or [0, 0, 0]) for it is right, anything else not.
+  Verdict grade_no_specular(const AnswerReader& s) const {
+    bool zero = s.json().is_number() && s.json().get<double>() == 0;
+    if (s.json().is_array()) {
+      zero = true;
+      for (const auto& x : s.json()) zero &= x.is_number() && x.get<double>() == 0;
+    }
+    if (zero) return {1, {}};
+    return {0, {"k_s = 0: the material has no specular term, so there is none to give."}};
+  }
+
+  // A colour [r, g, b], channel by channel within the tolerance; the feedback names the
+  // channels that are wrong. One number where a colour is asked is a named mistake.
+  Verdict grade_colour(const std::string& name, const AnswerReader& s,
+                       const nlohmann::json& ref) const {
+    Vec3d want{ref[0].get<double>(), ref[1].get<double>(), ref[2].get<double>()};
+    std::string right = fmt::format("[{}, {}, {}]", number(want.x), number(want.y), number(want.z));
+    if (s.json().is_null()) return {0, {fmt::format("{} is {}, not none.", name, right)}};
+    if (s.json().is_number()) {
+      const char* id = "scalar-for-colour";
+      std::string msg =
+          fmt::format("{} is the colour {} (r, g, b), not the single number {}.", name, right,
+                      number(s.json().get<double>()));
+      return Verdict{mistake_info(id).credit, {msg}, {make_mistake(id, name, msg)}};
+    }
+    if (!s.json().is_array() || s.json().size() != 3) {
+      return {0, {fmt::format("{}: expected a colour [r, g, b]", name)}};
+    }
+    const Tolerance& tol = context_.tolerance.for_field(name);
+    std::vector<std::string> wrong, imprecise;
+    auto given = s.items();
+    for (int c = 0; c < 3; ++c) {
+      auto n = given[c].number();
+      if (!n.value) return {0, {fmt::format("{} channel {}: {}", name, kChannelNames[c], n.fault)}};
+      NumberVerdict v = compare_number(*n.value, want[c], want[c], tol);
+      if (v.match == Match::kWrong) {
+        wrong.push_back(fmt::format("{} is {}, not {}", kChannelNames[c], number(want[c]),
+                                    n.value->text));
+      } else if (v.match == Match::kInsufficientPrecision) {
+        imprecise.push_back(fmt::format("{}: {}", kChannelNames[c], v.message));
+      }
+    }
+    if (!wrong.empty()) {
+      return {0,
+              {fmt::format("{} is {}; wrong channel{}: {}.", name, right,
+                           wrong.size() == 1 ? "" : "s", fmt::join(wrong, "; "))}};
+    }
+    if (!imprecise.empty()) {
+      return {tol.precision_credit,
+              {fmt::format("{}: {}", name, fmt::join(imprecise, "; "))}};
+    }
+    return {1, {}};
   }
 
   // The named mistakes of a normal problem's normal: the inward normal of a closed object, and a
@@ -296,7 +355,10 @@ class FieldsGrader final : public KindGrader {
       std::size_t before = out.feedback.size();
       for (const char* key : {"n_dot_l", "r_dot_v", "diffuse", "specular"}) {
         if (!g.has(key)) continue;
-        Verdict v = grade_scalar(key, g.at(key), r->at(key).get<double>());
+        Verdict v = !r->contains(key)        ? grade_no_specular(g.at(key))
+                    : r->at(key).is_array() ? grade_colour(key, g.at(key), r->at(key))
+                                            : grade_scalar(key, g.at(key), r->at(key).get<double>());
+        for (auto& m : v.mistakes) out.mistakes.push_back(std::move(m));
         if (v.credit < 1) out.feedback.push_back(fmt::format("Light {}: {}", light, v.feedback[0]));
       }
       if (g.has("reaches")) {

@@ -1,5 +1,6 @@
 // Kind `shade`: the Phong intensity at one point, term by term: k_a·I_a, and for each light
-// that reaches the point k_d·I_p·(N·L) and k_s·I_p·(R·V)^n.
+// that reaches the point k_d·I_p·(N·L) and k_s·I_p·(R·V)^n. When any intensity or coefficient
+// is a colour (scenes/colour.h), every term is a colour [r, g, b], worked channel by channel.
 #pragma once
 
 #include "problems/problem.h"
@@ -14,7 +15,7 @@ struct ShadeLight {
 
 class ShadeTask final : public Task {
  public:
-  ShadeTask(Vec3d point, Vec3d normal, Vec3d eye, Material m, double ambient_light,
+  ShadeTask(Vec3d point, Vec3d normal, Vec3d eye, Material m, Intensity ambient_light,
             std::vector<ShadeLight> lights)
       : point_(point),
         normal_(normal),
@@ -30,11 +31,14 @@ class ShadeTask final : public Task {
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
   Sketch sketch() const override;
+  // Whether any intensity or coefficient is a colour: then every term is a colour [r, g, b].
+  bool colour() const;
 
  private:
   Vec3d point_, normal_, eye_;
   Material m_;
-  double ambient_light_;
+
+  Intensity ambient_light_;
   std::vector<ShadeLight> lights_;
 };
 

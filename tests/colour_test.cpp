@@ -1,0 +1,151 @@
+// Colour: intensities and coefficients as [r, g, b], worked and graded channel by channel.
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "grading/grade.h"
+#include "kinds/ray_tree.h"
+#include "problems/problem.h"
+#include "scenes/colour.h"
+#include "test_util.h"
+
+namespace raygrade {
+namespace {
+
+// kTwoLightShade with colours: the ambient light [2, 2, 1], light A [1, 0.5, 0], k_d
+// [0.5, 1, 1]. By hand, with L = (0.6, 0.8, 0), N·L = 0.8, R = V, R·V = 1:
+//   ambient  0.1·[2, 2, 1]               = [0.2, 0.2, 0.1]
+//   diffuse  [0.5, 1, 1] ⊙ [1, 0.5, 0]·0.8 = [0.4, 0.4, 0]
+//   specular 0.3·[1, 0.5, 0]·1            = [0.3, 0.15, 0]
+//   total                                 = [0.9, 0.75, 0.1]
+constexpr const char* kColourShade = R"({"id": "c", "kind": "shade",
+    "point": [0, 0, 0], "normal": [0, 1, 0], "eye": [-3, 4, 0], "ambient_light": [2, 2, 1],
+    "material": {"ambient": 0.1, "diffuse": [0.5, 1, 1], "specular": 0.3, "shininess": 12},
+    "lights": [{"name": "A", "position": [3, 4, 0], "intensity": [1, 0.5, 0]},
+               {"name": "B", "position": [0, 9, 0], "blocked": true}]})";
+
+void expect_colour(const nlohmann::json& j, Vec3d want, double tol = 1e-14) {
+  ASSERT_TRUE(j.is_array()) << j.dump();
+  ASSERT_EQ(j.size(), 3u);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(j[c].get<double>(), want[c], tol) << kChannelNames[c];
+}
+
+TEST(Colour, ShadeWorksEveryChannel) {
+  Problem p = testing::problem(kColourShade);
+  nlohmann::json a = p.task->answer();
+  expect_colour(a["ambient"], {0.2, 0.2, 0.1});
+  expect_colour(a["diffuse"], {0.4, 0.4, 0});
+  expect_colour(a["specular"], {0.3, 0.15, 0});
+  expect_colour(a["intensity"], {0.9, 0.75, 0.1});
+  expect_colour(a["lights"][0]["diffuse"], {0.4, 0.4, 0});
+  // The worked solution reaches the same colour.
+  auto parts = p.task->derive("");
+  const Step* total = parts[0].derivation.find("I");
+  ASSERT_NE(total, nullptr);
+  ASSERT_TRUE(total->value.is_vector());
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(total->value.vector[c], (Vec3d{0.9, 0.75, 0.1})[c], 1e-14);
+}
+
+// A number meets a colour on every channel alike: a white light [1, 1, 1] gives the same
+// numbers as the light 1, as colours.
+TEST(Colour, WhiteLightGivesTheScalarAnswerOnEveryChannel) {
+  std::string text = testing::kTwoLightShade;
+  text.replace(text.find("\"position\": [3, 4, 0]"), 21,
+               "\"position\": [3, 4, 0], \"intensity\": [1, 1, 1]");
+  nlohmann::json a = testing::problem(text).task->answer();
+  expect_colour(a["intensity"], {0.9, 0.9, 0.9});
+  expect_colour(a["ambient"], {0.2, 0.2, 0.2});
+}
+
+TEST(Colour, PublishedColourIsGradedRightAndAChangedChannelWrong) {
+  Problem p = testing::problem(kColourShade);
+  GradeResult right = grade_answer(p, nlohmann::json::parse(R"({"intensity": [0.9, 0.75, 0.1]})"));
+  ASSERT_FALSE(right.parts.empty());
+  EXPECT_EQ(right.parts[0].name, "intensity");
+  EXPECT_EQ(right.parts[0].status, PartStatus::kRight);
+  GradeResult wrong = grade_answer(p, nlohmann::json::parse(R"({"intensity": [0.9, 0.65, 0.1]})"));
+  EXPECT_NE(wrong.parts[0].status, PartStatus::kRight);
+  ASSERT_FALSE(wrong.parts[0].feedback.empty());
+  const std::string& f = wrong.parts[0].feedback[0];
+  EXPECT_NE(f.find("wrong channel: g is 0.75, not 0.65"), std::string::npos) << f;
+  EXPECT_EQ(f.find(" r is"), std::string::npos) << f;
+}
+
+TEST(Colour, AScalarWhereAColourIsAskedIsANamedMistake) {
+  Problem p = testing::problem(kColourShade);
+  GradeResult r = grade_answer(p, nlohmann::json::parse(R"({"intensity": 0.9})"));
+  EXPECT_NE(r.parts[0].status, PartStatus::kRight);
+  ASSERT_FALSE(r.mistakes.empty());
+  EXPECT_EQ(r.mistakes[0].id, "scalar-for-colour");
+}
+
+TEST(Colour, BadColoursAreErrorsAtTheirPath) {
+  std::string text = kColourShade;
+  std::string negative = text;
+  negative.replace(negative.find("[1, 0.5, 0]"), 11, "[1, -0.5, 0]");
+  try {
+    testing::problem(negative);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.diagnostic().code, "range");
+    EXPECT_NE(e.diagnostic().message.find("g channel"), std::string::npos)
+        << e.diagnostic().message;
+  }
+  std::string two = text;
+  two.replace(two.find("[1, 0.5, 0]"), 11, "[1, 0.5]");
+  EXPECT_THROW(testing::problem(two), Error);
+  std::string word = text;
+  word.replace(word.find("[2, 2, 1]"), 9, "\"red\"");
+  EXPECT_THROW(testing::problem(word), Error);
+}
+
+// A swatch shows the colour clamped to [0, 1]: 1.9 shows as full red, 0.5 as 128 of 255.
+TEST(Colour, SwatchIsClamped) {
+  EXPECT_EQ(swatch_hex({1.9, 0.5, 0}), "#ff8000");
+  EXPECT_EQ(swatch_hex({-1, 0, 1}), "#0000ff");
+}
+
+// k_s = 0: the shade answer lists no specular term at all (none at the top, none per light),
+// and a student's specular 0 is still right.
+TEST(Colour, ShadeWithoutSpecularListsNoSpecular) {
+  std::string text = testing::kTwoLightShade;
+  text.replace(text.find("\"specular\": 0.3"), 15, "\"specular\": 0  ");
+  Problem p = testing::problem(text);
+  nlohmann::json a = p.task->answer();
+  EXPECT_FALSE(a.contains("specular"));
+  EXPECT_FALSE(a["lights"][0].contains("specular"));
+  GradeResult r = grade_answer(p, nlohmann::json::parse(R"({"intensity": 0.6, "specular": 0})"));
+  for (const auto& part : r.parts) {
+    if (part.name == "specular" || part.name == "intensity") {
+      EXPECT_EQ(part.status, PartStatus::kRight) << part.name;
+    }
+  }
+  GradeResult bad = grade_answer(p, nlohmann::json::parse(R"({"intensity": 0.6, "specular": 0.3})"));
+  for (const auto& part : bad.parts) {
+    if (part.name == "specular") {
+      EXPECT_NE(part.status, PartStatus::kRight);
+    }
+  }
+}
+
+// A ray tree whose material has k_s = 0: the hit point's steps work the diffuse term and say
+// there is no specular one, without its mirror direction R_1 or a specular_1.
+TEST(Colour, RayTreeWithoutSpecularWorksNoSpecularTerm) {
+  Problem p = testing::problem(R"({"id": "t", "kind": "ray-tree", "ask": "intensity",
+    "ray": {"origin": [0, 0, 0], "direction": [0, 0, 1]},
+    "scene": {"objects": [{"type": "sphere", "center": [0, 0, 5], "radius": 1,
+                           "material": {"ambient": 0.1, "diffuse": 0.5, "specular": 0}}],
+              "lights": [{"position": [0, 0, -10]}]}})");
+  auto parts = p.task->derive("whitted");
+  bool seen = false;
+  for (const auto& part : parts) {
+    if (part.derivation.find("diffuse_1")) {
+      seen = true;
+      EXPECT_EQ(part.derivation.find("R_1"), nullptr);
+      EXPECT_EQ(part.derivation.find("specular_1"), nullptr);
+    }
+  }
+  EXPECT_TRUE(seen);
+}
+
+}  // namespace
+}  // namespace raygrade
