@@ -147,5 +147,71 @@ TEST(Colour, RayTreeWithoutSpecularWorksNoSpecularTerm) {
   EXPECT_TRUE(seen);
 }
 
+// A coloured ball seen along +z, worked by hand: the hit P = (0, 0, 4), N = L = V = (0, 0, −1),
+// N·L = R·V = 1. Ambient 0.1·[1, 1, 1]; diffuse [0.6, 0.6, 0.2] ⊙ [1, 0.5, 0.25] = [0.6, 0.3,
+// 0.05]; specular 0.2·[1, 0.5, 0.25] = [0.2, 0.1, 0.05]; local [0.9, 0.5, 0.2]. The reflection
+// (k_r = 0.5) leaves the scene and brings the background [0.2, 0.4, 0.6]: I = [1, 0.7, 0.5].
+constexpr const char* kColourTree = R"({"id": "t", "kind": "ray-tree", "ask": "intensity",
+    "ray": {"origin": [0, 0, 0], "direction": [0, 0, 1]},
+    "scene": {"objects": [{"name": "ball", "type": "sphere", "center": [0, 0, 5], "radius": 1,
+        "material": {"ambient": 0.1, "diffuse": [0.6, 0.6, 0.2], "specular": 0.2,
+                     "shininess": 10, "reflectivity": 0.5}}],
+      "lights": [{"position": [0, 0, -10], "intensity": [1, 0.5, 0.25]}],
+      "ambient_light": [1, 1, 1], "background": [0.2, 0.4, 0.6]}})";
+
+TEST(Colour, RayTreeIntensityIsAColour) {
+  Problem p = testing::problem(kColourTree);
+  nlohmann::json a = p.task->answer();
+  expect_colour(a["intensity"], {1, 0.7, 0.5});
+  expect_colour(a["nodes"][0]["intensity"]["local"], {0.9, 0.5, 0.2});
+  expect_colour(a["nodes"][0]["intensity"]["diffuse"], {0.6, 0.3, 0.05});
+  expect_colour(a["nodes"][1]["background"], {0.2, 0.4, 0.6});
+  const auto& task = dynamic_cast<const RayTreeTask&>(*p.task);
+  EXPECT_EQ(task.ask(), Ask::kIntensity);
+  // The tree's shape is the scene's: one hit, its reflection, one shadow ray.
+  EXPECT_EQ(task.tree().nodes.size(), 2u);
+  EXPECT_EQ(task.tree().counts.shadow, 1);
+}
+
+TEST(Colour, RayTreeColourIsGradedByChannel) {
+  Problem p = testing::problem(kColourTree);
+  nlohmann::json base = p.task->answer();
+  auto intensity_part = [&](const nlohmann::json& given) {
+    nlohmann::json a = base;
+    a["intensity"] = given;
+    GradeResult r = grade_answer(p, a);
+    for (const auto& part : r.parts) {
+      if (part.name == "intensity") return std::make_pair(part, r.mistakes);
+    }
+    ADD_FAILURE() << "no intensity part";
+    return std::make_pair(PartResult{}, r.mistakes);
+  };
+  EXPECT_EQ(intensity_part({1, 0.7, 0.5}).first.status, PartStatus::kRight);
+  auto [blue, none] = intensity_part({1, 0.7, 0.25});
+  EXPECT_NE(blue.status, PartStatus::kRight);
+  ASSERT_FALSE(blue.feedback.empty());
+  EXPECT_NE(blue.feedback[0].find("wrong channel: b is 0.5, not 0.25"), std::string::npos)
+      << blue.feedback[0];
+  auto [scalar, mistakes] = intensity_part(0.7);
+  EXPECT_NE(scalar.status, PartStatus::kRight);
+  ASSERT_FALSE(mistakes.empty());
+  EXPECT_EQ(mistakes.back().id, "scalar-for-colour");
+}
+
+// Without colours nothing changes: the same tree with numbers gives numbers.
+TEST(Colour, ANumberStaysANumber) {
+  std::string text = kColourTree;
+  for (auto [from, to] : {std::pair<std::string, std::string>{"[0.6, 0.6, 0.2]", "0.6"},
+                          {"[1, 0.5, 0.25]", "1"},
+                          {"[1, 1, 1]", "1"},
+                          {"[0.2, 0.4, 0.6]", "0.2"}}) {
+    text.replace(text.find(from), from.size(), to);
+  }
+  nlohmann::json a = testing::problem(text).task->answer();
+  ASSERT_TRUE(a["intensity"].is_number());
+  // 0.1 + 0.6 + 0.2 + 0.5·0.2 = 1.0
+  EXPECT_NEAR(a["intensity"].get<double>(), 1.0, 1e-14);
+}
+
 }  // namespace
 }  // namespace raygrade

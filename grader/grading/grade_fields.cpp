@@ -9,11 +9,11 @@
 #include <set>
 
 #include "derivation/number_format.h"
+#include "grading/grade_colour.h"
 #include "grading/kind_grader.h"
 #include "grading/mistakes.h"
 #include "grading/parts.h"
 #include "kinds/normal_at.h"
-#include "scenes/colour.h"
 
 namespace raygrade {
 namespace {
@@ -160,47 +160,12 @@ class FieldsGrader final : public KindGrader {
     return {0, {"k_s = 0: the material has no specular term, so there is none to give."}};
   }
 
-  // A colour [r, g, b], channel by channel within the tolerance; the feedback names the
-  // channels that are wrong. One number where a colour is asked is a named mistake.
   Verdict grade_colour(const std::string& name, const AnswerReader& s,
                        const nlohmann::json& ref) const {
     Vec3d want{ref[0].get<double>(), ref[1].get<double>(), ref[2].get<double>()};
-    std::string right = fmt::format("[{}, {}, {}]", number(want.x), number(want.y), number(want.z));
-    if (s.json().is_null()) return {0, {fmt::format("{} is {}, not none.", name, right)}};
-    if (s.json().is_number()) {
-      const char* id = "scalar-for-colour";
-      std::string msg =
-          fmt::format("{} is the colour {} (r, g, b), not the single number {}.", name, right,
-                      number(s.json().get<double>()));
-      return Verdict{mistake_info(id).credit, {msg}, {make_mistake(id, name, msg)}};
-    }
-    if (!s.json().is_array() || s.json().size() != 3) {
-      return {0, {fmt::format("{}: expected a colour [r, g, b]", name)}};
-    }
-    const Tolerance& tol = context_.tolerance.for_field(name);
-    std::vector<std::string> wrong, imprecise;
-    auto given = s.items();
-    for (int c = 0; c < 3; ++c) {
-      auto n = given[c].number();
-      if (!n.value) return {0, {fmt::format("{} channel {}: {}", name, kChannelNames[c], n.fault)}};
-      NumberVerdict v = compare_number(*n.value, want[c], want[c], tol);
-      if (v.match == Match::kWrong) {
-        wrong.push_back(fmt::format("{} is {}, not {}", kChannelNames[c], number(want[c]),
-                                    n.value->text));
-      } else if (v.match == Match::kInsufficientPrecision) {
-        imprecise.push_back(fmt::format("{}: {}", kChannelNames[c], v.message));
-      }
-    }
-    if (!wrong.empty()) {
-      return {0,
-              {fmt::format("{} is {}; wrong channel{}: {}.", name, right,
-                           wrong.size() == 1 ? "" : "s", fmt::join(wrong, "; "))}};
-    }
-    if (!imprecise.empty()) {
-      return {tol.precision_credit,
-              {fmt::format("{}: {}", name, fmt::join(imprecise, "; "))}};
-    }
-    return {1, {}};
+    ColourVerdict v =
+        raygrade::grade_colour(name, s, want, context_.tolerance.for_field(name), numbers_);
+    return {v.credit, std::move(v.feedback), std::move(v.mistakes)};
   }
 
   // The named mistakes of a normal problem's normal: the inward normal of a closed object, and a

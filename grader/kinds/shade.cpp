@@ -26,9 +26,6 @@ Value coefficient_value(double v, const std::optional<Vec3d>& rgb) {
   return rgb ? Value(*rgb) : Value(v);
 }
 
-std::string colour_text(const Vec3d& c) {
-  return fmt::format("[{}, {}, {}]", format_number(c.x), format_number(c.y), format_number(c.z));
-}
 
 }  // namespace
 

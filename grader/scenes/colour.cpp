@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "derivation/number_format.h"
+
 namespace raygrade {
 
 Intensity read_intensity(const Cursor& c, std::string_view what) {
@@ -44,6 +46,10 @@ nlohmann::json channels_json(const Vec3d& rgb, bool colour) {
 
 nlohmann::json intensity_json(const Intensity& i) {
   return i.colour ? channels_json(*i.colour, true) : nlohmann::json(i.value);
+}
+
+std::string colour_text(const Vec3d& c) {
+  return fmt::format("[{}, {}, {}]", format_number(c.x), format_number(c.y), format_number(c.z));
 }
 
 std::string swatch_hex(const Vec3d& rgb) {

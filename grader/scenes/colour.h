@@ -36,6 +36,9 @@ nlohmann::json intensity_json(const Intensity& i);
 // A colour's channels as [r, g, b] JSON, or a number when `colour` is false.
 nlohmann::json channels_json(const Vec3d& rgb, bool colour);
 
+// A colour as the worked solutions write it: "[0.9, 0.5, 0.2]".
+std::string colour_text(const Vec3d& rgb);
+
 // A colour clamped to [0, 1] per channel and written as #rrggbb, for a swatch.
 std::string swatch_hex(const Vec3d& rgb);
 
