@@ -104,6 +104,24 @@ TEST(Colour, SwatchIsClamped) {
   EXPECT_EQ(swatch_hex({-1, 0, 1}), "#0000ff");
 }
 
+// The worked solution shows each colour as a swatch clamped for display beside its unclamped
+// number: a white light on k_d = k_s = 0.9 sums to 1.9 in every channel, drawn white (#ffffff);
+// the ambient 0.1 is 0.1·255 = 25.5, drawn #1a1a1a.
+TEST(Colour, ShadeSolutionShowsSwatches) {
+  std::string text = testing::kTwoLightShade;
+  const std::string ambient = "\"ambient_light\": 2";
+  text.replace(text.find(ambient), ambient.size(), "\"ambient_light\": [1, 1, 1]");
+  const std::string coefficients = "\"diffuse\": 0.5, \"specular\": 0.3";
+  text.replace(text.find(coefficients), coefficients.size(), "\"diffuse\": 0.9, \"specular\": 0.9");
+  auto parts = testing::problem(text).task->derive("");
+  ASSERT_EQ(parts[0].figures.size(), 1u);
+  const Figure& f = parts[0].figures[0];
+  // The point of kTwoLightShade: N·L = 0.8, R·V = 1: 0.1 + 0.9·0.8 + 0.9 = 1.72.
+  EXPECT_NE(f.svg.find("fill=\"#ffffff\""), std::string::npos) << f.svg;
+  EXPECT_NE(f.text.find("[#1a1a1a] I_amb = [0.1, 0.1, 0.1]"), std::string::npos) << f.text;
+  EXPECT_NE(f.text.find("I = [1.72, 1.72, 1.72]"), std::string::npos) << f.text;
+}
+
 // k_s = 0: the shade answer lists no specular term at all (none at the top, none per light),
 // and a student's specular 0 is still right.
 TEST(Colour, ShadeWithoutSpecularListsNoSpecular) {
@@ -196,6 +214,21 @@ TEST(Colour, RayTreeColourIsGradedByChannel) {
   EXPECT_NE(scalar.status, PartStatus::kRight);
   ASSERT_FALSE(mistakes.empty());
   EXPECT_EQ(mistakes.back().id, "scalar-for-colour");
+}
+
+TEST(Colour, RayTreeSolutionShowsSwatches) {
+  auto parts = testing::problem(kColourTree).task->derive("whitted");
+  const Figure* swatches = nullptr;
+  for (const auto& part : parts) {
+    for (const auto& f : part.figures) {
+      if (f.svg.find("swatches") != std::string::npos) swatches = &f;
+    }
+  }
+  ASSERT_NE(swatches, nullptr);
+  // [1, 0.7, 0.5] is #ffb380; the background [0.2, 0.4, 0.6] is #336699.
+  EXPECT_NE(swatches->text.find("[#ffb380] I at I1 = [1, 0.7, 0.5]"), std::string::npos)
+      << swatches->text;
+  EXPECT_NE(swatches->text.find("[#336699]"), std::string::npos) << swatches->text;
 }
 
 // Without colours nothing changes: the same tree with numbers gives numbers.

@@ -8,6 +8,7 @@
 #include "derivation/number_format.h"
 
 #include "kinds/camera_ray.h"
+#include "kinds/swatch.h"
 #include "kinds/view_ray.h"
 #include "scenes/tree_json.h"
 #include "scenes/tree_steps.h"
@@ -207,6 +208,17 @@ std::vector<SolutionPart> RayTreeTask::derive(std::string_view /*method*/,
       colour_text(colour_intensity()));
   answer.derivation.conclusion.push_back(colour);
   answer.derivation.sentences.emplace_back(colour);
+  // Each hit point's colour, and the background a missing ray sees, as swatches.
+  std::vector<std::pair<std::string, Vec3d>> swatches;
+  for (std::size_t i = 0; i < tree_.nodes.size(); ++i) {
+    Vec3d c{};
+    for (int k = 0; k < 3; ++k) c[k] = channels_[k].nodes[i].intensity;
+    const TreeNode& n = tree_.nodes[i];
+    swatches.emplace_back(n.hit ? fmt::format("I at {}", n.label)
+                                : fmt::format("I of {} (background)", n.path),
+                          c);
+  }
+  answer.figures.push_back(swatch_figure(swatches));
   parts.push_back(std::move(answer));
   return parts;
 }

@@ -3,6 +3,7 @@
 
 #include "derivation/number_format.h"
 #include "kinds/sketch.h"
+#include "kinds/swatch.h"
 #include "scenes/optics.h"
 
 namespace raygrade {
@@ -194,7 +195,19 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
   Value t = d.step("I", "I", total, "the sum of the terms that apply");
   d.conclude(rgb ? fmt::format("The colour at P is I = {} (r, g, b).", colour_text(t.vector))
                  : fmt::format("The intensity at P is I = {}.", format_number(t.scalar)));
-  return {SolutionPart{"", std::move(d).finish()}};
+  if (!rgb) return {SolutionPart{"", std::move(d).finish()}};
+  // The colours of the terms and their sum as swatches.
+  std::vector<std::pair<std::string, Vec3d>> swatches = {{"I_amb", d.value("ambient").vector}};
+  for (std::size_t k = 1; k <= lights_.size(); ++k) {
+    for (auto [term, shown] : {std::pair{"diffuse_", "I_d"}, std::pair{"specular_", "I_s"}}) {
+      auto it = d.env().find(term + std::to_string(k));
+      if (it != d.env().end() && it->second.is_vector()) {
+        swatches.emplace_back(shown + std::to_string(k), it->second.vector);
+      }
+    }
+  }
+  swatches.emplace_back("I", t.vector);
+  return {SolutionPart{"", std::move(d).finish(), {swatch_figure(swatches)}}};
 }
 
 // The point on its surface seen edge-on, the unit vectors of the Phong model drawn from it one
