@@ -1,9 +1,12 @@
 // The shade kind.
 #include "kinds/shade.h"
 
+#include <algorithm>
+
 #include "derivation/number_format.h"
 #include "kinds/sketch.h"
 #include "kinds/swatch.h"
+#include "shapes/transform.h"
 #include "scenes/optics.h"
 
 namespace raygrade {
@@ -35,7 +38,26 @@ std::unique_ptr<Task> ShadeTask::read(const Cursor& problem) {
   Vec3d normal = problem.at("normal").nonzero_vec3();
   Vec3d eye = problem.at("eye").vec3();
   if (eye == point) problem.at("eye").fail("the eye is at the point itself", "degenerate");
-  Material m = problem.has("material") ? read_material(problem.at("material")) : Material{};
+  // A material's `colour` belongs to the point's shading, not to read_material: read it apart.
+  std::optional<SurfaceColour> surface;
+  Material m;
+  if (problem.has("material")) {
+    Cursor mc = problem.at("material");
+    if (mc.is_object() && mc.has("colour")) surface = read_surface_colour(mc.at("colour"));
+    nlohmann::json rest = mc.json();
+    if (rest.is_object()) rest.erase("colour");
+    m = read_material(Cursor(mc.file(), &rest, mc.path()));
+  }
+  Transform object;
+  if (problem.has("object_transform")) {
+    if (!surface) {
+      problem.at("object_transform")
+          .fail("object_transform places the material's colour pattern: the material has no "
+                "colour",
+                "invalid");
+    }
+    object = read_transform(problem.at("object_transform"));
+  }
   Intensity ia{1, std::nullopt};
   if (problem.has("ambient_light")) ia = read_intensity(problem.at("ambient_light"), "ambient_light");
   std::vector<ShadeLight> lights;
@@ -49,7 +71,89 @@ std::unique_ptr<Task> ShadeTask::read(const Cursor& problem) {
     Cursor light(c.file(), &rest, c.path());
     lights.push_back({read_light(light, static_cast<int>(i)), blocked});
   }
-  return std::make_unique<ShadeTask>(point, normalized(normal), eye, m, ia, std::move(lights));
+  if (!surface) {
+    return std::make_unique<ShadeTask>(point, normalized(normal), eye, m, ia, std::move(lights));
+  }
+  // The colour at the point: in the object's space, then the pattern's.
+  Vec3d c = surface->uniform;
+  if (surface->pattern) {
+    Vec3d po = object.to_object.point(point);
+    c = pattern_at(*surface->pattern, surface->pattern->transform.to_object.point(po)).colour;
+  }
+  Material folded = m;
+  Vec3d ka = Intensity{m.ambient, m.ambient_rgb}.rgb();
+  Vec3d kd = Intensity{m.diffuse, m.diffuse_rgb}.rgb();
+  folded.ambient_rgb = Vec3d{ka.x * c.x, ka.y * c.y, ka.z * c.z};
+  folded.diffuse_rgb = Vec3d{kd.x * c.x, kd.y * c.y, kd.z * c.z};
+  folded.ambient = std::max({folded.ambient_rgb->x, folded.ambient_rgb->y, folded.ambient_rgb->z});
+  folded.diffuse = std::max({folded.diffuse_rgb->x, folded.diffuse_rgb->y, folded.diffuse_rgb->z});
+  auto task =
+      std::make_unique<ShadeTask>(point, normalized(normal), eye, folded, ia, std::move(lights));
+  task->set_surface(*surface, object, m);
+  return task;
+}
+
+void ShadeTask::set_surface(SurfaceColour surface, Transform object, Material base) {
+  surface_ = std::move(surface);
+  object_ = std::move(object);
+  base_ = base;
+  object_point_ = object_.to_object.point(point_);
+  if (surface_->pattern) {
+    pattern_point_ = surface_->pattern->transform.to_object.point(object_point_);
+    surface_value_ = pattern_at(*surface_->pattern, pattern_point_);
+  } else {
+    surface_value_.colour = surface_->uniform;
+  }
+}
+
+// The pattern's steps as The Ray Tracer Challenge works them: the point in object space, then
+// in pattern space, then the count whose parity picks a or b (or the gradient's blend).
+void ShadeTask::surface_steps(Deriver& d) const {
+  const PatternValue& v = surface_value_;
+  if (!surface_->pattern) {
+    d.given("C", "C", surface_->uniform, "the material's colour");
+    return;
+  }
+  const Pattern& p = *surface_->pattern;
+  d.note(fmt::format("The material's colour is a {} pattern of a = {} and b = {}.",
+                     to_string(p.type), colour_text(p.a), colour_text(p.b)));
+  if (!object_.identity()) {
+    d.given("P_o", "P_o", object_point_,
+            fmt::format("P in the object's space, M⁻¹P (M: {})", describe_transform(object_)));
+  }
+  if (!p.transform.identity()) {
+    d.given("P_pat", "P_pat", pattern_point_,
+            fmt::format("in the pattern's space, T⁻¹ of the object-space point (T: {})",
+                        describe_transform(p.transform)));
+  }
+  const Vec3d& q = pattern_point_;
+  std::string parity = fmt::format("{} is {}: the colour {}", format_number(v.floor_sum),
+                                   v.even ? "even" : "odd", v.even ? "a" : "b");
+  switch (p.type) {
+    case PatternType::kStripe:
+      d.given("floor_x", "⌊x⌋", v.floor_sum, fmt::format("x = {}; {}", format_number(q.x), parity));
+      break;
+    case PatternType::kGradient: {
+      d.given("floor_x", "⌊x⌋", v.floor_sum, fmt::format("x = {}", format_number(q.x)));
+      d.step("frac", "f", E(q.x) - d.sym("floor_x"), "x − ⌊x⌋, how far across the band");
+      E A = d.given("a", "a", p.a);
+      E B = d.given("b", "b", p.b);
+      d.step("C", "C", A + (B - A) * d.sym("frac"), "a + (b − a)·f");
+      return;
+    }
+    case PatternType::kRing:
+      d.step("r", "r", sqrt(square(E(q.x)) + square(E(q.z))), "√(x² + z²), the distance from the y axis");
+      d.given("floor_r", "⌊r⌋", v.floor_sum, parity);
+      break;
+    case PatternType::kCheckers: {
+      E fx = d.given("floor_x", "⌊x⌋", std::floor(q.x), fmt::format("x = {}", format_number(q.x)));
+      E fy = d.given("floor_y", "⌊y⌋", std::floor(q.y), fmt::format("y = {}", format_number(q.y)));
+      E fz = d.given("floor_z", "⌊z⌋", std::floor(q.z), fmt::format("z = {}", format_number(q.z)));
+      d.step("floor_sum", "s", fx + fy + fz, "⌊x⌋ + ⌊y⌋ + ⌊z⌋; " + parity);
+      break;
+    }
+  }
+  d.given("C", "C", v.colour, v.even ? "the colour a" : "the colour b");
 }
 
 bool ShadeTask::colour() const {
@@ -108,6 +212,7 @@ nlohmann::json ShadeTask::answer() const {
                         {"lights", per},
                         {"terms", terms}};
   if (specular_applies) out["specular"] = channels_json(specular, rgb);
+  if (surface_) out["colour"] = channels_json(surface_value_.colour, true);
   return out;
 }
 
@@ -124,8 +229,16 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
         "Intensities are colours [r, g, b], worked channel by channel: a number acts on every "
         "channel alike, and a colour times a colour is the componentwise product ⊙.");
   }
+  if (surface_) {
+    surface_steps(d);
+    d.note(fmt::format(
+        "The surface colour C multiplies the ambient and diffuse coefficients (k_a = {}, k_d = "
+        "{} as given); the highlight keeps the light's colour.",
+        colour_text(Intensity{base_.ambient, base_.ambient_rgb}.rgb()),
+        colour_text(Intensity{base_.diffuse, base_.diffuse_rgb}.rgb())));
+  }
   Value ka_v = coefficient_value(m_.ambient, m_.ambient_rgb);
-  E ka = d.given("k_a", "k_a", ka_v);
+  E ka = d.given("k_a", "k_a", ka_v, surface_ ? "k_a ⊙ C" : "");
   // With colours, the lights are colours too (a number as [I, I, I]).
   Value ia_v = rgb ? Value(ambient_light_.rgb()) : Value(ambient_light_.value);
   E ia = d.given("I_a", "I_a", ia_v, "the ambient light");

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "problems/problem.h"
+#include "scenes/pattern.h"
 #include "scenes/scene.h"
 
 namespace raygrade {
@@ -33,13 +34,25 @@ class ShadeTask final : public Task {
   Sketch sketch() const override;
   // Whether any intensity or coefficient is a colour: then every term is a colour [r, g, b].
   bool colour() const;
+  // The material's `colour` (one colour or a pattern), on an object moved by `object`: its
+  // colour at the point multiplies k_a and k_d (`m` of the constructor is the material with
+  // those products already taken; `base` is the material as given).
+  void set_surface(SurfaceColour surface, Transform object, Material base);
 
  private:
   Vec3d point_, normal_, eye_;
   Material m_;
 
+  // The surface colour at the point, worked as steps (from the pattern, when there is one).
+  void surface_steps(Deriver& d) const;
+
   Intensity ambient_light_;
   std::vector<ShadeLight> lights_;
+  std::optional<SurfaceColour> surface_;
+  Transform object_;
+  Material base_;
+  Vec3d object_point_{}, pattern_point_{};
+  PatternValue surface_value_;
 };
 
 }  // namespace raygrade
