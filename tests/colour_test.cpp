@@ -6,6 +6,7 @@
 #include "kinds/ray_tree.h"
 #include "problems/problem.h"
 #include "scenes/colour.h"
+#include "scenes/pattern.h"
 #include "test_util.h"
 
 namespace raygrade {
@@ -244,6 +245,68 @@ TEST(Colour, ANumberStaysANumber) {
   ASSERT_TRUE(a["intensity"].is_number());
   // 0.1 + 0.6 + 0.2 + 0.5·0.2 = 1.0
   EXPECT_NEAR(a["intensity"].get<double>(), 1.0, 1e-14);
+}
+
+// The ch. 10 definitions, at points worked by hand in pattern space.
+TEST(Pattern, TextbookDefinitions) {
+  Pattern p;
+  p.a = {1, 1, 1};
+  p.b = {0, 0, 0};
+  p.type = PatternType::kStripe;
+  EXPECT_EQ(pattern_at(p, {-0.1, 5, 5}).colour, (Vec3d{0, 0, 0}));  // ⌊−0.1⌋ = −1, odd
+  EXPECT_EQ(pattern_at(p, {-1.1, 0, 0}).colour, (Vec3d{1, 1, 1}));  // ⌊−1.1⌋ = −2, even
+  p.type = PatternType::kGradient;
+  PatternValue g = pattern_at(p, {2.25, 0, 0});  // f = 0.25: a + (b − a)·0.25 = 0.75
+  EXPECT_DOUBLE_EQ(g.fraction, 0.25);
+  EXPECT_DOUBLE_EQ(g.colour.x, 0.75);
+  p.type = PatternType::kRing;
+  PatternValue r = pattern_at(p, {3, 100, 4});  // r = 5, odd
+  EXPECT_DOUBLE_EQ(r.radius, 5);
+  EXPECT_FALSE(r.even);
+  p.type = PatternType::kCheckers;
+  EXPECT_TRUE(pattern_at(p, {1.5, 0.5, -0.5}).even);   // 1 + 0 − 1 = 0
+  EXPECT_FALSE(pattern_at(p, {1.5, 0.5, 0.5}).even);   // 1 + 0 + 0 = 1
+}
+
+// A pattern on a moved object is evaluated in object space, then pattern space; the worked
+// solution shows both points and the count (here object scale 2, pattern translate 0.5: P =
+// (2.5, 0, 0) → (1.25, 0, 0) → (0.75, 0, 0), ⌊0.75⌋ = 0: white).
+TEST(Pattern, ObjectThenPatternSpace) {
+  Problem p = testing::problem(R"({"id": "p", "kind": "shade",
+    "point": [2.5, 0, 0], "normal": [0, 0, -1], "eye": [2.5, 0, -1], "ambient_light": [1, 1, 1],
+    "material": {"ambient": 1, "diffuse": 0, "specular": 0,
+                 "colour": {"pattern": "stripe", "a": [1, 1, 1], "b": [0, 0, 0],
+                            "transform": [{"translate": [0.5, 0, 0]}]}},
+    "object_transform": [{"scale": 2}],
+    "lights": [{"position": [0, 0, -10]}]})");
+  expect_colour(p.task->answer()["colour"], {1, 1, 1});
+  auto parts = p.task->derive("");
+  const Step* po = parts[0].derivation.find("P_o");
+  const Step* pp = parts[0].derivation.find("P_pat");
+  ASSERT_NE(po, nullptr);
+  ASSERT_NE(pp, nullptr);
+  EXPECT_EQ(po->value.vector, (Vec3d{1.25, 0, 0}));
+  EXPECT_EQ(pp->value.vector, (Vec3d{0.75, 0, 0}));
+  ASSERT_NE(parts[0].derivation.find("floor_x"), nullptr);
+  EXPECT_EQ(parts[0].derivation.find("floor_x")->value.scalar, 0);
+}
+
+TEST(Pattern, BadPatternsAreErrors) {
+  const char* base = R"({"id": "p", "kind": "shade", "point": [0, 0, 0], "normal": [0, 0, -1],
+    "eye": [0, 0, -1], "material": {"colour": %s}, "lights": [{"position": [0, 0, -10]}]})";
+  for (const char* bad : {R"({"pattern": "zigzag", "a": 1, "b": 0})",
+                          R"({"pattern": "stripe", "a": 1})",
+                          R"({"pattern": "stripe", "a": 1, "b": 0, "scale": 2})",
+                          R"([1, 2])"}) {
+    std::string text = base;
+    text.replace(text.find("%s"), 2, bad);
+    EXPECT_THROW(testing::problem(text), Error) << bad;
+  }
+  // object_transform places a pattern: without a colour it is an error.
+  EXPECT_THROW(testing::problem(R"({"id": "p", "kind": "shade", "point": [0, 0, 0],
+    "normal": [0, 0, -1], "eye": [0, 0, -1], "object_transform": [{"scale": 2}],
+    "lights": [{"position": [0, 0, -10]}]})"),
+               Error);
 }
 
 }  // namespace

@@ -62,11 +62,20 @@ TEST(Published, AChangedAnswerIsGradedWrong) {
   EXPECT_EQ(changed, 2);
 }
 
-// The book's colour scenarios: every answer is a colour, graded right channel by channel.
+// The book's colour and pattern scenarios: every answer is a colour, graded right channel by
+// channel.
 TEST(Published, RayTracerChallengeColourAnswersAreGradedRight) {
   std::set<std::string> kinds;
   expect_published_answers_right(kPublishedColour, kinds);
   for (const char* k : {"shade", "ray-tree"}) EXPECT_TRUE(kinds.count(k)) << k;
+  // Every textbook pattern is among them.
+  Bank bank = load_bank({kPublishedColour});
+  std::set<std::string> patterns;
+  for (const auto& p : bank.problems) {
+    const nlohmann::json& m = p.source.value("material", nlohmann::json::object());
+    if (m.contains("colour") && m["colour"].is_object()) patterns.insert(m["colour"]["pattern"]);
+  }
+  EXPECT_EQ(patterns, (std::set<std::string>{"stripe", "gradient", "ring", "checkers"}));
 }
 
 // Each published colour with one channel changed in its fourth decimal is graded wrong, and the
@@ -75,15 +84,17 @@ TEST(Published, AChangedChannelIsGradedWrong) {
   Bank bank = load_bank({kPublishedColour});
   ASSERT_FALSE(bank.problems.empty());
   for (const auto& p : bank.problems) {
-    const nlohmann::json& book = p.expected->at("intensity");
+    // The lighting scenarios publish an intensity, the pattern ones the pattern's colour.
+    const std::string key = p.expected->contains("intensity") ? "intensity" : "colour";
+    const nlohmann::json& book = p.expected->at(key);
     ASSERT_TRUE(book.is_array()) << p.id;
     for (int c = 0; c < 3; ++c) {
       nlohmann::json wrong = *p.expected;
-      wrong["intensity"][c] = book[c].get<double>() + 0.0003;
+      wrong[key][c] = book[c].get<double>() + 0.0003;
       GradeResult r = grade_answer(p, wrong);
       ASSERT_FALSE(r.parts.empty());
       for (const auto& part : r.parts) {
-        if (part.name != "intensity") continue;
+        if (part.name != key) continue;
         EXPECT_EQ(part.status, PartStatus::kWrong) << p.id << " channel " << c;
         ASSERT_FALSE(part.feedback.empty());
         std::string channel = std::string(": ") + "rgb"[c] + " is";
@@ -91,7 +102,7 @@ TEST(Published, AChangedChannelIsGradedWrong) {
       }
     }
     nlohmann::json scalar = *p.expected;
-    scalar["intensity"] = book[0];
+    scalar[key] = book[0];
     GradeResult r = grade_answer(p, scalar);
     EXPECT_LT(r.score, r.max_score) << p.id;
     bool named = false;

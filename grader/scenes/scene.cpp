@@ -29,6 +29,12 @@ double coefficient(const Cursor& c, std::string_view key, double fallback) {
 }  // namespace
 
 Material read_material(const Cursor& c) {
+  if (c.has("colour")) {
+    c.at("colour").fail(
+        "a material's colour or pattern is read by shade problems only; in a scene, give k_a "
+        "and k_d as colours [r, g, b]",
+        "unsupported");
+  }
   c.allow_only({"ambient", "diffuse", "specular", "shininess", "reflectivity", "transparency",
                 "refractive_index", "fresnel"});
   Material m;
