@@ -1,11 +1,12 @@
 // Colour: intensities and coefficients as [r, g, b], worked and graded channel by channel.
+#include "scenes/colour.h"
+
 #include <gtest/gtest.h>
 
 #include "core/error.h"
 #include "grading/grade.h"
 #include "kinds/ray_tree.h"
 #include "problems/problem.h"
-#include "scenes/colour.h"
 #include "scenes/pattern.h"
 #include "test_util.h"
 
@@ -43,7 +44,8 @@ TEST(Colour, ShadeWorksEveryChannel) {
   const Step* total = parts[0].derivation.find("I");
   ASSERT_NE(total, nullptr);
   ASSERT_TRUE(total->value.is_vector());
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(total->value.vector[c], (Vec3d{0.9, 0.75, 0.1})[c], 1e-14);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(total->value.vector[c], (Vec3d{0.9, 0.75, 0.1})[c], 1e-14);
 }
 
 // A number meets a colour on every channel alike: a white light [1, 1, 1] gives the same
@@ -138,7 +140,8 @@ TEST(Colour, ShadeWithoutSpecularListsNoSpecular) {
       EXPECT_EQ(part.status, PartStatus::kRight) << part.name;
     }
   }
-  GradeResult bad = grade_answer(p, nlohmann::json::parse(R"({"intensity": 0.6, "specular": 0.3})"));
+  GradeResult bad =
+      grade_answer(p, nlohmann::json::parse(R"({"intensity": 0.6, "specular": 0.3})"));
   for (const auto& part : bad.parts) {
     if (part.name == "specular") {
       EXPECT_NE(part.status, PartStatus::kRight);
@@ -264,8 +267,8 @@ TEST(Pattern, TextbookDefinitions) {
   EXPECT_DOUBLE_EQ(r.radius, 5);
   EXPECT_FALSE(r.even);
   p.type = PatternType::kCheckers;
-  EXPECT_TRUE(pattern_at(p, {1.5, 0.5, -0.5}).even);   // 1 + 0 − 1 = 0
-  EXPECT_FALSE(pattern_at(p, {1.5, 0.5, 0.5}).even);   // 1 + 0 + 0 = 1
+  EXPECT_TRUE(pattern_at(p, {1.5, 0.5, -0.5}).even);  // 1 + 0 − 1 = 0
+  EXPECT_FALSE(pattern_at(p, {1.5, 0.5, 0.5}).even);  // 1 + 0 + 0 = 1
 }
 
 // A pattern on a moved object is evaluated in object space, then pattern space; the worked
@@ -294,10 +297,9 @@ TEST(Pattern, ObjectThenPatternSpace) {
 TEST(Pattern, BadPatternsAreErrors) {
   const char* base = R"({"id": "p", "kind": "shade", "point": [0, 0, 0], "normal": [0, 0, -1],
     "eye": [0, 0, -1], "material": {"colour": %s}, "lights": [{"position": [0, 0, -10]}]})";
-  for (const char* bad : {R"({"pattern": "zigzag", "a": 1, "b": 0})",
-                          R"({"pattern": "stripe", "a": 1})",
-                          R"({"pattern": "stripe", "a": 1, "b": 0, "scale": 2})",
-                          R"([1, 2])"}) {
+  for (const char* bad :
+       {R"({"pattern": "zigzag", "a": 1, "b": 0})", R"({"pattern": "stripe", "a": 1})",
+        R"({"pattern": "stripe", "a": 1, "b": 0, "scale": 2})", R"([1, 2])"}) {
     std::string text = base;
     text.replace(text.find("%s"), 2, bad);
     EXPECT_THROW(testing::problem(text), Error) << bad;

@@ -130,11 +130,11 @@ json shade_form(const Problem& p) {
        column(term, "specular", "specular" + unit)});
   json terms = field("set", "terms", "The terms that apply");
   terms["options"] = json::array({"ambient", "diffuse", "specular"});
-  return {{"fields", json::array({field(term, "ambient", "The ambient term" + unit),
-                                  field(term, "diffuse", "The diffuse term" + unit),
-                                  field(term, "specular", "The specular term" + unit),
-                                  field(term, "intensity", "The intensity" + unit), lights,
-                                  terms})}};
+  return {
+      {"fields", json::array({field(term, "ambient", "The ambient term" + unit),
+                              field(term, "diffuse", "The diffuse term" + unit),
+                              field(term, "specular", "The specular term" + unit),
+                              field(term, "intensity", "The intensity" + unit), lights, terms})}};
 }
 
 json ray_tree_form(const Problem& p) {

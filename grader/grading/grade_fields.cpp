@@ -322,9 +322,10 @@ class FieldsGrader final : public KindGrader {
       std::size_t before = out.feedback.size();
       for (const char* key : {"n_dot_l", "r_dot_v", "diffuse", "specular"}) {
         if (!g.has(key)) continue;
-        Verdict v = !r->contains(key)        ? grade_no_specular(g.at(key))
-                    : r->at(key).is_array() ? grade_colour(key, g.at(key), r->at(key))
-                                            : grade_scalar(key, g.at(key), r->at(key).get<double>());
+        Verdict v = !r->contains(key) ? grade_no_specular(g.at(key))
+                    : r->at(key).is_array()
+                        ? grade_colour(key, g.at(key), r->at(key))
+                        : grade_scalar(key, g.at(key), r->at(key).get<double>());
         for (auto& m : v.mistakes) out.mistakes.push_back(std::move(m));
         if (v.credit < 1) out.feedback.push_back(fmt::format("Light {}: {}", light, v.feedback[0]));
       }

@@ -6,10 +6,10 @@
 #include <set>
 
 #include "derivation/number_format.h"
+#include "grading/grade_colour.h"
 #include "grading/kind_grader.h"
 #include "grading/mistakes.h"
 #include "grading/parts.h"
-#include "grading/grade_colour.h"
 #include "kinds/ray_tree.h"
 #include "scenes/tree_json.h"
 

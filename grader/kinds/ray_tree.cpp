@@ -6,7 +6,6 @@
 #include "core/internal_error.h"
 #include "derivation/derivation.h"
 #include "derivation/number_format.h"
-
 #include "kinds/camera_ray.h"
 #include "kinds/swatch.h"
 #include "kinds/view_ray.h"
@@ -141,13 +140,12 @@ nlohmann::json rgb_json(const nlohmann::json& r, const nlohmann::json& g, const 
   return nlohmann::json::array({r, g, b});
 }
 
-
 constexpr const char* kChannelTitles[3] = {"red", "green", "blue"};
 
 // One channel's intensities, node by node, children before the parents that add them.
 Derivation channel_steps(const RayTree& t, int channel) {
-  Deriver d("whitted", fmt::format("The {} channel ({})", kChannelTitles[channel],
-                                   kChannelNames[channel]));
+  Deriver d("whitted",
+            fmt::format("The {} channel ({})", kChannelTitles[channel], kChannelNames[channel]));
   for (auto it = t.nodes.rbegin(); it != t.nodes.rend(); ++it) {
     const TreeNode& n = *it;
     std::string name = fmt::format("I_{}_{}", n.label, kChannelNames[channel]);
@@ -198,9 +196,9 @@ std::vector<SolutionPart> RayTreeTask::derive(std::string_view /*method*/,
   SolutionPart answer = std::move(parts.back());
   parts.pop_back();
   for (int k = 0; k < 3; ++k) {
-    parts.push_back(SolutionPart{
-        fmt::format("Intensities, {} channel", kChannelTitles[k]), channel_steps(channels_[k], k),
-        {}});
+    parts.push_back(SolutionPart{fmt::format("Intensities, {} channel", kChannelTitles[k]),
+                                 channel_steps(channels_[k], k),
+                                 {}});
   }
   std::string colour = fmt::format(
       "The colour seen along the primary ray is {} (r, g, b): the scene's colours are worked "
@@ -214,9 +212,8 @@ std::vector<SolutionPart> RayTreeTask::derive(std::string_view /*method*/,
     Vec3d c{};
     for (int k = 0; k < 3; ++k) c[k] = channels_[k].nodes[i].intensity;
     const TreeNode& n = tree_.nodes[i];
-    swatches.emplace_back(n.hit ? fmt::format("I at {}", n.label)
-                                : fmt::format("I of {} (background)", n.path),
-                          c);
+    swatches.emplace_back(
+        n.hit ? fmt::format("I at {}", n.label) : fmt::format("I of {} (background)", n.path), c);
   }
   answer.figures.push_back(swatch_figure(swatches));
   parts.push_back(std::move(answer));

@@ -6,8 +6,8 @@
 #include "derivation/number_format.h"
 #include "kinds/sketch.h"
 #include "kinds/swatch.h"
-#include "shapes/transform.h"
 #include "scenes/optics.h"
+#include "shapes/transform.h"
 
 namespace raygrade {
 namespace {
@@ -30,7 +30,6 @@ Value coefficient_value(double v, const std::optional<Vec3d>& rgb) {
   return rgb ? Value(*rgb) : Value(v);
 }
 
-
 }  // namespace
 
 std::unique_ptr<Task> ShadeTask::read(const Cursor& problem) {
@@ -52,14 +51,16 @@ std::unique_ptr<Task> ShadeTask::read(const Cursor& problem) {
   if (problem.has("object_transform")) {
     if (!surface) {
       problem.at("object_transform")
-          .fail("object_transform places the material's colour pattern: the material has no "
-                "colour",
-                "invalid");
+          .fail(
+              "object_transform places the material's colour pattern: the material has no "
+              "colour",
+              "invalid");
     }
     object = read_transform(problem.at("object_transform"));
   }
   Intensity ia{1, std::nullopt};
-  if (problem.has("ambient_light")) ia = read_intensity(problem.at("ambient_light"), "ambient_light");
+  if (problem.has("ambient_light"))
+    ia = read_intensity(problem.at("ambient_light"), "ambient_light");
   std::vector<ShadeLight> lights;
   auto items = problem.at("lights").items();
   for (std::size_t i = 0; i < items.size(); ++i) {
@@ -142,7 +143,8 @@ void ShadeTask::surface_steps(Deriver& d) const {
       return;
     }
     case PatternType::kRing:
-      d.step("r", "r", sqrt(square(E(q.x)) + square(E(q.z))), "√(x² + z²), the distance from the y axis");
+      d.step("r", "r", sqrt(square(E(q.x)) + square(E(q.z))),
+             "√(x² + z²), the distance from the y axis");
       d.given("floor_r", "⌊r⌋", v.floor_sum, parity);
       break;
     case PatternType::kCheckers: {
@@ -287,19 +289,16 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
     Vec3d spec{};
     for (int c = 0; c < (rgb ? 3 : 1); ++c) {
       Material mc = channel(m_, c);
-      PhongLight p =
-          phong_light(normal_, normalized(d.value("L_" + i).vector), d.value("V").vector,
-                      channel(l, c).intensity, mc.diffuse, mc.specular, m_.shininess);
+      PhongLight p = phong_light(normal_, normalized(d.value("L_" + i).vector), d.value("V").vector,
+                                 channel(l, c).intensity, mc.diffuse, mc.specular, m_.shininess);
       spec[c] = rv.scalar > 0 ? p.specular : 0.0;
     }
-    std::string why =
-        rv.scalar > 0
-            ? fmt::format("k_s{}I_p·(R·V)^n with k_s = {}, n = {}",
-                          m_.specular_rgb ? " ⊙ " : "·",
-                          m_.specular_rgb ? colour_text(*m_.specular_rgb)
-                                          : format_number(m_.specular),
-                          format_number(m_.shininess))
-            : "R·V ≤ 0: no highlight";
+    std::string why = rv.scalar > 0 ? fmt::format("k_s{}I_p·(R·V)^n with k_s = {}, n = {}",
+                                                  m_.specular_rgb ? " ⊙ " : "·",
+                                                  m_.specular_rgb ? colour_text(*m_.specular_rgb)
+                                                                  : format_number(m_.specular),
+                                                  format_number(m_.shininess))
+                                    : "R·V ≤ 0: no highlight";
     d.given("specular_" + i, "I_s" + i, rgb ? Value(spec) : Value(spec.x), why);
     sum.push_back(d.sym("specular_" + i));
   }

@@ -1,10 +1,10 @@
 // Reading and writing intensities that are numbers or colours.
 #include "scenes/colour.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "derivation/number_format.h"
 

@@ -4,11 +4,10 @@
 // by channel, a number meeting a colour acting on every channel alike.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
-
-#include <nlohmann/json.hpp>
 
 #include "json/cursor.h"
 #include "math/vec3.h"

@@ -1,9 +1,9 @@
 // The textbook patterns.
 #include "scenes/pattern.h"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "scenes/colour.h"
 
@@ -21,9 +21,7 @@ const char* to_string(PatternType t) {
 
 namespace {
 
-Vec3d colour_of(const Cursor& c, std::string_view what) {
-  return read_intensity(c, what).rgb();
-}
+Vec3d colour_of(const Cursor& c, std::string_view what) { return read_intensity(c, what).rgb(); }
 
 }  // namespace
 

@@ -36,10 +36,10 @@ SurfaceColour read_surface_colour(const Cursor& c);
 // The pattern's colour at a point of pattern space, and the quantities that decide it.
 struct PatternValue {
   Vec3d colour{};
-  double floor_sum = 0;   // ⌊x⌋, ⌊r⌋ or ⌊x⌋ + ⌊y⌋ + ⌊z⌋ (stripe, ring, checkers)
-  double fraction = 0;    // x − ⌊x⌋ (gradient)
-  double radius = 0;      // √(x² + z²) (ring)
-  bool even = true;       // floor_sum mod 2 = 0: the colour a
+  double floor_sum = 0;  // ⌊x⌋, ⌊r⌋ or ⌊x⌋ + ⌊y⌋ + ⌊z⌋ (stripe, ring, checkers)
+  double fraction = 0;   // x − ⌊x⌋ (gradient)
+  double radius = 0;     // √(x² + z²) (ring)
+  bool even = true;      // floor_sum mod 2 = 0: the colour a
 };
 PatternValue pattern_at(const Pattern& p, const Vec3d& pattern_point);
 

@@ -71,7 +71,8 @@ nlohmann::json material_json(const Material& m) {
                       {"diffuse", intensity_json({m.diffuse, m.diffuse_rgb})},
                       {"specular", intensity_json({m.specular, m.specular_rgb})},
                       {"shininess", m.shininess},
-                      {"reflectivity", m.reflectivity}, {"transparency", m.transparency}};
+                      {"reflectivity", m.reflectivity},
+                      {"transparency", m.transparency}};
   if (m.transmits()) j["refractive_index"] = m.refractive_index;
   if (m.fresnel != FresnelModel::kNone) j["fresnel"] = to_string(m.fresnel);
   return j;

@@ -45,9 +45,9 @@ enum class LightType { kPoint, kDirectional };
 struct Light {
   std::string name;
   LightType type = LightType::kPoint;
-  Vec3d position{};      // point lights
-  Vec3d direction{};     // directional lights: the direction the light travels
-  double intensity = 1;  // I_p
+  Vec3d position{};             // point lights
+  Vec3d direction{};            // directional lights: the direction the light travels
+  double intensity = 1;         // I_p
   std::optional<Vec3d> colour;  // I_p as [r, g, b], when given so (`intensity` is its largest)
 };
 
@@ -68,11 +68,11 @@ enum class TransparentShadows {
 struct Scene {
   std::vector<SceneObject> objects;
   std::vector<Light> lights;
-  double ambient_light = 1;     // I_a
-  double background = 0;        // the intensity of a ray that hits nothing
+  double ambient_light = 1;  // I_a
+  double background = 0;     // the intensity of a ray that hits nothing
   std::optional<Vec3d> ambient_light_rgb, background_rgb;  // when given as colours
-  double refractive_index = 1;  // of the space between the objects
-  int max_depth = 5;            // generations of rays in the tree; the primary ray is generation 1
+  double refractive_index = 1;                             // of the space between the objects
+  int max_depth = 5;  // generations of rays in the tree; the primary ray is generation 1
   bool internal_reflection = true;  // reflection rays inside transparent solids
   TransparentShadows transparent_shadows = TransparentShadows::kBlock;
 };

@@ -168,9 +168,9 @@ Derivation node_steps(const RayTree& tree, const Scene& scene, const TreeNode& n
     ts.push_back(d.given(name, name, h.hit.t, note));
   }
   if (!node.hit) {
-    d.conclude(fmt::format(
-        "The ray hits nothing: it leaves the scene (background intensity {}).",
-        scene.background_rgb ? colour_text(*scene.background_rgb) : format_number(scene.background)));
+    d.conclude(fmt::format("The ray hits nothing: it leaves the scene (background intensity {}).",
+                           scene.background_rgb ? colour_text(*scene.background_rgb)
+                                                : format_number(scene.background)));
     return std::move(d).finish();
   }
   const SceneObject& obj = scene.objects[node.object];
