@@ -233,6 +233,11 @@ TEST(Colour, RayTreeSolutionShowsSwatches) {
   EXPECT_NE(swatches->text.find("[#ffb380] I at I1 = [1, 0.7, 0.5]"), std::string::npos)
       << swatches->text;
   EXPECT_NE(swatches->text.find("[#336699]"), std::string::npos) << swatches->text;
+  // The tree's own figure has the same swatches beside its points.
+  ASSERT_FALSE(parts.front().figures.empty());
+  const std::string& tree = parts.front().figures.front().svg;
+  EXPECT_NE(tree.find("class=\"swatch\""), std::string::npos) << tree;
+  EXPECT_NE(tree.find("fill=\"#ffb380\""), std::string::npos) << tree;
 }
 
 // Without colours nothing changes: the same tree with numbers gives numbers.

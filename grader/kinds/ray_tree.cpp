@@ -9,6 +9,7 @@
 #include "kinds/camera_ray.h"
 #include "kinds/swatch.h"
 #include "kinds/view_ray.h"
+#include "scenes/tree_draw.h"
 #include "scenes/tree_json.h"
 #include "scenes/tree_steps.h"
 
@@ -77,6 +78,15 @@ void RayTreeTask::trace_channels(std::vector<Scene> channel_scenes,
         "the scene has colours: every intensity is worked channel by channel (r, g, b), each "
         "channel a tree of numbers";
   }
+}
+
+std::vector<Vec3d> RayTreeTask::node_colours() const {
+  std::vector<Vec3d> out(tree_.nodes.size());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    for (int k = 0; k < 3; ++k)
+      out[i][k] = channels_[static_cast<std::size_t>(k)].nodes[i].intensity;
+  }
+  return out;
 }
 
 Vec3d RayTreeTask::colour_intensity() const {
@@ -192,6 +202,11 @@ std::vector<SolutionPart> RayTreeTask::derive(std::string_view /*method*/,
                                               const Overrides* overrides) const {
   std::vector<SolutionPart> parts = tree_parts(tree_, scene_, overrides);
   if (channels_.empty()) return parts;
+  // The tree's figure with each point's colour beside it.
+  std::vector<Vec3d> colours = node_colours();
+  for (auto& f : parts.front().figures) {
+    if (!f.svg.empty()) f.svg = tree_svg(tree_, scene_, &colours);
+  }
   // The colour: each channel's intensities, then the colour they make, before the answer.
   SolutionPart answer = std::move(parts.back());
   parts.pop_back();
@@ -209,11 +224,10 @@ std::vector<SolutionPart> RayTreeTask::derive(std::string_view /*method*/,
   // Each hit point's colour, and the background a missing ray sees, as swatches.
   std::vector<std::pair<std::string, Vec3d>> swatches;
   for (std::size_t i = 0; i < tree_.nodes.size(); ++i) {
-    Vec3d c{};
-    for (int k = 0; k < 3; ++k) c[k] = channels_[k].nodes[i].intensity;
     const TreeNode& n = tree_.nodes[i];
     swatches.emplace_back(
-        n.hit ? fmt::format("I at {}", n.label) : fmt::format("I of {} (background)", n.path), c);
+        n.hit ? fmt::format("I at {}", n.label) : fmt::format("I of {} (background)", n.path),
+        colours[i]);
   }
   answer.figures.push_back(swatch_figure(swatches));
   parts.push_back(std::move(answer));

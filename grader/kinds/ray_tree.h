@@ -41,8 +41,9 @@ class RayTreeTask final : public Task {
                       const std::map<std::string, std::string>& labels);
   bool colour() const { return !channels_.empty(); }
   const std::vector<RayTree>& channels() const { return channels_; }
-  // The colour along the primary ray (only when colour()).
+  // The colour along the primary ray, and at every node (only when colour()).
   Vec3d colour_intensity() const;
+  std::vector<Vec3d> node_colours() const;
 
  private:
   Scene scene_;
