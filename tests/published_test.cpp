@@ -1,6 +1,7 @@
-// Exercises from a textbook with the answers it publishes (tests/data/ray-tracer-challenge.json,
-// sources in tests/data/README.md): raygrade reads each, and grades the published answer right
-// in every part the book answers, within the book's own EPSILON of 0.0001.
+// Exercises from a textbook with the answers it publishes (tests/data/ray-tracer-challenge.json
+// and, in colour, tests/data/ray-tracer-challenge-colour.json; sources in tests/data/README.md):
+// raygrade reads each, and grades the published answer right in every part the book answers,
+// within the book's own EPSILON of 0.0001.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -15,12 +16,13 @@ namespace {
 
 const std::string kPublished =
     std::string(RAYGRADE_SOURCE_DIR) + "/tests/data/ray-tracer-challenge.json";
+const std::string kPublishedColour =
+    std::string(RAYGRADE_SOURCE_DIR) + "/tests/data/ray-tracer-challenge-colour.json";
 
-TEST(Published, RayTracerChallengeAnswersAreGradedRight) {
-  Bank bank = load_bank({kPublished});
+void expect_published_answers_right(const std::string& file, std::set<std::string>& kinds) {
+  Bank bank = load_bank({file});
   ASSERT_TRUE(bank.errors.empty()) << bank.errors.front().message;
-  ASSERT_GE(bank.problems.size(), 10u);
-  std::set<std::string> kinds;
+  ASSERT_GE(bank.problems.size(), 10u) << file;
   for (const auto& p : bank.problems) {
     ASSERT_TRUE(p.expected.has_value()) << p.id;
     kinds.insert(p.kind);
@@ -35,6 +37,11 @@ TEST(Published, RayTracerChallengeAnswersAreGradedRight) {
     }
     EXPECT_EQ(graded, static_cast<int>(p.expected->size())) << p.id;
   }
+}
+
+TEST(Published, RayTracerChallengeAnswersAreGradedRight) {
+  std::set<std::string> kinds;
+  expect_published_answers_right(kPublished, kinds);
   // The new kinds are all exercised.
   for (const char* k : {"normal", "fresnel", "view-ray", "shade"}) EXPECT_TRUE(kinds.count(k)) << k;
 }
@@ -53,6 +60,55 @@ TEST(Published, AChangedAnswerIsGradedWrong) {
     EXPECT_LT(r.score, r.max_score) << p.id;
   }
   EXPECT_EQ(changed, 2);
+}
+
+// The book's colour and pattern scenarios: every answer is a colour, graded right channel by
+// channel.
+TEST(Published, RayTracerChallengeColourAnswersAreGradedRight) {
+  std::set<std::string> kinds;
+  expect_published_answers_right(kPublishedColour, kinds);
+  for (const char* k : {"shade", "ray-tree"}) EXPECT_TRUE(kinds.count(k)) << k;
+  // Every textbook pattern is among them.
+  Bank bank = load_bank({kPublishedColour});
+  std::set<std::string> patterns;
+  for (const auto& p : bank.problems) {
+    const nlohmann::json& m = p.source.value("material", nlohmann::json::object());
+    if (m.contains("colour") && m["colour"].is_object()) patterns.insert(m["colour"]["pattern"]);
+  }
+  EXPECT_EQ(patterns, (std::set<std::string>{"stripe", "gradient", "ring", "checkers"}));
+}
+
+// Each published colour with one channel changed in its fourth decimal is graded wrong, and the
+// feedback names that channel; the book's colour as a single number is the named mistake.
+TEST(Published, AChangedChannelIsGradedWrong) {
+  Bank bank = load_bank({kPublishedColour});
+  ASSERT_FALSE(bank.problems.empty());
+  for (const auto& p : bank.problems) {
+    // The lighting scenarios publish an intensity, the pattern ones the pattern's colour.
+    const std::string key = p.expected->contains("intensity") ? "intensity" : "colour";
+    const nlohmann::json& book = p.expected->at(key);
+    ASSERT_TRUE(book.is_array()) << p.id;
+    for (int c = 0; c < 3; ++c) {
+      nlohmann::json wrong = *p.expected;
+      wrong[key][c] = book[c].get<double>() + 0.0003;
+      GradeResult r = grade_answer(p, wrong);
+      ASSERT_FALSE(r.parts.empty());
+      for (const auto& part : r.parts) {
+        if (part.name != key) continue;
+        EXPECT_EQ(part.status, PartStatus::kWrong) << p.id << " channel " << c;
+        ASSERT_FALSE(part.feedback.empty());
+        std::string channel = std::string(": ") + "rgb"[c] + " is";
+        EXPECT_NE(part.feedback[0].find(channel), std::string::npos) << part.feedback[0];
+      }
+    }
+    nlohmann::json scalar = *p.expected;
+    scalar[key] = book[0];
+    GradeResult r = grade_answer(p, scalar);
+    EXPECT_LT(r.score, r.max_score) << p.id;
+    bool named = false;
+    for (const auto& m : r.mistakes) named |= m.id == "scalar-for-colour";
+    EXPECT_TRUE(named) << p.id;
+  }
 }
 
 // The book's "Computing the normal on a transformed sphere" (spheres.feature, ch. 6) asks for

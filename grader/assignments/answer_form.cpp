@@ -2,6 +2,7 @@
 #include "assignments/answer_form.h"
 
 #include "kinds/derive.h"
+#include "kinds/shade.h"
 
 namespace raygrade {
 namespace {
@@ -112,6 +113,11 @@ json refract_form() {
 }
 
 json shade_form(const Problem& p) {
+  // With colours every term is [r, g, b]: three numbers, as a vector's field takes them.
+  const auto* task = dynamic_cast<const ShadeTask*>(p.task.get());
+  bool rgb = task && task->colour();
+  std::string term = rgb ? "vector" : "number";
+  std::string unit = rgb ? " [r, g, b]" : "";
   json lights = field("rows", "lights", "Each light");
   json rows = json::array();
   for (const auto& n : names_of(p.source.value("lights", json()))) {
@@ -120,14 +126,15 @@ json shade_form(const Problem& p) {
   lights["rows"] = rows;
   lights["columns"] = json::array(
       {column("number", "n_dot_l", "N·L"), column("number", "r_dot_v", "R·V"),
-       column("yesno", "reaches", "reaches the point?"), column("number", "diffuse", "diffuse"),
-       column("number", "specular", "specular")});
+       column("yesno", "reaches", "reaches the point?"), column(term, "diffuse", "diffuse" + unit),
+       column(term, "specular", "specular" + unit)});
   json terms = field("set", "terms", "The terms that apply");
   terms["options"] = json::array({"ambient", "diffuse", "specular"});
-  return {{"fields", json::array({field("number", "ambient", "The ambient term"),
-                                  field("number", "diffuse", "The diffuse term"),
-                                  field("number", "specular", "The specular term"),
-                                  field("number", "intensity", "The intensity"), lights, terms})}};
+  return {
+      {"fields", json::array({field(term, "ambient", "The ambient term" + unit),
+                              field(term, "diffuse", "The diffuse term" + unit),
+                              field(term, "specular", "The specular term" + unit),
+                              field(term, "intensity", "The intensity" + unit), lights, terms})}};
 }
 
 json ray_tree_form(const Problem& p) {

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "derivation/number_format.h"
+#include "grading/grade_colour.h"
 #include "grading/kind_grader.h"
 #include "grading/mistakes.h"
 #include "grading/parts.h"
@@ -56,6 +57,8 @@ class FieldsGrader final : public KindGrader {
     a.allow_only(names);
     for (const auto& spec : kind_parts(kind_)) {
       std::optional<AnswerReader> given = answer_for(a, spec.name);
+      // A shade problem without a material colour has no `colour` part to give.
+      if (!given && spec.name == "colour" && !reference_.contains("colour")) continue;
       if (!given) {
         out.parts.push_back(missing_part(context_, spec.name,
                                          fmt::format("No {} given ({}).", spec.name, spec.asks)));
@@ -87,7 +90,11 @@ class FieldsGrader final : public KindGrader {
     if (spec.name == "lights") return grade_lights(s);
     if (!ref || ref->is_null()) {
       if (s.json().is_null() || s.json() == false) return {1, {}};
+      if (spec.name == "specular" && kind_ == "shade") return grade_no_specular(s);
       return {0, {absent_reason(spec.name)}};
+    }
+    if (spec.compare == Comparison::kScalar && ref->is_array()) {
+      return grade_colour(spec.name, s, *ref);
     }
     switch (spec.compare) {
       case Comparison::kDirection:
@@ -142,6 +149,25 @@ class FieldsGrader final : public KindGrader {
     return {
         0,
         {fmt::format("{} is {}{}, not {}.", name, number(ref), angle ? "°" : "", n.value->text)}};
+  }
+
+  // k_s = 0: there is no specular term; 0 (or [0, 0, 0]) for it is right, anything else not.
+  Verdict grade_no_specular(const AnswerReader& s) const {
+    bool zero = s.json().is_number() && s.json().get<double>() == 0;
+    if (s.json().is_array()) {
+      zero = true;
+      for (const auto& x : s.json()) zero &= x.is_number() && x.get<double>() == 0;
+    }
+    if (zero) return {1, {}};
+    return {0, {"k_s = 0: the material has no specular term, so there is none to give."}};
+  }
+
+  Verdict grade_colour(const std::string& name, const AnswerReader& s,
+                       const nlohmann::json& ref) const {
+    Vec3d want{ref[0].get<double>(), ref[1].get<double>(), ref[2].get<double>()};
+    ColourVerdict v =
+        raygrade::grade_colour(name, s, want, context_.tolerance.for_field(name), numbers_);
+    return {v.credit, std::move(v.feedback), std::move(v.mistakes)};
   }
 
   // The named mistakes of a normal problem's normal: the inward normal of a closed object, and a
@@ -296,7 +322,11 @@ class FieldsGrader final : public KindGrader {
       std::size_t before = out.feedback.size();
       for (const char* key : {"n_dot_l", "r_dot_v", "diffuse", "specular"}) {
         if (!g.has(key)) continue;
-        Verdict v = grade_scalar(key, g.at(key), r->at(key).get<double>());
+        Verdict v = !r->contains(key) ? grade_no_specular(g.at(key))
+                    : r->at(key).is_array()
+                        ? grade_colour(key, g.at(key), r->at(key))
+                        : grade_scalar(key, g.at(key), r->at(key).get<double>());
+        for (auto& m : v.mistakes) out.mistakes.push_back(std::move(m));
         if (v.credit < 1) out.feedback.push_back(fmt::format("Light {}: {}", light, v.feedback[0]));
       }
       if (g.has("reaches")) {

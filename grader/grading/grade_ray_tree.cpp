@@ -6,6 +6,7 @@
 #include <set>
 
 #include "derivation/number_format.h"
+#include "grading/grade_colour.h"
 #include "grading/kind_grader.h"
 #include "grading/mistakes.h"
 #include "grading/parts.h"
@@ -47,7 +48,7 @@ class RayTreeGrader final : public KindGrader {
   explicit RayTreeGrader(const Problem& p) : task_(dynamic_cast<const RayTreeTask&>(*p.task)) {
     context_.problem = &p;
     context_.tolerance = read_tolerance_policy(p);
-    Ask ask = task_.tree().ask;
+    Ask ask = task_.ask();
     if (ask == Ask::kHit) {
       context_.points = read_points_policy(p, default_points(p.kind, {"hit"}));
     } else if (ask == Ask::kTree) {
@@ -80,7 +81,7 @@ class RayTreeGrader final : public KindGrader {
       out.parts.push_back(missing_part(context_, "tree", "No tree (nodes) given."));
     }
     grade_lighting(match, lists, nodes.empty(), out);
-    if (task_.tree().ask == Ask::kIntensity) grade_intensity(a, out);
+    if (task_.ask() == Ask::kIntensity) grade_intensity(a, out);
   }
 
  private:
@@ -387,6 +388,14 @@ class RayTreeGrader final : public KindGrader {
   void grade_intensity(const AnswerReader& a, GradeResult& out) const {
     if (!a.has("intensity")) {
       out.parts.push_back(missing_part(context_, "intensity"));
+      return;
+    }
+    if (task_.colour()) {
+      ColourVerdict v = grade_colour("intensity", a.at("intensity"), task_.colour_intensity(),
+                                     context_.tolerance.for_field("intensity"), {});
+      for (auto& m : v.mistakes) out.mistakes.push_back(std::move(m));
+      if (v.feedback.empty()) v.feedback.push_back("Right.");
+      out.parts.push_back(make_part(context_, "intensity", v.credit, std::move(v.feedback)));
       return;
     }
     double want = tree().nodes.front().intensity;

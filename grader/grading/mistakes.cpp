@@ -65,6 +65,10 @@ const std::vector<MistakeInfo>& mistake_catalogue() {
        "When the shadow ray reaches the light (and the surface faces it), the diffuse and "
        "specular terms apply as well as the ambient one.",
        0},
+      {"scalar-for-colour", "colour", "One number where a colour is asked",
+       "When a light or a material is a colour, every intensity is a colour [r, g, b], worked "
+       "channel by channel; one number does not say which channel it is.",
+       0},
   };
   return c;
 }

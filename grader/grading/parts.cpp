@@ -63,6 +63,8 @@ const std::map<std::string, std::vector<PartSpec>, std::less<>>& table() {
         {"specular", "the sum of the specular terms", 0, C::kScalar},
         {"terms", "which terms apply (ambient, diffuse, specular)", 0, C::kNames},
         {"lights", "per light: whether it reaches the point, N·L, R·V and its two terms", 0,
+         C::kScalar},
+        {"colour", "the material's colour at the point (a pattern's colour there), [r, g, b]", 0,
          C::kScalar}}},
       {"normal",
        {{"normal", "the outward unit normal at the point (any positive multiple)", 1,

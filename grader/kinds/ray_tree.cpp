@@ -3,8 +3,13 @@
 
 #include <set>
 
+#include "core/internal_error.h"
+#include "derivation/derivation.h"
+#include "derivation/number_format.h"
 #include "kinds/camera_ray.h"
+#include "kinds/swatch.h"
 #include "kinds/view_ray.h"
+#include "scenes/tree_draw.h"
 #include "scenes/tree_json.h"
 #include "scenes/tree_steps.h"
 
@@ -52,16 +57,68 @@ RayTreeTask::RayTreeTask(Scene scene, Ray primary, Ask ask,
   apply_labels(tree_, labels);
 }
 
+void RayTreeTask::trace_channels(std::vector<Scene> channel_scenes,
+                                 const std::map<std::string, std::string>& labels) {
+  channel_scenes_ = std::move(channel_scenes);
+  for (const auto& s : channel_scenes_) {
+    RayTree t = trace(s, primary_, Ask::kIntensity);
+    apply_labels(t, labels);
+    // The channels differ in numbers only: the same rays hit the same points.
+    bool same = t.nodes.size() == tree_.nodes.size();
+    for (std::size_t i = 0; same && i < t.nodes.size(); ++i) {
+      same = t.nodes[i].path == tree_.nodes[i].path;
+    }
+    if (!same) throw InternalError("a colour channel's ray tree differs from the scene's tree");
+    channels_.push_back(std::move(t));
+  }
+  for (auto& e : tree_.effects) {
+    if (e.name != "intensity") continue;
+    e.simulated = true;
+    e.reason =
+        "the scene has colours: every intensity is worked channel by channel (r, g, b), each "
+        "channel a tree of numbers";
+  }
+}
+
+std::vector<Vec3d> RayTreeTask::node_colours() const {
+  std::vector<Vec3d> out(tree_.nodes.size());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    for (int k = 0; k < 3; ++k)
+      out[i][k] = channels_[static_cast<std::size_t>(k)].nodes[i].intensity;
+  }
+  return out;
+}
+
+Vec3d RayTreeTask::colour_intensity() const {
+  Vec3d c{};
+  for (std::size_t k = 0; k < channels_.size() && k < 3; ++k) {
+    c[static_cast<int>(k)] = channels_[k].nodes.front().intensity;
+  }
+  return c;
+}
+
 std::unique_ptr<Task> RayTreeTask::read(const Cursor& problem) {
   Scene scene = read_scene(problem.at("scene"));
   Ray primary = read_primary_ray(problem);
   Ask ask = read_ask(problem, Ask::kTree);
+  // A colour scene's intensities are traced channel by channel; the scene's own tree keeps the
+  // rays and the terms.
+  bool colour = ask == Ask::kIntensity && has_colour(scene);
+  std::vector<Scene> channel_scenes;
+  if (colour) {
+    ask = Ask::kTree;
+    for (int c = 0; c < 3; ++c) {
+      channel_scenes.push_back(read_scene(problem.at("scene")));
+      keep_channel(channel_scenes.back(), c);
+    }
+  }
   std::map<std::string, std::string> labels;
   if (auto l = problem.find("labels")) {
     if (!l->is_object()) l->fail("labels is an object from a node's path to its label", "type");
     for (const auto& [path, value] : l->json().items()) labels[path] = l->at(path).string();
   }
   auto task = std::make_unique<RayTreeTask>(std::move(scene), primary, ask, labels);
+  if (colour) task->trace_channels(std::move(channel_scenes), labels);
   // Every labelled path must be a hit of the tree, and the labels must stay unique.
   std::set<std::string> seen;
   for (const auto& [path, label] : labels) {
@@ -86,15 +143,104 @@ std::unique_ptr<Task> RayTreeTask::read(const Cursor& problem) {
   return task;
 }
 
-nlohmann::json RayTreeTask::answer() const { return tree_json(tree_, scene_); }
+namespace {
+
+// Three channels' numbers as one colour [r, g, b].
+nlohmann::json rgb_json(const nlohmann::json& r, const nlohmann::json& g, const nlohmann::json& b) {
+  return nlohmann::json::array({r, g, b});
+}
+
+constexpr const char* kChannelTitles[3] = {"red", "green", "blue"};
+
+// One channel's intensities, node by node, children before the parents that add them.
+Derivation channel_steps(const RayTree& t, int channel) {
+  Deriver d("whitted",
+            fmt::format("The {} channel ({})", kChannelTitles[channel], kChannelNames[channel]));
+  for (auto it = t.nodes.rbegin(); it != t.nodes.rend(); ++it) {
+    const TreeNode& n = *it;
+    std::string name = fmt::format("I_{}_{}", n.label, kChannelNames[channel]);
+    if (!n.hit) {
+      d.given(name, name, n.intensity, fmt::format("{} misses: the background", n.path));
+      continue;
+    }
+    d.given(name, name, n.intensity,
+            fmt::format("{}: I_local + {} = {} + {} + {} (ambient {})", n.label,
+                        n.fresnel ? "F·k_r·I_R + (1 − F)·k_t·I_T" : "k_r·I_R + k_t·I_T",
+                        format_number(n.local), format_number(n.reflected),
+                        format_number(n.transmitted), format_number(n.ambient_term)));
+  }
+  return std::move(d).finish();
+}
+
+}  // namespace
+
+nlohmann::json RayTreeTask::answer() const {
+  nlohmann::json j = tree_json(tree_, scene_);
+  if (channels_.empty()) return j;
+  nlohmann::json c[3];
+  for (int k = 0; k < 3; ++k) c[k] = tree_json(channels_[k], channel_scenes_[k]);
+  for (std::size_t i = 0; i < tree_.nodes.size(); ++i) {
+    const nlohmann::json& r = c[0]["nodes"][i];
+    const nlohmann::json& g = c[1]["nodes"][i];
+    const nlohmann::json& b = c[2]["nodes"][i];
+    // A miss sees the background; a hit has its terms.
+    if (r.contains("background")) {
+      j["nodes"][i]["background"] = rgb_json(r["background"], g["background"], b["background"]);
+    }
+    if (!r.contains("intensity")) continue;
+    nlohmann::json terms = nlohmann::json::object();
+    for (const auto& [key, value] : r["intensity"].items()) {
+      terms[key] = rgb_json(value, g["intensity"][key], b["intensity"][key]);
+    }
+    j["nodes"][i]["intensity"] = terms;
+  }
+  j["intensity"] = rgb_json(c[0]["intensity"], c[1]["intensity"], c[2]["intensity"]);
+  return j;
+}
 
 std::vector<SolutionPart> RayTreeTask::derive(std::string_view /*method*/,
                                               const Overrides* overrides) const {
-  return tree_parts(tree_, scene_, overrides);
+  std::vector<SolutionPart> parts = tree_parts(tree_, scene_, overrides);
+  if (channels_.empty()) return parts;
+  // The tree's figure with each point's colour beside it.
+  std::vector<Vec3d> colours = node_colours();
+  for (auto& f : parts.front().figures) {
+    if (!f.svg.empty()) f.svg = tree_svg(tree_, scene_, &colours);
+  }
+  // The colour: each channel's intensities, then the colour they make, before the answer.
+  SolutionPart answer = std::move(parts.back());
+  parts.pop_back();
+  for (int k = 0; k < 3; ++k) {
+    parts.push_back(SolutionPart{fmt::format("Intensities, {} channel", kChannelTitles[k]),
+                                 channel_steps(channels_[k], k),
+                                 {}});
+  }
+  std::string colour = fmt::format(
+      "The colour seen along the primary ray is {} (r, g, b): the scene's colours are worked "
+      "channel by channel, a number acting on every channel alike.",
+      colour_text(colour_intensity()));
+  answer.derivation.conclusion.push_back(colour);
+  answer.derivation.sentences.emplace_back(colour);
+  // Each hit point's colour, and the background a missing ray sees, as swatches.
+  std::vector<std::pair<std::string, Vec3d>> swatches;
+  for (std::size_t i = 0; i < tree_.nodes.size(); ++i) {
+    const TreeNode& n = tree_.nodes[i];
+    swatches.emplace_back(
+        n.hit ? fmt::format("I at {}", n.label) : fmt::format("I of {} (background)", n.path),
+        colours[i]);
+  }
+  answer.figures.push_back(swatch_figure(swatches));
+  parts.push_back(std::move(answer));
+  return parts;
 }
 
 std::vector<std::string> RayTreeTask::conclusion() const {
-  return tree_answer(tree_, scene_).conclusion;
+  std::vector<std::string> out = tree_answer(tree_, scene_).conclusion;
+  if (!channels_.empty()) {
+    out.push_back(fmt::format("The colour seen along the primary ray is {} (r, g, b).",
+                              colour_text(colour_intensity())));
+  }
+  return out;
 }
 
 }  // namespace raygrade

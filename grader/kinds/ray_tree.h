@@ -29,12 +29,28 @@ class RayTreeTask final : public Task {
   std::vector<std::string> conclusion() const override;
 
   const Scene& scene() const { return scene_; }
+  // The tree's rays, hits, shadows and terms. When the scene has colours, its intensities are
+  // in the channel trees instead and this tree is traced without them (its ask is kTree).
   const RayTree& tree() const { return tree_; }
+  // What the problem asks (the tree's own ask, except for a colour scene's intensities).
+  Ask ask() const { return channels_.empty() ? tree_.ask : Ask::kIntensity; }
+
+  // A colour scene asked for intensities: the same tree traced once per channel (r, g, b), each
+  // in the scene with every colour replaced by that channel's number.
+  void trace_channels(std::vector<Scene> channel_scenes,
+                      const std::map<std::string, std::string>& labels);
+  bool colour() const { return !channels_.empty(); }
+  const std::vector<RayTree>& channels() const { return channels_; }
+  // The colour along the primary ray, and at every node (only when colour()).
+  Vec3d colour_intensity() const;
+  std::vector<Vec3d> node_colours() const;
 
  private:
   Scene scene_;
   Ray primary_;
   RayTree tree_;
+  std::vector<Scene> channel_scenes_;
+  std::vector<RayTree> channels_;
 };
 
 // The problem's own names for the tree's points ({"P": "I1", "P.T": "I2"}): every path must be

@@ -1,15 +1,33 @@
 // The shade kind.
 #include "kinds/shade.h"
 
+#include <algorithm>
+
 #include "derivation/number_format.h"
 #include "kinds/sketch.h"
+#include "kinds/swatch.h"
 #include "scenes/optics.h"
+#include "shapes/transform.h"
 
 namespace raygrade {
 namespace {
 
 Vec3d to_light(const Light& l, const Vec3d& p) {
   return normalized(l.type == LightType::kPoint ? l.position - p : -l.direction);
+}
+
+// a·b for two quantities of a derivation: a colour times a colour is the componentwise product
+// a ⊙ b, written out channel by channel; otherwise a number scales a number or a colour.
+E times(const E& a, const Value& av, const E& b, const Value& bv) {
+  if (!av.is_vector() || !bv.is_vector()) return a * b;
+  const Vec3d& x = av.vector;
+  const Vec3d& y = bv.vector;
+  return tuple(E(x.x) * E(y.x), E(x.y) * E(y.y), E(x.z) * E(y.z));
+}
+
+// A coefficient of the material as the derivation gives it: a number, or a colour.
+Value coefficient_value(double v, const std::optional<Vec3d>& rgb) {
+  return rgb ? Value(*rgb) : Value(v);
 }
 
 }  // namespace
@@ -19,9 +37,30 @@ std::unique_ptr<Task> ShadeTask::read(const Cursor& problem) {
   Vec3d normal = problem.at("normal").nonzero_vec3();
   Vec3d eye = problem.at("eye").vec3();
   if (eye == point) problem.at("eye").fail("the eye is at the point itself", "degenerate");
-  Material m = problem.has("material") ? read_material(problem.at("material")) : Material{};
-  double ia = problem.number_or("ambient_light", 1);
-  if (ia < 0) problem.at("ambient_light").fail("ambient_light must not be negative", "range");
+  // A material's `colour` belongs to the point's shading, not to read_material: read it apart.
+  std::optional<SurfaceColour> surface;
+  Material m;
+  if (problem.has("material")) {
+    Cursor mc = problem.at("material");
+    if (mc.is_object() && mc.has("colour")) surface = read_surface_colour(mc.at("colour"));
+    nlohmann::json rest = mc.json();
+    if (rest.is_object()) rest.erase("colour");
+    m = read_material(Cursor(mc.file(), &rest, mc.path()));
+  }
+  Transform object;
+  if (problem.has("object_transform")) {
+    if (!surface) {
+      problem.at("object_transform")
+          .fail(
+              "object_transform places the material's colour pattern: the material has no "
+              "colour",
+              "invalid");
+    }
+    object = read_transform(problem.at("object_transform"));
+  }
+  Intensity ia{1, std::nullopt};
+  if (problem.has("ambient_light"))
+    ia = read_intensity(problem.at("ambient_light"), "ambient_light");
   std::vector<ShadeLight> lights;
   auto items = problem.at("lights").items();
   for (std::size_t i = 0; i < items.size(); ++i) {
@@ -33,54 +72,184 @@ std::unique_ptr<Task> ShadeTask::read(const Cursor& problem) {
     Cursor light(c.file(), &rest, c.path());
     lights.push_back({read_light(light, static_cast<int>(i)), blocked});
   }
-  return std::make_unique<ShadeTask>(point, normalized(normal), eye, m, ia, std::move(lights));
+  if (!surface) {
+    return std::make_unique<ShadeTask>(point, normalized(normal), eye, m, ia, std::move(lights));
+  }
+  // The colour at the point: in the object's space, then the pattern's.
+  Vec3d c = surface->uniform;
+  if (surface->pattern) {
+    Vec3d po = object.to_object.point(point);
+    c = pattern_at(*surface->pattern, surface->pattern->transform.to_object.point(po)).colour;
+  }
+  Material folded = m;
+  Vec3d ka = Intensity{m.ambient, m.ambient_rgb}.rgb();
+  Vec3d kd = Intensity{m.diffuse, m.diffuse_rgb}.rgb();
+  folded.ambient_rgb = Vec3d{ka.x * c.x, ka.y * c.y, ka.z * c.z};
+  folded.diffuse_rgb = Vec3d{kd.x * c.x, kd.y * c.y, kd.z * c.z};
+  folded.ambient = std::max({folded.ambient_rgb->x, folded.ambient_rgb->y, folded.ambient_rgb->z});
+  folded.diffuse = std::max({folded.diffuse_rgb->x, folded.diffuse_rgb->y, folded.diffuse_rgb->z});
+  auto task =
+      std::make_unique<ShadeTask>(point, normalized(normal), eye, folded, ia, std::move(lights));
+  task->set_surface(*surface, object, m);
+  return task;
 }
 
+void ShadeTask::set_surface(SurfaceColour surface, Transform object, Material base) {
+  surface_ = std::move(surface);
+  object_ = std::move(object);
+  base_ = base;
+  object_point_ = object_.to_object.point(point_);
+  if (surface_->pattern) {
+    pattern_point_ = surface_->pattern->transform.to_object.point(object_point_);
+    surface_value_ = pattern_at(*surface_->pattern, pattern_point_);
+  } else {
+    surface_value_.colour = surface_->uniform;
+  }
+}
+
+// The pattern's steps as The Ray Tracer Challenge works them: the point in object space, then
+// in pattern space, then the count whose parity picks a or b (or the gradient's blend).
+void ShadeTask::surface_steps(Deriver& d) const {
+  const PatternValue& v = surface_value_;
+  if (!surface_->pattern) {
+    d.given("C", "C", surface_->uniform, "the material's colour");
+    return;
+  }
+  const Pattern& p = *surface_->pattern;
+  d.note(fmt::format("The material's colour is a {} pattern of a = {} and b = {}.",
+                     to_string(p.type), colour_text(p.a), colour_text(p.b)));
+  if (!object_.identity()) {
+    d.given("P_o", "P_o", object_point_,
+            fmt::format("P in the object's space, M⁻¹P (M: {})", describe_transform(object_)));
+  }
+  if (!p.transform.identity()) {
+    d.given("P_pat", "P_pat", pattern_point_,
+            fmt::format("in the pattern's space, T⁻¹ of the object-space point (T: {})",
+                        describe_transform(p.transform)));
+  }
+  const Vec3d& q = pattern_point_;
+  std::string parity = fmt::format("{} is {}: the colour {}", format_number(v.floor_sum),
+                                   v.even ? "even" : "odd", v.even ? "a" : "b");
+  switch (p.type) {
+    case PatternType::kStripe:
+      d.given("floor_x", "⌊x⌋", v.floor_sum, fmt::format("x = {}; {}", format_number(q.x), parity));
+      break;
+    case PatternType::kGradient: {
+      d.given("floor_x", "⌊x⌋", v.floor_sum, fmt::format("x = {}", format_number(q.x)));
+      d.step("frac", "f", E(q.x) - d.sym("floor_x"), "x − ⌊x⌋, how far across the band");
+      E A = d.given("a", "a", p.a);
+      E B = d.given("b", "b", p.b);
+      d.step("C", "C", A + (B - A) * d.sym("frac"), "a + (b − a)·f");
+      return;
+    }
+    case PatternType::kRing:
+      d.step("r", "r", sqrt(square(E(q.x)) + square(E(q.z))),
+             "√(x² + z²), the distance from the y axis");
+      d.given("floor_r", "⌊r⌋", v.floor_sum, parity);
+      break;
+    case PatternType::kCheckers: {
+      E fx = d.given("floor_x", "⌊x⌋", std::floor(q.x), fmt::format("x = {}", format_number(q.x)));
+      E fy = d.given("floor_y", "⌊y⌋", std::floor(q.y), fmt::format("y = {}", format_number(q.y)));
+      E fz = d.given("floor_z", "⌊z⌋", std::floor(q.z), fmt::format("z = {}", format_number(q.z)));
+      d.step("floor_sum", "s", fx + fy + fz, "⌊x⌋ + ⌊y⌋ + ⌊z⌋; " + parity);
+      break;
+    }
+  }
+  d.given("C", "C", v.colour, v.even ? "the colour a" : "the colour b");
+}
+
+bool ShadeTask::colour() const {
+  if (ambient_light_.colour || has_colour(m_)) return true;
+  for (const auto& sl : lights_) {
+    if (has_colour(sl.light)) return true;
+  }
+  return false;
+}
+
+// Channel by channel (one channel when nothing is a colour): a number stays a number.
 nlohmann::json ShadeTask::answer() const {
   Vec3d v = normalized(eye_ - point_);
-  double diffuse = 0, specular = 0;
+  bool rgb = colour();
+  int channels = rgb ? 3 : 1;
+  // k_s = 0: there is no specular term, and the answer does not list one.
+  bool specular_applies = m_.specular > 0;
+  Vec3d ambient{}, diffuse{}, specular{}, intensity{};
   bool any = false;
   nlohmann::json per = nlohmann::json::array();
   for (const auto& sl : lights_) {
     Vec3d l = to_light(sl.light, point_);
-    PhongLight p =
-        phong_light(normal_, l, v, sl.light.intensity, m_.diffuse, m_.specular, m_.shininess);
+    Vec3d d{}, s{};
+    PhongLight p;
+    for (int c = 0; c < channels; ++c) {
+      Material mc = channel(m_, c);
+      p = phong_light(normal_, l, v, channel(sl.light, c).intensity, mc.diffuse, mc.specular,
+                      m_.shininess);
+      d[c] = p.diffuse;
+      s[c] = p.specular;
+    }
     bool reaches = !sl.blocked && p.n_dot_l > 0;
     any |= reaches;
+    if (!reaches) d = s = Vec3d{};
     nlohmann::json j = {{"light", sl.light.name},
                         {"n_dot_l", p.n_dot_l},
                         {"r_dot_v", p.r_dot_v},
                         {"reaches", reaches},
-                        {"diffuse", reaches ? p.diffuse : 0.0},
-                        {"specular", reaches ? p.specular : 0.0}};
-    if (reaches) {
-      diffuse += p.diffuse;
-      specular += p.specular;
-    }
+                        {"diffuse", channels_json(d, rgb)}};
+    if (specular_applies) j["specular"] = channels_json(s, rgb);
+    diffuse = diffuse + d;
+    specular = specular + s;
     per.push_back(std::move(j));
   }
-  double ambient = m_.ambient * ambient_light_;
+  for (int c = 0; c < channels; ++c) {
+    ambient[c] = channel(m_, c).ambient * ambient_light_.channel(c);
+    intensity[c] = ambient[c] + diffuse[c] + specular[c];
+  }
   // A term whose coefficient is 0 does not apply, whatever the lights do.
   nlohmann::json terms = {"ambient"};
   if (any && m_.diffuse > 0) terms.push_back("diffuse");
-  if (any && m_.specular > 0) terms.push_back("specular");
-  return {{"ambient", ambient},   {"diffuse", diffuse},
-          {"specular", specular}, {"intensity", ambient + diffuse + specular},
-          {"lights", per},        {"terms", terms}};
+  if (any && specular_applies) terms.push_back("specular");
+  nlohmann::json out = {{"ambient", channels_json(ambient, rgb)},
+                        {"diffuse", channels_json(diffuse, rgb)},
+                        {"intensity", channels_json(intensity, rgb)},
+                        {"lights", per},
+                        {"terms", terms}};
+  if (specular_applies) out["specular"] = channels_json(specular, rgb);
+  if (surface_) out["colour"] = channels_json(surface_value_.colour, true);
+  return out;
 }
 
 std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
                                             const Overrides* overrides) const {
   Deriver d("phong", "The Phong model, term by term", overrides);
+  bool rgb = colour();
   E P = d.given("P", "P", point_, "the point");
   E N = d.given("N", "N", normal_, "the unit normal");
   E Eye = d.given("E", "E", eye_, "the eye");
   d.step("V", "V", (Eye - P) / norm(Eye - P), "toward the viewer");
-  E ka = d.given("k_a", "k_a", m_.ambient);
-  E ia = d.given("I_a", "I_a", ambient_light_, "the ambient light");
+  if (rgb) {
+    d.note(
+        "Intensities are colours [r, g, b], worked channel by channel: a number acts on every "
+        "channel alike, and a colour times a colour is the componentwise product ⊙.");
+  }
+  if (surface_) {
+    surface_steps(d);
+    d.note(fmt::format(
+        "The surface colour C multiplies the ambient and diffuse coefficients (k_a = {}, k_d = "
+        "{} as given); the highlight keeps the light's colour.",
+        colour_text(Intensity{base_.ambient, base_.ambient_rgb}.rgb()),
+        colour_text(Intensity{base_.diffuse, base_.diffuse_rgb}.rgb())));
+  }
+  Value ka_v = coefficient_value(m_.ambient, m_.ambient_rgb);
+  E ka = d.given("k_a", "k_a", ka_v, surface_ ? "k_a ⊙ C" : "");
+  // With colours, the lights are colours too (a number as [I, I, I]).
+  Value ia_v = rgb ? Value(ambient_light_.rgb()) : Value(ambient_light_.value);
+  E ia = d.given("I_a", "I_a", ia_v, "the ambient light");
   std::vector<E> sum;
-  d.step("ambient", "I_amb", ka * ia, "the ambient term always applies");
+  d.step("ambient", "I_amb", times(ka, ka_v, ia, ia_v),
+         ka_v.is_vector() ? "k_a ⊙ I_a: the ambient term always applies"
+                          : "the ambient term always applies");
   sum.push_back(d.sym("ambient"));
+  Value kd_v = coefficient_value(m_.diffuse, m_.diffuse_rgb);
   for (std::size_t k = 0; k < lights_.size(); ++k) {
     const Light& l = lights_[k].light;
     std::string i = std::to_string(k + 1);
@@ -99,9 +268,16 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
               : "N·L ≤ 0: the light is behind the surface.");
       continue;
     }
-    E ip = d.given("Ip_" + i, "I_p" + i, l.intensity);
-    d.step("diffuse_" + i, "I_d" + i, m_.diffuse * ip * d.sym("NL_" + i),
-           fmt::format("k_d·I_p·(N·L) with k_d = {}", format_number(m_.diffuse)));
+    Value ip_v = rgb ? Value(l.colour ? *l.colour : Vec3d{l.intensity, l.intensity, l.intensity})
+                     : Value(l.intensity);
+    E ip = d.given("Ip_" + i, "I_p" + i, ip_v);
+    if (kd_v.is_vector()) {
+      d.step("diffuse_" + i, "I_d" + i, times(vec(kd_v.vector), kd_v, ip, ip_v) * d.sym("NL_" + i),
+             fmt::format("k_d ⊙ I_p·(N·L) with k_d = {}", colour_text(kd_v.vector)));
+    } else {
+      d.step("diffuse_" + i, "I_d" + i, m_.diffuse * ip * d.sym("NL_" + i),
+             fmt::format("k_d·I_p·(N·L) with k_d = {}", format_number(m_.diffuse)));
+    }
     sum.push_back(d.sym("diffuse_" + i));
     if (m_.specular == 0) {
       d.note(fmt::format("k_s = 0: no specular term for {}.", l.name));
@@ -110,19 +286,40 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
     d.step("R_" + i, "R_" + i, 2 * d.sym("NL_" + i) * N - d.sym("L_" + i),
            "the mirror direction of the light");
     Value rv = d.step("RV_" + i, "R·V_" + i, dot(d.sym("R_" + i), d.sym("V")));
-    PhongLight p = phong_light(normal_, normalized(d.value("L_" + i).vector), d.value("V").vector,
-                               l.intensity, m_.diffuse, m_.specular, m_.shininess);
-    d.given("specular_" + i, "I_s" + i, rv.scalar > 0 ? p.specular : 0.0,
-            rv.scalar > 0 ? fmt::format("k_s·I_p·(R·V)^n with k_s = {}, n = {}",
-                                        format_number(m_.specular), format_number(m_.shininess))
-                          : "R·V ≤ 0: no highlight");
+    Vec3d spec{};
+    for (int c = 0; c < (rgb ? 3 : 1); ++c) {
+      Material mc = channel(m_, c);
+      PhongLight p = phong_light(normal_, normalized(d.value("L_" + i).vector), d.value("V").vector,
+                                 channel(l, c).intensity, mc.diffuse, mc.specular, m_.shininess);
+      spec[c] = rv.scalar > 0 ? p.specular : 0.0;
+    }
+    std::string why = rv.scalar > 0 ? fmt::format("k_s{}I_p·(R·V)^n with k_s = {}, n = {}",
+                                                  m_.specular_rgb ? " ⊙ " : "·",
+                                                  m_.specular_rgb ? colour_text(*m_.specular_rgb)
+                                                                  : format_number(m_.specular),
+                                                  format_number(m_.shininess))
+                                    : "R·V ≤ 0: no highlight";
+    d.given("specular_" + i, "I_s" + i, rgb ? Value(spec) : Value(spec.x), why);
     sum.push_back(d.sym("specular_" + i));
   }
   E total = sum.front();
   for (std::size_t k = 1; k < sum.size(); ++k) total = total + sum[k];
   Value t = d.step("I", "I", total, "the sum of the terms that apply");
-  d.conclude(fmt::format("The intensity at P is I = {}.", format_number(t.scalar)));
-  return {SolutionPart{"", std::move(d).finish()}};
+  d.conclude(rgb ? fmt::format("The colour at P is I = {} (r, g, b).", colour_text(t.vector))
+                 : fmt::format("The intensity at P is I = {}.", format_number(t.scalar)));
+  if (!rgb) return {SolutionPart{"", std::move(d).finish()}};
+  // The colours of the terms and their sum as swatches.
+  std::vector<std::pair<std::string, Vec3d>> swatches = {{"I_amb", d.value("ambient").vector}};
+  for (std::size_t k = 1; k <= lights_.size(); ++k) {
+    for (auto [term, shown] : {std::pair{"diffuse_", "I_d"}, std::pair{"specular_", "I_s"}}) {
+      auto it = d.env().find(term + std::to_string(k));
+      if (it != d.env().end() && it->second.is_vector()) {
+        swatches.emplace_back(shown + std::to_string(k), it->second.vector);
+      }
+    }
+  }
+  swatches.emplace_back("I", t.vector);
+  return {SolutionPart{"", std::move(d).finish(), {swatch_figure(swatches)}}};
 }
 
 // The point on its surface seen edge-on, the unit vectors of the Phong model drawn from it one

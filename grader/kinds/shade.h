@@ -1,8 +1,10 @@
 // Kind `shade`: the Phong intensity at one point, term by term: k_a·I_a, and for each light
-// that reaches the point k_d·I_p·(N·L) and k_s·I_p·(R·V)^n.
+// that reaches the point k_d·I_p·(N·L) and k_s·I_p·(R·V)^n. When any intensity or coefficient
+// is a colour (scenes/colour.h), every term is a colour [r, g, b], worked channel by channel.
 #pragma once
 
 #include "problems/problem.h"
+#include "scenes/pattern.h"
 #include "scenes/scene.h"
 
 namespace raygrade {
@@ -14,7 +16,7 @@ struct ShadeLight {
 
 class ShadeTask final : public Task {
  public:
-  ShadeTask(Vec3d point, Vec3d normal, Vec3d eye, Material m, double ambient_light,
+  ShadeTask(Vec3d point, Vec3d normal, Vec3d eye, Material m, Intensity ambient_light,
             std::vector<ShadeLight> lights)
       : point_(point),
         normal_(normal),
@@ -30,12 +32,27 @@ class ShadeTask final : public Task {
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
   Sketch sketch() const override;
+  // Whether any intensity or coefficient is a colour: then every term is a colour [r, g, b].
+  bool colour() const;
+  // The material's `colour` (one colour or a pattern), on an object moved by `object`: its
+  // colour at the point multiplies k_a and k_d (`m` of the constructor is the material with
+  // those products already taken; `base` is the material as given).
+  void set_surface(SurfaceColour surface, Transform object, Material base);
 
  private:
   Vec3d point_, normal_, eye_;
   Material m_;
-  double ambient_light_;
+
+  // The surface colour at the point, worked as steps (from the pattern, when there is one).
+  void surface_steps(Deriver& d) const;
+
+  Intensity ambient_light_;
   std::vector<ShadeLight> lights_;
+  std::optional<SurfaceColour> surface_;
+  Transform object_;
+  Material base_;
+  Vec3d object_point_{}, pattern_point_{};
+  PatternValue surface_value_;
 };
 
 }  // namespace raygrade

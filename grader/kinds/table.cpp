@@ -40,7 +40,7 @@ const std::vector<KindEntry>& kind_table() {
        &RefractTask::read},
       {"shade",
        "the Phong intensity at a point, term by term",
-       {"point", "normal", "eye", "material", "lights", "ambient_light"},
+       {"point", "normal", "eye", "material", "lights", "ambient_light", "object_transform"},
        &ShadeTask::read},
       {"fresnel",
        "the share of light a boundary reflects: the Fresnel equations or Schlick's approximation",

@@ -9,6 +9,16 @@
 namespace raygrade {
 namespace {
 
+// A coefficient or intensity that may be a colour: its number (the largest channel) and, for a
+// colour, the channels in `rgb`.
+double intensity(const Cursor& c, std::string_view key, double fallback,
+                 std::optional<Vec3d>& rgb) {
+  if (!c.has(key)) return fallback;
+  Intensity i = read_intensity(c.at(key), key);
+  rgb = i.colour;
+  return i.value;
+}
+
 double coefficient(const Cursor& c, std::string_view key, double fallback) {
   if (!c.has(key)) return fallback;
   double v = c.at(key).number();
@@ -19,12 +29,18 @@ double coefficient(const Cursor& c, std::string_view key, double fallback) {
 }  // namespace
 
 Material read_material(const Cursor& c) {
+  if (c.has("colour")) {
+    c.at("colour").fail(
+        "a material's colour or pattern is read by shade problems only; in a scene, give k_a "
+        "and k_d as colours [r, g, b]",
+        "unsupported");
+  }
   c.allow_only({"ambient", "diffuse", "specular", "shininess", "reflectivity", "transparency",
                 "refractive_index", "fresnel"});
   Material m;
-  m.ambient = coefficient(c, "ambient", m.ambient);
-  m.diffuse = coefficient(c, "diffuse", m.diffuse);
-  m.specular = coefficient(c, "specular", m.specular);
+  m.ambient = intensity(c, "ambient", m.ambient, m.ambient_rgb);
+  m.diffuse = intensity(c, "diffuse", m.diffuse, m.diffuse_rgb);
+  m.specular = intensity(c, "specular", m.specular, m.specular_rgb);
   m.shininess = coefficient(c, "shininess", m.shininess);
   m.reflectivity = coefficient(c, "reflectivity", m.reflectivity);
   m.transparency = coefficient(c, "transparency", m.transparency);
@@ -51,9 +67,12 @@ Material read_material(const Cursor& c) {
 }
 
 nlohmann::json material_json(const Material& m) {
-  nlohmann::json j = {{"ambient", m.ambient},           {"diffuse", m.diffuse},
-                      {"specular", m.specular},         {"shininess", m.shininess},
-                      {"reflectivity", m.reflectivity}, {"transparency", m.transparency}};
+  nlohmann::json j = {{"ambient", intensity_json({m.ambient, m.ambient_rgb})},
+                      {"diffuse", intensity_json({m.diffuse, m.diffuse_rgb})},
+                      {"specular", intensity_json({m.specular, m.specular_rgb})},
+                      {"shininess", m.shininess},
+                      {"reflectivity", m.reflectivity},
+                      {"transparency", m.transparency}};
   if (m.transmits()) j["refractive_index"] = m.refractive_index;
   if (m.fresnel != FresnelModel::kNone) j["fresnel"] = to_string(m.fresnel);
   return j;
@@ -78,7 +97,7 @@ Light read_light(const Cursor& c, int index) {
     c.at("type").fail(fmt::format("unknown light type '{}' (known: point, directional)", type),
                       "invalid");
   }
-  l.intensity = coefficient(c, "intensity", 1);
+  l.intensity = intensity(c, "intensity", 1, l.colour);
   return l;
 }
 
@@ -136,8 +155,8 @@ Scene read_scene(const Cursor& c) {
       }
     }
   }
-  s.ambient_light = coefficient(c, "ambient_light", s.ambient_light);
-  s.background = coefficient(c, "background", s.background);
+  s.ambient_light = intensity(c, "ambient_light", s.ambient_light, s.ambient_light_rgb);
+  s.background = intensity(c, "background", s.background, s.background_rgb);
   if (c.has("refractive_index")) s.refractive_index = c.at("refractive_index").positive_number();
   if (c.has("max_depth")) {
     s.max_depth = c.at("max_depth").integer();
@@ -158,6 +177,50 @@ Scene read_scene(const Cursor& c) {
   s.transparent_shadows =
       shadows == "transmit" ? TransparentShadows::kTransmit : TransparentShadows::kBlock;
   return s;
+}
+
+bool has_colour(const Material& m) { return m.has_colour(); }
+bool has_colour(const Light& l) { return l.colour.has_value(); }
+
+bool has_colour(const Scene& s) {
+  if (s.ambient_light_rgb || s.background_rgb) return true;
+  for (const auto& o : s.objects) {
+    if (has_colour(o.material)) return true;
+  }
+  for (const auto& l : s.lights) {
+    if (has_colour(l)) return true;
+  }
+  return false;
+}
+
+namespace {
+
+void pick(double& value, std::optional<Vec3d>& rgb, int c) {
+  if (rgb) value = (*rgb)[c];
+  rgb.reset();
+}
+
+}  // namespace
+
+Material channel(const Material& m, int c) {
+  Material out = m;
+  pick(out.ambient, out.ambient_rgb, c);
+  pick(out.diffuse, out.diffuse_rgb, c);
+  pick(out.specular, out.specular_rgb, c);
+  return out;
+}
+
+Light channel(const Light& l, int c) {
+  Light out = l;
+  pick(out.intensity, out.colour, c);
+  return out;
+}
+
+void keep_channel(Scene& s, int c) {
+  pick(s.ambient_light, s.ambient_light_rgb, c);
+  pick(s.background, s.background_rgb, c);
+  for (auto& o : s.objects) o.material = channel(o.material, c);
+  for (auto& l : s.lights) l = channel(l, c);
 }
 
 namespace {

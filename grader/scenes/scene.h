@@ -8,14 +8,16 @@
 #include <vector>
 
 #include "json/cursor.h"
+#include "scenes/colour.h"
 #include "scenes/fresnel.h"
 #include "shapes/shape.h"
 #include "shapes/transform.h"
 
 namespace raygrade {
 
-// Phong coefficients and the Whitted coefficients of secondary rays. One channel of
-// intensity, as course exercises compute it.
+// Phong coefficients and the Whitted coefficients of secondary rays. k_a, k_d and k_s may be
+// colours (scenes/colour.h): then the number is the largest channel, which decides whether the
+// term applies, and the colour is kept beside it; a scene is shaded channel by channel.
 struct Material {
   double ambient = 0.1;         // k_a
   double diffuse = 0.7;         // k_d
@@ -27,7 +29,9 @@ struct Material {
   // How reflection and refraction share the light: by k_r and k_t alone (kNone), or weighted
   // by the reflectance F of a Fresnel model, F·k_r and (1 − F)·k_t.
   FresnelModel fresnel = FresnelModel::kNone;
+  std::optional<Vec3d> ambient_rgb, diffuse_rgb, specular_rgb;  // when given as colours
 
+  bool has_colour() const { return ambient_rgb || diffuse_rgb || specular_rgb; }
   bool reflects() const { return reflectivity > 0; }
   bool transmits() const { return transparency > 0; }
 };
@@ -41,9 +45,10 @@ enum class LightType { kPoint, kDirectional };
 struct Light {
   std::string name;
   LightType type = LightType::kPoint;
-  Vec3d position{};      // point lights
-  Vec3d direction{};     // directional lights: the direction the light travels
-  double intensity = 1;  // I_p
+  Vec3d position{};             // point lights
+  Vec3d direction{};            // directional lights: the direction the light travels
+  double intensity = 1;         // I_p
+  std::optional<Vec3d> colour;  // I_p as [r, g, b], when given so (`intensity` is its largest)
 };
 
 struct SceneObject {
@@ -63,10 +68,11 @@ enum class TransparentShadows {
 struct Scene {
   std::vector<SceneObject> objects;
   std::vector<Light> lights;
-  double ambient_light = 1;     // I_a
-  double background = 0;        // the intensity of a ray that hits nothing
-  double refractive_index = 1;  // of the space between the objects
-  int max_depth = 5;            // generations of rays in the tree; the primary ray is generation 1
+  double ambient_light = 1;  // I_a
+  double background = 0;     // the intensity of a ray that hits nothing
+  std::optional<Vec3d> ambient_light_rgb, background_rgb;  // when given as colours
+  double refractive_index = 1;                             // of the space between the objects
+  int max_depth = 5;  // generations of rays in the tree; the primary ray is generation 1
   bool internal_reflection = true;  // reflection rays inside transparent solids
   TransparentShadows transparent_shadows = TransparentShadows::kBlock;
 };
@@ -94,5 +100,16 @@ Material read_material(const Cursor& material);
 Light read_light(const Cursor& light, int index);
 
 nlohmann::json material_json(const Material& m);
+
+// Whether any intensity of the material, the light or the scene is a colour.
+bool has_colour(const Material& m);
+bool has_colour(const Light& l);
+bool has_colour(const Scene& s);
+
+// One channel (0 r, 1 g, 2 b) of a colour material, light or scene: every colour replaced by
+// that channel's number (numbers stay as they are), so that a scalar trace computes it.
+Material channel(const Material& m, int c);
+Light channel(const Light& l, int c);
+void keep_channel(Scene& s, int c);
 
 }  // namespace raygrade

@@ -90,6 +90,10 @@ void light_steps(Deriver& d, const Scene& scene, const TreeNode& node, const Sha
                  s.transmission < 1 ? "the light's intensity times the transmission" : "");
   d.step("diffuse_" + i, "I_d" + i, m.diffuse * ip * d.sym("NL_" + i),
          fmt::format("k_d = {}", format_number(m.diffuse)));
+  if (m.specular == 0) {
+    d.note(fmt::format("k_s = 0: no specular term for {}.", light.name));
+    return;
+  }
   d.step("R_" + i, "R_" + i, 2 * d.sym("NL_" + i) * N - L, "the light's mirror direction");
   Value rv = d.step("RV_" + i, "R·V_" + i, dot(d.sym("R_" + i), d.sym("V")));
   d.given("specular_" + i, "I_s" + i, s.phong.specular,
@@ -165,7 +169,8 @@ Derivation node_steps(const RayTree& tree, const Scene& scene, const TreeNode& n
   }
   if (!node.hit) {
     d.conclude(fmt::format("The ray hits nothing: it leaves the scene (background intensity {}).",
-                           format_number(scene.background)));
+                           scene.background_rgb ? colour_text(*scene.background_rgb)
+                                                : format_number(scene.background)));
     return std::move(d).finish();
   }
   const SceneObject& obj = scene.objects[node.object];

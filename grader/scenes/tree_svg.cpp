@@ -2,6 +2,7 @@
 // rays are dashed leaves, green when the light is reached and red when it is blocked.
 #include "core/escape.h"
 #include "derivation/number_format.h"
+#include "scenes/colour.h"
 #include "scenes/tree_draw.h"
 #include "scenes/tree_json.h"
 
@@ -97,7 +98,7 @@ std::string line(const Placed& a, const Placed& b, const char* style) {
 
 }  // namespace
 
-std::string tree_svg(const RayTree& tree, const Scene& scene) {
+std::string tree_svg(const RayTree& tree, const Scene& scene, const std::vector<Vec3d>* colours) {
   double column = column_width(tree, scene);
   Layout layout(tree, column);
   double width = 2 * kMargin + layout.leaves() * column;
@@ -138,6 +139,14 @@ std::string tree_svg(const RayTree& tree, const Scene& scene) {
   }
   for (const auto& n : tree.nodes) {
     const Placed& p = layout.node(n.index);
+    if (colours && n.index < static_cast<int>(colours->size())) {
+      // The point's colour (a miss: the background's) as a small square to its right.
+      Vec3d c = (*colours)[static_cast<std::size_t>(n.index)];
+      out += fmt::format(
+          "<rect class=\"swatch\" x=\"{:.1f}\" y=\"{:.1f}\" width=\"14\" height=\"14\" "
+          "fill=\"{}\" stroke=\"#333\"><title>{}</title></rect>\n",
+          p.x + kRadius + 4, p.y - 7, swatch_hex(c), colour_text(c));
+    }
     if (!n.hit) {
       out += fmt::format(
           "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"6\" fill=\"#fff\" stroke=\"#999\"/>\n", p.x,
