@@ -18,6 +18,8 @@ const std::string kPublished =
     std::string(RAYGRADE_SOURCE_DIR) + "/tests/data/ray-tracer-challenge.json";
 const std::string kPublishedColour =
     std::string(RAYGRADE_SOURCE_DIR) + "/tests/data/ray-tracer-challenge-colour.json";
+const std::string kPublishedMedia =
+    std::string(RAYGRADE_SOURCE_DIR) + "/tests/data/ray-tracer-challenge-media.json";
 
 void expect_published_answers_right(const std::string& file, std::set<std::string>& kinds) {
   Bank bank = load_bank({file});
@@ -108,6 +110,39 @@ TEST(Published, AChangedChannelIsGradedWrong) {
     bool named = false;
     for (const auto& m : r.mistakes) named |= m.id == "scalar-for-colour";
     EXPECT_TRUE(named) << p.id;
+  }
+}
+
+// The book's nested media and refracted colours (ch. 11): the six (n1, n2) rows of "Finding n1
+// and n2 at various intersections", and the black refracted colour of an opaque surface, of
+// the depth limit and of total internal reflection, as the transmitted component k_t·I_T.
+TEST(Published, RayTracerChallengeMediaAnswersAreGradedRight) {
+  Bank bank = load_bank({kPublishedMedia});
+  ASSERT_TRUE(bank.errors.empty()) << bank.errors.front().message;
+  ASSERT_EQ(bank.problems.size(), 4u);
+  for (const auto& p : bank.problems) {
+    ASSERT_TRUE(p.expected.has_value()) << p.id;
+    GradeResult r = grade_answer(p, *p.expected);
+    ASSERT_EQ(r.parts.size(), 1u) << p.id;
+    EXPECT_EQ(r.parts.front().name,
+              p.id == "rtc-n1-n2-various-intersections" ? "media" : "I1.transmitted");
+    EXPECT_EQ(r.parts.front().status, PartStatus::kRight)
+        << p.id << ": " << r.parts.front().feedback.front();
+  }
+  ASSERT_EQ((*bank.problems.front().expected)["hits"].size(), 6u);
+}
+
+TEST(Published, AChangedMediaAnswerIsGradedWrong) {
+  Bank bank = load_bank({kPublishedMedia});
+  for (const auto& p : bank.problems) {
+    nlohmann::json wrong = *p.expected;
+    if (wrong.contains("hits")) {
+      wrong["hits"][3]["n2"] = 2.0;  // the book's row 3 is (2.5, 2.5): C stays the innermost
+    } else {
+      wrong["components"]["I1"]["transmitted"] = 0.001;
+    }
+    GradeResult w = grade_answer(p, wrong);
+    EXPECT_LT(w.score, w.max_score) << p.id;
   }
 }
 

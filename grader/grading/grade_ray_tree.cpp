@@ -10,6 +10,7 @@
 #include "grading/kind_grader.h"
 #include "grading/mistakes.h"
 #include "grading/parts.h"
+#include "grading/tolerance.h"
 #include "kinds/ray_tree.h"
 #include "scenes/tree_json.h"
 
@@ -51,6 +52,12 @@ class RayTreeGrader final : public KindGrader {
     Ask ask = task_.ask();
     if (ask == Ask::kHit) {
       context_.points = read_points_policy(p, default_points(p.kind, {"hit"}));
+    } else if (ask == Ask::kMedia) {
+      context_.points = read_points_policy(p, default_points(p.kind, {"media"}));
+    } else if (!task_.components().empty()) {
+      std::vector<std::pair<std::string, double>> parts;
+      for (const auto& c : task_.components()) parts.emplace_back(c.part(), 1);
+      context_.points = read_points_policy(p, parts);
     } else if (ask == Ask::kTree) {
       context_.points = read_points_policy(p, default_points(p.kind, {"tree", "shadows", "terms"}));
     } else {
@@ -61,6 +68,8 @@ class RayTreeGrader final : public KindGrader {
 
   void grade(const AnswerReader& a, GradeResult& out) const override {
     if (task_.tree().ask == Ask::kHit) return grade_hit(a, out);
+    if (task_.tree().ask == Ask::kMedia) return grade_media(a, out);
+    if (!task_.components().empty()) return grade_components(a, out);
     a.allow_only({"nodes", "all_terms", "ambient_only", "rays", "effects", "intensity"});
     std::vector<StudentNode> nodes = read_nodes(a);
     // Reference hit node index -> the student's node standing for it.
@@ -135,6 +144,77 @@ class RayTreeGrader final : public KindGrader {
     out.parts.push_back(make_part(context_, "hit", credit, fb));
   }
 
+  // n1 and n2 at each hit along the ray, in order: half a hit's credit for each.
+  void grade_media(const AnswerReader& a, GradeResult& out) const {
+    a.allow_only({"hits"});
+    if (!a.has("hits")) {
+      out.parts.push_back(missing_part(context_, "media", "No hits given."));
+      return;
+    }
+    const std::vector<Crossing>& want = tree().crossings;
+    std::vector<AnswerReader> given = a.at("hits").items();
+    const Tolerance& tol = context_.tolerance.for_field("n");
+    std::vector<std::string> fb;
+    double earned = 0;
+    for (std::size_t k = 0; k < want.size(); ++k) {
+      const Crossing& c = want[k];
+      std::string where =
+          fmt::format("Hit {} ({} at t = {})", k + 1, object_name(c.object), format_number(c.t));
+      if (k >= given.size()) {
+        fb.push_back(fmt::format("Missing: {}.", where));
+        continue;
+      }
+      const AnswerReader& h = given[k];
+      h.allow_only({"object", "t", "n1", "n2", "media"});
+      if (h.has("object") && h.at("object").string() != object_name(c.object)) {
+        fb.push_back(fmt::format("{}: the hit is on {}, not {}.", where, object_name(c.object),
+                                 h.at("object").string()));
+      }
+      std::optional<StudentNumber> got[2];
+      double ref[2] = {c.n1, c.n2};
+      const char* names[2] = {"n1", "n2"};
+      bool right[2] = {false, false};
+      for (int i = 0; i < 2; ++i) {
+        if (!h.has(names[i])) {
+          fb.push_back(fmt::format("{}: no {} given.", where, names[i]));
+          continue;
+        }
+        auto n = h.at(names[i]).number();
+        if (!n.value) {
+          fb.push_back(fmt::format("{}: {}: {}", where, names[i], n.fault));
+          continue;
+        }
+        got[i] = *n.value;
+        right[i] = compare_number(*n.value, ref[i], std::abs(ref[i]), tol).match == Match::kRight;
+        if (right[i]) earned += 0.5;
+      }
+      if (right[0] && right[1]) continue;
+      std::string specific = fmt::format("{}: n1 = {} ({}), n2 = {} ({}).", where,
+                                         format_number(c.n1), media_words(scene(), c.before),
+                                         format_number(c.n2), media_words(scene(), c.after));
+      fb.push_back(specific);
+      auto same = [&](const std::optional<StudentNumber>& g, double v) {
+        return g && compare_number(*g, v, std::abs(v), tol).match == Match::kRight;
+      };
+      if (c.n1 != c.n2 && same(got[0], c.n2) && same(got[1], c.n1)) {
+        out.mistakes.push_back(make_mistake("n1-n2-swapped", "media", specific));
+      } else if ((!right[1] && c.after.size() > 0 && same(got[1], scene().refractive_index)) ||
+                 (!right[0] && c.before.size() > 0 && same(got[0], scene().refractive_index))) {
+        out.mistakes.push_back(make_mistake("media-not-nested", "media", specific));
+      }
+    }
+    double extra = given.size() > want.size() ? double(given.size() - want.size()) : 0;
+    if (extra > 0) {
+      fb.push_back(fmt::format("The ray crosses {} boundar{}, not {}.", want.size(),
+                               want.size() == 1 ? "y" : "ies", given.size()));
+    }
+    double total = static_cast<double>(want.size());
+    double credit =
+        total > 0 ? std::max(0.0, earned - kExtraNodePenalty * extra) / total : (extra ? 0 : 1);
+    if (fb.empty()) fb.push_back(fmt::format("Right: n1 and n2 at all {} hits.", want.size()));
+    out.parts.push_back(make_part(context_, "media", credit, fb));
+  }
+
   std::vector<StudentNode> read_nodes(const AnswerReader& a) const {
     std::vector<StudentNode> out;
     if (!a.has("nodes")) return out;
@@ -150,7 +230,8 @@ class RayTreeGrader final : public KindGrader {
                     "point",       "normal",
                     "inside",      "fresnel",
                     "intensity",   "total_internal_reflection",
-                    "background"});
+                    "background",  "n1",
+                    "n2"});
       StudentNode s;
       s.where = n.path();
       s.label = n.has("label") ? n.at("label").string() : "";
@@ -385,6 +466,30 @@ class RayTreeGrader final : public KindGrader {
     out.parts.push_back(part("terms", any_terms, terms_right, terms_fb));
   }
 
+  // One intensity the student gives, against the reference: the one comparison of
+  // intensities, for the primary ray's total and for every component.
+  struct IntensityCheck {
+    bool right = false;
+    std::optional<double> given;  // the student's value, when it reads as a number
+    std::string fault;            // why it does not read, else ""
+  };
+  IntensityCheck check_intensity(const AnswerReader& given, double want) const {
+    IntensityCheck c;
+    auto n = given.number();
+    if (!n.value) {
+      c.fault = n.fault;
+      return c;
+    }
+    c.given = n.value->value;
+    const Tolerance& tol = context_.tolerance.for_field("intensity");
+    c.right = compare_number(*n.value, want, std::abs(want), tol).match == Match::kRight;
+    return c;
+  }
+  bool same_intensity(double got, double other) const {
+    const Tolerance& tol = context_.tolerance.for_field("intensity");
+    return std::abs(got - other) <= allowed_error(other, std::abs(other), tol);
+  }
+
   void grade_intensity(const AnswerReader& a, GradeResult& out) const {
     if (!a.has("intensity")) {
       out.parts.push_back(missing_part(context_, "intensity"));
@@ -399,16 +504,89 @@ class RayTreeGrader final : public KindGrader {
       return;
     }
     double want = tree().nodes.front().intensity;
-    auto n = a.at("intensity").number();
-    const Tolerance& tol = context_.tolerance.for_field("intensity");
-    if (n.value && compare_number(*n.value, want, std::abs(want), tol).match == Match::kRight) {
+    IntensityCheck c = check_intensity(a.at("intensity"), want);
+    if (c.right) {
       out.parts.push_back(make_part(context_, "intensity", 1, {"Right."}));
     } else {
       out.parts.push_back(
           make_part(context_, "intensity", 0,
-                    {n.value ? fmt::format("The intensity along the primary ray is {}, not {}.",
-                                           format_number(want), n.value->text)
-                             : "intensity: " + n.fault}));
+                    {c.given ? fmt::format("The intensity along the primary ray is {}, not {}.",
+                                           format_number(want), format_number(*c.given))
+                             : "intensity: " + c.fault}));
+    }
+  }
+
+  // The diffuse and specular sums a node would have if its blocked lights reached it.
+  std::pair<double, double> unshadowed_terms(const TreeNode& n) const {
+    const Material& m = scene().objects[n.object].material;
+    Vec3d v = normalized(-n.ray.direction);
+    double diffuse = 0, specular = 0;
+    for (const auto& s : n.lights) {
+      if (s.status == LightStatus::kBehind) continue;
+      PhongLight p = phong_light(s.normal, s.l, v, scene().lights[s.light].intensity, m.diffuse,
+                                 m.specular, m.shininess);
+      diffuse += p.diffuse;
+      specular += p.specular;
+    }
+    return {diffuse, specular};
+  }
+
+  // The named mistake a wrong component shows, if any.
+  std::optional<FoundMistake> component_mistake(const ComponentAsk& ask, const TreeNode& n,
+                                                double got, const std::string& specific) const {
+    double want = component_value(n, ask.component);
+    if (ask.component != "total" && ask.component != "local" && same_intensity(got, n.intensity) &&
+        !same_intensity(want, n.intensity)) {
+      return make_mistake("component-is-total", ask.part(), specific);
+    }
+    auto [diffuse, specular] = unshadowed_terms(n);
+    double unshadowed = ask.component == "diffuse"    ? diffuse
+                        : ask.component == "specular" ? specular
+                        : ask.component == "local"    ? n.ambient_term + diffuse + specular
+                                                      : want;
+    if (!same_intensity(unshadowed, want) && same_intensity(got, unshadowed)) {
+      return make_mistake("diffuse-in-shadow", ask.part(), specific);
+    }
+    int child = ask.component == "reflected"     ? n.reflection
+                : ask.component == "transmitted" ? n.refraction
+                                                 : -1;
+    if (child >= 0) {
+      double unweighted = tree().nodes[child].intensity;
+      if (!same_intensity(unweighted, want) && same_intensity(got, unweighted)) {
+        return make_mistake("secondary-unweighted", ask.part(), specific);
+      }
+    }
+    return std::nullopt;
+  }
+
+  // `components`: {"I1": {"diffuse": 0.4, "specular": 0.3}}, one part per component asked.
+  void grade_components(const AnswerReader& a, GradeResult& out) const {
+    a.allow_only(
+        {"components", "nodes", "all_terms", "ambient_only", "rays", "effects", "intensity"});
+    std::optional<AnswerReader> given;
+    if (a.has("components")) given = a.at("components");
+    for (const auto& ask : task_.components()) {
+      const TreeNode& n = tree().nodes[ask.node];
+      double want = component_value(n, ask.component);
+      std::string what =
+          fmt::format("{}'s {}", ask.label, ask.component == "total" ? "intensity" : ask.component);
+      if (!given || !given->has(ask.label) || !given->at(ask.label).has(ask.component)) {
+        out.parts.push_back(missing_part(context_, ask.part(), fmt::format("No {} given.", what)));
+        continue;
+      }
+      IntensityCheck c = check_intensity(given->at(ask.label).at(ask.component), want);
+      if (c.right) {
+        out.parts.push_back(make_part(context_, ask.part(), 1, {"Right."}));
+        continue;
+      }
+      if (!c.given) {
+        out.parts.push_back(make_part(context_, ask.part(), 0, {ask.part() + ": " + c.fault}));
+        continue;
+      }
+      std::string specific =
+          fmt::format("{} is {}, not {}.", what, format_number(want), format_number(*c.given));
+      if (auto m = component_mistake(ask, n, *c.given, specific)) out.mistakes.push_back(*m);
+      out.parts.push_back(make_part(context_, ask.part(), 0, {specific}));
     }
   }
 

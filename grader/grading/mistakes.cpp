@@ -61,6 +61,22 @@ const std::vector<MistakeInfo>& mistake_catalogue() {
        "The diffuse and specular terms need light arriving from the light source; when the "
        "shadow ray toward it meets an object first, only the ambient term remains.",
        0},
+      {"media-not-nested", "refraction", "The space between objects where an outer medium is",
+       "Leaving a transparent object that lies inside another, the ray goes on in the outer "
+       "one: n is the index of the innermost medium the ray is still inside, not the "
+       "scene's.",
+       0},
+      {"n1-n2-swapped", "refraction", "n1 and n2 swapped",
+       "n1 is the index of the medium the ray comes from, n2 of the one it goes into.", 0},
+      {"component-is-total", "lighting", "The total given for one component",
+       "A node's intensity is the sum of its components: ambient, diffuse and specular (the "
+       "local part), then k_r·I_R and k_t·I_T from its children. One component is one of "
+       "those terms.",
+       0},
+      {"secondary-unweighted", "lighting", "A child's intensity without its weight",
+       "What a reflection or refraction ray brings is its intensity times the weight of the "
+       "surface it leaves: k_r·I_R and k_t·I_T (with a Fresnel model, F·k_r and (1 − F)·k_t).",
+       0},
       {"lit-point-ambient-only", "lighting", "Ambient term only at a lit point",
        "When the shadow ray reaches the light (and the surface faces it), the diffuse and "
        "specular terms apply as well as the ambient one.",

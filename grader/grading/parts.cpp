@@ -101,7 +101,8 @@ const std::map<std::string, std::vector<PartSpec>, std::less<>>& table() {
         {"tree", "the hit points of the tree and their objects", 1, C::kTree},
         {"shadows", "which hit points are in shadow, and by what when named", 1, C::kFlag},
         {"terms", "which Phong terms apply at each hit point", 1, C::kNames},
-        {"intensity", "ask \"intensity\": the intensity along the primary ray", 1, C::kScalar}}},
+        {"intensity", "ask \"intensity\": the intensity along the primary ray", 1, C::kScalar},
+        {"media", "ask \"media\": n1 and n2 at every hit along the ray, in order", 1, C::kHits}}},
       {"derive", {{"<quantity>", "each quantity the problem names in find", 1, C::kFormula}}},
   };
   return t;

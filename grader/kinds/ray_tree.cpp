@@ -1,6 +1,7 @@
 // The ray-tree kind.
 #include "kinds/ray_tree.h"
 
+#include <algorithm>
 #include <set>
 
 #include "core/internal_error.h"
@@ -39,8 +40,31 @@ Ask read_ask(const Cursor& problem, Ask fallback) {
   if (a == "hit") return Ask::kHit;
   if (a == "tree") return Ask::kTree;
   if (a == "intensity") return Ask::kIntensity;
-  problem.at("ask").fail(fmt::format("unknown ask '{}' (known: hit, tree, intensity)", a),
+  if (a == "media") return Ask::kMedia;
+  problem.at("ask").fail(fmt::format("unknown ask '{}' (known: hit, tree, intensity, media)", a),
                          "invalid");
+}
+
+const std::vector<std::string>& intensity_components() {
+  static const std::vector<std::string> names = {"ambient",   "diffuse",     "specular", "local",
+                                                 "reflected", "transmitted", "total"};
+  return names;
+}
+
+double component_value(const TreeNode& node, std::string_view component) {
+  double diffuse = 0, specular = 0;
+  for (const auto& s : node.lights) {
+    diffuse += s.phong.diffuse;
+    specular += s.phong.specular;
+  }
+  if (component == "ambient") return node.ambient_term;
+  if (component == "diffuse") return diffuse;
+  if (component == "specular") return specular;
+  if (component == "local") return node.local;
+  if (component == "reflected") return node.reflected;
+  if (component == "transmitted") return node.transmitted;
+  if (component == "total") return node.intensity;
+  throw InternalError(fmt::format("no intensity component named '{}'", component));
 }
 
 void apply_labels(RayTree& tree, const std::map<std::string, std::string>& labels) {
@@ -140,6 +164,7 @@ std::unique_ptr<Task> RayTreeTask::read(const Cursor& problem) {
                                 "duplicate-label");
     }
   }
+  if (auto c = problem.find("components")) task->read_components(*c);
   return task;
 }
 
@@ -174,8 +199,62 @@ Derivation channel_steps(const RayTree& t, int channel) {
 
 }  // namespace
 
+// `components`: {"I1": ["diffuse", "specular"], "I2": ["total"]}, by the tree's labels.
+void RayTreeTask::read_components(const Cursor& c) {
+  if (ask() != Ask::kIntensity) {
+    c.fail("components are parts of intensities: the problem needs \"ask\": \"intensity\"",
+           "invalid");
+  }
+  if (colour()) {
+    c.fail("components are asked of scenes whose intensities are numbers; in a colour scene, "
+           "ask for the intensity and its terms, which are graded channel by channel",
+           "unsupported");
+  }
+  if (!c.is_object() || c.json().empty()) {
+    c.fail("components is an object from a hit point's label to the components asked there",
+           "type");
+  }
+  const std::vector<std::string>& known = intensity_components();
+  for (const auto& [label, value] : c.json().items()) {
+    const TreeNode* node = nullptr;
+    std::vector<std::string> labels;
+    for (const auto& n : tree_.nodes) {
+      if (!n.hit) continue;
+      labels.push_back(n.label);
+      if (n.label == label) node = &n;
+    }
+    if (!node) {
+      c.at(label).fail(fmt::format("the tree has no hit point labelled '{}' (its points: {})",
+                                   label, fmt::join(labels, ", ")),
+                       "unknown-label");
+    }
+    auto items = c.at(label).items();
+    if (items.empty()) c.at(label).fail("name at least one component", "invalid");
+    for (const auto& item : items) {
+      std::string name = item.string();
+      if (std::find(known.begin(), known.end(), name) == known.end()) {
+        item.fail(fmt::format("unknown component '{}' (known: {})", name, fmt::join(known, ", ")),
+                  "invalid");
+      }
+      for (const auto& a : components_) {
+        if (a.node == node->index && a.component == name) {
+          item.fail(fmt::format("{} is asked twice at {}", name, label), "duplicate");
+        }
+      }
+      components_.push_back(ComponentAsk{node->index, label, name});
+    }
+  }
+}
+
 nlohmann::json RayTreeTask::answer() const {
   nlohmann::json j = tree_json(tree_, scene_);
+  if (!components_.empty()) {
+    nlohmann::json c = nlohmann::json::object();
+    for (const auto& a : components_) {
+      c[a.label][a.component] = component_value(tree_.nodes[a.node], a.component);
+    }
+    j["components"] = c;
+  }
   if (channels_.empty()) return j;
   nlohmann::json c[3];
   for (int k = 0; k < 3; ++k) c[k] = tree_json(channels_[k], channel_scenes_[k]);
@@ -201,6 +280,11 @@ nlohmann::json RayTreeTask::answer() const {
 std::vector<SolutionPart> RayTreeTask::derive(std::string_view /*method*/,
                                               const Overrides* overrides) const {
   std::vector<SolutionPart> parts = tree_parts(tree_, scene_, overrides);
+  if (!components_.empty()) {
+    Deriver d("whitted", "The components asked");
+    for (auto& sentence : component_sentences()) d.conclude(std::move(sentence));
+    parts.push_back(SolutionPart{"", std::move(d).finish(), {}});
+  }
   if (channels_.empty()) return parts;
   // The tree's figure with each point's colour beside it.
   std::vector<Vec3d> colours = node_colours();
@@ -234,12 +318,24 @@ std::vector<SolutionPart> RayTreeTask::derive(std::string_view /*method*/,
   return parts;
 }
 
+// "I1's diffuse component is 0.6.", one sentence per component asked.
+std::vector<std::string> RayTreeTask::component_sentences() const {
+  std::vector<std::string> out;
+  for (const auto& c : components_) {
+    out.push_back(fmt::format("{}'s {} is {}.", c.label,
+                              c.component == "total" ? "intensity" : c.component + " component",
+                              format_number(component_value(tree_.nodes[c.node], c.component))));
+  }
+  return out;
+}
+
 std::vector<std::string> RayTreeTask::conclusion() const {
   std::vector<std::string> out = tree_answer(tree_, scene_).conclusion;
   if (!channels_.empty()) {
     out.push_back(fmt::format("The colour seen along the primary ray is {} (r, g, b).",
                               colour_text(colour_intensity())));
   }
+  for (auto& s : component_sentences()) out.push_back(std::move(s));
   return out;
 }
 

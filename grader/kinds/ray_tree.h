@@ -13,8 +13,22 @@ namespace raygrade {
 // Reads a problem's `ray`, or its `camera` and `pixel` (and `convention`), as the primary ray.
 Ray read_primary_ray(const Cursor& problem);
 
-// Reads `ask`: "hit", "tree" (the default) or "intensity".
+// Reads `ask`: "hit", "tree" (the default), "intensity" or "media".
 Ask read_ask(const Cursor& problem, Ask fallback);
+
+// The components of a hit node's intensity a problem may ask for: ambient, diffuse, specular
+// (each summed over the lights), local (their sum), reflected and transmitted (the children's
+// weighted shares k_r·I_R and k_t·I_T) and total.
+const std::vector<std::string>& intensity_components();
+double component_value(const TreeNode& node, std::string_view component);
+
+// One component asked at one hit node.
+struct ComponentAsk {
+  int node = -1;
+  std::string label;  // the node's label
+  std::string component;
+  std::string part() const { return label + "." + component; }  // "I1.diffuse"
+};
 
 class RayTreeTask final : public Task {
  public:
@@ -44,8 +58,13 @@ class RayTreeTask final : public Task {
   // The colour along the primary ray, and at every node (only when colour()).
   Vec3d colour_intensity() const;
   std::vector<Vec3d> node_colours() const;
+  // The components the problem asks for (`components`); empty when it asks for the tree.
+  const std::vector<ComponentAsk>& components() const { return components_; }
 
  private:
+  void read_components(const Cursor& components);
+  std::vector<std::string> component_sentences() const;
+  std::vector<ComponentAsk> components_;
   Scene scene_;
   Ray primary_;
   RayTree tree_;

@@ -28,7 +28,7 @@ const std::vector<KindEntry>& kind_table() {
        &ViewRayTask::read},
       {"ray-tree",
        "the tree of rays one ray spawns in a scene: shadows, reflection, refraction, Phong",
-       {"scene", "ray", "camera", "pixel", "convention", "ask", "labels"},
+       {"scene", "ray", "camera", "pixel", "convention", "ask", "labels", "components"},
        &RayTreeTask::read},
       {"reflect",
        "the mirror direction of a ray at a surface",

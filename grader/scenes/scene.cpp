@@ -26,6 +26,28 @@ double coefficient(const Cursor& c, std::string_view key, double fallback) {
   return v;
 }
 
+// `half_space: true` on a plane: the plane bounds the half-space its normal points away
+// from, and a ray that refracts into it stays inside until it leaves through a boundary.
+void read_half_space(const Cursor& c, SceneObject& o) {
+  std::string_view type = o.shape->type();
+  if (type != "plane") {
+    c.fail(o.solid
+               ? fmt::format("a {} already bounds its inside: half_space is for a plane only", type)
+               : fmt::format("a {} bounds no volume: only a plane can bound a half-space (a "
+                             "transparent {} is a thin sheet)",
+                             type, type),
+           "invalid");
+  }
+  if (!c.json().is_boolean()) c.fail("expected true or false", "type");
+  if (!c.json().get<bool>()) return;
+  if (!o.material.transmits()) {
+    c.fail("half_space gives a plane an inside for refraction: its material must be transparent",
+           "invalid");
+  }
+  o.solid = true;
+  o.half_space = true;
+}
+
 }  // namespace
 
 Material read_material(const Cursor& c) {
@@ -141,6 +163,7 @@ Scene read_scene(const Cursor& c) {
     }
     if (auto t = item.find("transform")) o.transform = read_transform(*t);
     o.solid = o.shape->solid();
+    if (auto h = item.find("half_space")) read_half_space(*h, o);
     s.objects.push_back(std::move(o));
   }
   if (auto lights = c.find("lights")) {
@@ -225,21 +248,33 @@ void keep_channel(Scene& s, int c) {
 
 namespace {
 
-// The first hit of one object, in world terms.
-std::optional<SceneHit> object_hit(const SceneObject& o, int index, const Ray& ray) {
+// Every hit of one object in world terms, nearest first.
+std::vector<SceneHit> object_hits(const SceneObject& o, int index, const Ray& ray) {
   bool moved = !o.transform.identity();
   Ray local = moved ? o.transform.ray_to_object(ray) : ray;
   Intersection x = o.shape->intersect(local);
   if (moved) x = o.transform.hits_to_world(ray, std::move(x));
-  if (x.hits.empty()) return std::nullopt;
-  SceneHit h;
-  h.object = index;
-  h.object_ray = local;
-  h.hit = x.hits.front();
-  if (!moved) h.hit.point = ray.at(h.hit.t);
-  h.point_error = hit_point_error(ray, h.hit.t, moved ? &o.transform : nullptr);
-  return h;
+  std::vector<SceneHit> out;
+  for (const Hit& hit : x.hits) {
+    SceneHit h;
+    h.object = index;
+    h.object_ray = local;
+    h.hit = hit;
+    if (!moved) h.hit.point = ray.at(h.hit.t);
+    h.point_error = hit_point_error(ray, h.hit.t, moved ? &o.transform : nullptr);
+    out.push_back(h);
+  }
+  return out;
 }
+
+// The first hit of one object, in world terms.
+std::optional<SceneHit> object_hit(const SceneObject& o, int index, const Ray& ray) {
+  std::vector<SceneHit> hits = object_hits(o, index, ray);
+  if (hits.empty()) return std::nullopt;
+  return hits.front();
+}
+
+bool nearer(const SceneHit& a, const SceneHit& b) { return a.hit.t < b.hit.t; }
 
 }  // namespace
 
@@ -257,8 +292,16 @@ std::vector<SceneHit> all_hits(const Scene& scene, const Ray& ray) {
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     if (auto h = object_hit(scene.objects[i], static_cast<int>(i), ray)) out.push_back(*h);
   }
-  std::stable_sort(out.begin(), out.end(),
-                   [](const SceneHit& a, const SceneHit& b) { return a.hit.t < b.hit.t; });
+  std::stable_sort(out.begin(), out.end(), nearer);
+  return out;
+}
+
+std::vector<SceneHit> every_hit(const Scene& scene, const Ray& ray) {
+  std::vector<SceneHit> out;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    for (auto& h : object_hits(scene.objects[i], static_cast<int>(i), ray)) out.push_back(h);
+  }
+  std::stable_sort(out.begin(), out.end(), nearer);
   return out;
 }
 

@@ -57,6 +57,9 @@ struct SceneObject {
   Material material;
   Transform transform;
   bool solid = false;  // encloses a volume (sphere, box, capped cylinder): a ray can be inside
+  // A plane that bounds a medium: the half-space its normal points away from is its inside
+  // (then `solid` is true too, and the normal is the outward one of that half-space).
+  bool half_space = false;
 };
 
 // What a shadow ray does when the object between the point and the light is transparent.
@@ -90,6 +93,10 @@ SceneHit nearest_hit(const Scene& scene, const Ray& ray);
 
 // Every object hit between the ray's origin and t_max, nearest first (for shadow rays).
 std::vector<SceneHit> all_hits(const Scene& scene, const Ray& ray);
+
+// Every hit of every object in [t_min, t_max] (both of a sphere's roots), nearest first; on a
+// tie, the object listed first.
+std::vector<SceneHit> every_hit(const Scene& scene, const Ray& ray);
 
 // Reads a `scene` object; object names must be unique (unnamed objects are named by type and
 // position: "sphere 1"). Materials may name an entry of the scene's `materials`.

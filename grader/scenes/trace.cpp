@@ -55,7 +55,9 @@ class Tracer {
   Tracer(const Scene& scene, Ask ask) : scene_(scene) { tree_.ask = ask; }
 
   RayTree run(const Ray& primary) {
-    trace_ray(primary, primary.origin, RayKind::kPrimary, -1, 1, "P", 1, 0);
+    trace_ray(primary, primary.origin, RayKind::kPrimary, -1, 1, "P", 1, 0,
+              media_at_origin(scene_, primary));
+    if (tree_.ask == Ask::kMedia) tree_.crossings = crossings(scene_, primary);
     int n = 0;
     for (auto& node : tree_.nodes) node.label = node.hit ? fmt::format("I{}", ++n) : node.path;
     describe_effects();
@@ -64,7 +66,7 @@ class Tracer {
 
  private:
   int trace_ray(const Ray& ray, const Vec3d& from, RayKind kind, int parent, int depth,
-                const std::string& path, double weight, double offset) {
+                const std::string& path, double weight, double offset, std::vector<int> media) {
     int index = static_cast<int>(tree_.nodes.size());
     TreeNode node;
     node.index = index;
@@ -76,6 +78,8 @@ class Tracer {
     node.from = from;
     node.weight = weight;
     node.offset = offset;
+    node.media = std::move(media);
+    node.n1 = node.n2 = medium_index(scene_, node.media);
     count(kind);
     SceneHit h = nearest_hit(scene_, ray);
     if (h.object < 0) {
@@ -94,7 +98,7 @@ class Tracer {
     node.inside = obj.solid && against;
     node.facing_normal = against ? -node.normal : node.normal;
     tree_.nodes.push_back(node);
-    if (tree_.ask == Ask::kHit) return index;
+    if (!shades(tree_.ask)) return index;
     shade(index, obj.material);
     spawn(index, obj, depth);
     if (tree_.ask == Ask::kIntensity) total(index, obj.material);
@@ -188,11 +192,12 @@ class Tracer {
     // Refraction first in the math (total internal reflection turns it into a reflection),
     // reflection first in the tree.
     Refraction refr;
-    double n1 = 1, n2 = 1;
+    // The refraction ray travels in the media after the boundary, the reflection ray in the
+    // media before it.
+    Crossing boundary = cross_boundary(scene_, node.media, node.object, node.t);
+    double n1 = boundary.n1, n2 = boundary.n2;
     if (m.transmits()) {
       if (obj.solid) {
-        n1 = node.inside ? m.refractive_index : scene_.refractive_index;
-        n2 = node.inside ? scene_.refractive_index : m.refractive_index;
         refr = refract(d, node.facing_normal, n1, n2);
       } else {
         refr.direction = d;  // a flat object is a thin sheet: the ray passes straight through
@@ -224,7 +229,7 @@ class Tracer {
         Vec3d o = offset_ray_origin(node.point, node.point_error, node.facing_normal, r);
         int child = trace_ray(Ray{o, r, 0, kInfinity}, node.point, RayKind::kReflection, index,
                               depth + 1, node.path + ".R", reflect_weight,
-                              offset_distance(node.point_error, node.facing_normal));
+                              offset_distance(node.point_error, node.facing_normal), node.media);
         tree_.nodes[index].reflection = child;
         if (tir) {
           tree_.nodes[child].total_internal_reflection = true;
@@ -239,9 +244,9 @@ class Tracer {
       Vec3d t = refr.direction;
       Vec3d side = obj.solid ? -node.facing_normal : node.facing_normal;
       Vec3d o = offset_ray_origin(node.point, node.point_error, side, t);
-      int child =
-          trace_ray(Ray{o, t, 0, kInfinity}, node.point, RayKind::kRefraction, index, depth + 1,
-                    node.path + ".T", refract_weight, offset_distance(node.point_error, side));
+      int child = trace_ray(Ray{o, t, 0, kInfinity}, node.point, RayKind::kRefraction, index,
+                            depth + 1, node.path + ".T", refract_weight,
+                            offset_distance(node.point_error, side), boundary.after);
       tree_.nodes[index].refraction = child;
     }
   }
@@ -264,18 +269,20 @@ class Tracer {
 
   void describe_effects() {
     auto& e = tree_.effects;
-    bool hit_only = tree_.ask == Ask::kHit;
+    bool hit_only = !shades(tree_.ask);
+    const char* only = tree_.ask == Ask::kMedia
+                           ? "the question asks only for the media along the ray"
+                           : "the question asks only for the hit";
     bool any_reflects = false, any_transmits = false;
     for (const auto& o : scene_.objects) {
       any_reflects |= o.material.reflects();
       any_transmits |= o.material.transmits();
     }
     const RayCounts& c = tree_.counts;
-    e.push_back({"shading", !hit_only,
-                 hit_only ? "the question asks only for the hit"
-                          : "the Phong terms that apply at every hit point"});
+    e.push_back(
+        {"shading", !hit_only, hit_only ? only : "the Phong terms that apply at every hit point"});
     if (hit_only) {
-      e.push_back({"shadow rays", false, "the question asks only for the hit"});
+      e.push_back({"shadow rays", false, only});
     } else if (scene_.lights.empty()) {
       e.push_back({"shadow rays", false, "the scene has no lights: only the ambient term applies"});
     } else {
@@ -290,7 +297,7 @@ class Tracer {
     }
     auto secondary = [&](const char* name, bool any, const char* none, int cast) {
       if (hit_only) {
-        e.push_back({name, false, "the question asks only for the hit"});
+        e.push_back({name, false, only});
       } else if (!any) {
         e.push_back({name, false, none});
       } else if (scene_.max_depth == 1) {

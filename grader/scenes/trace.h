@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "scenes/media.h"
 #include "scenes/optics.h"
 #include "scenes/scene.h"
 
@@ -25,7 +26,11 @@ enum class Ask {
   kHit,        // the primary ray's hit only: no shading, no shadow rays, no secondary rays
   kTree,       // the tree: hits, shadow rays, which Phong terms apply
   kIntensity,  // the tree and every node's intensity
+  kMedia,      // the boundaries along the primary ray's line: n1 and n2 at each, no shading
 };
+
+// Whether the question shades the hit points (and so casts shadow and secondary rays).
+inline bool shades(Ask a) { return a == Ask::kTree || a == Ask::kIntensity; }
 
 enum class LightStatus {
   kVisible,      // the shadow ray reaches the light
@@ -83,6 +88,7 @@ struct TreeNode {
   std::vector<std::string> notes;        // why a secondary ray was not cast, and other remarks
   Refraction refraction_math;            // when a refraction was attempted
   double n1 = 1, n2 = 1;
+  std::vector<int> media;         // the media the ray travels in (objects, innermost last)
   std::optional<double> fresnel;  // the reflectance F, when the material mixes by a Fresnel model
 
   // Intensities (when asked): local = ambient + Σ lights; total = local + k_r·I_r + k_t·I_t.
@@ -107,6 +113,7 @@ struct RayTree {
   std::vector<TreeNode> nodes;  // nodes[0] is the primary ray; parents come before children
   RayCounts counts;
   std::vector<Effect> effects;
+  std::vector<Crossing> crossings;  // ask kMedia: every boundary along the primary ray's line
 
   const TreeNode* find(std::string_view path) const;
   std::vector<int> children(int node) const;  // reflection first, then refraction

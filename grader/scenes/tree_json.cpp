@@ -73,6 +73,11 @@ nlohmann::json node_json(const RayTree& tree, const Scene& scene, const TreeNode
   j["point"] = vec_json(n.point);
   j["normal"] = vec_json(n.normal);
   if (n.inside) j["inside"] = true;
+  if (scene.objects[n.object].solid && scene.objects[n.object].material.transmits() &&
+      (n.refraction >= 0 || n.refraction_math.total_internal_reflection)) {
+    j["n1"] = n.n1;
+    j["n2"] = n.n2;
+  }
   if (n.fresnel) j["fresnel"] = *n.fresnel;
   if (n.shaded) {
     nlohmann::json lights = nlohmann::json::array();
@@ -123,6 +128,19 @@ nlohmann::json effects_json(const RayTree& tree) {
 
 nlohmann::json tree_json(const RayTree& tree, const Scene& scene) {
   const TreeNode& root = tree.nodes.front();
+  if (tree.ask == Ask::kMedia) {
+    nlohmann::json hits = nlohmann::json::array();
+    for (const auto& c : tree.crossings) {
+      nlohmann::json media = nlohmann::json::array();
+      for (int m : c.after) media.push_back(scene.objects[m].name);
+      hits.push_back({{"object", scene.objects[c.object].name},
+                      {"t", c.t},
+                      {"n1", c.n1},
+                      {"n2", c.n2},
+                      {"media", media}});
+    }
+    return {{"hits", hits}};
+  }
   if (tree.ask == Ask::kHit) {
     nlohmann::json hits = nlohmann::json::array();
     if (root.hit) {

@@ -28,7 +28,7 @@ SolutionPart overview(const RayTree& tree, const Scene& scene) {
   }
   d.conclude(counts_sentence(tree.counts));
   SolutionPart part{"", std::move(d).finish(), {}};
-  if (tree.ask != Ask::kHit) {
+  if (shades(tree.ask)) {
     part.figures.push_back(
         Figure{"The ray tree (R: reflection, T: refraction, dashed: shadow rays)",
                tree_svg(tree, scene), tree_dot(tree, scene), tree_text(tree, scene)});
@@ -110,8 +110,13 @@ void secondary_steps(Deriver& d, const Scene& scene, const TreeNode& node) {
   }
   if (m.transmits() && scene.objects[node.object].solid &&
       (node.refraction >= 0 || node.refraction_math.total_internal_reflection)) {
-    E n1 = d.given("n1", "n_1", node.n1, node.inside ? "inside the object" : "outside");
-    E n2 = d.given("n2", "n_2", node.n2, node.inside ? "outside" : "inside the object");
+    Crossing c = cross_boundary(scene, node.media, node.object, node.t);
+    E n1 = d.given("n1", "n_1", node.n1,
+                   fmt::format("the ray travels in {}", media_words(scene, c.before)));
+    const std::string& name = scene.objects[node.object].name;
+    E n2 = d.given("n2", "n_2", node.n2,
+                   c.enters ? fmt::format("entering {}", name)
+                            : fmt::format("leaving {} into {}", name, media_words(scene, c.after)));
     d.step("eta", "eta", n1 / n2);
     d.step("cos_i", "cos_i", -dot(d.sym("D_hat"), d.sym("N_f")), "the angle of incidence");
     Value k = d.step("k", "k", 1 - square(d.sym("eta")) * (1 - square(d.sym("cos_i"))),
@@ -134,6 +139,45 @@ void secondary_steps(Deriver& d, const Scene& scene, const TreeNode& node) {
           fmt::format("the refraction ray's direction (k_t = {})", format_number(m.transparency)));
     }
   }
+}
+
+// The list of media along the primary ray's line, boundary by boundary.
+Derivation media_steps(const RayTree& tree, const Scene& scene) {
+  Deriver d("media", "n1 and n2 by the list of media the ray is inside");
+  auto list = [&](const std::vector<int>& media) {
+    std::vector<std::string> names;
+    for (int m : media) names.push_back(scene.objects[m].name);
+    return fmt::format("[{}]", fmt::join(names, ", "));
+  };
+  const Ray& ray = tree.nodes.front().ray;
+  d.given("O", "O", ray.origin, "the ray's origin");
+  d.given("D", "D", ray.direction);
+  std::vector<int> start = media_at_origin(scene, ray);
+  d.given(
+      "n_0", "n_0", medium_index(scene, start),
+      fmt::format(
+          "The list of media holds the transparent objects the ray is inside, innermost last. At "
+          "O it is {}: {}. At each hit, n1 is the innermost medium's index; the object hit leaves "
+          "the list if it is on it and joins it as the innermost if not; n2 is then the innermost "
+          "medium's index (the scene's, {}, when the list is empty).",
+          list(start), media_words(scene, start), format_number(scene.refractive_index)));
+  for (std::size_t k = 0; k < tree.crossings.size(); ++k) {
+    const Crossing& c = tree.crossings[k];
+    const SceneObject& o = scene.objects[c.object];
+    std::string i = std::to_string(k + 1);
+    d.given("t_" + i, "t_" + i, c.t, fmt::format("hit {} of the line, on {}", i, o.name));
+    d.given("n1_" + i, "n1_" + i, c.n1, fmt::format("the list before is {}", list(c.before)));
+    d.given("n2_" + i, "n2_" + i, c.n2,
+            !is_medium(o) ? fmt::format("{} is no medium (opaque, or a thin sheet): the list "
+                                        "stays {}",
+                                        o.name, list(c.after))
+            : c.enters    ? fmt::format("{} is not on the list: the ray enters it; the list "
+                                           "becomes {}",
+                                        o.name, list(c.after))
+                          : fmt::format("{} is on the list: the ray leaves it; the list becomes {}",
+                                        o.name, list(c.after)));
+  }
+  return std::move(d).finish();
 }
 
 }  // namespace
@@ -194,7 +238,7 @@ Derivation node_steps(const RayTree& tree, const Scene& scene, const TreeNode& n
   d.step("D_hat", "D_hat", D / norm(D));
   d.conclude(fmt::format("{} is on {} at t = {}, P = {}.", node.label, obj.name,
                          format_number(node.t), format_vector(node.point)));
-  if (tree.ask == Ask::kHit) return std::move(d).finish();
+  if (!shades(tree.ask)) return std::move(d).finish();
   bool intensity = tree.ask == Ask::kIntensity;
   if (intensity) d.step("V", "V", -d.sym("D_hat"), "toward the viewer");
   for (std::size_t k = 0; k < node.lights.size(); ++k) {
@@ -241,6 +285,16 @@ Derivation node_steps(const RayTree& tree, const Scene& scene, const TreeNode& n
 Derivation tree_answer(const RayTree& tree, const Scene& scene) {
   Deriver d("whitted", "The answer");
   const TreeNode& root = tree.nodes.front();
+  if (tree.ask == Ask::kMedia) {
+    for (std::size_t k = 0; k < tree.crossings.size(); ++k) {
+      const Crossing& c = tree.crossings[k];
+      d.conclude(fmt::format("Hit {} ({} at t = {}): n1 = {}, n2 = {}.", k + 1,
+                             scene.objects[c.object].name, format_number(c.t), format_number(c.n1),
+                             format_number(c.n2)));
+    }
+    if (tree.crossings.empty()) d.conclude("The ray crosses no boundary.");
+    return std::move(d).finish();
+  }
   if (tree.ask == Ask::kHit) {
     d.conclude(root.hit ? fmt::format("The ray first hits {} at t = {}, at P = {}.",
                                       scene.objects[root.object].name, format_number(root.t),
@@ -284,6 +338,11 @@ std::vector<SolutionPart> tree_parts(const RayTree& tree, const Scene& scene,
                                      const Overrides* overrides) {
   std::vector<SolutionPart> parts;
   parts.push_back(overview(tree, scene));
+  if (tree.ask == Ask::kMedia) {
+    parts.push_back(SolutionPart{"The media along the ray", media_steps(tree, scene), {}});
+    parts.push_back(SolutionPart{"", tree_answer(tree, scene), {}});
+    return parts;
+  }
   for (const auto& n : tree.nodes) {
     parts.push_back(SolutionPart{node_heading(tree, n), node_steps(tree, scene, n, overrides), {}});
   }

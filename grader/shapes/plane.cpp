@@ -155,6 +155,11 @@ nlohmann::ordered_json Plane::schema() {
         }
       ]
     }
+,
+    "half_space": {
+      "type": "boolean",
+      "description": "scenes only: true makes a transparent plane the boundary of the half-space its normal points away from (its inside), instead of a thin sheet"
+    }
   },
   "oneOf": [
     {

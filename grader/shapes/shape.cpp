@@ -10,7 +10,8 @@
 namespace raygrade {
 
 const std::vector<std::string>& common_object_keys() {
-  static const std::vector<std::string> keys = {"type", "name", "material", "transform"};
+  static const std::vector<std::string> keys = {"type", "name", "material", "transform",
+                                                "half_space"};
   return keys;
 }
 
@@ -34,6 +35,9 @@ std::unique_ptr<Shape> read_shape(const Cursor& object) {
   std::unique_ptr<Shape> shape = read_primitive(object);
   if (auto m = object.find("material")) {
     m->fail("a material is used in scenes only: this kind neither shades nor traces", "unused-key");
+  }
+  if (auto h = object.find("half_space")) {
+    h->fail("half_space is used in scenes only: this kind does not refract", "unused-key");
   }
   if (auto t = object.find("transform")) {
     Transform transform = read_transform(*t);
