@@ -108,5 +108,22 @@ TEST(ComponentGrade, BadComponentsAreErrors) {
   expect_error(R"({"I1": ["diffuse", "diffuse"]})", "intensity", "asked twice");
 }
 
+// A colour scene's intensities are graded channel by channel as a whole; its components are
+// not asked one by one.
+TEST(ComponentGrade, ComponentsOfAColourSceneAreAnErrorAtThem) {
+  try {
+    testing::problem(R"({"id": "c", "kind": "ray-tree", "ask": "intensity",
+      "ray": {"origin": [0, 1, 0], "direction": [0, -1, 0]},
+      "scene": {"objects": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0],
+                             "material": {"diffuse": [0.5, 0.25, 0]}}],
+                "lights": [{"position": [0, 5, 0]}]},
+      "components": {"I1": ["diffuse"]}})");
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.diagnostic().path, "/components");
+    EXPECT_EQ(e.diagnostic().code, "unsupported");
+  }
+}
+
 }  // namespace
 }  // namespace raygrade

@@ -206,9 +206,10 @@ void RayTreeTask::read_components(const Cursor& c) {
            "invalid");
   }
   if (colour()) {
-    c.fail("components are asked of scenes whose intensities are numbers; in a colour scene, "
-           "ask for the intensity and its terms, which are graded channel by channel",
-           "unsupported");
+    c.fail(
+        "components are asked of scenes whose intensities are numbers; in a colour scene, "
+        "ask for the intensity and its terms, which are graded channel by channel",
+        "unsupported");
   }
   if (!c.is_object() || c.json().empty()) {
     c.fail("components is an object from a hit point's label to the components asked there",
