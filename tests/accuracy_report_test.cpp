@@ -21,13 +21,13 @@ AccuracyReport hand_made_report() {
       ReportRow row{level.name, p, false, 2, 4, {}, {}, std::nullopt};
       row.random.judged = 10;
       row.hard.judged = 3;
-      if (level.name == "reference double" && p == Primitive::kSphere) row.ns_random = 3;
-      if (level.name == "reference double" && p == Primitive::kPlane) row.ns_hard = 20;
+      if (level.name == "reference double" && p == primitive_of<Sphere>()) row.ns_random = 3;
+      if (level.name == "reference double" && p == primitive_of<Plane>()) row.ns_hard = 20;
       if (level.name == "naive double") row.hard.wrong_decisions = 1;
       r.rows.push_back(row);
     }
   }
-  ReportRow peer{"Möller–Trumbore", Primitive::kTriangle, true, 1, 1, {}, {}, std::nullopt};
+  ReportRow peer{"Möller–Trumbore", primitive_of<Triangle>(), true, 1, 1, {}, {}, std::nullopt};
   peer.hard.judged = 3;
   peer.hard.wrong_decisions = 2;
   r.rows.push_back(peer);

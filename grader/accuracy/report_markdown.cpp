@@ -56,7 +56,7 @@ std::string mean_ratio(const AccuracyReport& r, const std::string& top, const st
 std::string largest_ratio(const AccuracyReport& r, const std::string& top,
                           const std::string& bottom, bool hard) {
   double largest = 0;
-  Primitive at = Primitive::kSphere;
+  Primitive at{};
   for (Primitive p : kAllPrimitives) {
     const ReportRow *a = find_row(r, top, p), *b = find_row(r, bottom, p);
     if (!a || !b) continue;
