@@ -230,10 +230,7 @@ struct Cylinder::Ladder {
     Vec3<T> fp = f - dot(f, axis) * axis, dp = d - dot(d, axis) * axis;
     T a = dot(dp, dp), b = T(2) * dot(fp, dp), c = dot(fp, fp) - r * r;
     if (a == T(0)) return std::nullopt;
-    T disc = b * b - T(4) * a * c;
-    if (disc < T(0)) return std::nullopt;
-    T s = sqrt(disc);
-    return naive_nearest_root((-b - s) / (T(2) * a), (-b + s) / (T(2) * a));
+    return naive_quadratic_nearest(a, b, c);
   }
 
   template <typename T, typename Add>

@@ -269,6 +269,17 @@ std::optional<T> naive_nearest_root(T t0, T t1) {
   return std::nullopt;
 }
 
+// The nearest root at t ≥ 0 of a t² + b t + c = 0 as a textbook takes it: discriminant
+// b² − 4ac, roots (−b ± √Δ)/2a.
+template <typename T>
+std::optional<T> naive_quadratic_nearest(T a, T b, T c) {
+  using std::sqrt;
+  T disc = b * b - T(4) * a * c;
+  if (disc < T(0)) return std::nullopt;
+  T s = sqrt(disc);
+  return naive_nearest_root((-b - s) / (T(2) * a), (-b + s) / (T(2) * a));
+}
+
 // Calls add(t, normal_at(t)) for each root.
 template <typename T, typename Add, typename Normal>
 void add_roots(const Roots<T>& k, Add&& add, Normal&& normal_at) {
@@ -330,13 +341,8 @@ struct Sphere::Ladder {
   template <typename T>
   static std::optional<T> naive(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p,
                                 const T& r) {
-    using std::sqrt;
     Vec3<T> f = o - p[0];
-    T a = dot(d, d), b = T(2) * dot(f, d), c = dot(f, f) - r * r;
-    T disc = b * b - T(4) * a * c;
-    if (disc < T(0)) return std::nullopt;
-    T s = sqrt(disc);
-    return naive_nearest_root((-b - s) / (T(2) * a), (-b + s) / (T(2) * a));
+    return naive_quadratic_nearest(dot(d, d), T(2) * dot(f, d), dot(f, f) - r * r);
   }
 
   template <typename T, typename Add>
