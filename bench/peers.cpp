@@ -55,10 +55,10 @@ bool moller_trumbore(const AccuracyCase& c, double& t) {
 
 const std::vector<Peer>& peers() {
   static const std::vector<Peer> list = {
-      {"GLM intersectRaySphere", Primitive::kSphere, glm_sphere},
-      {"GLM intersectRayPlane", Primitive::kPlane, glm_plane},
-      {"GLM intersectRayTriangle", Primitive::kTriangle, glm_triangle},
-      {"Möller–Trumbore", Primitive::kTriangle, moller_trumbore},
+      {"GLM intersectRaySphere", primitive_of<Sphere>(), glm_sphere},
+      {"GLM intersectRayPlane", primitive_of<Plane>(), glm_plane},
+      {"GLM intersectRayTriangle", primitive_of<Triangle>(), glm_triangle},
+      {"Möller–Trumbore", primitive_of<Triangle>(), moller_trumbore},
   };
   return list;
 }

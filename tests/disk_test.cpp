@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "accuracy/ladder.h"
+#include "accuracy/settle.h"
 #include "shape_error.h"
 #include "test_util.h"
 
@@ -119,6 +121,31 @@ TEST(Disk, BadParametersAreErrorsAtTheirPaths) {
                 R"({"type": "disk", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1,
                "height": 2})"),
             "/height");
+}
+
+// Every level of the precision ladder on rays worked by hand, against the disk of radius 5
+// around the origin in z = 0: from (3, 4, 7) along −z, P = (3, 4, 0) on the rim (3² + 4² = 25),
+// t = 7; from (3, 4.5, 7), |P|² = 29.25 > 25, a miss; from (0, 0, −2) along +z, t = 2 from
+// behind; from (1, 1, 2) along +z the plane is behind, a miss. Every value is exact in every
+// number type, so every level answers exactly.
+TEST(Disk, EveryLadderLevelOnRaysWorkedByHand) {
+  struct Case {
+    Vec3d origin, direction;
+    std::optional<double> t;
+  };
+  const Case cases[] = {{{3, 4, 7}, {0, 0, -1}, 7},
+                        {{3, 4.5, 7}, {0, 0, -1}, std::nullopt},
+                        {{0, 0, -2}, {0, 0, 1}, 2},
+                        {{1, 1, 2}, {0, 0, 1}, std::nullopt}};
+  Disk disk({0, 0, 0}, {0, 0, 1}, 5);
+  for (const Case& k : cases) {
+    std::optional<AccuracyCase> c = accuracy_case_of(disk, Ray{k.origin, k.direction});
+    ASSERT_TRUE(c);
+    EXPECT_EQ(primitive_name(c->primitive), "disk");
+    for (const LadderLevel& level : ladder_levels()) {
+      EXPECT_EQ(level.nearest(*c), k.t) << level.name << " from " << k.origin.y;
+    }
+  }
 }
 
 }  // namespace

@@ -1,9 +1,15 @@
 // Every primitive of the list: its schema examples are read, solved, worked in every solution
-// format with a sketch, and graded (its own answer right, a flipped normal named).
+// format with a sketch, and graded (its own answer right, a flipped normal named); every level
+// of the precision ladder is run on its random and hard cases against the MPFR truth.
 #include "shapes/primitives.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "accuracy/certified.h"
+#include "accuracy/ladder.h"
+#include "accuracy/settle.h"
 #include "grading/grade.h"
 #include "reports/json_report.h"
 #include "reports/render.h"
@@ -18,6 +24,73 @@ nlohmann::json ray_towards(const Shape& s) {
   const Vec3d w{0.36, 0.48, 0.8};
   Vec3d o = s.center() + (10 * (s.extent() + 1)) * w;
   return {{"origin", {o.x, o.y, o.z}}, {"direction", {-w.x, -w.y, -w.z}}};
+}
+
+const std::vector<TruthCase>& corpus() {
+  static const std::vector<TruthCase> cases =
+      read_corpus(fmt::format("{}/tests/data/hard_cases.json", RAYGRADE_SOURCE_DIR));
+  return cases;
+}
+
+// What each level of the ladder is expected to do on ordinary (random) cases: how many wrong
+// hit-or-miss decisions it may make in 1000 and the largest relative error of t where it and
+// the truth both hit; and on the hard cases whether it decides right wherever certified double
+// decides (the boundary is then beyond double rounding), or on every case.
+struct Expected {
+  const char* level;
+  int wrong_per_1000;
+  double max_relative;
+  enum { kNothing, kWhereDoubleDecides, kEverywhere } hard;
+};
+constexpr Expected kExpected[] = {
+    {"naive float", 20, 1e-3, Expected::kNothing},
+    {"naive double", 0, 1e-10, Expected::kNothing},
+    {"reference float", 20, 1e-3, Expected::kNothing},
+    {"reference double", 0, 1e-12, Expected::kWhereDoubleDecides},
+    {"reference long double", 0, 1e-15, Expected::kWhereDoubleDecides},
+    {"reference double-double", 0, 1e-15, Expected::kWhereDoubleDecides},
+    {"reference MPFR", 0, 1e-15, Expected::kEverywhere},
+    {"certified double", 0, 1e-12, Expected::kWhereDoubleDecides},
+    {"adaptive", 0, 1e-12, Expected::kEverywhere},
+};
+
+// Every level of the ladder on the primitive's random cases and its hard cases of the corpus.
+template <typename T>
+void check_ladder() {
+  Primitive p = primitive_of<T>();
+  EXPECT_EQ(primitive_name(p), T::kType);
+  std::vector<TruthCase> random;
+  for (AccuracyCase& c : random_cases(p, 200, 77)) {
+    Truth truth = compute_truth(c, false);
+    random.push_back({std::move(c), truth});
+  }
+  std::vector<TruthCase> hard;
+  for (const TruthCase& c : corpus()) {
+    if (c.input.primitive == p && !c.truth.boundary) hard.push_back(c);
+  }
+  EXPECT_GE(hard.size(), 20u) << "hard cases in tests/data/hard_cases.json";
+  ASSERT_EQ(ladder_levels().size(), std::size(kExpected));
+  for (std::size_t i = 0; i < std::size(kExpected); ++i) {
+    const LadderLevel& level = ladder_levels()[i];
+    const Expected& e = kExpected[i];
+    ASSERT_EQ(level.name, e.level);
+    SCOPED_TRACE(level.name);
+    ASSERT_NE(level.on[static_cast<std::size_t>(p)], nullptr);
+    LevelError r = level_error(level, random);
+    EXPECT_EQ(r.judged, 200);
+    EXPECT_LE(r.wrong_decisions * 1000, e.wrong_per_1000 * r.judged);
+    EXPECT_LE(r.max_relative, e.max_relative);
+    if (e.hard == Expected::kNothing) continue;
+    for (const TruthCase& c : hard) {
+      if (e.hard == Expected::kWhereDoubleDecides && !certified_double(c.input).decided) continue;
+      std::optional<double> t = level.nearest(c.input);
+      ASSERT_EQ(t.has_value(), c.truth.hit) << c.input.id;
+      if (t && e.hard == Expected::kEverywhere && std::isfinite(c.truth.t)) {
+        EXPECT_LE(relative_error(*t, c.truth.t), 1e-12 * std::max(1.0, c.truth.condition))
+            << c.input.id;
+      }
+    }
+  }
 }
 
 template <typename T>
@@ -57,6 +130,15 @@ void check_primitive() {
     if (!mistake.empty()) {
       EXPECT_TRUE(wrong.has_mistake(mistake)) << mistake;
     }
+  }
+  if constexpr (HasLadder<T>) {
+    check_ladder<T>();
+  } else {
+    // Outside the precision study: no case, so that no level answers for it; the solver
+    // answers it in double.
+    std::unique_ptr<Shape> shape = testing::shape(examples.front().dump());
+    Vec3d w{0.36, 0.48, 0.8};
+    EXPECT_FALSE(accuracy_case_of(*shape, Ray{shape->center() + 10.0 * w, -1.0 * w}));
   }
 }
 

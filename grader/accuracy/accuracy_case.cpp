@@ -1,4 +1,4 @@
-// Names of the primitives of the accuracy study, and cases to and from JSON.
+// Cases to and from JSON; the primitive is named by its `type` key.
 #include "accuracy/accuracy_case.h"
 
 namespace raygrade {
@@ -6,29 +6,19 @@ namespace {
 
 nlohmann::json vec_json(const Vec3d& v) { return {v.x, v.y, v.z}; }
 
-// How many points each primitive takes; polygons take 3 or more.
-std::size_t points_needed(Primitive p) {
-  switch (p) {
-    case Primitive::kSphere: return 1;
-    case Primitive::kTriangle:
-    case Primitive::kPolygon: return 3;
-    default: return 2;
-  }
+struct Parameters {
+  std::size_t points;
+  bool more_points, radius;
+};
+
+// How many points a primitive takes (at least that many when more_points), and whether a radius.
+Parameters parameters_of(Primitive p) {
+  return visit_primitive(p, []<typename P>() {
+    return Parameters{P::Ladder::kPoints, P::Ladder::kMorePoints, P::Ladder::kRadius};
+  });
 }
 
 }  // namespace
-
-std::string_view primitive_name(Primitive p) {
-  switch (p) {
-    case Primitive::kSphere: return "sphere";
-    case Primitive::kPlane: return "plane";
-    case Primitive::kTriangle: return "triangle";
-    case Primitive::kPolygon: return "polygon";
-    case Primitive::kCylinder: return "cylinder";
-    case Primitive::kBox: return "box";
-  }
-  return "?";
-}
 
 nlohmann::json case_json(const AccuracyCase& c) {
   nlohmann::json points = nlohmann::json::array();
@@ -39,9 +29,7 @@ nlohmann::json case_json(const AccuracyCase& c) {
                       {"origin", vec_json(c.origin)},
                       {"direction", vec_json(c.direction)},
                       {"points", points}};
-  if (c.primitive == Primitive::kSphere || c.primitive == Primitive::kCylinder) {
-    j["radius"] = c.radius;
-  }
+  if (parameters_of(c.primitive).radius) j["radius"] = c.radius;
   return j;
 }
 
@@ -62,15 +50,14 @@ AccuracyCase read_case(const Cursor& c) {
   out.origin = c.at("origin").vec3();
   out.direction = c.at("direction").nonzero_vec3();
   for (const auto& p : c.at("points").items()) out.points.push_back(p.vec3());
-  std::size_t need = points_needed(out.primitive);
-  bool fixed = out.primitive != Primitive::kPolygon;
+  Parameters shape = parameters_of(out.primitive);
+  std::size_t need = shape.points;
+  bool fixed = !shape.more_points;
   if (out.points.size() < need || (fixed && out.points.size() != need)) {
     c.at("points").fail(fmt::format("a {} takes {}{} points, found {}", name,
                                     fixed ? "" : "at least ", need, out.points.size()));
   }
-  if (out.primitive == Primitive::kSphere || out.primitive == Primitive::kCylinder) {
-    out.radius = c.at("radius").positive_number();
-  }
+  if (shape.radius) out.radius = c.at("radius").positive_number();
   return out;
 }
 

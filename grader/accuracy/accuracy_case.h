@@ -7,31 +7,27 @@
 #include <string_view>
 #include <vector>
 
+#include "accuracy/ladder_primitives.h"
 #include "json/cursor.h"
 #include "math/vec3.h"
 
 namespace raygrade {
 
-enum class Primitive { kSphere, kPlane, kTriangle, kPolygon, kCylinder, kBox };
-
-inline constexpr Primitive kAllPrimitives[] = {Primitive::kSphere,   Primitive::kPlane,
-                                               Primitive::kTriangle, Primitive::kPolygon,
-                                               Primitive::kCylinder, Primitive::kBox};
-
-std::string_view primitive_name(Primitive p);
-
-// The ray is p(t) = origin + t·direction for t in [0, ∞). `points` hold, by primitive:
-// sphere {center}; plane {normal, point}; triangle {a, b, c}; polygon {vertices...};
-// cylinder {base, axis} (an infinite side; the axis need not be unit: it is normalized at the
-// precision of the computation); box {min, max}. `radius` serves the sphere and the cylinder.
+// The ray is p(t) = origin + t·direction for t in [0, ∞). `points` and `radius` are the
+// primitive's parameters as its Ladder says (accuracy/ladder_primitives.h).
 struct AccuracyCase {
   std::string id;
   std::string group;  // which kind of hard case: "far-sphere", "grazing", "shared-edge", ...
-  Primitive primitive = Primitive::kSphere;
+  Primitive primitive{};
   Vec3d origin, direction;
   std::vector<Vec3d> points;
   double radius = 0;
 };
+
+inline AccuracyCase make_case(std::string id, std::string group, Primitive p, Vec3d o, Vec3d d,
+                              std::vector<Vec3d> points, double radius = 0) {
+  return AccuracyCase{std::move(id), std::move(group), p, o, d, std::move(points), radius};
+}
 
 // The case as JSON, every double written so that it reads back exactly.
 nlohmann::json case_json(const AccuracyCase& c);

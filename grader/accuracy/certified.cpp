@@ -140,45 +140,7 @@ std::vector<TruthHit> truth_hits(const AccuracyCase& c) {
   auto add = [&](const Mpfr& t, const Vec3<Mpfr>& normal) {
     if (t >= Mpfr(0)) hits.emplace_back(t, normal);
   };
-  auto add_roots = [&](const Roots<Mpfr>& k, auto normal_at) {
-    if (k.count >= 1) add(k.t0, normal_at(k.t0));
-    if (k.count == 2) add(k.t1, normal_at(k.t1));
-  };
-  switch (c.primitive) {
-    case Primitive::kSphere:
-      add_roots(sphere_roots(o, d, p[0], r), [&](const Mpfr& t) { return o + t * d - p[0]; });
-      break;
-    case Primitive::kCylinder: {
-      Vec3<Mpfr> axis = p[1] / sqrt(dot(p[1], p[1]));
-      add_roots(cylinder_side_roots(o, d, p[0], axis, r), [&](const Mpfr& t) {
-        Vec3<Mpfr> v = o + t * d - p[0];
-        return v - dot(v, axis) * axis;
-      });
-      break;
-    }
-    case Primitive::kPlane:
-      if (std::optional<Mpfr> t = plane_t(o, d, p[0], p[1])) add(*t, p[0]);
-      break;
-    case Primitive::kTriangle: {
-      TriangleHit<Mpfr> h = watertight_triangle(o, d, p[0], p[1], p[2]);
-      if (h.hit) add(h.t, cross(p[1] - p[0], p[2] - p[0]));
-      break;
-    }
-    case Primitive::kPolygon: {
-      Vec3<Mpfr> n = newell_normal_of(p);
-      std::optional<Mpfr> t = plane_t(o, d, n, p[0]);
-      if (t && watertight_polygon(o, d, p)) add(*t, n);
-      break;
-    }
-    case Primitive::kBox: {
-      SlabInterval<Mpfr> s = slab_interval(o, d, p[0], p[1]);
-      if (s.hit) {
-        add(s.t_enter, Vec3<Mpfr>{});
-        if (!(s.t_exit == s.t_enter)) add(s.t_exit, Vec3<Mpfr>{});
-      }
-      break;
-    }
-  }
+  visit_primitive(c.primitive, [&]<typename P>() { P::Ladder::hits(o, d, p, r, add); });
   std::vector<TruthHit> out;
   for (const auto& [t, n] : hits) {
     Mpfr length = sqrt(dot(n, n));

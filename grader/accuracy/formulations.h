@@ -1,18 +1,13 @@
 // The nearest hit (t ≥ 0) of an AccuracyCase by the reference formulation or the naive one,
-// at any number type: one template per formulation, instantiated for every level of the ladder.
+// at any number type: each primitive's Ladder templates, instantiated for every level of the
+// ladder.
 #pragma once
 
 #include <optional>
+#include <type_traits>
+#include <vector>
 
 #include "accuracy/accuracy_case.h"
-#include "accuracy/naive.h"
-#include "shapes/box.h"
-#include "shapes/cylinder.h"
-#include "shapes/flat.h"
-#include "shapes/plane.h"
-#include "shapes/polygon.h"
-#include "shapes/sphere.h"
-#include "shapes/triangle.h"
 
 namespace raygrade {
 
@@ -43,45 +38,16 @@ decltype(auto) vector_as(const Vec3d& v) {
 }
 
 // The reference: the templates the solver's Shape::intersect runs in double, on inputs
-// already in T (points and radius as AccuracyCase describes them). True with the nearest hit at
-// t ≥ 0 in `t`, false for a miss. Inlined where it is called, and t handed back through a
+// already in T (points and radius as the primitive's Ladder describes them). True with the
+// nearest hit at t ≥ 0 in `t`, false for a miss. The per-primitive functions of the ladder
+// (ladder.cpp) call P::Ladder::reference directly, inlined, and hand t back through a
 // reference: GCC 12 returns a std::optional<double> through memory, a store-forwarding stall
 // that costs as much as a plane's whole intersection and would be timed with the formula.
 template <typename T>
-[[gnu::always_inline]] inline bool reference_hit_at(Primitive primitive, const Vec3<T>& o,
-                                                    const Vec3<T>& d, const std::vector<Vec3<T>>& p,
-                                                    const T& radius, T& t) {
-  using std::sqrt;
-  switch (primitive) {
-    case Primitive::kSphere: return sphere_nearest(o, d, p[0], radius, t);
-    case Primitive::kPlane: {
-      std::optional<T> x = plane_t(o, d, p[0], p[1]);
-      if (!x || !(*x >= T(0))) return false;
-      t = *x;
-      return true;
-    }
-    case Primitive::kTriangle: {
-      TriangleHit<T> h = watertight_triangle(o, d, p[0], p[1], p[2]);
-      if (!h.hit || !(h.t >= T(0))) return false;
-      t = h.t;
-      return true;
-    }
-    case Primitive::kPolygon: {
-      std::optional<T> x = plane_t(o, d, newell_normal_of(p), p[0]);
-      if (!x || !(*x >= T(0)) || !watertight_polygon(o, d, p)) return false;
-      t = *x;
-      return true;
-    }
-    case Primitive::kCylinder: {
-      Vec3<T> axis = p[1] / sqrt(dot(p[1], p[1]));
-      return cylinder_side_nearest(o, d, p[0], axis, radius, t);
-    }
-    case Primitive::kBox: {
-      SlabInterval<T> s = slab_interval(o, d, p[0], p[1]);
-      return s.hit && nearest_root(Roots<T>{2, s.t_enter, s.t_exit}, t);
-    }
-  }
-  return false;
+bool reference_hit_at(Primitive primitive, const Vec3<T>& o, const Vec3<T>& d,
+                      const std::vector<Vec3<T>>& p, const T& radius, T& t) {
+  return visit_primitive(primitive,
+                         [&]<typename P>() { return P::Ladder::reference(o, d, p, radius, t); });
 }
 
 // The reference nearest hit of a case, computed in T.
@@ -96,21 +62,10 @@ std::optional<T> reference_nearest(const AccuracyCase& c) {
 
 // The naive textbook formulation of the same question, on inputs already in T.
 template <typename T>
-[[gnu::always_inline]] inline std::optional<T> naive_nearest_at(Primitive primitive,
-                                                                const Vec3<T>& o, const Vec3<T>& d,
-                                                                const std::vector<Vec3<T>>& p,
-                                                                const T& radius) {
-  using std::sqrt;
-  switch (primitive) {
-    case Primitive::kSphere: return naive::sphere(o, d, p[0], radius);
-    case Primitive::kPlane: return naive::plane(o, d, p[0], p[1]);
-    case Primitive::kTriangle: return naive::triangle(o, d, p[0], p[1], p[2]);
-    case Primitive::kPolygon: return naive::polygon(o, d, p);
-    case Primitive::kCylinder:
-      return naive::cylinder(o, d, p[0], p[1] / sqrt(dot(p[1], p[1])), radius);
-    case Primitive::kBox: return naive::box(o, d, p[0], p[1]);
-  }
-  return std::nullopt;
+std::optional<T> naive_nearest_at(Primitive primitive, const Vec3<T>& o, const Vec3<T>& d,
+                                  const std::vector<Vec3<T>>& p, const T& radius) {
+  return visit_primitive(primitive,
+                         [&]<typename P>() { return P::Ladder::naive(o, d, p, radius); });
 }
 
 // The naive nearest hit of a case, computed in T.

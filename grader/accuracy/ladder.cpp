@@ -17,26 +17,27 @@ bool as_double(const std::optional<T>& hit, double& t) {
   return true;
 }
 
-// The naive and the reference formulations in T, each instantiated per primitive.
+// The naive and the reference formulations in T, each instantiated per primitive, with the
+// primitive's formula inlined.
 template <typename T>
 struct Naive {
-  template <Primitive P>
+  template <typename P>
   [[gnu::noinline]] static bool on(const AccuracyCase& c, double& t) {
-    return as_double(naive_nearest_at(P, vector_as<T>(c.origin), vector_as<T>(c.direction),
+    return as_double(P::Ladder::naive(vector_as<T>(c.origin), vector_as<T>(c.direction),
                                       points_as<T>(c), T(c.radius)),
                      t);
   }
 };
 
-template <typename T, Primitive P>
+template <typename T, typename P>
 bool reference_hit(const AccuracyCase& c, double& t) {
   const auto& o = vector_as<T>(c.origin);
   const auto& d = vector_as<T>(c.direction);
   if constexpr (std::is_same_v<T, double>) {
-    return reference_hit_at(P, o, d, c.points, c.radius, t);
+    return P::Ladder::reference(o, d, c.points, c.radius, t);
   } else {
     T hit{};
-    if (!reference_hit_at(P, o, d, points_as<T>(c), T(c.radius), hit)) return false;
+    if (!P::Ladder::reference(o, d, points_as<T>(c), T(c.radius), hit)) return false;
     t = static_cast<double>(hit);
     return true;
   }
@@ -44,7 +45,7 @@ bool reference_hit(const AccuracyCase& c, double& t) {
 
 template <typename T>
 struct Reference {
-  template <Primitive P>
+  template <typename P>
   [[gnu::noinline]] static bool on(const AccuracyCase& c, double& t) {
     if constexpr (std::is_same_v<T, Mpfr>) {
       MpfrPrecision bits(kMpfrBits);
@@ -57,9 +58,10 @@ struct Reference {
 
 template <typename F>
 PerPrimitive per_primitive() {
-  return {&F::template on<Primitive::kSphere>,   &F::template on<Primitive::kPlane>,
-          &F::template on<Primitive::kTriangle>, &F::template on<Primitive::kPolygon>,
-          &F::template on<Primitive::kCylinder>, &F::template on<Primitive::kBox>};
+  return []<std::size_t... I>(std::index_sequence<I...>) {
+    return PerPrimitive{&F::template on<LadderPrimitive<I>>...};
+  }
+  (std::make_index_sequence<kPrimitiveCount>{});
 }
 
 PerPrimitive every_primitive(NearestHit f) {

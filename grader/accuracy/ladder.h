@@ -19,10 +19,10 @@ namespace raygrade {
 // part of the formula.
 using NearestHit = bool (*)(const AccuracyCase& c, double& t);
 
-// One such function per primitive, indexed by Primitive: timing one primitive's cases then runs a
-// compact function with that primitive's formula alone, for every level alike. nullptr where a
-// peer does not serve the primitive.
-using PerPrimitive = std::array<NearestHit, std::size(kAllPrimitives)>;
+// One such function per primitive of the study (LadderPrimitives), indexed by Primitive: timing
+// one primitive's cases then runs a compact function with that primitive's formula alone, for
+// every level alike. nullptr where a peer does not serve the primitive.
+using PerPrimitive = std::array<NearestHit, kPrimitiveCount>;
 
 struct LadderLevel {
   std::string name;     // "naive double", "reference double-double", ...

@@ -55,23 +55,13 @@ double component_error(const Vec3d& a, const Vec3d& b) {
   return std::max({std::abs(e.x), std::abs(e.y), std::abs(e.z)});
 }
 
-// The textbook normal at the point O + t·D rounded: (P − C)/r for a sphere, the part of P − B
-// across the axis for a cylinder, the normalized normal or cross product for the flats.
+// The textbook normal at the point O + t·D rounded: (P − C)/r for a sphere, the normalized
+// normal or cross product for the flats, ... (each primitive's Ladder::naive_normal).
 std::optional<Vec3d> naive_normal(const AccuracyCase& c, double t) {
   Vec3d point = c.origin + t * c.direction;
-  const std::vector<Vec3d>& p = c.points;
-  switch (c.primitive) {
-    case Primitive::kSphere: return (point - p[0]) / c.radius;
-    case Primitive::kCylinder: {
-      Vec3d axis = normalized(p[1]), v = point - p[0];
-      return normalized(v - dot(v, axis) * axis);
-    }
-    case Primitive::kPlane: return normalized(p[0]);
-    case Primitive::kTriangle: return normalized(cross(p[1] - p[0], p[2] - p[0]));
-    case Primitive::kPolygon: return normalized(newell_normal(p));
-    case Primitive::kBox: return std::nullopt;
-  }
-  return std::nullopt;
+  return visit_primitive(c.primitive, [&]<typename P>() {
+    return P::Ladder::naive_normal(c.points, c.radius, point);
+  });
 }
 
 }  // namespace

@@ -14,7 +14,7 @@ namespace raygrade {
 
 struct ReportRow {
   std::string level;  // a ladder level or a peer's name
-  Primitive primitive = Primitive::kSphere;
+  Primitive primitive{};
   bool peer = false;
   double ns_random = 0, ns_hard = 0;  // nanoseconds per intersection (hard: 0 if no cases)
   LevelError random, hard;

@@ -56,7 +56,7 @@ std::string mean_ratio(const AccuracyReport& r, const std::string& top, const st
 std::string largest_ratio(const AccuracyReport& r, const std::string& top,
                           const std::string& bottom, bool hard) {
   double largest = 0;
-  Primitive at = Primitive::kSphere;
+  Primitive at{};
   for (Primitive p : kAllPrimitives) {
     const ReportRow *a = find_row(r, top, p), *b = find_row(r, bottom, p);
     if (!a || !b) continue;
@@ -211,7 +211,7 @@ std::string render_accuracy_markdown(const AccuracyReport& r, const std::string&
       "spheres, and float makes {}. The stable double reference makes {} (each one a case whose "
       "truth lies within double's own rounding of the boundary, where interval arithmetic in "
       "double reports that it cannot decide; the tests check this on every case) at a cost of "
-      "at most {} times naive double on the same random rays ({} on average over the six "
+      "at most {} times naive double on the same random rays ({} on average over the {} "
       "primitives). On the hard rays it costs up to {} times as much: there it runs the "
       "compensated arithmetic those cases need, where the textbook formula answers fast and "
       "wrong. Going further up the ladder buys digits "
@@ -226,7 +226,7 @@ std::string render_accuracy_markdown(const AccuracyReport& r, const std::string&
       wrong_total(r, "reference double", true),
       largest_ratio(r, "reference double", "naive double", false),
       mean_ratio(r, "reference double", "naive double", false, "{:.2f}"),
-      largest_ratio(r, "reference double", "naive double", true),
+      r.hard_per_primitive.size(), largest_ratio(r, "reference double", "naive double", true),
       mean_ratio(r, "reference long double", "reference double", false),
       mean_ratio(r, "reference double-double", "reference double", false),
       mean_ratio(r, "reference MPFR", "reference double", false),

@@ -28,28 +28,26 @@ double y_of(double e) {
          (kErrorDecadeHigh - d) / (kErrorDecadeHigh - kErrorDecadeLow) * (kHeight - kTop - kBottom);
 }
 
+// The primitives' markers, by index: filled and open circles, squares, triangles and diamonds,
+// a cross and a plus, then round again.
 std::string marker(Primitive p, double x, double y, const std::string& color) {
-  switch (p) {
-    case Primitive::kSphere:
-      return fmt::format("<circle cx='{:.1f}' cy='{:.1f}' r='4' fill='{}'/>", x, y, color);
-    case Primitive::kPlane:
-      return fmt::format("<rect x='{:.1f}' y='{:.1f}' width='8' height='8' fill='{}'/>", x - 4,
-                         y - 4, color);
-    case Primitive::kTriangle:
-      return fmt::format("<path d='M{:.1f} {:.1f}l5 9h-10z' fill='{}'/>", x, y - 5, color);
-    case Primitive::kPolygon:
-      return fmt::format("<path d='M{:.1f} {:.1f}l5 5l-5 5l-5 -5z' fill='{}'/>", x, y - 5, color);
-    case Primitive::kCylinder:
-      return fmt::format(
-          "<circle cx='{:.1f}' cy='{:.1f}' r='4' fill='none' stroke='{}' stroke-width='2'/>", x, y,
-          color);
-    case Primitive::kBox:
-      return fmt::format(
-          "<rect x='{:.1f}' y='{:.1f}' width='8' height='8' fill='none' stroke='{}' "
-          "stroke-width='2'/>",
-          x - 4, y - 4, color);
+  const std::string fill = fmt::format("fill='{}'", color),
+                    open = fmt::format("fill='none' stroke='{}' stroke-width='2'", color);
+  std::string circle = "<circle cx='{:.1f}' cy='{:.1f}' r='4' {}/>",
+              square = "<rect x='{:.1f}' y='{:.1f}' width='8' height='8' {}/>",
+              triangle = "<path d='M{:.1f} {:.1f}l5 9h-10z' {}/>",
+              diamond = "<path d='M{:.1f} {:.1f}l5 5l-5 5l-5 -5z' {}/>";
+  switch (static_cast<std::size_t>(p) % 9) {
+    case 0: return fmt::format(fmt::runtime(circle), x, y, fill);
+    case 1: return fmt::format(fmt::runtime(square), x - 4, y - 4, fill);
+    case 2: return fmt::format(fmt::runtime(triangle), x, y - 5, fill);
+    case 3: return fmt::format(fmt::runtime(diamond), x, y - 5, fill);
+    case 4: return fmt::format(fmt::runtime(circle), x, y, open);
+    case 5: return fmt::format(fmt::runtime(square), x - 4, y - 4, open);
+    case 6: return fmt::format(fmt::runtime(triangle), x, y - 5, open);
+    case 7: return fmt::format(fmt::runtime(diamond), x, y - 5, open);
+    default: return fmt::format("<path d='M{:.1f} {:.1f}l8 8m0 -8l-8 8' {}/>", x - 4, y - 4, open);
   }
-  return "";
 }
 
 const char* kColors[] = {"#9e9e9e", "#e53935", "#fb8c00", "#1e88e5", "#3949ab",

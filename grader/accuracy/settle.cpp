@@ -5,12 +5,6 @@
 #include <cmath>
 
 #include "accuracy/certified.h"
-#include "shapes/box.h"
-#include "shapes/cylinder.h"
-#include "shapes/plane.h"
-#include "shapes/polygon.h"
-#include "shapes/sphere.h"
-#include "shapes/triangle.h"
 
 namespace raygrade {
 namespace {
@@ -20,19 +14,22 @@ namespace {
 // meets the same part of the surface.
 constexpr double kNormalProbeBack = 1e-6;
 
-Vec3d vec(const nlohmann::json& j) {
-  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
-}
-
 }  // namespace
 
 std::optional<AccuracyCase> accuracy_case_of(const Shape& object, const Ray& ray) {
   if (ray.t_min != 0 || ray.t_max != kInfinity) return std::nullopt;
-  nlohmann::json j = object.to_json();
-  // A transformed object has no case of its own: the ladder's formulations are the primitives'
-  // in world coordinates, and the solver answers it in double (docs/precision.md).
-  if (j.contains("transform")) return std::nullopt;
+  // The object's primitive, when it is one of the study's: a transformed object is not (its
+  // type is the wrapper's), and has no case of its own: the ladder's formulations are the
+  // primitives' in world coordinates, and the solver answers it in double (docs/precision.md).
   AccuracyCase c;
+  bool found = false;
+  for_each_ladder_primitive([&]<typename P>() {
+    if (const auto* shape = dynamic_cast<const P*>(&object)) {
+      c.primitive = primitive_of<P>();
+      found = P::Ladder::case_of(*shape, c.points, c.radius);
+    }
+  });
+  if (!found) return std::nullopt;
   c.id = "problem";
   c.group = "problem";
   c.origin = ray.origin;
@@ -40,42 +37,12 @@ std::optional<AccuracyCase> accuracy_case_of(const Shape& object, const Ray& ray
   // (intersect_rescaled): exact, and t is then 2^k times the problem's.
   int k = direction_exponent(ray.direction);
   c.direction = scaled_by_power_of_two(ray.direction, -k);
-  std::string_view type = object.type();
-  if (type == "sphere") {
-    c.primitive = Primitive::kSphere;
-    c.points = {vec(j["center"])};
-    c.radius = j["radius"].get<double>();
-  } else if (type == "plane" && j.contains("point")) {
-    c.primitive = Primitive::kPlane;
-    c.points = {vec(j["normal"]), vec(j["point"])};
-  } else if (type == "triangle" || type == "polygon") {
-    c.primitive = type == "triangle" ? Primitive::kTriangle : Primitive::kPolygon;
-    for (const auto& v : j["vertices"]) c.points.push_back(vec(v));
-  } else if (type == "cylinder" && !j.contains("height")) {
-    c.primitive = Primitive::kCylinder;
-    c.points = {vec(j["base"]), vec(j["axis"])};
-    c.radius = j["radius"].get<double>();
-  } else if (type == "box") {
-    c.primitive = Primitive::kBox;
-    c.points = {vec(j["min"]), vec(j["max"])};
-  } else {
-    return std::nullopt;
-  }
   return c;
 }
 
 std::unique_ptr<Shape> shape_of(const AccuracyCase& c) {
-  const std::vector<Vec3d>& p = c.points;
-  switch (c.primitive) {
-    case Primitive::kSphere: return std::make_unique<Sphere>(p[0], c.radius);
-    case Primitive::kPlane: return std::make_unique<Plane>(p[0], p[1], std::nullopt);
-    case Primitive::kTriangle: return std::make_unique<Triangle>(p[0], p[1], p[2]);
-    case Primitive::kPolygon: return std::make_unique<Polygon>(p);
-    case Primitive::kCylinder:
-      return std::make_unique<Cylinder>(p[0], p[1], c.radius, std::nullopt, false);
-    case Primitive::kBox: return std::make_unique<Box>(p[0], p[1]);
-  }
-  return nullptr;
+  return visit_primitive(c.primitive,
+                         [&]<typename P>() { return P::Ladder::shape_of(c.points, c.radius); });
 }
 
 namespace {

@@ -1,6 +1,8 @@
 // Box: reading, reference slab intersection and seed 004's slab derivation.
 #include "shapes/box.h"
 
+#include "accuracy/accuracy_case.h"
+#include "accuracy/split_mix.h"
 #include "shapes/describe.h"
 
 namespace raygrade {
@@ -190,6 +192,44 @@ nlohmann::ordered_json Box::schema() {
   ]
 }
 )json");
+}
+
+// The accuracy study's cases of boxes.
+
+void Box::Ladder::random_case(SplitMix& rng, std::vector<Vec3d>& points, double& /*radius*/) {
+  Vec3d lo = rng.point(1),
+        size{rng.uniform(0.2, 1.5), rng.uniform(0.2, 1.5), rng.uniform(0.2, 1.5)};
+  points = {lo, lo + size};
+}
+
+void Box::Ladder::hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out) {
+  if (round != 5) return;
+  auto box_case = [&](std::string id, Vec3d o, Vec3d d, Vec3d lo, Vec3d hi) {
+    out.push_back(make_case(std::move(id), "box-slab", primitive_of<Box>(), o, d, {lo, hi}));
+  };
+  Vec3d lo{-1, -1, -1}, hi{1, 2, 3};
+  std::vector<std::pair<Vec3d, Vec3d>> rays = {
+      {{-1, 0, -5}, {0, 0, 1}},   // origin on the x = min plane, along it: touches the face
+      {{1, 0.5, -5}, {0, 0, 1}},  // on x = max
+      {{-1, 2, -5}, {0, 0, 1}},   // along an edge
+      {{-1, 3, -5}, {0, 0, 1}},   // on the plane, outside the face
+      {{-3, -3, -3}, {1, 1, 1}},  // through the corner (-1, -1, -1)
+      {{-3, 0, 0}, {1, 0, 0}},    // two zero components, through the middle
+      {{-1, -1, 0}, {0, 0, 1}},   // on two slab planes at once
+      {{0, 0, 0}, {0, 0, -1}},    // inside
+      {{2, 4, 6}, {-1, -2, -3}},  // through the corner (1, 2, 3)
+  };
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    box_case(fmt::format("box-slab-{}", i), rays[i].first, rays[i].second, lo, hi);
+  }
+  for (int i = 0; i < 30; ++i) {
+    // Rays aimed at a corner or an edge of a random box, to the nearest double.
+    Vec3d a{rng.uniform(-1, 0), rng.uniform(-1, 0), rng.uniform(-1, 0)};
+    Vec3d b = a + Vec3d{rng.uniform(0.5, 2), rng.uniform(0.5, 2), rng.uniform(0.5, 2)};
+    Vec3d target{a.x, i % 2 ? b.y : rng.uniform(a.y, b.y), a.z};
+    Vec3d o = target + Vec3d{rng.uniform(-3, -1), rng.uniform(-2, 2), rng.uniform(-3, -1)};
+    box_case(fmt::format("box-edge-{}", i), o, target - o, a, b);
+  }
 }
 
 }  // namespace raygrade

@@ -1,7 +1,11 @@
 // Box: axis-aligned, between corners min and max; the slab method.
 #pragma once
 
+#include <algorithm>
+#include <limits>
+
 #include "shapes/shape.h"
+#include "shapes/sphere.h"
 
 namespace raygrade {
 
@@ -44,6 +48,9 @@ template <typename T>
 
 class Box final : public Shape {
  public:
+  // What the accuracy study needs of a box (accuracy/ladder_primitives.h).
+  struct Ladder;
+
   Box(Vec3d lo, Vec3d hi) : lo_(lo), hi_(hi) {}
   static std::unique_ptr<Shape> read(const Cursor& object);
 
@@ -70,6 +77,65 @@ class Box final : public Shape {
 
  private:
   Vec3d lo_, hi_;
+};
+
+// The case's points: {min, max}; no radius.
+struct Box::Ladder {
+  static constexpr std::size_t kPoints = 2;
+  static constexpr bool kMorePoints = false, kRadius = false;
+  static constexpr int kDirectionPoint = -1;
+
+  template <typename T>
+  [[gnu::always_inline]] static bool reference(const Vec3<T>& o, const Vec3<T>& d,
+                                               const std::vector<Vec3<T>>& p, const T& /*r*/,
+                                               T& t) {
+    SlabInterval<T> s = slab_interval(o, d, p[0], p[1]);
+    return s.hit && nearest_root(Roots<T>{2, s.t_enter, s.t_exit}, t);
+  }
+
+  // The slab method with plain divisions (a zero direction component gives ±∞, and NaN when
+  // the origin lies on that slab's plane).
+  template <typename T>
+  static std::optional<T> naive(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p,
+                                const T& /*r*/) {
+    const Vec3<T>&lo = p[0], &hi = p[1];
+    T t_enter = -std::numeric_limits<T>::infinity(), t_exit = std::numeric_limits<T>::infinity();
+    for (int i = 0; i < 3; ++i) {
+      T t1 = (lo[i] - o[i]) / d[i], t2 = (hi[i] - o[i]) / d[i];
+      t_enter = std::max(t_enter, std::min(t1, t2));
+      t_exit = std::min(t_exit, std::max(t1, t2));
+    }
+    if (t_enter > t_exit) return std::nullopt;
+    return naive_nearest_root(t_enter, t_exit);
+  }
+
+  // The faces' normals are exact (and ambiguous at an edge): zero.
+  template <typename T, typename Add>
+  static void hits(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p,
+                   const T& /*r*/, Add&& add) {
+    SlabInterval<T> s = slab_interval(o, d, p[0], p[1]);
+    if (s.hit) {
+      add(s.t_enter, Vec3<T>{});
+      if (!(s.t_exit == s.t_enter)) add(s.t_exit, Vec3<T>{});
+    }
+  }
+
+  static std::optional<Vec3d> naive_normal(const std::vector<Vec3d>& /*p*/, double /*r*/,
+                                           const Vec3d& /*point*/) {
+    return std::nullopt;
+  }
+
+  static bool case_of(const Box& box, std::vector<Vec3d>& points, double& /*radius*/) {
+    points = {box.lo_, box.hi_};
+    return true;
+  }
+  static std::unique_ptr<Shape> shape_of(const std::vector<Vec3d>& p, double /*r*/) {
+    return std::make_unique<Box>(p[0], p[1]);
+  }
+
+  static void random_case(SplitMix& rng, std::vector<Vec3d>& points, double& radius);
+  // Round 5: origins on slab planes, rays through corners and edges.
+  static void hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out);
 };
 
 }  // namespace raygrade

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "accuracy/accuracy_case.h"
+#include "accuracy/split_mix.h"
 #include "math/unit_vector.h"
 #include "shapes/describe.h"
 #include "shapes/round.h"
@@ -321,6 +323,87 @@ nlohmann::ordered_json Cylinder::schema() {
   ]
 }
 )json");
+}
+
+// The accuracy study's cases of infinite cylinders.
+
+void Cylinder::Ladder::random_case(SplitMix& rng, std::vector<Vec3d>& points, double& radius) {
+  points = {rng.point(0.5), rng.unit_vector()};
+  radius = rng.uniform(0.3, 1);
+}
+
+namespace {
+
+AccuracyCase cylinder_case(std::string id, std::string group, Vec3d o, Vec3d d, Vec3d base,
+                           Vec3d axis, double r) {
+  return make_case(std::move(id), std::move(group), primitive_of<Cylinder>(), o, d, {base, axis},
+                   r);
+}
+
+void grazing(std::vector<AccuracyCase>& out, SplitMix& rng) {
+  for (int i = 0; i < 60; ++i) {
+    Vec3d base{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    Vec3d axis = i % 3 == 0 ? Vec3d{0, 0, 1} : rng.unit_vector();
+    Vec3d e1 = perpendicular(axis, rng), e2 = normalized(cross(axis, e1));
+    double r = rng.uniform(0.5, 2), p = r * (1 + offset(rng, 4, 15));
+    double z0 = rng.uniform(-2, 2), z1 = rng.uniform(-2, 2);
+    Vec3d o = base + p * e2 + 5.0 * e1 + z0 * axis;
+    Vec3d d = -5.0 * e1 + (z1 - z0) * axis;
+    out.push_back(
+        cylinder_case(fmt::format("grazing-cylinder-{}", i), "grazing", o, d, base, axis, r));
+  }
+}
+
+void along_axis(std::vector<AccuracyCase>& out, SplitMix& rng) {
+  for (int i = 0; i < 30; ++i) {
+    Vec3d base{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    Vec3d axis = i % 3 == 0 ? Vec3d{0, 0, 1} : (i % 3 == 1 ? Vec3d{1, 1, 0} : rng.unit_vector());
+    double r = rng.uniform(0.5, 2);
+    Vec3d side = normalized(cross(axis, rng.unit_vector()));
+    double where = i % 2 == 0 ? 0.5 : 1.5;  // inside or outside the side
+    Vec3d o = base + (where * r) * side;
+    double tilt = i % 5 < 2 ? 0 : std::pow(10.0, -rng.uniform(6, 12));
+    Vec3d d = axis + tilt * side;
+    out.push_back(
+        cylinder_case(fmt::format("cylinder-axis-{}", i), "cylinder-axis", o, d, base, axis, r));
+  }
+}
+
+// Thin far cylinders, where a normal from the rounded hit point loses digits; rays aimed
+// within the cylinder.
+void small_far(std::vector<AccuracyCase>& out, SplitMix& rng) {
+  for (int i = 0; i < 20; ++i) {
+    double r = std::pow(10.0, -rng.uniform(6, 9)), dist = std::pow(10.0, rng.uniform(2, 4));
+    Vec3d o{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    Vec3d u = rng.unit_vector(), axis = perpendicular(u, rng);
+    Vec3d base = o + dist * u + rng.uniform(-1, 1) * axis;
+    Vec3d across = normalized(cross(axis, u));
+    Vec3d target = base + (r * rng.uniform(-0.9, 0.9)) * across + rng.uniform(-1, 1) * axis;
+    out.push_back(cylinder_case(fmt::format("small-far-cylinder-{}", i), "small-far", o, target - o,
+                                base, axis, r));
+  }
+}
+
+}  // namespace
+
+void Cylinder::Ladder::hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out) {
+  switch (round) {
+    case 0: grazing(out, rng); break;
+    case 1:
+      // Exact tangents: integer data, the discriminant is exactly zero.
+      out.push_back(
+          cylinder_case("tangent-3", "tangent", {-5, 1, 0}, {1, 0, 0.5}, {0, 0, 0}, {0, 0, 1}, 1));
+      out.push_back(
+          cylinder_case("tangent-4", "tangent", {3, -7, 2}, {0, 1, 0}, {0, 0, 0}, {0, 0, 2}, 3));
+      break;
+    case 2:
+      out.push_back(cylinder_case("on-surface-2", "on-surface", {0, 2, 7}, {0, -1, 1}, {0, 0, 0},
+                                  {0, 0, 1}, 2));
+      break;
+    case 6: along_axis(out, rng); break;
+    case 8: small_far(out, rng); break;
+    default: break;
+  }
 }
 
 }  // namespace raygrade

@@ -167,6 +167,9 @@ template <typename T>
 
 class Cylinder final : public Shape {
  public:
+  // What the accuracy study needs of a cylinder (accuracy/ladder_primitives.h).
+  struct Ladder;
+
   Cylinder(Vec3d base, Vec3d axis, double radius, std::optional<double> height, bool capped);
   static std::unique_ptr<Shape> read(const Cursor& object);
 
@@ -199,6 +202,68 @@ class Cylinder final : public Shape {
   double radius_;
   std::optional<double> height_;
   bool capped_;
+};
+
+// The case's points: {base, axis} of an infinite side (the axis need not be unit: it is
+// normalized at the precision of the computation); its radius. A cylinder with a height has no
+// case.
+struct Cylinder::Ladder {
+  static constexpr std::size_t kPoints = 2;
+  static constexpr bool kMorePoints = false, kRadius = true;
+  static constexpr int kDirectionPoint = 1;
+
+  template <typename T>
+  [[gnu::always_inline]] static bool reference(const Vec3<T>& o, const Vec3<T>& d,
+                                               const std::vector<Vec3<T>>& p, const T& r, T& t) {
+    using std::sqrt;
+    Vec3<T> axis = p[1] / sqrt(dot(p[1], p[1]));
+    return cylinder_side_nearest(o, d, p[0], axis, r, t);
+  }
+
+  // The sphere's quadratic on the components across the unit axis.
+  template <typename T>
+  static std::optional<T> naive(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p,
+                                const T& r) {
+    using std::sqrt;
+    Vec3<T> axis = p[1] / sqrt(dot(p[1], p[1]));
+    Vec3<T> f = o - p[0];
+    Vec3<T> fp = f - dot(f, axis) * axis, dp = d - dot(d, axis) * axis;
+    T a = dot(dp, dp), b = T(2) * dot(fp, dp), c = dot(fp, fp) - r * r;
+    if (a == T(0)) return std::nullopt;
+    return naive_quadratic_nearest(a, b, c);
+  }
+
+  template <typename T, typename Add>
+  static void hits(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p, const T& r,
+                   Add&& add) {
+    using std::sqrt;
+    Vec3<T> axis = p[1] / sqrt(dot(p[1], p[1]));
+    add_roots(cylinder_side_roots(o, d, p[0], axis, r), add, [&](const T& t) {
+      Vec3<T> v = o + t * d - p[0];
+      return v - dot(v, axis) * axis;
+    });
+  }
+
+  static std::optional<Vec3d> naive_normal(const std::vector<Vec3d>& p, double /*r*/,
+                                           const Vec3d& point) {
+    Vec3d axis = normalized(p[1]), v = point - p[0];
+    return normalized(v - dot(v, axis) * axis);
+  }
+
+  static bool case_of(const Cylinder& c, std::vector<Vec3d>& points, double& radius) {
+    if (c.height_) return false;
+    points = {c.base_, c.axis_given_};
+    radius = c.radius_;
+    return true;
+  }
+  static std::unique_ptr<Shape> shape_of(const std::vector<Vec3d>& p, double r) {
+    return std::make_unique<Cylinder>(p[0], p[1], r, std::nullopt, false);
+  }
+
+  static void random_case(SplitMix& rng, std::vector<Vec3d>& points, double& radius);
+  // Round 0: grazing rays; 1: exact tangents; 2: an origin on the surface; 6: rays along the
+  // axis; 8: thin far cylinders.
+  static void hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out);
 };
 
 }  // namespace raygrade

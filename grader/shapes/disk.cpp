@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "accuracy/accuracy_case.h"
+#include "accuracy/split_mix.h"
 #include "math/unit_vector.h"
 #include "shapes/describe.h"
 #include "shapes/flat.h"
@@ -15,6 +17,7 @@ namespace raygrade {
 // A point whose squared distance from the centre exceeds r² by no more than this fraction of r²
 // is on the rim: the rounding of P = O + tD and of the squares, a few ulps each, so that a ray
 // worked by hand through the rim (|P − C| = r exactly) hits.
+// (disk_inside, shapes/disk.h).
 constexpr double kRimRelative = 16 * 2.220446049250313e-16;
 
 std::unique_ptr<Shape> Disk::read(const Cursor& object) {
@@ -32,10 +35,7 @@ nlohmann::json Disk::to_json() const {
           {"radius", radius_}};
 }
 
-bool Disk::inside(const Vec3d& point) const {
-  double r2 = radius_ * radius_;
-  return length_squared(point - center_) <= r2 * (1 + kRimRelative);
-}
+bool Disk::inside(const Vec3d& point) const { return disk_inside(point, center_, radius_); }
 
 Intersection Disk::intersect(const Ray& ray) const {
   if (std::optional<Intersection> x = intersect_rescaled(*this, ray)) return *x;
@@ -120,6 +120,71 @@ nlohmann::ordered_json Disk::schema() {
   ]
 }
 )json");
+}
+
+// The accuracy study's cases of disks.
+
+void Disk::Ladder::random_case(SplitMix& rng, std::vector<Vec3d>& points, double& radius) {
+  Vec3d c = rng.point(0.5);
+  points = {c, rng.unit_vector()};
+  radius = rng.uniform(0.3, 1.2);
+}
+
+void Disk::Ladder::hard_cases(int round, SplitMix& /*shared*/, std::vector<AccuracyCase>& out) {
+  if (round != kOwnStreamRound) return;
+  SplitMix rng(20261124);
+  auto add = [&](std::string id, std::string group, Vec3d o, Vec3d d, Vec3d c, Vec3d n, double r) {
+    out.push_back(
+        make_case(std::move(id), std::move(group), primitive_of<Disk>(), o, d, {c, n}, r));
+  };
+  // A ray through the rim: aimed at C + r(1 + δ)·u, u in the plane, δ = ±10^-k.
+  auto rim_ray = [&](Vec3d c, Vec3d n, double r, double distance, double delta) {
+    Vec3d u = perpendicular(normalized(n), rng);
+    Vec3d target = c + (r * (1 + delta)) * u;
+    Vec3d o = target + distance * normalized(rng.unit_vector() + normalized(n));
+    return std::pair{o, target - o};
+  };
+  for (int i = 0; i < 12; ++i) {
+    Vec3d c = rng.point(1), n = rng.unit_vector() * rng.uniform(0.5, 3);
+    double r = rng.uniform(0.5, 2);
+    auto [o, d] = rim_ray(c, n, r, 5, offset(rng, 6, 16));
+    add(fmt::format("disk-rim-{}", i), "disk-rim", o, d, c, n, r);
+  }
+  // Far disks: at 1e4 to 1e8, the ray aimed just inside or outside the rim.
+  for (int i = 0; i < 10; ++i) {
+    Vec3d c = rng.point(1), n = rng.unit_vector();
+    double r = 1;
+    auto [o, d] = rim_ray(c, n, r, std::pow(10.0, rng.uniform(4, 8)), offset(rng, 1, 10));
+    add(fmt::format("far-disk-{}", i), "far-disk", o, d, c, n, r);
+  }
+  // Grazing: from 10^8 to 10^11 away along the plane and 0.5 to 2 off it (an angle of 10^-8 to
+  // 10^-11), crossing the plane near the rim.
+  for (int i = 0; i < 10; ++i) {
+    Vec3d c = rng.point(1), n = normalized(rng.unit_vector());
+    double r = rng.uniform(0.5, 2);
+    Vec3d u = perpendicular(n, rng), along = perpendicular(n, rng);
+    Vec3d target = c + (r * (1 + offset(rng, 3, 12))) * u;
+    double far = std::pow(10.0, rng.uniform(8, 11)), h = rng.uniform(0.5, 2);
+    Vec3d o = target - far * along + h * n;
+    add(fmt::format("grazing-disk-{}", i), "grazing", o, target - o, c, n, r);
+  }
+  // Huge coordinates: random disks shifted by 1e8.
+  for (int i = 0; i < 6; ++i) {
+    Vec3d shift = 1e8 * rng.unit_vector();
+    Vec3d c = rng.point(0.5), n = rng.unit_vector();
+    double r = rng.uniform(0.3, 1.2);
+    Vec3d o = 4.0 * rng.unit_vector(), target = rng.point(1);
+    add(fmt::format("huge-coordinates-disk-{}", i), "huge-coordinates", o + shift, target - o,
+        c + shift, n, r);
+  }
+  // Worked by hand: the disk of radius 5 around the origin in z = 0. From (3, 4, 7) along −z the
+  // ray meets the plane at t = 7 in (3, 4, 0), on the rim (3² + 4² = 25): a hit. From (3, 4.5, 7),
+  // |P|² = 29.25 > 25: a miss. From (0, 0, −2) along +z, t = 2 from behind. From (1, 1, 2) along
+  // +z the plane is behind (t = −2): a miss.
+  add("disk-by-hand-0", "disk-rim", {3, 4, 7}, {0, 0, -1}, {0, 0, 0}, {0, 0, 1}, 5);
+  add("disk-by-hand-1", "disk-rim", {3, 4.5, 7}, {0, 0, -1}, {0, 0, 0}, {0, 0, 1}, 5);
+  add("disk-by-hand-2", "disk-rim", {0, 0, -2}, {0, 0, 1}, {0, 0, 0}, {0, 0, 1}, 5);
+  add("disk-by-hand-3", "disk-rim", {1, 1, 2}, {0, 0, 1}, {0, 0, 0}, {0, 0, 1}, 5);
 }
 
 }  // namespace raygrade

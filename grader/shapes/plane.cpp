@@ -1,6 +1,8 @@
 // Plane: reading, reference intersection, and the point-normal and implicit derivations.
 #include "shapes/plane.h"
 
+#include "accuracy/accuracy_case.h"
+#include "accuracy/split_mix.h"
 #include "math/unit_vector.h"
 #include "shapes/describe.h"
 #include "shapes/flat.h"
@@ -199,6 +201,26 @@ nlohmann::ordered_json Plane::schema() {
   ]
 }
 )json");
+}
+
+// The accuracy study's cases of planes.
+
+void Plane::Ladder::random_case(SplitMix& rng, std::vector<Vec3d>& points, double& /*radius*/) {
+  Vec3d n = rng.unit_vector();
+  points = {n, rng.point(0.5)};
+}
+
+void Plane::Ladder::hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out) {
+  if (round != 3) return;
+  for (int i = 0; i < 60; ++i) {
+    Vec3d n = rng.unit_vector() * rng.uniform(0.5, 3);
+    Vec3d p{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    Vec3d o = p + rng.uniform(-2, 2) * normalized(n) + 0.5 * rng.unit_vector();
+    Vec3d along = perpendicular(normalized(n), rng);
+    Vec3d d = along + offset(rng, 10, 16) * normalized(n);
+    out.push_back(make_case(fmt::format("near-parallel-{}", i), "near-parallel",
+                            primitive_of<Plane>(), o, d, {n, p}));
+  }
 }
 
 }  // namespace raygrade

@@ -49,8 +49,25 @@ inline std::optional<T> plane_t(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T
   }
 }
 
+struct AccuracyCase;
+class SplitMix;
+
+// The textbook plane through p with normal n: t = n·(p − o) / n·d, at t ≥ 0.
+template <typename T>
+std::optional<T> naive_plane_t(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& n,
+                               const Vec3<T>& p) {
+  T den = dot(n, d);
+  if (den == T(0)) return std::nullopt;
+  T t = dot(n, p - o) / den;
+  if (t < T(0)) return std::nullopt;
+  return t;
+}
+
 class Plane final : public Shape {
  public:
+  // What the accuracy study needs of a plane (accuracy/ladder_primitives.h).
+  struct Ladder;
+
   // Exactly one of `point` and `d` is set.
   Plane(Vec3d normal, std::optional<Vec3d> point, std::optional<double> d)
       : normal_(normal), point_(point), d_(d) {}
@@ -78,6 +95,53 @@ class Plane final : public Shape {
   Vec3d normal_;
   std::optional<Vec3d> point_;
   std::optional<double> d_;
+};
+
+// The case's points: {normal, point}; no radius. A plane given by d has no case.
+struct Plane::Ladder {
+  static constexpr std::size_t kPoints = 2;
+  static constexpr bool kMorePoints = false, kRadius = false;
+  static constexpr int kDirectionPoint = 0;
+
+  template <typename T>
+  [[gnu::always_inline]] static bool reference(const Vec3<T>& o, const Vec3<T>& d,
+                                               const std::vector<Vec3<T>>& p, const T& /*r*/,
+                                               T& t) {
+    std::optional<T> x = plane_t(o, d, p[0], p[1]);
+    if (!x || !(*x >= T(0))) return false;
+    t = *x;
+    return true;
+  }
+
+  template <typename T>
+  static std::optional<T> naive(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p,
+                                const T& /*r*/) {
+    return naive_plane_t(o, d, p[0], p[1]);
+  }
+
+  template <typename T, typename Add>
+  static void hits(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p,
+                   const T& /*r*/, Add&& add) {
+    if (std::optional<T> t = plane_t(o, d, p[0], p[1])) add(*t, p[0]);
+  }
+
+  static std::optional<Vec3d> naive_normal(const std::vector<Vec3d>& p, double /*r*/,
+                                           const Vec3d& /*point*/) {
+    return normalized(p[0]);
+  }
+
+  static bool case_of(const Plane& plane, std::vector<Vec3d>& points, double& /*radius*/) {
+    if (!plane.point_) return false;
+    points = {plane.normal_, *plane.point_};
+    return true;
+  }
+  static std::unique_ptr<Shape> shape_of(const std::vector<Vec3d>& p, double /*r*/) {
+    return std::make_unique<Plane>(p[0], p[1], std::nullopt);
+  }
+
+  static void random_case(SplitMix& rng, std::vector<Vec3d>& points, double& radius);
+  // Round 3: rays nearly parallel to the plane.
+  static void hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out);
 };
 
 }  // namespace raygrade

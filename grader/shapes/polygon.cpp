@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "accuracy/accuracy_case.h"
+#include "accuracy/split_mix.h"
 #include "math/unit_vector.h"
 #include "shapes/describe.h"
 #include "shapes/flat.h"
@@ -223,6 +225,37 @@ nlohmann::ordered_json Polygon::schema() {
   ]
 }
 )json");
+}
+
+// The accuracy study's cases of polygons.
+
+void Polygon::Ladder::random_case(SplitMix& rng, std::vector<Vec3d>& points, double& /*radius*/) {
+  Vec3d c = rng.point(0.3), e1 = rng.unit_vector(), e2 = perpendicular(e1, rng);
+  points.clear();
+  for (int k = 0; k < 5; ++k) {
+    double a = 2 * M_PI * k / 5, s = rng.uniform(0.5, 1);
+    points.push_back(c + (s * std::cos(a)) * e1 + (s * std::sin(a)) * e2);
+  }
+}
+
+void Polygon::Ladder::hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out) {
+  if (round != 3) return;
+  for (int i = 0; i < 20; ++i) {
+    // Two planar polygons (a pentagon and a quad) sharing the edge v0 v2 of a plane.
+    Vec3d base{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    Vec3d e1{1, 0, 0}, e2{0, 1, 0};
+    if (i % 2 == 1) e2 = Vec3d{0, 0.5, 0.5};  // a tilted plane with exact coordinates
+    auto at = [&](double x, double y) { return base + x * e1 + y * e2; };
+    std::vector<Vec3d> left = {at(0, 0), at(0, 2), at(-1, 2.5), at(-2, 1), at(-1, -0.5)};
+    std::vector<Vec3d> right = {at(0, 2), at(0, 0), at(1.5, 0.5), at(1, 2)};
+    Vec3d target = at(0, rng.uniform(0, 2));
+    Vec3d o = target + Vec3d{rng.uniform(-1, 1), rng.uniform(-1, 1), 3};
+    std::string id = fmt::format("shared-polygon-edge-{}", i);
+    out.push_back(
+        make_case(id + "/a", "shared-edge", primitive_of<Polygon>(), o, target - o, left));
+    out.push_back(
+        make_case(id + "/b", "shared-edge", primitive_of<Polygon>(), o, target - o, right));
+  }
 }
 
 }  // namespace raygrade

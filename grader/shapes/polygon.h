@@ -4,6 +4,8 @@
 #include <array>
 
 #include "math/robust.h"
+#include "shapes/flat.h"
+#include "shapes/plane.h"
 #include "shapes/shape.h"
 
 namespace raygrade {
@@ -50,6 +52,9 @@ bool watertight_polygon(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Ve
 
 class Polygon final : public Shape {
  public:
+  // What the accuracy study needs of a polygon (accuracy/ladder_primitives.h).
+  struct Ladder;
+
   explicit Polygon(std::vector<Vec3d> vertices);
   static std::unique_ptr<Shape> read(const Cursor& object);
 
@@ -79,6 +84,71 @@ class Polygon final : public Shape {
   Vec3d normal_;
   Vec3d unit_normal_;  // the same, normalized
   bool convex_;
+};
+
+// The case's points: its vertices (3 or more); no radius.
+struct Polygon::Ladder {
+  static constexpr std::size_t kPoints = 3;
+  static constexpr bool kMorePoints = true, kRadius = false;
+  static constexpr int kDirectionPoint = -1;
+
+  template <typename T>
+  [[gnu::always_inline]] static bool reference(const Vec3<T>& o, const Vec3<T>& d,
+                                               const std::vector<Vec3<T>>& p, const T& /*r*/,
+                                               T& t) {
+    std::optional<T> x = plane_t(o, d, newell_normal_of(p), p[0]);
+    if (!x || !(*x >= T(0)) || !watertight_polygon(o, d, p)) return false;
+    t = *x;
+    return true;
+  }
+
+  // Hit the plane of the first three vertices, then count crossings of a ray along +u in the
+  // projection that drops the normal's largest component.
+  template <typename T>
+  static std::optional<T> naive(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& v,
+                                const T& /*r*/) {
+    Vec3<T> n = cross(v[1] - v[0], v[2] - v[0]);
+    std::optional<T> t = naive_plane_t(o, d, n, v[0]);
+    if (!t) return std::nullopt;
+    Vec3<T> q = o + *t * d;
+    int drop = max_dimension(n), iu = (drop + 1) % 3, iv = (drop + 2) % 3;
+    bool inside = false;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const Vec3<T>& a = v[i];
+      const Vec3<T>& b = v[(i + 1) % v.size()];
+      if ((a[iv] > q[iv]) != (b[iv] > q[iv])) {
+        T u = a[iu] + (q[iv] - a[iv]) * (b[iu] - a[iu]) / (b[iv] - a[iv]);
+        if (q[iu] < u) inside = !inside;
+      }
+    }
+    if (!inside) return std::nullopt;
+    return *t;
+  }
+
+  template <typename T, typename Add>
+  static void hits(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p,
+                   const T& /*r*/, Add&& add) {
+    Vec3<T> n = newell_normal_of(p);
+    std::optional<T> t = plane_t(o, d, n, p[0]);
+    if (t && watertight_polygon(o, d, p)) add(*t, n);
+  }
+
+  static std::optional<Vec3d> naive_normal(const std::vector<Vec3d>& p, double /*r*/,
+                                           const Vec3d& /*point*/) {
+    return normalized(newell_normal(p));
+  }
+
+  static bool case_of(const Polygon& polygon, std::vector<Vec3d>& points, double& /*radius*/) {
+    points = polygon.v_;
+    return true;
+  }
+  static std::unique_ptr<Shape> shape_of(const std::vector<Vec3d>& p, double /*r*/) {
+    return std::make_unique<Polygon>(p);
+  }
+
+  static void random_case(SplitMix& rng, std::vector<Vec3d>& points, double& radius);
+  // Round 3: a pentagon and a quad sharing an edge, the ray through it.
+  static void hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out);
 };
 
 }  // namespace raygrade

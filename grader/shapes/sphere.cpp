@@ -1,6 +1,8 @@
 // Sphere: reading, reference intersection, and the geometric and algebraic derivations.
 #include "shapes/sphere.h"
 
+#include "accuracy/accuracy_case.h"
+#include "accuracy/split_mix.h"
 #include "math/unit_vector.h"
 #include "shapes/describe.h"
 
@@ -181,6 +183,154 @@ nlohmann::ordered_json Sphere::schema() {
   ]
 }
 )json");
+}
+
+// The accuracy study's cases of spheres.
+
+void Sphere::Ladder::random_case(SplitMix& rng, std::vector<Vec3d>& points, double& radius) {
+  points = {rng.point(0.5)};
+  radius = rng.uniform(0.3, 1.2);
+}
+
+namespace {
+
+AccuracyCase sphere_case(std::string id, std::string group, Vec3d o, Vec3d d, Vec3d center,
+                         double r) {
+  return make_case(std::move(id), std::move(group), primitive_of<Sphere>(), o, d, {center}, r);
+}
+
+// A ray from `origin` that passes the center of a sphere at distance r·(1 + δ).
+AccuracyCase sphere_pass(std::string id, std::string group, Vec3d origin, Vec3d center, double r,
+                         double delta, SplitMix& rng) {
+  Vec3d u = normalized(center - origin);
+  Vec3d target = center + (r * (1 + delta)) * perpendicular(u, rng);
+  return sphere_case(std::move(id), std::move(group), origin, target - origin, center, r);
+}
+
+void far_spheres(std::vector<AccuracyCase>& out, SplitMix& rng) {
+  for (int i = 0; i < 100; ++i) {
+    Vec3d o{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    double dist = std::pow(10.0, rng.uniform(4, 9));
+    out.push_back(sphere_pass(fmt::format("far-sphere-{}", i), "far-sphere", o,
+                              o + dist * rng.unit_vector(), 1, offset(rng, 1, 12), rng));
+  }
+  for (int i = 0; i < 40; ++i) {
+    double r = std::pow(10.0, -rng.uniform(3, 6)), dist = std::pow(10.0, rng.uniform(3, 6));
+    out.push_back(sphere_pass(fmt::format("tiny-far-sphere-{}", i), "far-sphere", Vec3d{},
+                              dist * rng.unit_vector(), r, offset(rng, 1, 10), rng));
+  }
+}
+
+void huge_spheres(std::vector<AccuracyCase>& out, SplitMix& rng) {
+  for (int i = 0; i < 60; ++i) {
+    double r = std::pow(10.0, rng.uniform(6, 12));
+    Vec3d c{rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-10, 10)};
+    Vec3d u = rng.unit_vector(), w = perpendicular(u, rng);
+    double h = r * std::pow(10.0, -rng.uniform(6, 14));
+    Vec3d o = c + (r + h) * u;
+    // Just below the horizon (hits), just above it (misses), straight down, or away.
+    double horizon = std::sqrt(2 * h / r);
+    Vec3d d;
+    switch (i % 4) {
+      case 0: d = w - (horizon * (1 + offset(rng, 1, 6))) * u; break;
+      case 1: d = w - (horizon * (1 - std::abs(offset(rng, 1, 6)))) * u; break;
+      case 2: d = -1.0 * u + 0.3 * w; break;
+      default: d = u + w;
+    }
+    out.push_back(sphere_case(fmt::format("huge-sphere-{}", i), "huge-sphere", o, d, c, r));
+  }
+}
+
+void grazing(std::vector<AccuracyCase>& out, SplitMix& rng) {
+  for (int i = 0; i < 80; ++i) {
+    Vec3d c{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    double r = rng.uniform(0.5, 2);
+    out.push_back(sphere_pass(fmt::format("grazing-sphere-{}", i), "grazing",
+                              c + 5.0 * rng.unit_vector(), c, r, offset(rng, 4, 15), rng));
+  }
+}
+
+void exact_cases(int round, std::vector<AccuracyCase>& out) {
+  if (round == 1) {
+    // Exact tangents: integer data, the discriminant is exactly zero.
+    out.push_back(sphere_case("tangent-0", "tangent", {-5, 1, 0}, {1, 0, 0}, {0, 0, 0}, 1));
+    out.push_back(sphere_case("tangent-1", "tangent", {-4, 6, 5}, {2, 0, 0}, {3, 4, 5}, 2));
+    out.push_back(sphere_case("tangent-2", "tangent", {0, 0, 10}, {3, 4, 0}, {0, 0, 15}, 5));
+    return;
+  }
+  // Beyond double-double: the discriminant is about 1e-32 of its terms, below the 2^-100
+  // double-double can vouch for: only MPFR decides. With f = (−5, 1 − 2^-53, z):
+  // Δ = 1 − (1 − 2^-53)² − z², which is −2^-106 for z = 2^-26 (a miss) and 3·2^-106 − 2^-158
+  // for z = 2^-26 − 2^-79 (a hit; 53 bits, so exactly a double).
+  out.push_back(sphere_case("beyond-double-double-0", "tangent", {-5, 1 - 0x1p-53, 0x1p-26},
+                            {1, 0, 0}, {0, 0, 0}, 1));
+  out.push_back(sphere_case("beyond-double-double-1", "tangent",
+                            {-5, 1 - 0x1p-53, 0x1p-26 - 0x1p-79}, {1, 0, 0}, {0, 0, 0}, 1));
+  // Origins on the surface: exactly (t = 0) and to the nearest double.
+  out.push_back(sphere_case("on-surface-0", "on-surface", {1, 0, 0}, {-1, 0.5, 0}, {0, 0, 0}, 1));
+  out.push_back(sphere_case("on-surface-1", "on-surface", {1, 0, 0}, {1, 0.3, 0}, {0, 0, 0}, 1));
+}
+
+void on_surface(std::vector<AccuracyCase>& out, SplitMix& rng) {
+  for (int i = 0; i < 30; ++i) {
+    Vec3d c{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    double r = rng.uniform(0.5, 2);
+    Vec3d u = rng.unit_vector();
+    Vec3d d = i % 2 == 0 ? rng.unit_vector() - u : u + 0.5 * perpendicular(u, rng);
+    out.push_back(
+        sphere_case(fmt::format("on-surface-{}", i + 3), "on-surface", c + r * u, d, c, r));
+  }
+}
+
+// Directions scaled by 1e-170 to 1e+148: a sphere of radius 1 at distance 5 (two hits, t of
+// order 1e-148 to 1e+170). The problem format reads no direction whose squared length
+// overflows a double (about 1.8e308), so 1e+148 is as far as a direction of length 5 goes
+// there; the solver itself is tested up to 1e+300 (tests/solver_accuracy_test.cpp).
+void extreme_direction_scales(std::vector<AccuracyCase>& out, SplitMix& rng) {
+  for (int i = 0; i < 24; ++i) {
+    int j = i / 2;  // 1e+60, 1e+68, ..., 1e+148 and 1e-60, 1e-70, ..., 1e-170
+    int exponent = i % 2 == 0 ? 60 + 8 * j : -(60 + 10 * j);
+    double scale = std::pow(10.0, exponent);
+    Vec3d aim = Vec3d{0, 0, 5} + 0.6 * perpendicular(Vec3d{0, 0, 1}, rng);
+    out.push_back(sphere_case(fmt::format("extreme-scale-sphere-{}", i), "extreme-scale", {0, 0, 0},
+                              scale * aim, {0, 0, 5}, 1));
+  }
+}
+
+// Spheres small next to their distance, where a normal from the rounded hit point (P − C)/r
+// loses digits: radius 6e-9 at 1000 and radius 1 at 1e11, radius 1e-9 to 1e-6 at 1e2 to 1e4;
+// rays aimed within the sphere.
+void small_far_spheres(std::vector<AccuracyCase>& out, SplitMix& rng) {
+  auto sphere = [&](std::string id, double r, double dist) {
+    Vec3d o{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    Vec3d u = rng.unit_vector(), c = o + dist * u;
+    Vec3d target = c + (r * rng.uniform(-0.9, 0.9)) * perpendicular(u, rng);
+    out.push_back(sphere_case(std::move(id), "small-far", o, target - o, c, r));
+  };
+  for (int i = 0; i < 10; ++i) sphere(fmt::format("small-far-sphere-{}", i), 6e-9, 1000);
+  for (int i = 0; i < 10; ++i) sphere(fmt::format("far-sphere-1e11-{}", i), 1, 1e11);
+  for (int i = 0; i < 20; ++i) {
+    sphere(fmt::format("small-far-sphere-{}", i + 10), std::pow(10.0, -rng.uniform(6, 9)),
+           std::pow(10.0, rng.uniform(2, 4)));
+  }
+}
+
+}  // namespace
+
+void Sphere::Ladder::hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out) {
+  switch (round) {
+    case 0:
+      far_spheres(out, rng);
+      huge_spheres(out, rng);
+      grazing(out, rng);
+      break;
+    case 1:
+    case 2: exact_cases(round, out); break;
+    case 3: on_surface(out, rng); break;
+    case 7: extreme_direction_scales(out, rng); break;
+    case 8: small_far_spheres(out, rng); break;
+    default: break;
+  }
 }
 
 }  // namespace raygrade

@@ -258,8 +258,40 @@ Roots<T> sphere_roots_accurate(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>
   return out;
 }
 
+struct AccuracyCase;
+class SplitMix;
+
+// The nearest root at t ≥ 0 of t0 ≤ t1 as a textbook takes it, if any.
+template <typename T>
+std::optional<T> naive_nearest_root(T t0, T t1) {
+  if (t0 >= T(0)) return t0;
+  if (t1 >= T(0)) return t1;
+  return std::nullopt;
+}
+
+// The nearest root at t ≥ 0 of a t² + b t + c = 0 as a textbook takes it: discriminant
+// b² − 4ac, roots (−b ± √Δ)/2a.
+template <typename T>
+std::optional<T> naive_quadratic_nearest(T a, T b, T c) {
+  using std::sqrt;
+  T disc = b * b - T(4) * a * c;
+  if (disc < T(0)) return std::nullopt;
+  T s = sqrt(disc);
+  return naive_nearest_root((-b - s) / (T(2) * a), (-b + s) / (T(2) * a));
+}
+
+// Calls add(t, normal_at(t)) for each root.
+template <typename T, typename Add, typename Normal>
+void add_roots(const Roots<T>& k, Add&& add, Normal&& normal_at) {
+  if (k.count >= 1) add(k.t0, normal_at(k.t0));
+  if (k.count == 2) add(k.t1, normal_at(k.t1));
+}
+
 class Sphere final : public Shape {
  public:
+  // What the accuracy study needs of a sphere (accuracy/ladder_primitives.h).
+  struct Ladder;
+
   Sphere(Vec3d center, double radius) : center_(center), radius_(radius) {}
   static std::unique_ptr<Shape> read(const Cursor& object);
 
@@ -291,6 +323,53 @@ class Sphere final : public Shape {
 
   Vec3d center_;
   double radius_;
+};
+
+// The case's points: {center}; its radius.
+struct Sphere::Ladder {
+  static constexpr std::size_t kPoints = 1;
+  static constexpr bool kMorePoints = false, kRadius = true;
+  static constexpr int kDirectionPoint = -1;
+
+  template <typename T>
+  [[gnu::always_inline]] static bool reference(const Vec3<T>& o, const Vec3<T>& d,
+                                               const std::vector<Vec3<T>>& p, const T& r, T& t) {
+    return sphere_nearest(o, d, p[0], r, t);
+  }
+
+  // a t² + b t + c = 0 with b = 2 d·(o − c), discriminant b² − 4ac, roots (−b ± √Δ)/2a.
+  template <typename T>
+  static std::optional<T> naive(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p,
+                                const T& r) {
+    Vec3<T> f = o - p[0];
+    return naive_quadratic_nearest(dot(d, d), T(2) * dot(f, d), dot(f, f) - r * r);
+  }
+
+  template <typename T, typename Add>
+  static void hits(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p, const T& r,
+                   Add&& add) {
+    add_roots(sphere_roots(o, d, p[0], r), add, [&](const T& t) { return o + t * d - p[0]; });
+  }
+
+  static std::optional<Vec3d> naive_normal(const std::vector<Vec3d>& p, double r,
+                                           const Vec3d& point) {
+    return (point - p[0]) / r;
+  }
+
+  static bool case_of(const Sphere& s, std::vector<Vec3d>& points, double& radius) {
+    points = {s.center_};
+    radius = s.radius_;
+    return true;
+  }
+  static std::unique_ptr<Shape> shape_of(const std::vector<Vec3d>& p, double r) {
+    return std::make_unique<Sphere>(p[0], r);
+  }
+
+  static void random_case(SplitMix& rng, std::vector<Vec3d>& points, double& radius);
+  // Round 0: far and huge spheres, grazing rays; 1: exact tangents; 2: beyond double-double,
+  // origins on the surface; 3: more origins on the surface; 7: extreme direction scales;
+  // 8: small far spheres.
+  static void hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out);
 };
 
 }  // namespace raygrade

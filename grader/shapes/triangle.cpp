@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "accuracy/accuracy_case.h"
+#include "accuracy/split_mix.h"
 #include "math/unit_vector.h"
 #include "shapes/describe.h"
 #include "shapes/flat.h"
@@ -169,6 +171,74 @@ nlohmann::ordered_json Triangle::schema() {
   ]
 }
 )json");
+}
+
+// The accuracy study's cases of triangles.
+
+void Triangle::Ladder::random_case(SplitMix& rng, std::vector<Vec3d>& points, double& /*radius*/) {
+  Vec3d a = rng.point(1), b = rng.point(1);
+  points = {a, b, rng.point(1)};
+}
+
+namespace {
+
+AccuracyCase triangle_case(std::string id, std::string group, Vec3d o, Vec3d d, Vec3d a, Vec3d b,
+                           Vec3d c) {
+  return make_case(std::move(id), std::move(group), primitive_of<Triangle>(), o, d, {a, b, c});
+}
+
+void shared_edges(std::vector<AccuracyCase>& out, SplitMix& rng) {
+  for (int i = 0; i < 60; ++i) {
+    double scale = i % 4 == 3 ? 1e8 : 1;  // some far from the origin
+    Vec3d shift = scale == 1 ? Vec3d{} : scale * rng.unit_vector();
+    // A quad folded along its diagonal q0 q2, q1 and q3 on either side of it as seen from
+    // above, where the rays come from.
+    auto jitter = [&](double x, double y) {
+      return shift +
+             Vec3d{x + rng.uniform(-0.3, 0.3), y + rng.uniform(-0.3, 0.3), rng.uniform(-0.2, 0.2)};
+    };
+    Vec3d q[4] = {jitter(-1, -1), jitter(1, -1), jitter(1, 1), jitter(-1, 1)};
+    Vec3d o = shift + Vec3d{rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5), rng.uniform(2, 4)};
+    if (i % 3 == 0) {
+      // A fan of five triangles around a vertex, each ray exactly at the vertex.
+      Vec3d center = jitter(0, 0), d = center - o;
+      std::vector<Vec3d> rim;
+      for (int k = 0; k < 5; ++k) {
+        double a = 2 * M_PI * k / 5 + rng.uniform(-0.3, 0.3);
+        rim.push_back(center + Vec3d{std::cos(a), std::sin(a), rng.uniform(-0.3, 0.3)});
+      }
+      for (int k = 0; k < 5; ++k) {
+        out.push_back(
+            triangle_case(fmt::format("shared-vertex-{}/{}", i, static_cast<char>('a' + k)),
+                          "shared-edge", o, d, center, rim[k], rim[(k + 1) % 5]));
+      }
+      continue;
+    }
+    Vec3d target = q[0] + rng.uniform(0.05, 0.95) * (q[2] - q[0]);
+    Vec3d d = target - o;
+    std::string id = fmt::format("shared-edge-{}", i);
+    out.push_back(triangle_case(id + "/a", "shared-edge", o, d, q[0], q[1], q[2]));
+    out.push_back(triangle_case(id + "/b", "shared-edge", o, d, q[0], q[2], q[3]));
+  }
+}
+
+void needles(std::vector<AccuracyCase>& out, SplitMix& rng) {
+  for (int i = 0; i < 40; ++i) {
+    Vec3d a{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    Vec3d e1 = rng.unit_vector(), e2 = perpendicular(e1, rng);
+    double h = std::pow(10.0, -rng.uniform(6, 12));
+    Vec3d b = a + 2.0 * e1, c = a + 1.0 * e1 + h * e2;
+    Vec3d target = a + rng.uniform(0.1, 1.9) * e1 + (h * rng.uniform(-0.5, 1.5) / 2) * e2;
+    Vec3d o = target + 3.0 * rng.unit_vector();
+    out.push_back(triangle_case(fmt::format("needle-{}", i), "needle", o, target - o, a, b, c));
+  }
+}
+
+}  // namespace
+
+void Triangle::Ladder::hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out) {
+  if (round == 3) shared_edges(out, rng);
+  if (round == 4) needles(out, rng);
 }
 
 }  // namespace raygrade

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "math/robust.h"
+#include "shapes/plane.h"
 #include "shapes/shape.h"
 
 namespace raygrade {
@@ -114,6 +115,9 @@ TriangleHit<T> watertight_triangle(const Vec3<T>& o, const Vec3<T>& d, const Vec
 
 class Triangle final : public Shape {
  public:
+  // What the accuracy study needs of a triangle (accuracy/ladder_primitives.h).
+  struct Ladder;
+
   Triangle(Vec3d a, Vec3d b, Vec3d c) : v_{a, b, c} {}
   static std::unique_ptr<Shape> read(const Cursor& object);
 
@@ -138,6 +142,62 @@ class Triangle final : public Shape {
 
  private:
   std::array<Vec3d, 3> v_;
+};
+
+// The case's points: {a, b, c}; no radius.
+struct Triangle::Ladder {
+  static constexpr std::size_t kPoints = 3;
+  static constexpr bool kMorePoints = false, kRadius = false;
+  static constexpr int kDirectionPoint = -1;
+
+  template <typename T>
+  [[gnu::always_inline]] static bool reference(const Vec3<T>& o, const Vec3<T>& d,
+                                               const std::vector<Vec3<T>>& p, const T& /*r*/,
+                                               T& t) {
+    TriangleHit<T> h = watertight_triangle(o, d, p[0], p[1], p[2]);
+    if (!h.hit || !(h.t >= T(0))) return false;
+    t = h.t;
+    return true;
+  }
+
+  // Hit the plane, then test the point against each edge (≥ 0 is inside).
+  template <typename T>
+  static std::optional<T> naive(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p,
+                                const T& /*r*/) {
+    const Vec3<T>&a = p[0], &b = p[1], &c = p[2];
+    Vec3<T> n = cross(b - a, c - a);
+    std::optional<T> t = naive_plane_t(o, d, n, a);
+    if (!t) return std::nullopt;
+    Vec3<T> q = o + *t * d;
+    if (dot(cross(b - a, q - a), n) < T(0)) return std::nullopt;
+    if (dot(cross(c - b, q - b), n) < T(0)) return std::nullopt;
+    if (dot(cross(a - c, q - c), n) < T(0)) return std::nullopt;
+    return *t;
+  }
+
+  template <typename T, typename Add>
+  static void hits(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p,
+                   const T& /*r*/, Add&& add) {
+    TriangleHit<T> h = watertight_triangle(o, d, p[0], p[1], p[2]);
+    if (h.hit) add(h.t, cross(p[1] - p[0], p[2] - p[0]));
+  }
+
+  static std::optional<Vec3d> naive_normal(const std::vector<Vec3d>& p, double /*r*/,
+                                           const Vec3d& /*point*/) {
+    return normalized(cross(p[1] - p[0], p[2] - p[0]));
+  }
+
+  static bool case_of(const Triangle& tri, std::vector<Vec3d>& points, double& /*radius*/) {
+    points.assign(tri.v_.begin(), tri.v_.end());
+    return true;
+  }
+  static std::unique_ptr<Shape> shape_of(const std::vector<Vec3d>& p, double /*r*/) {
+    return std::make_unique<Triangle>(p[0], p[1], p[2]);
+  }
+
+  static void random_case(SplitMix& rng, std::vector<Vec3d>& points, double& radius);
+  // Round 3: triangles sharing an edge or a vertex, the ray through it; 4: needles.
+  static void hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out);
 };
 
 }  // namespace raygrade
