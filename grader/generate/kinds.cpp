@@ -1,9 +1,10 @@
 // Generators for the first-hit and camera-ray kinds.
+#include "generate/kinds.h"
+
 #include <algorithm>
 #include <cmath>
 
 #include "generate/draft.h"
-#include "generate/solids.h"
 
 namespace raygrade {
 

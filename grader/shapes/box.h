@@ -1,6 +1,7 @@
 // Box: axis-aligned, between corners min and max; the slab method.
 #pragma once
 
+#include "generate/outcome.h"
 #include "shapes/shape.h"
 
 namespace raygrade {
@@ -51,6 +52,10 @@ class Box final : public Shape {
   static constexpr std::string_view kSummary = "axis-aligned, min and max corners";
   // Its fragment of the problem schema: its own keys, and examples.
   static nlohmann::ordered_json schema();
+  // Its generator (shapes/box_generate.cpp): the outcomes it can build, and a problem for one
+  // of them (a random one when none is asked) with nice numbers.
+  static const std::vector<Outcome>& outcomes();
+  static Draft generate(Prng& rng, std::optional<Outcome> outcome);
 
   std::string_view type() const override { return kType; }
   bool solid() const override { return true; }

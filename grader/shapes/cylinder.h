@@ -3,6 +3,7 @@
 
 #include <optional>
 
+#include "generate/outcome.h"
 #include "shapes/sphere.h"
 
 namespace raygrade {
@@ -174,6 +175,10 @@ class Cylinder final : public Shape {
   static constexpr std::string_view kSummary = "base, axis, radius, optional height and caps";
   // Its fragment of the problem schema: its own keys, and examples.
   static nlohmann::ordered_json schema();
+  // Its generator (shapes/cylinder_generate.cpp): the outcomes it can build, and a problem for one
+  // of them (a random one when none is asked) with nice numbers.
+  static const std::vector<Outcome>& outcomes();
+  static Draft generate(Prng& rng, std::optional<Outcome> outcome);
 
   std::string_view type() const override { return kType; }
   // Closed when it has a height and both caps.

@@ -3,6 +3,7 @@
 
 #include <optional>
 
+#include "generate/outcome.h"
 #include "math/robust.h"
 #include "shapes/shape.h"
 
@@ -60,6 +61,10 @@ class Plane final : public Shape {
   static constexpr std::string_view kSummary = "point and normal, or normal and d (n·p + d = 0)";
   // Its fragment of the problem schema: its own keys, and examples.
   static nlohmann::ordered_json schema();
+  // Its generator (shapes/plane_generate.cpp): the outcomes it can build, and a problem for one
+  // of them (a random one when none is asked) with nice numbers.
+  static const std::vector<Outcome>& outcomes();
+  static Draft generate(Prng& rng, std::optional<Outcome> outcome);
 
   std::string_view type() const override { return kType; }
   Intersection intersect(const Ray& ray) const override;

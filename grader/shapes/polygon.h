@@ -3,6 +3,7 @@
 
 #include <array>
 
+#include "generate/outcome.h"
 #include "math/robust.h"
 #include "shapes/shape.h"
 
@@ -57,6 +58,10 @@ class Polygon final : public Shape {
   static constexpr std::string_view kSummary = "planar vertices, convex or not";
   // Its fragment of the problem schema: its own keys, and examples.
   static nlohmann::ordered_json schema();
+  // Its generator (shapes/polygon_generate.cpp): the outcomes it can build, and a problem for one
+  // of them (a random one when none is asked) with nice numbers.
+  static const std::vector<Outcome>& outcomes();
+  static Draft generate(Prng& rng, std::optional<Outcome> outcome);
 
   std::string_view type() const override { return kType; }
   // A normal the other way is the cross product's factors swapped.

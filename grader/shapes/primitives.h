@@ -6,9 +6,12 @@
 #include <concepts>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string_view>
 #include <type_traits>
+#include <vector>
 
+#include "generate/outcome.h"
 #include "shapes/box.h"
 #include "shapes/capsule.h"
 #include "shapes/cone.h"
@@ -25,7 +28,8 @@ namespace raygrade {
 // What a primitive provides beside Shape's virtual functions (the reference intersection, the
 // derivations, the sketch, solidity, the normal rule, the quadratic's steps): its `type` key and
 // a one-line summary of its parameters, its reader, and its fragment of the problem schema
-// (docs/problem.schema.json, written by `raygrade schema`).
+// (docs/problem.schema.json, written by `raygrade schema`). A primitive with a generator
+// (shapes/<name>_generate.cpp) is a row of `raygrade generate`'s table: GeneratingPrimitive.
 template <typename T>
 concept PrimitiveType = std::derived_from<T, Shape> && std::is_final_v<T> &&
     requires(const Cursor& object) {
@@ -33,6 +37,15 @@ concept PrimitiveType = std::derived_from<T, Shape> && std::is_final_v<T> &&
   { T::kSummary } -> std::convertible_to<std::string_view>;
   { T::read(object) } -> std::same_as<std::unique_ptr<Shape>>;
   { T::schema() } -> std::same_as<nlohmann::ordered_json>;
+};
+
+// A primitive's generator: the outcomes it can build (Outcome, generate/outcome.h), and a
+// problem with nice numbers for one of them.
+template <typename T>
+concept GeneratingPrimitive = PrimitiveType<T> &&
+    requires(Prng& rng, std::optional<Outcome> outcome) {
+  { T::outcomes() } -> std::same_as<const std::vector<Outcome>&>;
+  { T::generate(rng, outcome) } -> std::same_as<Draft>;
 };
 
 template <typename... Ts>

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "generate/outcome.h"
 #include "math/robust.h"
 #include "shapes/shape.h"
 
@@ -267,6 +268,10 @@ class Sphere final : public Shape {
   static constexpr std::string_view kSummary = "center, radius";
   // Its fragment of the problem schema: its own keys, and examples.
   static nlohmann::ordered_json schema();
+  // Its generator (shapes/sphere_generate.cpp): the outcomes it can build, and a problem for one
+  // of them (a random one when none is asked) with nice numbers.
+  static const std::vector<Outcome>& outcomes();
+  static Draft generate(Prng& rng, std::optional<Outcome> outcome);
 
   std::string_view type() const override { return kType; }
   bool solid() const override { return true; }
