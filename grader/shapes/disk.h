@@ -1,6 +1,7 @@
 // Disk: the closed flat disk of a centre, a normal and a radius.
 #pragma once
 
+#include "generate/outcome.h"
 #include "shapes/shape.h"
 
 namespace raygrade {
@@ -17,6 +18,10 @@ class Disk final : public Shape {
   static constexpr std::string_view kSummary = "center, normal, radius; the rim included";
   // Its fragment of the problem schema: its own keys, and examples.
   static nlohmann::ordered_json schema();
+  // Its generator (shapes/disk_generate.cpp): the outcomes it can build, and a problem for one
+  // of them (a random one when none is asked) with nice numbers.
+  static const std::vector<Outcome>& outcomes();
+  static Draft generate(Prng& rng, std::optional<Outcome> outcome);
 
   std::string_view type() const override { return kType; }
   Intersection intersect(const Ray& ray) const override;
