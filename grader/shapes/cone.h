@@ -2,6 +2,7 @@
 // base cap.
 #pragma once
 
+#include "generate/outcome.h"
 #include "shapes/shape.h"
 
 namespace raygrade {
@@ -23,6 +24,10 @@ class Cone final : public Shape {
   static constexpr std::string_view kSummary = "base, axis, radius, height, optional base cap";
   // Its fragment of the problem schema: its own keys, and examples.
   static nlohmann::ordered_json schema();
+  // Its generator (shapes/cone_generate.cpp): the outcomes it can build, and a problem for one
+  // of them (a random one when none is asked) with nice numbers.
+  static const std::vector<Outcome>& outcomes();
+  static Draft generate(Prng& rng, std::optional<Outcome> outcome);
 
   std::string_view type() const override { return kType; }
   Intersection intersect(const Ray& ray) const override;
