@@ -1,6 +1,7 @@
 // Capsule: the segment ab swept by a sphere of radius r (a cylinder with two hemispherical ends).
 #pragma once
 
+#include "generate/outcome.h"
 #include "shapes/shape.h"
 
 namespace raygrade {
@@ -17,6 +18,10 @@ class Capsule final : public Shape {
   static constexpr std::string_view kSummary = "segment ends a and b, radius";
   // Its fragment of the problem schema: its own keys, and examples.
   static nlohmann::ordered_json schema();
+  // Its generator (shapes/capsule_generate.cpp): the outcomes it can build, and a problem for
+  // one of them (a random one when none is asked) with nice numbers.
+  static const std::vector<Outcome>& outcomes();
+  static Draft generate(Prng& rng, std::optional<Outcome> outcome);
 
   std::string_view type() const override { return kType; }
   Intersection intersect(const Ray& ray) const override;
