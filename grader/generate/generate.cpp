@@ -47,7 +47,7 @@ const std::vector<GeneratorEntry>& generator_table() {
     // The primitives' rows, from the list of primitives in its order; then the kinds'.
     std::vector<GeneratorEntry> rows;
     for_each_primitive([&]<typename T>() {
-      if constexpr (GeneratingPrimitive<T>) rows.push_back({T::kType, T::outcomes(), &T::generate});
+      rows.push_back({T::kType, T::outcomes(), &T::generate});
     });
     rows.push_back({"first-hit", {Outcome::kHit, Outcome::kMiss}, &make_first_hit});
     rows.push_back({"camera-ray", {}, &make_camera_ray});

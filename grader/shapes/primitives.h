@@ -28,22 +28,17 @@ namespace raygrade {
 // What a primitive provides beside Shape's virtual functions (the reference intersection, the
 // derivations, the sketch, solidity, the normal rule, the quadratic's steps): its `type` key and
 // a one-line summary of its parameters, its reader, and its fragment of the problem schema
-// (docs/problem.schema.json, written by `raygrade schema`). A primitive with a generator
-// (shapes/<name>_generate.cpp) is a row of `raygrade generate`'s table: GeneratingPrimitive.
+// (docs/problem.schema.json, written by `raygrade schema`), and its generator, a row of
+// `raygrade generate`'s table.
 template <typename T>
 concept PrimitiveType = std::derived_from<T, Shape> && std::is_final_v<T> &&
-    requires(const Cursor& object) {
+    requires(const Cursor& object, Prng& rng, std::optional<Outcome> outcome) {
   { T::kType } -> std::convertible_to<std::string_view>;
   { T::kSummary } -> std::convertible_to<std::string_view>;
   { T::read(object) } -> std::same_as<std::unique_ptr<Shape>>;
   { T::schema() } -> std::same_as<nlohmann::ordered_json>;
-};
-
-// A primitive's generator: the outcomes it can build (Outcome, generate/outcome.h), and a
-// problem with nice numbers for one of them.
-template <typename T>
-concept GeneratingPrimitive = PrimitiveType<T> &&
-    requires(Prng& rng, std::optional<Outcome> outcome) {
+  // Its generator (shapes/<name>_generate.cpp): the outcomes it can build (Outcome,
+  // generate/outcome.h), and a problem with nice numbers for one of them.
   { T::outcomes() } -> std::same_as<const std::vector<Outcome>&>;
   { T::generate(rng, outcome) } -> std::same_as<Draft>;
 };
