@@ -3,6 +3,7 @@
 
 #include "generate/outcome.h"
 #include "shapes/shape.h"
+#include "shapes/surface_point.h"
 
 namespace raygrade {
 
@@ -56,6 +57,11 @@ class Box final : public Shape {
   // of them (a random one when none is asked) with nice numbers.
   static const std::vector<Outcome>& outcomes();
   static Draft generate(Prng& rng, std::optional<Outcome> outcome);
+  // The normal kind (shapes/box_normal.cpp): the part of its surface nearest to the
+  // object-space point p, with the outward normal there (`tie`: how near two parts must both be
+  // for p to lie where they meet), and the steps that derive that normal at P.
+  SurfacePoint nearest_surface(const Vec3d& p, double tie) const;
+  void derive_normal(Deriver& d, const E& P, const SurfacePoint& s, const NormalNames& n) const;
 
   std::string_view type() const override { return kType; }
   bool solid() const override { return true; }

@@ -21,6 +21,7 @@
 #include "shapes/polygon.h"
 #include "shapes/shape.h"
 #include "shapes/sphere.h"
+#include "shapes/surface_point.h"
 #include "shapes/triangle.h"
 
 namespace raygrade {
@@ -28,11 +29,12 @@ namespace raygrade {
 // What a primitive provides beside Shape's virtual functions (the reference intersection, the
 // derivations, the sketch, solidity, the normal rule, the quadratic's steps): its `type` key and
 // a one-line summary of its parameters, its reader, and its fragment of the problem schema
-// (docs/problem.schema.json, written by `raygrade schema`), and its generator, a row of
-// `raygrade generate`'s table.
+// (docs/problem.schema.json, written by `raygrade schema`), its generator, a row of
+// `raygrade generate`'s table, and its normal at a point of its surface (the normal kind).
 template <typename T>
 concept PrimitiveType = std::derived_from<T, Shape> && std::is_final_v<T> &&
-    requires(const Cursor& object, Prng& rng, std::optional<Outcome> outcome) {
+    requires(const T& shape, const Cursor& object, Prng& rng, std::optional<Outcome> outcome,
+             const Vec3d& p, Deriver& d, const E& P, const SurfacePoint& s, const NormalNames& n) {
   { T::kType } -> std::convertible_to<std::string_view>;
   { T::kSummary } -> std::convertible_to<std::string_view>;
   { T::read(object) } -> std::same_as<std::unique_ptr<Shape>>;
@@ -41,6 +43,10 @@ concept PrimitiveType = std::derived_from<T, Shape> && std::is_final_v<T> &&
   // generate/outcome.h), and a problem with nice numbers for one of them.
   { T::outcomes() } -> std::same_as<const std::vector<Outcome>&>;
   { T::generate(rng, outcome) } -> std::same_as<Draft>;
+  // The normal kind (shapes/<name>_normal.cpp, shapes/surface_point.h): the part of its
+  // surface nearest to a point with the outward normal there, and the steps that derive it.
+  { shape.nearest_surface(p, 0.0) } -> std::same_as<SurfacePoint>;
+  { shape.derive_normal(d, P, s, n) } -> std::same_as<void>;
 };
 
 template <typename... Ts>
