@@ -77,4 +77,14 @@ void for_each_primitive(F&& f) {
   for_each_type(f, Primitives{});
 }
 
+// Whether the hits of the primitive whose `type` key is `type` carry barycentric weights (its
+// kBarycentric, where it has one): an answer form asks for them then.
+inline bool hits_have_barycentric(std::string_view type) {
+  bool yes = false;
+  for_each_primitive([&]<typename T>() {
+    if constexpr (requires { T::kBarycentric; }) yes = yes || (type == T::kType && T::kBarycentric);
+  });
+  return yes;
+}
+
 }  // namespace raygrade

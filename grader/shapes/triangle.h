@@ -127,6 +127,9 @@ class Triangle final : public Shape {
   // of them (a random one when none is asked) with nice numbers.
   static const std::vector<Outcome>& outcomes();
   static Draft generate(Prng& rng, std::optional<Outcome> outcome);
+  // Its hits carry barycentric weights (w_a, w_b, w_c), which answer forms ask for
+  // (hits_have_barycentric, shapes/primitives.h).
+  static constexpr bool kBarycentric = true;
   // The normal kind (shapes/triangle_normal.cpp): the part of its surface nearest to the
   // object-space point p, with the outward normal there (`tie`: how near two parts must both be
   // for p to lie where they meet), and the steps that derive that normal at P.
