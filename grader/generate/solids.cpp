@@ -14,6 +14,20 @@ Chord random_chord(Prng& rng, const std::vector<Vec3d>& points, int min_steps) {
   }
 }
 
+void chord_ray(Prng& rng, Outcome o, const Vec3d& p0, const Vec3d& p1, const Vec3d& d, int steps,
+               int s, Vec3d& origin, std::vector<KnownHit>& hits) {
+  if (o == Outcome::kHit) {
+    origin = p0 - s * d;
+    hits = {{double(s), p0}, {double(s + steps), p1}};
+  } else if (o == Outcome::kInside) {
+    int k = rng.range(1, steps - 1);
+    origin = p0 + k * d;
+    hits = {{double(steps - k), p1}};
+  } else {
+    origin = p1 + s * d;
+  }
+}
+
 Vec3d perpendicular(Prng& rng, const Vec3d& a) {
   while (true) {
     Vec3d p = cross(a, random_direction(rng, a));

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "generate/draft.h"
 #include "generate/lattice.h"
 #include "generate/outcome.h"
 
@@ -20,6 +21,12 @@ struct Chord {
   int steps = 1;  // g
 };
 Chord random_chord(Prng& rng, const std::vector<Vec3d>& points, int min_steps);
+
+// The ray along the chord from p0 to p1 (`steps` steps of d) for the outcome `o`: from s steps
+// before p0 for kHit (both hits), from a random one of the steps between them for kInside (the
+// exit only), from s steps past p1 for kBehind (none).
+void chord_ray(Prng& rng, Outcome o, const Vec3d& p0, const Vec3d& p1, const Vec3d& d, int steps,
+               int s, Vec3d& origin, std::vector<KnownHit>& hits);
 
 // An integer vector perpendicular to `a`, reduced.
 Vec3d perpendicular(Prng& rng, const Vec3d& a);

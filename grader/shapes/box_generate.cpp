@@ -35,15 +35,8 @@ Draft Box::generate(Prng& rng, std::optional<Outcome> asked) {
   int s = rng.range(1, 3);
   Vec3d origin;
   std::vector<KnownHit> hits;
-  if (o == Outcome::kHit) {
-    origin = p0 - s * d;
-    hits = {{double(s), p0}, {double(s + steps), p1}};
-  } else if (o == Outcome::kInside) {
-    int k = rng.range(1, steps - 1);
-    origin = p0 + k * d;
-    hits = {{double(steps - k), p1}};
-  } else if (o == Outcome::kBehind) {
-    origin = p1 + s * d;
+  if (o != Outcome::kMiss) {
+    chord_ray(rng, o, p0, p1, d, steps, s, origin, hits);
   } else {
     // The same line moved past the box's top in y: clear of it by at least one unit.
     origin = p0 - s * d + Vec3d{0, size.y + std::abs(p1.y - p0.y) + 1, 0};

@@ -68,16 +68,7 @@ Draft Capsule::generate(Prng& rng, std::optional<Outcome> asked) {
     }
     d = reduced(q.at(a) - p.at(a));
     Vec3d p0 = p.at(a), p1 = q.at(a);
-    if (o == Outcome::kHit) {
-      origin = p0 - s * d;
-      hits = {{double(s), p0}, {double(s + steps), p1}};
-    } else if (o == Outcome::kInside) {
-      int i = rng.range(1, steps - 1);
-      origin = p0 + i * d;
-      hits = {{double(steps - i), p1}};
-    } else {
-      origin = p1 + s * d;
-    }
+    chord_ray(rng, o, p0, p1, d, steps, s, origin, hits);
   }
   Vec3d b = a + double(length) * up;
   nlohmann::ordered_json object = {

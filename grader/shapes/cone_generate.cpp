@@ -81,16 +81,7 @@ Draft Cone::generate(Prng& rng, std::optional<Outcome> asked) {
     }
     d = reduced(b.at(base) - a.at(base));
     Vec3d p0 = a.at(base), p1 = b.at(base);
-    if (o == Outcome::kHit) {
-      origin = p0 - s * d;
-      hits = {{double(s), p0}, {double(s + steps), p1}};
-    } else if (o == Outcome::kInside) {
-      int i = rng.range(1, steps - 1);
-      origin = p0 + i * d;
-      hits = {{double(steps - i), p1}};
-    } else {
-      origin = p1 + s * d;
-    }
+    chord_ray(rng, o, p0, p1, d, steps, s, origin, hits);
   }
   nlohmann::ordered_json object = {{"type", kType}, {"base", vector_json(map(base))}};
   if (map(up) != Vec3d{0, 0, 1}) object["axis"] = vector_json(map(up));

@@ -45,16 +45,7 @@ Draft Cylinder::generate(Prng& rng, std::optional<Outcome> asked) {
     d = ch.d;
     Vec3d p0 = base + ch.a + double(z0) * up, p1 = base + ch.b + double(z1) * up;
     top = std::max(z0, z1);
-    if (o == Outcome::kHit) {
-      origin = p0 - s * d;
-      hits = {{double(s), p0}, {double(s + ch.steps), p1}};
-    } else if (o == Outcome::kInside) {
-      int k = rng.range(1, ch.steps - 1);
-      origin = p0 + k * d;
-      hits = {{double(ch.steps - k), p1}};
-    } else {
-      origin = p1 + s * d;
-    }
+    chord_ray(rng, o, p0, p1, d, ch.steps, s, origin, hits);
   }
   nlohmann::ordered_json object = {{"type", "cylinder"},
                                    {"base", vector_json(map(base))},

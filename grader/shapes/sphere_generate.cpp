@@ -27,16 +27,7 @@ Draft Sphere::generate(Prng& rng, std::optional<Outcome> asked) {
   } else {
     Chord ch = random_chord(rng, points, o == Outcome::kInside ? 2 : 1);
     d = ch.d;
-    if (o == Outcome::kHit) {
-      origin = c + ch.a - s * d;
-      hits = {{double(s), c + ch.a}, {double(s + ch.steps), c + ch.b}};
-    } else if (o == Outcome::kInside) {
-      int k = rng.range(1, ch.steps - 1);
-      origin = c + ch.a + k * d;
-      hits = {{double(ch.steps - k), c + ch.b}};
-    } else {
-      origin = c + ch.b + s * d;
-    }
+    chord_ray(rng, o, c + ch.a, c + ch.b, d, ch.steps, s, origin, hits);
   }
   nlohmann::ordered_json object = {{"type", "sphere"}, {"center", vector_json(c)}, {"radius", r}};
   return intersect_draft(origin, d, object,
