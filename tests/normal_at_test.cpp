@@ -181,5 +181,27 @@ TEST(NormalKind, InwardNormalIsGradedWrong) {
   EXPECT_NE(inward.parts[0].feedback[0].find("points into the object"), std::string::npos);
 }
 
+// The cone and the capsule are closed too: their normal rule is inward-normal, so the opposite
+// of (0, 0.8, 0.6) (the cone's side at (1, 1.5, 2), worked in normals.json) and of (0, 0, −1)
+// (the capsule's side at (1, 0, −5)) keeps half the credit; a disk's opposite normal does not.
+TEST(NormalKind, InwardNormalOfTheConeAndCapsuleIsNamed) {
+  Problem cone = testing::problem(R"({"id": "n", "kind": "normal", "object": {"type": "cone",
+    "base": [1, 0, 0], "radius": 3, "height": 4}, "point": [1, 1.5, 2]})");
+  GradeResult right = grade_answer(cone, nlohmann::json::parse(R"({"normal": [0, 4, 3]})"));
+  EXPECT_DOUBLE_EQ(right.score, right.max_score);
+  GradeResult inward = grade_answer(cone, nlohmann::json::parse(R"({"normal": [0, -4, -3]})"));
+  EXPECT_TRUE(inward.has_mistake("inward-normal"));
+  EXPECT_DOUBLE_EQ(inward.score, 0.5 * inward.max_score);
+  Problem capsule = testing::problem(R"({"id": "n", "kind": "normal", "object": {"type":
+    "capsule", "a": [0, 0, 0], "b": [4, 0, 0], "radius": 5}, "point": [1, 0, -5]})");
+  inward = grade_answer(capsule, nlohmann::json::parse(R"({"normal": [0, 0, 1]})"));
+  EXPECT_TRUE(inward.has_mistake("inward-normal"));
+  Problem disk = testing::problem(R"({"id": "n", "kind": "normal", "object": {"type": "disk",
+    "center": [0, 0, 5], "normal": [0, 0, -2], "radius": 2}, "point": [1, 1, 5]})");
+  GradeResult flipped = grade_answer(disk, nlohmann::json::parse(R"({"normal": [0, 0, 1]})"));
+  EXPECT_FALSE(flipped.has_mistake("inward-normal"));
+  EXPECT_DOUBLE_EQ(flipped.score, 0);
+}
+
 }  // namespace
 }  // namespace raygrade
