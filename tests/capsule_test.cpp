@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
+#include "generated.h"
 #include "shape_error.h"
 #include "test_util.h"
 
@@ -113,6 +116,79 @@ TEST(Capsule, BadParametersAreErrorsAtTheirPaths) {
   EXPECT_EQ(testing::shape_error_path(
                 R"({"type": "capsule", "a": [0, 0, 0], "b": [0, 0, 1], "radius": 0})"),
             "/radius");
+}
+
+// The distance from p to the segment a–b.
+double distance_to_segment(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
+  double u = std::clamp(dot(p - a, b - a) / length_squared(b - a), 0.0, 1.0);
+  return length(p - (a + u * (b - a)));
+}
+
+// The capsule's generator, many problems of each outcome, checked from their numbers alone: a
+// point of the surface is at distance r from the segment ab; hits are there, at O + tD; a
+// tangent is perpendicular to P − F (F the nearest point of the segment, the outward normal's
+// direction); a miss passes farther than r from every point of the segment (the distance from
+// the line to a + u(b − a) is convex in u: found by ternary search); inside starts nearer than
+// r; behind has its hits at t < 0 (those of the reversed ray). Each problem also solves to as
+// many hits as stated.
+TEST(CapsuleGenerator, EachOutcomeIsWhatItSays) {
+  EXPECT_EQ(Capsule::outcomes(),
+            (std::vector<Outcome>{Outcome::kHit, Outcome::kMiss, Outcome::kTangent,
+                                  Outcome::kInside, Outcome::kBehind}));
+  for (Outcome o : Capsule::outcomes()) {
+    for (const auto& g : testing::generated("capsule", o)) {
+      auto x = testing::intersect_of(g);
+      Vec3d a = testing::vec_at(x.object.at("a")), b = testing::vec_at(x.object.at("b"));
+      double r = x.object.at("radius").get<double>();
+      EXPECT_EQ(x.solved_hits, x.hits.size()) << g.id;
+      for (const auto& [t, p] : x.hits) {
+        EXPECT_GT(t, 0) << g.id;
+        EXPECT_NEAR(length(x.origin + t * x.direction - p), 0, 1e-12) << g.id;
+        EXPECT_NEAR(distance_to_segment(p, a, b), r, 1e-12) << g.id;
+      }
+      switch (o) {
+        case Outcome::kHit: EXPECT_EQ(x.hits.size(), 2u) << g.id; break;
+        case Outcome::kTangent: {
+          ASSERT_EQ(x.hits.size(), 1u) << g.id;
+          Vec3d p = x.hits[0].second;
+          double u = std::clamp(dot(p - a, b - a) / length_squared(b - a), 0.0, 1.0);
+          EXPECT_NEAR(dot(p - (a + u * (b - a)), x.direction), 0, 1e-12) << g.id;
+          break;
+        }
+        case Outcome::kMiss: {
+          EXPECT_TRUE(x.hits.empty()) << g.id;
+          Vec3d w = normalized(x.direction);
+          auto off_line = [&](double u) {
+            Vec3d q = a + u * (b - a) - x.origin;
+            return length(q - dot(q, w) * w);
+          };
+          double lo = 0, hi = 1;
+          for (int k = 0; k < 200; ++k) {
+            double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+            if (off_line(m1) < off_line(m2))
+              hi = m2;
+            else
+              lo = m1;
+          }
+          EXPECT_GT(off_line(lo), r) << g.id;
+          break;
+        }
+        case Outcome::kInside:
+          EXPECT_EQ(x.hits.size(), 1u) << g.id;
+          EXPECT_LT(distance_to_segment(x.origin, a, b), r) << g.id;
+          break;
+        case Outcome::kBehind: {
+          EXPECT_TRUE(x.hits.empty()) << g.id;
+          auto back = Capsule(a, b, r).intersect(testing::ray(x.origin, -x.direction));
+          EXPECT_EQ(back.hits.size(), 2u) << g.id;
+          for (const auto& hit : back.hits) {
+            EXPECT_NEAR(distance_to_segment(hit.point, a, b), r, 1e-12) << g.id;
+          }
+          break;
+        }
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "generated.h"
 #include "shape_error.h"
 #include "test_util.h"
 
@@ -131,6 +132,82 @@ TEST(Cone, BadParametersAreErrorsAtTheirPaths) {
   EXPECT_EQ(testing::shape_error_path(
                 R"({"type": "cone", "base": [0, 0, 0], "radius": 1, "height": -1})"),
             "/height");
+}
+
+// The cone's generator, many problems of each outcome, checked from their numbers alone. With
+// q = P − B, s = q·â and q⊥ = q − s·â, a point of the side has 0 ≤ s ≤ h and
+// h|q⊥| = r (h − s), a point of the cap s = 0 and |q⊥| ≤ r. Hits are on the surface, at
+// O + tD; a tangent is across the axis (D·â = 0) and perpendicular to the side's normal
+// h·ê + r·â there; a miss keeps its height, farther from the axis than the side at that
+// height; inside starts strictly inside the capped cone; behind has its hits at t < 0 (those of
+// the reversed ray). Each problem also solves to as many hits as stated.
+TEST(ConeGenerator, EachOutcomeIsWhatItSays) {
+  EXPECT_EQ(Cone::outcomes(),
+            (std::vector<Outcome>{Outcome::kHit, Outcome::kMiss, Outcome::kTangent,
+                                  Outcome::kInside, Outcome::kBehind}));
+  for (Outcome o : Cone::outcomes()) {
+    for (const auto& g : testing::generated("cone", o)) {
+      auto x = testing::intersect_of(g);
+      Vec3d b = testing::vec_at(x.object.at("base"));
+      Vec3d a = x.object.contains("axis") ? normalized(testing::vec_at(x.object.at("axis")))
+                                          : Vec3d{0, 0, 1};
+      double r = x.object.at("radius").get<double>(), h = x.object.at("height").get<double>();
+      bool capped = x.object.value("capped", false);
+      auto height = [&](const Vec3d& p) { return dot(p - b, a); };
+      auto across = [&](const Vec3d& p) { return (p - b) - height(p) * a; };
+      auto on_surface = [&](const Vec3d& p) {
+        double s = height(p), rho = length(across(p));
+        bool side = s >= -1e-12 && s <= h + 1e-12 && std::abs(h * rho - r * (h - s)) <= 1e-12;
+        bool cap = capped && std::abs(s) <= 1e-12 && rho <= r + 1e-12;
+        return side || cap;
+      };
+      EXPECT_EQ(x.solved_hits, x.hits.size()) << g.id;
+      for (const auto& [t, p] : x.hits) {
+        EXPECT_GT(t, 0) << g.id;
+        EXPECT_NEAR(length(x.origin + t * x.direction - p), 0, 1e-12) << g.id;
+        EXPECT_TRUE(on_surface(p)) << g.id;
+      }
+      switch (o) {
+        case Outcome::kHit: EXPECT_EQ(x.hits.size(), 2u) << g.id; break;
+        case Outcome::kTangent: {
+          ASSERT_EQ(x.hits.size(), 1u) << g.id;
+          Vec3d p = x.hits[0].second;
+          Vec3d normal = h * normalized(across(p)) + r * a;
+          EXPECT_EQ(dot(x.direction, a), 0) << g.id;
+          EXPECT_NEAR(dot(normal, x.direction), 0, 1e-12) << g.id;
+          break;
+        }
+        case Outcome::kMiss: {
+          EXPECT_TRUE(x.hits.empty()) << g.id;
+          EXPECT_EQ(dot(x.direction, a), 0) << g.id;
+          double s = height(x.origin);
+          EXPECT_GT(s, 0) << g.id;
+          // The line's nearest approach to the axis, against the side's radius at its height.
+          Vec3d q = across(x.origin);
+          Vec3d u = normalized(x.direction);
+          double nearest = length(q - dot(q, u) * u);
+          EXPECT_GT(nearest, r * (h - s) / h) << g.id;
+          break;
+        }
+        case Outcome::kInside: {
+          EXPECT_EQ(x.hits.size(), 1u) << g.id;
+          EXPECT_TRUE(capped) << g.id;
+          double s = height(x.origin);
+          EXPECT_GT(s, 0) << g.id;
+          EXPECT_LT(h * length(across(x.origin)), r * (h - s)) << g.id;
+          break;
+        }
+        case Outcome::kBehind: {
+          EXPECT_TRUE(x.hits.empty()) << g.id;
+          Cone cone(b, a, r, h, capped);
+          auto back = cone.intersect(testing::ray(x.origin, -x.direction));
+          EXPECT_EQ(back.hits.size(), 2u) << g.id;
+          for (const auto& hit : back.hits) EXPECT_TRUE(on_surface(hit.point)) << g.id;
+          break;
+        }
+      }
+    }
+  }
 }
 
 }  // namespace

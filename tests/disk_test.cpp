@@ -5,6 +5,7 @@
 
 #include "accuracy/ladder.h"
 #include "accuracy/settle.h"
+#include "generated.h"
 #include "shape_error.h"
 #include "test_util.h"
 
@@ -144,6 +145,48 @@ TEST(Disk, EveryLadderLevelOnRaysWorkedByHand) {
     EXPECT_EQ(primitive_name(c->primitive), "disk");
     for (const LadderLevel& level : ladder_levels()) {
       EXPECT_EQ(level.nearest(*c), k.t) << level.name << " from " << k.origin.y;
+    }
+  }
+}
+
+// The disk's generator, many problems of each outcome, checked from their numbers alone: the
+// ray meets the disk's plane at t* = N·(C − O) / N·D, at P* = O + t* D; a hit or a rim has
+// t* > 0 and |P* − C| < r or = r, and is the one hit stated; a miss has t* > 0 and |P* − C| > r;
+// behind has t* < 0 with P* on the disk. Each problem also solves to as many hits as stated.
+TEST(DiskGenerator, EachOutcomeIsWhatItSays) {
+  EXPECT_EQ(Disk::outcomes(), (std::vector<Outcome>{Outcome::kHit, Outcome::kMiss,
+                                                    Outcome::kTangent, Outcome::kBehind}));
+  for (Outcome o : Disk::outcomes()) {
+    for (const auto& g : testing::generated("disk", o)) {
+      auto x = testing::intersect_of(g);
+      Vec3d c = testing::vec_at(x.object.at("center"));
+      Vec3d n = testing::vec_at(x.object.at("normal"));
+      double r = x.object.at("radius").get<double>();
+      double t = dot(c - x.origin, n) / dot(x.direction, n);
+      Vec3d p = x.origin + t * x.direction;
+      double from_centre = length(p - c);
+      EXPECT_EQ(x.solved_hits, x.hits.size()) << g.id;
+      if (o == Outcome::kHit || o == Outcome::kTangent) {
+        ASSERT_EQ(x.hits.size(), 1u) << g.id;
+        EXPECT_EQ(x.hits[0].first, t) << g.id;
+        EXPECT_NEAR(length(x.hits[0].second - p), 0, 1e-12) << g.id;
+        EXPECT_NEAR(dot(x.hits[0].second - c, n), 0, 1e-12) << g.id;
+        EXPECT_GT(t, 0) << g.id;
+        if (o == Outcome::kHit) {
+          EXPECT_LT(from_centre, r) << g.id;
+        } else {
+          EXPECT_NEAR(from_centre, r, 1e-12) << g.id;
+        }
+      } else {
+        EXPECT_TRUE(x.hits.empty()) << g.id;
+        if (o == Outcome::kMiss) {
+          EXPECT_GT(t, 0) << g.id;
+          EXPECT_GT(from_centre, r) << g.id;
+        } else {
+          EXPECT_LT(t, 0) << g.id;
+          EXPECT_LE(from_centre, r) << g.id;
+        }
+      }
     }
   }
 }

@@ -97,15 +97,50 @@ TEST(NormalKind, PointOffTheSurfaceSaysHowFar) {
   EXPECT_NE(e.find("it is 0.7071 from the surface point (1, 1, 0)"), std::string::npos) << e;
 }
 
-// A primitive the normal kind does not take is the problem's fault, named at its type, not
-// an internal error.
-TEST(NormalKind, APrimitiveItDoesNotTakeIsAnErrorAtItsType) {
-  std::string e = error_of(
-      R"({"type": "disk", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1})", "[0.5, 0, 0]");
-  EXPECT_NE(e.find("/object/type: unknown-type: the normal kind takes a sphere, plane"),
-            std::string::npos)
-      << e;
-  EXPECT_NE(e.find("not a disk"), std::string::npos) << e;
+// The disk of radius 2 around (0, 0, 5) with normal (0, 0, −2) as given: (0, 0, −1) at every
+// point of it, its rim (2, 0, 5) included (flat: no edge between parts there). The point
+// (3, 0, 5) is 1 beyond the rim, whose point (2, 0, 5) is the nearest.
+TEST(NormalKind, DiskIsItsGivenNormalRimIncluded) {
+  const std::string disk = R"({"type": "disk", "center": [0, 0, 5], "normal": [0, 0, -2],
+    "radius": 2})";
+  expect_near(normal_of(disk, "[1, 1, 5]"), {0, 0, -1});
+  expect_near(normal_of(disk, "[2, 0, 5]"), {0, 0, -1});
+  std::string e = error_of(disk, "[3, 0, 5]");
+  EXPECT_NE(e.find("off-surface"), std::string::npos) << e;
+  EXPECT_NE(e.find("it is 1 from the surface point (2, 0, 5)"), std::string::npos) << e;
+}
+
+// Radius 3, height 4 (slant 5): at height 2 the side's radius is 3·(4 − 2)/4 = 1.5, and its
+// normal (h·ê + r·â)/5 = (4ê + 3â)/5: (0.8, 0, 0.6) at (1.5, 0, 2), (0, −0.8, 0.6) at
+// (0, −1.5, 2). The apex (0, 0, 4) has â = (0, 0, 1) by convention; the cap −â; the rim
+// (3, 0, 0) the side's normal, as the cone's hits there. (0, 0, 2), on the axis, is 1.2 from the
+// side: the distance from the line 4x + 3z = 12 (in the plane y = 0) to (0, 2) is |6 − 12|/5.
+TEST(NormalKind, ConeSideApexCapAndRim) {
+  const std::string cone = R"({"type": "cone", "base": [0, 0, 0], "radius": 3, "height": 4,
+    "capped": true})";
+  expect_near(normal_of(cone, "[1.5, 0, 2]"), {0.8, 0, 0.6});
+  expect_near(normal_of(cone, "[0, -1.5, 2]"), {0, -0.8, 0.6});
+  expect_near(normal_of(cone, "[0, 0, 4]"), {0, 0, 1});
+  expect_near(normal_of(cone, "[1, 1, 0]"), {0, 0, -1});
+  expect_near(normal_of(cone, "[3, 0, 0]"), {0.8, 0, 0.6});
+  std::string e = error_of(cone, "[0, 0, 2]");
+  EXPECT_NE(e.find("it is 1.2 from the surface point"), std::string::npos) << e;
+}
+
+// Around the segment (0, 0, 0)–(0, 0, 4) with radius 2: on the side (2, 0, 1) the normal is
+// from its foot (0, 0, 1), (1, 0, 0); on the end at b, (0, 1.2, 5.6) − (0, 0, 4) = (0, 1.2, 1.6)
+// of length 2: (0, 0.6, 0.8); the end at a's pole (0, 0, −2): (0, 0, −1). The rims (2, 0, 4) and
+// (0, −2, 0), where side and end meet smoothly, have the side's normal, with no error.
+TEST(NormalKind, CapsuleSideEndsAndRims) {
+  const std::string capsule = R"({"type": "capsule", "a": [0, 0, 0], "b": [0, 0, 4],
+    "radius": 2})";
+  expect_near(normal_of(capsule, "[2, 0, 1]"), {1, 0, 0});
+  expect_near(normal_of(capsule, "[0, 1.2, 5.6]"), {0, 0.6, 0.8});
+  expect_near(normal_of(capsule, "[0, 0, -2]"), {0, 0, -1});
+  expect_near(normal_of(capsule, "[2, 0, 4]"), {1, 0, 0});
+  expect_near(normal_of(capsule, "[0, -2, 0]"), {0, -1, 0});
+  std::string e = error_of(capsule, "[3, 0, 1]");
+  EXPECT_NE(e.find("it is 1 from the surface point (2, 0, 1)"), std::string::npos) << e;
 }
 
 TEST(NormalKind, EdgesAndRimsHaveNoNormal) {
@@ -144,6 +179,28 @@ TEST(NormalKind, InwardNormalIsGradedWrong) {
   EXPECT_TRUE(inward.has_mistake("inward-normal"));
   ASSERT_FALSE(inward.parts.empty());
   EXPECT_NE(inward.parts[0].feedback[0].find("points into the object"), std::string::npos);
+}
+
+// The cone and the capsule are closed too: their normal rule is inward-normal, so the opposite
+// of (0, 0.8, 0.6) (the cone's side at (1, 1.5, 2), worked in normals.json) and of (0, 0, −1)
+// (the capsule's side at (1, 0, −5)) keeps half the credit; a disk's opposite normal does not.
+TEST(NormalKind, InwardNormalOfTheConeAndCapsuleIsNamed) {
+  Problem cone = testing::problem(R"({"id": "n", "kind": "normal", "object": {"type": "cone",
+    "base": [1, 0, 0], "radius": 3, "height": 4}, "point": [1, 1.5, 2]})");
+  GradeResult right = grade_answer(cone, nlohmann::json::parse(R"({"normal": [0, 4, 3]})"));
+  EXPECT_DOUBLE_EQ(right.score, right.max_score);
+  GradeResult inward = grade_answer(cone, nlohmann::json::parse(R"({"normal": [0, -4, -3]})"));
+  EXPECT_TRUE(inward.has_mistake("inward-normal"));
+  EXPECT_DOUBLE_EQ(inward.score, 0.5 * inward.max_score);
+  Problem capsule = testing::problem(R"({"id": "n", "kind": "normal", "object": {"type":
+    "capsule", "a": [0, 0, 0], "b": [4, 0, 0], "radius": 5}, "point": [1, 0, -5]})");
+  inward = grade_answer(capsule, nlohmann::json::parse(R"({"normal": [0, 0, 1]})"));
+  EXPECT_TRUE(inward.has_mistake("inward-normal"));
+  Problem disk = testing::problem(R"({"id": "n", "kind": "normal", "object": {"type": "disk",
+    "center": [0, 0, 5], "normal": [0, 0, -2], "radius": 2}, "point": [1, 1, 5]})");
+  GradeResult flipped = grade_answer(disk, nlohmann::json::parse(R"({"normal": [0, 0, 1]})"));
+  EXPECT_FALSE(flipped.has_mistake("inward-normal"));
+  EXPECT_DOUBLE_EQ(flipped.score, 0);
 }
 
 }  // namespace

@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "accuracy/certified.h"
 #include "accuracy/ladder.h"
@@ -154,6 +157,35 @@ TEST(Primitives, TheTableIsTheList) {
   for (const ShapeEntry& e : shape_table()) table.push_back(e.type);
   EXPECT_EQ(table, listed);
   EXPECT_EQ(listed.size(), Primitives::size);
+}
+
+// No code outside a primitive's own files names it: no .cpp or .h of grader/ outside
+// grader/shapes/ (where each primitive's files are) contains a primitive's type, taken from the
+// list, as a string literal ("sphere", with its quotes). grader/accuracy/ is left out: its
+// study names its six primitives itself until it too is derived from the list.
+TEST(Primitives, NoCodeOutsideTheShapesNamesOne) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> literals;
+  for_each_primitive([&]<typename T>() { literals.push_back(fmt::format("\"{}\"", T::kType)); });
+  ASSERT_EQ(literals.size(), Primitives::size);
+  fs::path grader = fs::path(RAYGRADE_SOURCE_DIR) / "grader";
+  int files = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(grader)) {
+    fs::path rel = entry.path().lexically_relative(grader);
+    std::string top = rel.begin()->string();
+    std::string ext = entry.path().extension().string();
+    if (!entry.is_regular_file() || top == "shapes" || top == "accuracy") continue;
+    if (ext != ".cpp" && ext != ".h") continue;
+    ++files;
+    std::ifstream in(entry.path());
+    std::stringstream text;
+    text << in.rdbuf();
+    for (const auto& literal : literals) {
+      EXPECT_EQ(text.str().find(literal), std::string::npos)
+          << "grader/" << rel.string() << " names a primitive: " << literal;
+    }
+  }
+  EXPECT_GT(files, 100);  // the scan found the sources
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include "kinds/derive.h"
 #include "kinds/shade.h"
+#include "shapes/primitives.h"
 
 namespace raygrade {
 namespace {
@@ -53,8 +54,9 @@ json hits_field(bool barycentric, bool several, bool point_and_normal) {
 
 json intersect_form(const Problem& p) {
   const json& object = p.source.contains("object") ? p.source["object"] : json();
-  bool triangle = object.is_object() && object.value("type", "") == "triangle";
-  json f = hits_field(triangle, true, true);
+  bool barycentric =
+      object.is_object() && hits_have_barycentric(object.value("type", std::string()));
+  json f = hits_field(barycentric, true, true);
   f["miss"] = "The ray misses (no hits)";
   f["contained"] = "The ray lies in the surface (contained)";
   return {{"fields", json::array({f})}};

@@ -2,6 +2,7 @@
 #include "generate/generate.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <filesystem>
 #include <iostream>
@@ -92,9 +93,13 @@ Runner setup_generate(CLI::App& sub) {
   auto o = std::make_shared<GenerateCliOptions>();
   sub.add_option("--seed", o->seed, "the seed: the same seed gives the same bytes")->required();
   sub.add_option("-n,--count", o->count, "how many problems")->check(CLI::Range(1, 1000000));
+  std::vector<std::string_view> kinds;
+  for (const auto& g : generator_table()) kinds.push_back(g.name);
+  std::string_view last = kinds.back();
+  kinds.pop_back();
   sub.add_option("--kind", o->kinds,
-                 "sphere, plane, triangle, polygon, cylinder, box, first-hit or camera-ray "
-                 "(repeat, or separate with commas; default: all, in turn)")
+                 fmt::format("{} or {} (repeat, or separate with commas; default: all, in turn)",
+                             fmt::join(kinds, ", "), last))
       ->delimiter(',');
   sub.add_option("--outcome", o->outcome, "hit, miss, tangent, inside or behind (default: a mix)")
       ->check(CLI::IsMember({"hit", "miss", "tangent", "inside", "behind"}));

@@ -7,8 +7,9 @@
 #include "check/geometry_key.h"
 #include "check/problem_checks.h"
 #include "core/error.h"
-#include "generate/solids.h"
+#include "generate/kinds.h"
 #include "json/cursor.h"
+#include "shapes/primitives.h"
 
 namespace raygrade {
 namespace {
@@ -42,16 +43,16 @@ std::optional<Outcome> parse_outcome(std::string_view name) {
 }
 
 const std::vector<GeneratorEntry>& generator_table() {
-  static const std::vector<GeneratorEntry> table = {
-      {"sphere", kAllOutcomes, &make_sphere},
-      {"plane", kFlatOutcomes, &make_plane},
-      {"triangle", kFlatOutcomes, &make_triangle},
-      {"polygon", kFlatOutcomes, &make_polygon},
-      {"cylinder", kAllOutcomes, &make_cylinder},
-      {"box", kBoxOutcomes, &make_box},
-      {"first-hit", {Outcome::kHit, Outcome::kMiss}, &make_first_hit},
-      {"camera-ray", {}, &make_camera_ray},
-  };
+  static const std::vector<GeneratorEntry> table = [] {
+    // The primitives' rows, from the list of primitives in its order; then the kinds'.
+    std::vector<GeneratorEntry> rows;
+    for_each_primitive([&]<typename T>() {
+      rows.push_back({T::kType, T::outcomes(), &T::generate});
+    });
+    rows.push_back({"first-hit", {Outcome::kHit, Outcome::kMiss}, &make_first_hit});
+    rows.push_back({"camera-ray", {}, &make_camera_ray});
+    return rows;
+  }();
   return table;
 }
 

@@ -9,24 +9,16 @@
 #include <string_view>
 #include <vector>
 
+#include "generate/outcome.h"
 #include "generate/prng.h"
 
 namespace raygrade {
 
-// What the ray does: hits the object from outside, misses it, touches it (a tangent; for
-// flat objects a ray through an edge, or lying in the plane), starts inside it, or has the
-// object behind its origin.
-enum class Outcome { kHit, kMiss, kTangent, kInside, kBehind };
-
 const char* outcome_name(Outcome o);
 std::optional<Outcome> parse_outcome(std::string_view name);
 
-// A problem as a generator builds it: everything but the id and title.
-struct Draft {
-  nlohmann::ordered_json fields;  // kind, statement, ray, object(s) or camera, expected
-};
-
-// One row of the table of generators: a primitive ("sphere") or a kind ("first-hit").
+// One row of the table of generators: a primitive (its rows come from the list of primitives,
+// each primitive's outcomes() and generate()) or a kind ("first-hit").
 struct GeneratorEntry {
   std::string_view name;
   std::vector<Outcome> outcomes;  // the outcomes it can build; empty: outcome does not apply

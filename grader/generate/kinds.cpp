@@ -1,9 +1,11 @@
 // Generators for the first-hit and camera-ray kinds.
+#include "generate/kinds.h"
+
 #include <algorithm>
 #include <cmath>
 
 #include "generate/draft.h"
-#include "generate/solids.h"
+#include "shapes/sphere.h"
 
 namespace raygrade {
 
@@ -38,7 +40,7 @@ Draft make_first_hit(Prng& rng, std::optional<Outcome> asked) {
     }
     std::string name = fmt::format("sphere {}", k + 1);
     objects.push_back(
-        {{"name", name}, {"type", "sphere"}, {"center", vector_json(center)}, {"radius", r}});
+        {{"name", name}, {"type", Sphere::kType}, {"center", vector_json(center)}, {"radius", r}});
     parts.push_back(fmt::format("{} with center {} and radius {}", name, point_text(center), r));
   }
   Draft draft;

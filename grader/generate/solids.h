@@ -1,24 +1,34 @@
-// Generators of the primitives and kinds, one function each, listed in generator_table().
+// Helpers the generators of solid primitives share: chords between lattice points, and
+// integer vectors across a given one.
 #pragma once
 
-#include "generate/generate.h"
+#include <vector>
+
+#include "generate/draft.h"
+#include "generate/lattice.h"
+#include "generate/outcome.h"
 
 namespace raygrade {
 
-// Boxes have no tangent case here (a ray grazing an edge is an edge case of the slabs).
-inline const std::vector<Outcome> kBoxOutcomes = {Outcome::kHit, Outcome::kMiss, Outcome::kInside,
-                                                  Outcome::kBehind};
-// Flat objects: tangent means a ray through an edge (or, for a plane, lying in it).
-inline const std::vector<Outcome> kFlatOutcomes = {Outcome::kHit, Outcome::kMiss, Outcome::kTangent,
-                                                   Outcome::kBehind};
+// Every outcome: what a closed round solid (sphere, cylinder, capsule) can be asked for.
+inline const std::vector<Outcome> kSolidOutcomes = {
+    Outcome::kHit, Outcome::kMiss, Outcome::kTangent, Outcome::kInside, Outcome::kBehind};
 
-Draft make_sphere(Prng& rng, std::optional<Outcome> outcome);
-Draft make_cylinder(Prng& rng, std::optional<Outcome> outcome);
-Draft make_box(Prng& rng, std::optional<Outcome> outcome);
-Draft make_plane(Prng& rng, std::optional<Outcome> outcome);
-Draft make_triangle(Prng& rng, std::optional<Outcome> outcome);
-Draft make_polygon(Prng& rng, std::optional<Outcome> outcome);
-Draft make_first_hit(Prng& rng, std::optional<Outcome> outcome);
-Draft make_camera_ray(Prng& rng, std::optional<Outcome> outcome);
+// Two different points of a lattice set, as offsets a and b; the chord from a to b is
+// g·d with d the reduced direction. With `min_steps` 2 the chord has an integer point inside.
+struct Chord {
+  Vec3d a, b, d;
+  int steps = 1;  // g
+};
+Chord random_chord(Prng& rng, const std::vector<Vec3d>& points, int min_steps);
+
+// The ray along the chord from p0 to p1 (`steps` steps of d) for the outcome `o`: from s steps
+// before p0 for kHit (both hits), from a random one of the steps between them for kInside (the
+// exit only), from s steps past p1 for kBehind (none).
+void chord_ray(Prng& rng, Outcome o, const Vec3d& p0, const Vec3d& p1, const Vec3d& d, int steps,
+               int s, Vec3d& origin, std::vector<KnownHit>& hits);
+
+// An integer vector perpendicular to `a`, reduced.
+Vec3d perpendicular(Prng& rng, const Vec3d& a);
 
 }  // namespace raygrade

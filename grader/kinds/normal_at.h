@@ -4,36 +4,19 @@
 // that says how far off it is.
 #pragma once
 
-#include <array>
 #include <optional>
 #include <string_view>
 
 #include "problems/problem.h"
 #include "shapes/shape.h"
+#include "shapes/surface_point.h"
 #include "shapes/transform.h"
 
 namespace raygrade {
 
-// A point within this fraction of the object's size (at least 1) of its surface is on it: a
-// coordinate printed to four decimals, as exercises print √2/2 = 0.7071, is off by at most
-// 5e-5. The same distance tells a rim or an edge (two parts of the surface as near) apart.
-constexpr double kOnSurfaceRelative = 1e-4;
-
-// The surface part nearest to an object-space point, with its outward normal there.
-struct SurfacePoint {
-  Vec3d nearest;      // the nearest point of that part of the surface
-  Vec3d normal;       // the outward (or by vertex order, or as given) normal, not normalized
-  std::string part;   // "side", "top cap", "face x = 1"; empty for one-part surfaces
-  std::string other;  // a second part as near (a rim or an edge): the normal is not defined
-};
-
-// The primitives the normal kind takes.
-inline constexpr std::array<std::string_view, 6> kNormalKindTypes = {
-    "sphere", "plane", "triangle", "polygon", "cylinder", "box"};
-
-// The part of `primitive`'s surface nearest to `p` (object space), read from its parameters;
-// nothing for a primitive the normal kind does not take.
-std::optional<SurfacePoint> nearest_surface(const Shape& primitive, const Vec3d& p);
+// The part of `primitive`'s surface nearest to `p` (object space), with its outward normal
+// there: the primitive's own nearest_surface (shapes/<name>_normal.cpp).
+SurfacePoint nearest_surface(const Shape& primitive, const Vec3d& p);
 
 class NormalTask final : public Task {
  public:
@@ -51,7 +34,8 @@ class NormalTask final : public Task {
   // A transformed object's normal taken to the world by its matrix A instead of (A⁻¹)ᵀ, when
   // the two differ (an uneven scale): the normal-not-inverse-transpose mistake.
   std::optional<Vec3d> normal_by_matrix() const;
-  // Whether the object is closed (its normal points out of it): a sphere, cylinder or box.
+  // Whether the object's normal points out of it, so that the opposite one is the named mistake
+  // inward-normal: its primitive's normal rule says so (a sphere, cylinder, box, cone, capsule).
   bool solid() const;
 
  private:

@@ -357,7 +357,7 @@ SvgFigure render_svg(const Sketch& f, const std::string& title) {
           if (nn < kTinyDirection * length_squared(n)) break;  // parallel to the page
           double k = dot(n, item.points[0] - view.ref) / nn;
           if (auto top = draw_line({k * n2.x, k * n2.y}, {-n2.y, n2.x}, cls)) {
-            canvas.label(canvas.px(*top), item.label.empty() ? "plane" : item.label, cls);
+            canvas.label(canvas.px(*top), item.label, cls);
           }
           break;
         }

@@ -130,7 +130,8 @@ Derivation Plane::derive(const Ray& ray, std::string_view method,
 }
 
 void Plane::sketch(Sketch& figure, const std::string& label) const {
-  figure.plane(some_point(), normal_, Ink::kObject, label);
+  // Unnamed (the lone object of an intersect problem), it is labelled by its type.
+  figure.plane(some_point(), normal_, Ink::kObject, label.empty() ? std::string(kType) : label);
 }
 
 nlohmann::ordered_json Plane::schema() {

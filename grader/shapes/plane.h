@@ -3,8 +3,10 @@
 
 #include <optional>
 
+#include "generate/outcome.h"
 #include "math/robust.h"
 #include "shapes/shape.h"
+#include "shapes/surface_point.h"
 
 namespace raygrade {
 
@@ -77,6 +79,15 @@ class Plane final : public Shape {
   static constexpr std::string_view kSummary = "point and normal, or normal and d (n·p + d = 0)";
   // Its fragment of the problem schema: its own keys, and examples.
   static nlohmann::ordered_json schema();
+  // Its generator (shapes/plane_generate.cpp): the outcomes it can build, and a problem for one
+  // of them (a random one when none is asked) with nice numbers.
+  static const std::vector<Outcome>& outcomes();
+  static Draft generate(Prng& rng, std::optional<Outcome> outcome);
+  // The normal kind (shapes/plane_normal.cpp): the part of its surface nearest to the
+  // object-space point p, with the outward normal there (`tie`: how near two parts must both be
+  // for p to lie where they meet), and the steps that derive that normal at P.
+  SurfacePoint nearest_surface(const Vec3d& p, double tie) const;
+  void derive_normal(Deriver& d, const E& P, const SurfacePoint& s, const NormalNames& n) const;
 
   std::string_view type() const override { return kType; }
   Intersection intersect(const Ray& ray) const override;

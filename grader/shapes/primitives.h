@@ -6,9 +6,12 @@
 #include <concepts>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string_view>
 #include <type_traits>
+#include <vector>
 
+#include "generate/outcome.h"
 #include "shapes/box.h"
 #include "shapes/capsule.h"
 #include "shapes/cone.h"
@@ -18,6 +21,7 @@
 #include "shapes/polygon.h"
 #include "shapes/shape.h"
 #include "shapes/sphere.h"
+#include "shapes/surface_point.h"
 #include "shapes/triangle.h"
 
 namespace raygrade {
@@ -25,14 +29,24 @@ namespace raygrade {
 // What a primitive provides beside Shape's virtual functions (the reference intersection, the
 // derivations, the sketch, solidity, the normal rule, the quadratic's steps): its `type` key and
 // a one-line summary of its parameters, its reader, and its fragment of the problem schema
-// (docs/problem.schema.json, written by `raygrade schema`).
+// (docs/problem.schema.json, written by `raygrade schema`), its generator, a row of
+// `raygrade generate`'s table, and its normal at a point of its surface (the normal kind).
 template <typename T>
 concept PrimitiveType = std::derived_from<T, Shape> && std::is_final_v<T> &&
-    requires(const Cursor& object) {
+    requires(const T& shape, const Cursor& object, Prng& rng, std::optional<Outcome> outcome,
+             const Vec3d& p, Deriver& d, const E& P, const SurfacePoint& s, const NormalNames& n) {
   { T::kType } -> std::convertible_to<std::string_view>;
   { T::kSummary } -> std::convertible_to<std::string_view>;
   { T::read(object) } -> std::same_as<std::unique_ptr<Shape>>;
   { T::schema() } -> std::same_as<nlohmann::ordered_json>;
+  // Its generator (shapes/<name>_generate.cpp): the outcomes it can build (Outcome,
+  // generate/outcome.h), and a problem with nice numbers for one of them.
+  { T::outcomes() } -> std::same_as<const std::vector<Outcome>&>;
+  { T::generate(rng, outcome) } -> std::same_as<Draft>;
+  // The normal kind (shapes/<name>_normal.cpp, shapes/surface_point.h): the part of its
+  // surface nearest to a point with the outward normal there, and the steps that derive it.
+  { shape.nearest_surface(p, 0.0) } -> std::same_as<SurfacePoint>;
+  { shape.derive_normal(d, P, s, n) } -> std::same_as<void>;
 };
 
 template <typename... Ts>
@@ -61,6 +75,16 @@ void for_each_type(F&& f, TypeList<Ts...> /*list*/) {
 template <typename F>
 void for_each_primitive(F&& f) {
   for_each_type(f, Primitives{});
+}
+
+// Whether the hits of the primitive whose `type` key is `type` carry barycentric weights (its
+// kBarycentric, where it has one): an answer form asks for them then.
+inline bool hits_have_barycentric(std::string_view type) {
+  bool yes = false;
+  for_each_primitive([&]<typename T>() {
+    if constexpr (requires { T::kBarycentric; }) yes = yes || (type == T::kType && T::kBarycentric);
+  });
+  return yes;
 }
 
 }  // namespace raygrade

@@ -5,9 +5,11 @@
 #include <array>
 #include <limits>
 
+#include "generate/outcome.h"
 #include "math/robust.h"
 #include "shapes/plane.h"
 #include "shapes/shape.h"
+#include "shapes/surface_point.h"
 
 namespace raygrade {
 
@@ -125,6 +127,18 @@ class Triangle final : public Shape {
   static constexpr std::string_view kSummary = "vertices [a, b, c]";
   // Its fragment of the problem schema: its own keys, and examples.
   static nlohmann::ordered_json schema();
+  // Its generator (shapes/triangle_generate.cpp): the outcomes it can build, and a problem for one
+  // of them (a random one when none is asked) with nice numbers.
+  static const std::vector<Outcome>& outcomes();
+  static Draft generate(Prng& rng, std::optional<Outcome> outcome);
+  // Its hits carry barycentric weights (w_a, w_b, w_c), which answer forms ask for
+  // (hits_have_barycentric, shapes/primitives.h).
+  static constexpr bool kBarycentric = true;
+  // The normal kind (shapes/triangle_normal.cpp): the part of its surface nearest to the
+  // object-space point p, with the outward normal there (`tie`: how near two parts must both be
+  // for p to lie where they meet), and the steps that derive that normal at P.
+  SurfacePoint nearest_surface(const Vec3d& p, double tie) const;
+  void derive_normal(Deriver& d, const E& P, const SurfacePoint& s, const NormalNames& n) const;
 
   std::string_view type() const override { return kType; }
   // A normal the other way is the cross product's factors swapped.
