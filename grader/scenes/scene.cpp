@@ -5,6 +5,7 @@
 #include <set>
 
 #include "scenes/offset.h"
+#include "shapes/primitives.h"
 
 namespace raygrade {
 namespace {
@@ -30,9 +31,11 @@ double coefficient(const Cursor& c, std::string_view key, double fallback) {
 // from, and a ray that refracts into it stays inside until it leaves through a boundary.
 void read_half_space(const Cursor& c, SceneObject& o) {
   std::string_view type = o.shape->type();
-  if (type != "plane") {
+  if (!bounds_half_space(type)) {
     c.fail(o.solid
-               ? fmt::format("a {} already bounds its inside: half_space is for a plane only", type)
+               ? fmt::format("a {} already bounds its inside: half_space is for an unbounded flat "
+                             "surface (a plane)",
+                             type)
                : fmt::format("a {} bounds no volume: only a plane can bound a half-space (a "
                              "transparent {} is a thin sheet)",
                              type, type),

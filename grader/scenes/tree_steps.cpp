@@ -32,6 +32,11 @@ SolutionPart overview(const RayTree& tree, const Scene& scene) {
     part.figures.push_back(
         Figure{"The ray tree (R: reflection, T: refraction, dashed: shadow rays)",
                tree_svg(tree, scene), tree_dot(tree, scene), tree_text(tree, scene)});
+  } else {
+    // A question of the hit or of the media: the scene and the primary ray to its first hit.
+    part.figures.push_back(Figure{"The scene and the primary ray, to its first hit",
+                                  tree_svg(tree, scene), tree_dot(tree, scene),
+                                  tree_text(tree, scene)});
   }
   return part;
 }

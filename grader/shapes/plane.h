@@ -77,6 +77,8 @@ class Plane final : public Shape {
 
   static constexpr std::string_view kType = "plane";
   static constexpr std::string_view kSummary = "point and normal, or normal and d (n·p + d = 0)";
+  // An unbounded flat surface splits space in two: in a scene it may bound a half-space.
+  static constexpr bool kHalfSpace = true;
   // Its fragment of the problem schema: its own keys, and examples.
   static nlohmann::ordered_json schema();
   // Its generator (shapes/plane_generate.cpp): the outcomes it can build, and a problem for one

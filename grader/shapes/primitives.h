@@ -87,4 +87,14 @@ inline bool hits_have_barycentric(std::string_view type) {
   return yes;
 }
 
+// Whether the primitive whose `type` key is `type` may bound a half-space in a scene (its
+// kHalfSpace, where it has one): the side its normal points away from is inside.
+inline bool bounds_half_space(std::string_view type) {
+  bool yes = false;
+  for_each_primitive([&]<typename T>() {
+    if constexpr (requires { T::kHalfSpace; }) yes = yes || (type == T::kType && T::kHalfSpace);
+  });
+  return yes;
+}
+
 }  // namespace raygrade
