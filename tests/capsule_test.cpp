@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 
+#include "accuracy/ladder.h"
+#include "accuracy/settle.h"
 #include "generated.h"
 #include "shape_error.h"
 #include "test_util.h"
@@ -116,6 +119,83 @@ TEST(Capsule, BadParametersAreErrorsAtTheirPaths) {
   EXPECT_EQ(testing::shape_error_path(
                 R"({"type": "capsule", "a": [0, 0, 0], "b": [0, 0, 1], "radius": 0})"),
             "/radius");
+}
+
+// Every level of the precision ladder on rays worked by hand, against the upright capsule
+// (a = (0, 0, 0), b = (0, 0, 4), r = 1):
+// - from (−5, 0, 2) along +x, the side's quadratic t² − 10t + 24 = 0 (across the axis) has
+//   roots 4 and 6, at height 2: t = 4; the ends' have Δ = 100 − 112 < 0;
+// - from (0, 0, 10) along −z, parallel to the axis: the sphere around b gives t = 5 and 7, the
+//   one at z = 5 beyond b; the sphere around a t = 9 (z = 1, inside the span) and 11: t = 5;
+// - from (0, 0, −3) along +z, the sphere around a: t² − 6t + 8 = 0, t = 2 at z = −1;
+// - from (−5, 0, 0) along +x, through the rim at a: the side and the sphere around a both give
+//   t = 4 at height 0;
+// - from (2, −5, 2) along +y, 2 from the axis: a miss (Δ = 100 − 112 < 0 for the side);
+// - from (1, −5, 2) along +y, tangent to the side: t² − 10t + 25 = 0, t = 5;
+// - from (0, −5, 5) along +y, tangent to the end b at (0, 0, 5): t = 5 (the side's roots 4 and 6
+//   lie at height 5, beyond b);
+// - from (0, 0, 2) along +x, inside: the side's roots −1 and 1: t = 1;
+// - from (0, 0, 10) along +z, the capsule behind: the roots are negative, a miss.
+// Every value is exact in every number type, so every level answers exactly.
+TEST(Capsule, EveryLadderLevelOnRaysWorkedByHand) {
+  struct Case {
+    Vec3d origin, direction;
+    std::optional<double> t;
+  };
+  const Case cases[] = {{{-5, 0, 2}, {1, 0, 0}, 4},
+                        {{0, 0, 10}, {0, 0, -1}, 5},
+                        {{0, 0, -3}, {0, 0, 1}, 2},
+                        {{-5, 0, 0}, {1, 0, 0}, 4},
+                        {{2, -5, 2}, {0, 1, 0}, std::nullopt},
+                        {{1, -5, 2}, {0, 1, 0}, 5},
+                        {{0, -5, 5}, {0, 1, 0}, 5},
+                        {{0, 0, 2}, {1, 0, 0}, 1},
+                        {{0, 0, 10}, {0, 0, 1}, std::nullopt}};
+  Capsule capsule = upright();
+  for (const Case& k : cases) {
+    std::optional<AccuracyCase> c = accuracy_case_of(capsule, Ray{k.origin, k.direction});
+    ASSERT_TRUE(c);
+    EXPECT_EQ(primitive_name(c->primitive), "capsule");
+    for (const LadderLevel& level : ladder_levels()) {
+      EXPECT_EQ(level.nearest(*c), k.t) << level.name << " from " << fmt::format("{}", k.origin);
+    }
+  }
+}
+
+// The truth's hits, nearest first, each once: through the rim at a the side's (height 0) and
+// not the end's again; along the axis the two ends, outward normals along ∓z.
+TEST(Capsule, TruthListsEachHitOnceNearestFirst) {
+  std::optional<AccuracyCase> rim = accuracy_case_of(upright(), Ray{{-5, 0, 0}, {1, 0, 0}});
+  ASSERT_TRUE(rim);
+  std::vector<TruthHit> hits = truth_hits(*rim);
+  ASSERT_EQ(hits.size(), 2u);
+  EXPECT_EQ(hits[0].t, 4);
+  EXPECT_EQ(hits[0].normal, (Vec3d{-1, 0, 0}));
+  EXPECT_EQ(hits[1].t, 6);
+  EXPECT_EQ(hits[1].normal, (Vec3d{1, 0, 0}));
+  std::optional<AccuracyCase> axis = accuracy_case_of(upright(), Ray{{0, 0, 10}, {0, 0, -1}});
+  ASSERT_TRUE(axis);
+  hits = truth_hits(*axis);
+  ASSERT_EQ(hits.size(), 2u);
+  EXPECT_EQ(hits[0].t, 5);
+  EXPECT_EQ(hits[0].normal, (Vec3d{0, 0, 1}));
+  EXPECT_EQ(hits[1].t, 11);
+  EXPECT_EQ(hits[1].normal, (Vec3d{0, 0, -1}));
+}
+
+// A far origin near a rim: a point's part is decided by its height in double-double, so the
+// first hit's normal is its part's own. From 1.7e7 away, aimed at (−1, 0, −2⁻³⁰) just beyond
+// the rim at a (every coordinate exact in double): the end sphere's hit, normal (P − a)/r =
+// (−1, 0, −2⁻³⁰) to within 1e-18, not the side's (−1, 0, 0) that a seam tolerance scaled by the
+// origin's distance (about 5e-7) let in.
+TEST(Capsule, FarRayNearTheRimTakesTheRightPart) {
+  Vec3d target{-1, 0, -0x1p-30};
+  Vec3d d{0x1p24, 0, 0x1p21};
+  Intersection x = upright().intersect(ray(target - d, d));
+  ASSERT_FALSE(x.hits.empty());
+  EXPECT_NEAR(x.hits[0].t, 1, 1e-15);
+  EXPECT_NEAR(x.hits[0].normal.x, -1, 1e-15);
+  EXPECT_NEAR(x.hits[0].normal.z, -0x1p-30, 1e-15);
 }
 
 // The distance from p to the segment a–b.

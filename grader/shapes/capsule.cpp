@@ -2,7 +2,10 @@
 #include "shapes/capsule.h"
 
 #include <cmath>
+#include <tuple>
 
+#include "accuracy/accuracy_case.h"
+#include "accuracy/split_mix.h"
 #include "math/unit_vector.h"
 #include "shapes/cylinder.h"
 #include "shapes/describe.h"
@@ -40,13 +43,16 @@ Shape::NormalRule Capsule::normal_rule() const {
 Intersection Capsule::intersect(const Ray& ray) const {
   if (std::optional<Intersection> x = intersect_rescaled(*this, ray)) return *x;
   Intersection out;
-  double scale = length(ray.origin - a_) + length(ray.direction) + radius_ + height_;
-  double seam = kSeamRelative * scale;
-  // The roots and normals in double-double, rounded once, as the sphere's and the cylinder's.
+  // The roots, normals and heights along the axis in double-double, rounded once, as the
+  // sphere's and the cylinder's: a point's part is then decided to far below the seam, which
+  // is relative to the capsule's own size (not to a far origin's).
+  double seam = kSeamRelative * (radius_ + height_);
   Vec3dd o(ray.origin), d(ray.direction), a(a_), b(b_);
   Vec3dd axis = unit_dd(b - a);
   DoubleDouble r(radius_);
-  auto height_of = [&](const Vec3d& p) { return dot(p - a_, axis_); };
+  auto height_of = [&](const DoubleDouble& t) {
+    return static_cast<double>(dot((o - a) + t * d, axis));
+  };
   // The side
   if (length(cross(axis_, ray.direction)) > kAxisParallelRelative * length(ray.direction)) {
     Roots<DoubleDouble> roots = cylinder_side_roots(o, d, a, axis, r);
@@ -55,7 +61,7 @@ Intersection Capsule::intersect(const Ray& ray) const {
       double t = static_cast<double>(ts[i]);
       if (!ray.accepts(t)) continue;
       Vec3d p = ray.at(t);
-      double s = height_of(p);
+      double s = height_of(ts[i]);
       if (s < -seam || s > height_ + seam) continue;
       Vec3dd v = (o - a) + ts[i] * d;
       out.hits.push_back(Hit{t, p, unit_rounded(v - dot(v, axis) * axis), std::nullopt, "side"});
@@ -70,7 +76,7 @@ Intersection Capsule::intersect(const Ray& ray) const {
       double t = static_cast<double>(ts[i]);
       if (!ray.accepts(t)) continue;
       Vec3d p = ray.at(t);
-      double s = height_of(p);
+      double s = height_of(ts[i]);
       if (end == 0 ? s > seam : s < height_ - seam) continue;
       out.hits.push_back(
           Hit{t, p, unit_rounded((o - c) + ts[i] * d), std::nullopt, end == 0 ? "end a" : "end b"});
@@ -182,6 +188,124 @@ nlohmann::ordered_json Capsule::schema() {
   ]
 }
 )json");
+}
+
+// The accuracy study's cases of capsules.
+
+void Capsule::Ladder::random_case(SplitMix& rng, std::vector<Vec3d>& points, double& radius) {
+  Vec3d a = rng.point(0.5);
+  double length = rng.uniform(0.5, 1.5);
+  points = {a, a + length * rng.unit_vector()};
+  radius = rng.uniform(0.2, 0.8);
+}
+
+void Capsule::Ladder::hard_cases(int round, SplitMix& /*shared*/, std::vector<AccuracyCase>& out) {
+  if (round != kOwnStreamRound) return;
+  SplitMix rng(20261125);
+  auto add = [&](std::string id, std::string group, Vec3d o, Vec3d d, Vec3d a, Vec3d b, double r) {
+    out.push_back(
+        make_case(std::move(id), std::move(group), primitive_of<Capsule>(), o, d, {a, b}, r));
+  };
+  // A random capsule: a near the origin, b at 0.5 to 3 from it.
+  auto capsule = [&](double& r) {
+    Vec3d a = rng.point(1);
+    r = rng.uniform(0.3, 1.5);
+    double length = rng.uniform(0.5, 3);
+    return std::pair{a, a + length * rng.unit_vector()};
+  };
+  // The ray from `distance` away, coming from the side of `outward`, aimed at `target`.
+  auto ray_to = [&](Vec3d target, Vec3d outward, double distance) {
+    Vec3d o = target + distance * normalized(rng.unit_vector() + 2.0 * outward);
+    return std::pair{o, target - o};
+  };
+  // Through a rim: aimed at e + r(1 + δ)u + δ' r â, u across the axis, δ and δ' = ±10^-k.
+  // (Each draw is a statement of its own, so that the order of the draws is the same with every
+  // compiler.)
+  for (int i = 0; i < 10; ++i) {
+    double r = 0;
+    auto [a, b] = capsule(r);
+    Vec3d axis = normalized(b - a), u = perpendicular(axis, rng);
+    double across = offset(rng, 6, 16), along = offset(rng, 6, 16);
+    Vec3d target = (i % 2 == 0 ? a : b) + (r * (1 + across)) * u + (r * along) * axis;
+    auto [o, d] = ray_to(target, u, 5);
+    add(fmt::format("capsule-rim-{}", i), "capsule-rim", o, d, a, b, r);
+  }
+  // A point at r(1 + δ) from the axis, inside the segment's span, u across the axis, and w
+  // across both: a ray through it along w (and a little along the axis) grazes the side.
+  struct SidePoint {
+    Vec3d a, b, axis, w, target;
+    double r = 0;
+  };
+  auto side_point = [&](int k_lo, int k_hi) {
+    SidePoint p;
+    std::tie(p.a, p.b) = capsule(p.r);
+    p.axis = normalized(p.b - p.a);
+    Vec3d u = perpendicular(p.axis, rng);
+    p.w = cross(p.axis, u);
+    double height = rng.uniform(0.2, 0.8), delta = offset(rng, k_lo, k_hi);
+    p.target = p.a + height * (p.b - p.a) + (p.r * (1 + delta)) * u;
+    return p;
+  };
+  // Tangent to the side, from 5 away.
+  for (int i = 0; i < 5; ++i) {
+    SidePoint p = side_point(4, 15);
+    Vec3d d = p.w + rng.uniform(-0.3, 0.3) * p.axis;
+    add(fmt::format("capsule-side-tangent-{}", i), "grazing", p.target - 5.0 * d, d, p.a, p.b, p.r);
+  }
+  // Tangent to an end: a line at r(1 + δ) from a or b, touching the sphere beyond its end.
+  for (int i = 0; i < 5; ++i) {
+    double r = 0;
+    auto [a, b] = capsule(r);
+    Vec3d axis = normalized(b - a), u = perpendicular(axis, rng);
+    bool at_a = i % 2 == 0;
+    Vec3d e = at_a ? a : b, beyond = at_a ? -1.0 * axis : axis;
+    Vec3d v = normalized(beyond + rng.uniform(0, 1.5) * u);
+    Vec3d d = perpendicular(v, rng);
+    Vec3d target = e + (r * (1 + offset(rng, 4, 15))) * v;
+    add(fmt::format("capsule-end-tangent-{}", i), "grazing", target - 5.0 * d, d, a, b, r);
+  }
+  // Far capsules: at 1e4 to 1e8, the ray aimed within 1e-1 to 1e-10 of a rim.
+  for (int i = 0; i < 5; ++i) {
+    double r = 1;
+    Vec3d a = rng.point(1);
+    double length = rng.uniform(0.5, 3);
+    Vec3d b = a + length * rng.unit_vector();
+    Vec3d axis = normalized(b - a), u = perpendicular(axis, rng);
+    Vec3d target = (i % 2 == 0 ? a : b) + (1 + offset(rng, 1, 10)) * u;
+    auto [o, d] = ray_to(target, u, std::pow(10.0, rng.uniform(4, 8)));
+    add(fmt::format("far-capsule-{}", i), "far-capsule", o, d, a, b, r);
+  }
+  // Grazing the side from 10^8 to 10^10 away across the axis.
+  for (int i = 0; i < 4; ++i) {
+    SidePoint p = side_point(3, 12);
+    Vec3d o = p.target - std::pow(10.0, rng.uniform(8, 10)) * p.w;
+    add(fmt::format("grazing-capsule-{}", i), "grazing", o, p.target - o, p.a, p.b, p.r);
+  }
+  // Huge coordinates: random capsules shifted by 1e8.
+  for (int i = 0; i < 3; ++i) {
+    Vec3d shift = 1e8 * rng.unit_vector();
+    std::vector<Vec3d> p;
+    double r = 0;
+    random_case(rng, p, r);
+    Vec3d o = 4.0 * rng.unit_vector();
+    Vec3d target = 0.5 * (p[0] + p[1]) + rng.point(0.5);
+    add(fmt::format("huge-coordinates-capsule-{}", i), "huge-coordinates", o + shift, target - o,
+        p[0] + shift, p[1] + shift, r);
+  }
+  // Worked by hand: the capsule a = (0, 0, 0), b = (0, 0, 4), r = 1. From (−5, 0, 2) along +x
+  // the side at t = 4 in (−1, 0, 2); from (0, 0, 10) along −z the end b at t = 5 in (0, 0, 5);
+  // from (−5, 0, 0) along +x the rim at a, t = 4 in (−1, 0, 0); from (0.6, 0, −5) along +z the
+  // end a at z = −0.8 (0.6² + 0.8² = 1), t = 4.2; from (2, −5, 2) along +y a miss (2 from the
+  // axis); from (0, 0, 2) along +x, inside, the side at t = 1; from (0, 0, 10) along +z, the
+  // capsule behind: a miss.
+  Vec3d a{0, 0, 0}, b{0, 0, 4};
+  add("capsule-by-hand-0", "capsule-rim", {-5, 0, 2}, {1, 0, 0}, a, b, 1);
+  add("capsule-by-hand-1", "capsule-rim", {0, 0, 10}, {0, 0, -1}, a, b, 1);
+  add("capsule-by-hand-2", "capsule-rim", {-5, 0, 0}, {1, 0, 0}, a, b, 1);
+  add("capsule-by-hand-3", "capsule-rim", {0.6, 0, -5}, {0, 0, 1}, a, b, 1);
+  add("capsule-by-hand-4", "capsule-rim", {2, -5, 2}, {0, 1, 0}, a, b, 1);
+  add("capsule-by-hand-5", "capsule-rim", {0, 0, 2}, {1, 0, 0}, a, b, 1);
+  add("capsule-by-hand-6", "capsule-rim", {0, 0, 10}, {0, 0, 1}, a, b, 1);
 }
 
 }  // namespace raygrade

@@ -1,17 +1,86 @@
 // Capsule: the segment ab swept by a sphere of radius r (a cylinder with two hemispherical ends).
 #pragma once
 
+#include <algorithm>
+#include <optional>
+#include <utility>
+#include <vector>
+
 #include "generate/outcome.h"
+#include "shapes/cylinder.h"
 #include "shapes/shape.h"
+#include "shapes/sphere.h"
 #include "shapes/surface_point.h"
 
 namespace raygrade {
+
+struct AccuracyCase;
+class SplitMix;
+
+// Which part of a capsule {a, b} a point P = O + tD of its side's cylinder or of an end sphere
+// belongs to, by the sign of the height along u = b − a (any length: only the sign counts):
+// the side where (P − a)·u ≥ 0 and (P − b)·u ≤ 0, the end a where (P − a)·u ≤ 0, the end b
+// where (P − b)·u ≥ 0. P − a is taken as (O − a) + tD, so that a far origin keeps its digits.
+template <typename T>
+T capsule_height(const Vec3<T>& o, const Vec3<T>& d, const T& t, const Vec3<T>& end,
+                 const Vec3<T>& u) {
+  return dot((o - end) + t * d, u);
+}
+
+// The nearest hit at t ≥ 0 of a capsule from the roots of its side and of its end spheres
+// (side_roots and end_roots(i) give them, ascending): every root kept lies on the capsule's
+// surface, so the smallest is the capsule's first hit.
+template <typename T, typename SideRoots, typename EndRoots>
+bool capsule_nearest(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& a, const Vec3<T>& b,
+                     SideRoots&& side_roots, EndRoots&& end_roots, T& t) {
+  Vec3<T> u = b - a;
+  bool found = false;
+  auto consider = [&](const T& x) {
+    if (x >= T(0) && (!found || x < t)) {
+      t = x;
+      found = true;
+    }
+  };
+  Roots<T> side = side_roots();
+  T side_t[2] = {side.t0, side.t1};
+  for (int i = 0; i < side.count; ++i) {
+    if (capsule_height(o, d, side_t[i], a, u) >= T(0) &&
+        capsule_height(o, d, side_t[i], b, u) <= T(0))
+      consider(side_t[i]);
+  }
+  for (int end = 0; end < 2; ++end) {
+    Roots<T> k = end_roots(end);
+    T end_t[2] = {k.t0, k.t1};
+    for (int i = 0; i < k.count; ++i) {
+      T s = capsule_height(o, d, end_t[i], end == 0 ? a : b, u);
+      if (end == 0 ? s <= T(0) : s >= T(0)) consider(end_t[i]);
+    }
+  }
+  return found;
+}
+
+// The real roots of a t² + b t + c = 0 as a textbook takes them: (−b ∓ √Δ)/2a.
+template <typename T>
+Roots<T> naive_quadratic_roots(T a, T b, T c) {
+  using std::sqrt;
+  Roots<T> out;
+  T disc = b * b - T(4) * a * c;
+  if (a == T(0) || disc < T(0)) return out;
+  T s = sqrt(disc);
+  out.count = 2;
+  out.t0 = (-b - s) / (T(2) * a);
+  out.t1 = (-b + s) / (T(2) * a);
+  return out;
+}
 
 // The hits are the side's (the cylinder of radius r around ab, where the height s along the
 // axis from a lies in [0, h], h = |b − a|) and the end spheres' (around a where s ≤ 0, around b
 // where s ≥ h). A hit on the rim between the side and an end is found by both and listed once.
 class Capsule final : public Shape {
  public:
+  // What the accuracy study needs of a capsule (accuracy/ladder_primitives.h).
+  struct Ladder;
+
   Capsule(Vec3d a, Vec3d b, double radius);
   static std::unique_ptr<Shape> read(const Cursor& object);
 
@@ -47,6 +116,104 @@ class Capsule final : public Shape {
   double radius_;
   Vec3d axis_;     // unit, from a to b
   double height_;  // |b − a|
+};
+
+// The case's points: {a, b}; its radius.
+struct Capsule::Ladder {
+  static constexpr std::size_t kPoints = 2;
+  static constexpr bool kMorePoints = false, kRadius = true;
+  static constexpr int kDirectionPoint = -1;
+
+  // The side's roots (the cylinder's stable formulas, around the axis normalized at the
+  // precision of the computation) and the end spheres' (the sphere's), each kept on its part.
+  template <typename T>
+  [[gnu::always_inline]] static bool reference(const Vec3<T>& o, const Vec3<T>& d,
+                                               const std::vector<Vec3<T>>& p, const T& r, T& t) {
+    using std::sqrt;
+    Vec3<T> u = p[1] - p[0];
+    Vec3<T> axis = u / sqrt(dot(u, u));
+    return capsule_nearest(
+        o, d, p[0], p[1], [&] { return cylinder_side_roots(o, d, p[0], axis, r); },
+        [&](int end) { return sphere_roots(o, d, p[end], r); }, t);
+  }
+
+  // The textbook quadratics: the side's on the components across the unit axis, each end's
+  // with b = 2 d·(o − c); the roots (−b ± √Δ)/2a, the height of P = O + tD along the axis.
+  template <typename T>
+  static std::optional<T> naive(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p,
+                                const T& r) {
+    using std::sqrt;
+    Vec3<T> u = p[1] - p[0];
+    Vec3<T> axis = u / sqrt(dot(u, u));
+    T t;
+    auto side = [&] {
+      Vec3<T> f = o - p[0];
+      Vec3<T> fp = f - dot(f, axis) * axis, dp = d - dot(d, axis) * axis;
+      return naive_quadratic_roots(dot(dp, dp), T(2) * dot(fp, dp), dot(fp, fp) - r * r);
+    };
+    auto end = [&](int i) {
+      Vec3<T> f = o - p[i];
+      return naive_quadratic_roots(dot(d, d), T(2) * dot(f, d), dot(f, f) - r * r);
+    };
+    if (!capsule_nearest(o, d, p[0], p[1], side, end, t)) return std::nullopt;
+    return t;
+  }
+
+  // Every hit with its outward normal, nearest first: on the side the component across the
+  // axis, on an end from its centre. A rim point (height 0 at a, or at b) is the side's: the ends
+  // keep only the points strictly beyond their end, so that it is listed once.
+  template <typename T, typename Add>
+  static void hits(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p, const T& r,
+                   Add&& add) {
+    using std::sqrt;
+    Vec3<T> u = p[1] - p[0];
+    Vec3<T> axis = u / sqrt(dot(u, u));
+    std::vector<std::pair<T, Vec3<T>>> found;
+    Roots<T> side = cylinder_side_roots(o, d, p[0], axis, r);
+    T side_t[2] = {side.t0, side.t1};
+    for (int i = 0; i < side.count; ++i) {
+      const T& t = side_t[i];
+      if (capsule_height(o, d, t, p[0], u) >= T(0) && capsule_height(o, d, t, p[1], u) <= T(0)) {
+        Vec3<T> v = (o - p[0]) + t * d;
+        found.emplace_back(t, v - dot(v, axis) * axis);
+      }
+    }
+    for (int end = 0; end < 2; ++end) {
+      Roots<T> k = sphere_roots(o, d, p[end], r);
+      T end_t[2] = {k.t0, k.t1};
+      for (int i = 0; i < k.count; ++i) {
+        T s = capsule_height(o, d, end_t[i], p[end], u);
+        if (end == 0 ? s < T(0) : s > T(0))
+          found.emplace_back(end_t[i], (o - p[end]) + end_t[i] * d);
+      }
+    }
+    std::sort(found.begin(), found.end(),
+              [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (const auto& [t, normal] : found) add(t, normal);
+  }
+
+  // (P − Q)/r, Q the point of the segment nearest P.
+  static std::optional<Vec3d> naive_normal(const std::vector<Vec3d>& p, double r,
+                                           const Vec3d& point) {
+    Vec3d u = p[1] - p[0];
+    double s = dot(point - p[0], u) / dot(u, u);
+    s = s < 0 ? 0 : s > 1 ? 1 : s;
+    return (point - (p[0] + s * u)) / r;
+  }
+
+  static bool case_of(const Capsule& c, std::vector<Vec3d>& points, double& radius) {
+    points = {c.a_, c.b_};
+    radius = c.radius_;
+    return true;
+  }
+  static std::unique_ptr<Shape> shape_of(const std::vector<Vec3d>& p, double r) {
+    return std::make_unique<Capsule>(p[0], p[1], r);
+  }
+
+  static void random_case(SplitMix& rng, std::vector<Vec3d>& points, double& radius);
+  // Its own stream, in round kOwnStreamRound: rays through the rims, tangent to the side and to
+  // an end, grazing, far capsules, huge coordinates, and rays worked by hand.
+  static void hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out);
 };
 
 }  // namespace raygrade
