@@ -66,7 +66,11 @@ function hardCaseBank() {
     polygon: (c) => ({type: 'polygon', vertices: c.points}),
     cylinder: (c) => ({type: 'cylinder', base: c.points[0], axis: c.points[1], radius: c.radius}),
     box: (c) => ({type: 'box', min: c.points[0], max: c.points[1]}),
+    disk: (c) => ({type: 'disk', center: c.points[0], normal: c.points[1], radius: c.radius}),
+    capsule: (c) => ({type: 'capsule', a: c.points[0], b: c.points[1], radius: c.radius}),
   };
+  const unknown = cases.filter((c) => !objects[c.primitive]).map((c) => c.primitive);
+  if (unknown.length) throw new Error(`hard cases of a primitive this test cannot pose: ${unknown[0]}`);
   const problems = cases.map((c) => ({
     id: c.id, kind: 'intersect', ray: {origin: c.origin, direction: c.direction},
     object: objects[c.primitive](c)}));
