@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """No output of raygrade holds a non-finite number.
 
-Usage: finite_outputs.py RAYGRADE SOURCE_DIR WORK_DIR
+Usage: finite_outputs.py RAYGRADE SOURCE_DIR WORK_DIR [EVERY]
+
+EVERY: take every EVERY-th case of the corpus (default 1: all); the sanitizer build takes 4.
 
 Runs every command that prints numbers (solve in every format, with every method; grade in
 every format; check in every format; solutions in every format) on the bundled bank, on the
@@ -78,10 +80,10 @@ def scan_folder(folder, where):
             scan_text(text, f"{where}/{os.path.relpath(path, folder)}", name.endswith(".json"))
 
 
-def corpus_problems(corpus_path, out_path):
-    """The hard cases as intersect problems."""
+def corpus_problems(corpus_path, out_path, every):
+    """The hard cases as intersect problems (every `every`-th one)."""
     with open(corpus_path) as f:
-        cases = json.load(f)["cases"]
+        cases = json.load(f)["cases"][::every]
     problems = []
     for c in cases:
         p = c["points"]
@@ -94,8 +96,14 @@ def corpus_problems(corpus_path, out_path):
             obj = {"type": kind, "vertices": p}
         elif kind == "cylinder":
             obj = {"type": "cylinder", "base": p[0], "axis": p[1], "radius": c["radius"]}
-        else:
+        elif kind == "box":
             obj = {"type": "box", "min": p[0], "max": p[1]}
+        elif kind == "disk":
+            obj = {"type": "disk", "center": p[0], "normal": p[1], "radius": c["radius"]}
+        elif kind == "capsule":
+            obj = {"type": "capsule", "a": p[0], "b": p[1], "radius": c["radius"]}
+        else:
+            sys.exit(f"finite_outputs: hard cases of a primitive it cannot pose: {kind}")
         problems.append({"id": c["id"].replace("/", "-"), "title": c["id"],
                          "statement": f"The hard case {c['id']}.",
                          "ray": {"origin": c["origin"], "direction": c["direction"]},
@@ -127,9 +135,11 @@ def submissions_from(raygrade, problems, folder, tag):
 
 def main():
     raygrade, source, work = sys.argv[1], sys.argv[2], sys.argv[3]
+    # A sanitizer build checks the code paths rather than the volume: every 4th hard case.
+    every = int(sys.argv[4]) if len(sys.argv) > 4 else 1
     os.makedirs(work, exist_ok=True)
     corpus = os.path.join(work, "hard_cases_problems.json")
-    corpus_problems(os.path.join(source, "tests/data/hard_cases.json"), corpus)
+    corpus_problems(os.path.join(source, "tests/data/hard_cases.json"), corpus, every)
     # The corpus holds a few polygons that the problem reader rejects as non-planar beyond its
     # tolerance (exit 2, the rest still answered).
     banks = {
