@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
+#include "accuracy/ladder.h"
+#include "accuracy/settle.h"
 #include "generated.h"
 #include "shape_error.h"
 #include "test_util.h"
@@ -109,6 +112,100 @@ TEST(Cone, RayAlongALineOfTheSideIsContained) {
   auto x = open_cone().intersect(ray({-1, 0, 0}, {1, 0, 2}));
   EXPECT_TRUE(x.hits.empty());
   EXPECT_TRUE(x.contained);
+}
+
+// A far ray just below the apex: a point's part is decided by its height in double-double,
+// with a seam relative to the cone's own size. The cone B = (0, 0, 0), r = 3, h = 4 (slant 5);
+// the ray along +x at height 4 − δ, δ = 2⁻²⁸, from 10⁶ away, crosses the side where the radius
+// is 3δ/4: at x = ∓3·2⁻³⁰, t = 10⁶ ∓ 3·2⁻³⁰ (exact in double), with the side's normals
+// (∓4, 0, 3)/5. A seam scaled by the origin's distance (about 1.4e-8 > δ) took both for the
+// apex, normal (0, 0, 1), and listed them as one hit.
+TEST(Cone, FarRayNearTheApexTakesTheSide) {
+  Cone cone({0, 0, 0}, {0, 0, 1}, 3, 4, false);
+  const double delta = 0x1p-28, x = 3 * 0x1p-30;
+  Intersection hits = cone.intersect(ray({-1e6, 0, 4 - delta}, {1, 0, 0}));
+  ASSERT_EQ(hits.hits.size(), 2u);
+  expect_hit(hits.hits[0], 1e6 - x, {-x, 0, 4 - delta}, {-0.8, 0, 0.6});
+  expect_hit(hits.hits[1], 1e6 + x, {x, 0, 4 - delta}, {0.8, 0, 0.6});
+}
+
+// A far ray along +z just beside the rim of the capped cone B = (0, 0, 0), r = 3, h = 4, from
+// 10⁶ away, δ = 2⁻²⁸. Outside, at 3 + δ from the axis: it misses the cap (|P − B| > r) and the
+// side (whose roots lie below the base, at s = −4δ/3). Inside, at 3 − δ: the cap at t = 10⁶
+// with normal (0, 0, −1), then the side where h|q⊥| = r(h − s), s = 4δ/3, normal (4, 0, 3)/5:
+// two hits 4δ/3 apart. A seam scaled by the origin's distance (about 1.4e-8 > δ) let the
+// outside ray hit, and merged the two inside hits into one.
+TEST(Cone, FarRayBesideTheRimTakesTheRightParts) {
+  Cone cone({0, 0, 0}, {0, 0, 1}, 3, 4, true);
+  const double delta = 0x1p-28;
+  EXPECT_TRUE(cone.intersect(ray({3 + delta, 0, -1e6}, {0, 0, 1})).hits.empty());
+  Intersection in = cone.intersect(ray({3 - delta, 0, -1e6}, {0, 0, 1}));
+  ASSERT_EQ(in.hits.size(), 2u);
+  expect_hit(in.hits[0], 1e6, {3 - delta, 0, 0}, {0, 0, -1});
+  EXPECT_NEAR(in.hits[1].t, 1e6 + 4 * delta / 3, 2e-10);
+  EXPECT_NEAR(in.hits[1].normal.x, 0.8, 1e-15);
+  EXPECT_NEAR(in.hits[1].normal.z, 0.6, 1e-15);
+}
+
+// Every level of the precision ladder on rays worked by hand, against the cone B = (0, 0, 0),
+// apex (0, 0, 1), r = 1 (the radius at height s is 1 − s; v = (0, 0, 1), so the side's
+// quadratic is |f × v + t D × v|² = (w − tα)², w = 1 − f_z, α = D_z; the textbook's cos²θ is 1/2):
+// - from (−5, 0, 0.5) along +x: a = 1, b/2 = −5, c = 24.75, Δ' = 0.25: t = 4.5 and 5.5, t = 4.5;
+// - from (−2, 0, 1) along +x, through the apex: a = 1, b/2 = −2, c = 4, Δ' = 0: t = 2;
+// - from (−5, 0, 0) along +x, through the rim: a = 1, b/2 = −5, c = 24: t = 4 (height 0) and 6;
+// - from (0.5, −5, 0.5) along +y, tangent: a = 1, b/2 = −5, c = 25, Δ' = 0: t = 5;
+// - from (0, 0, −0.5) along (1, 0, 1), parallel to the line of the side from (−1, 0, 0) to the
+//   apex: a = 0, b/2 = 1.5, c = −2.25: one root t = 0.75, at (0.75, 0, 0.25). The textbook
+//   divides by 2a: the naive levels find no hit;
+// - from (2, −5, 0.5) along +y, 2 from the axis: a miss (Δ' = 25 − 28.75 < 0);
+// - from (−5, 0, 1.5) along +x: the roots lie on the other nappe (height 1.5 > h): a miss;
+// - from (0, 0, 0.5) along +x, inside: roots −0.5 and 0.5: t = 0.5;
+// - from (0, 0, 3) along +z, the cone behind: the double root t = −2: a miss;
+// - from (0, 0, −5) along +z, through the open base along the axis: a = −1, b/2 = 6, c = −36,
+//   Δ' = 0: the apex at t = 6.
+// Every value is exact in every number type, so every level answers exactly.
+TEST(Cone, EveryLadderLevelOnRaysWorkedByHand) {
+  struct Case {
+    Vec3d origin, direction;
+    std::optional<double> t;
+    bool textbook_divides_by_zero = false;
+  };
+  const Case cases[] = {{{-5, 0, 0.5}, {1, 0, 0}, 4.5},
+                        {{-2, 0, 1}, {1, 0, 0}, 2},
+                        {{-5, 0, 0}, {1, 0, 0}, 4},
+                        {{0.5, -5, 0.5}, {0, 1, 0}, 5},
+                        {{0, 0, -0.5}, {1, 0, 1}, 0.75, true},
+                        {{2, -5, 0.5}, {0, 1, 0}, std::nullopt},
+                        {{-5, 0, 1.5}, {1, 0, 0}, std::nullopt},
+                        {{0, 0, 0.5}, {1, 0, 0}, 0.5},
+                        {{0, 0, 3}, {0, 0, 1}, std::nullopt},
+                        {{0, 0, -5}, {0, 0, 1}, 6}};
+  Cone cone({0, 0, 0}, {0, 0, 1}, 1, 1, false);
+  for (const Case& k : cases) {
+    std::optional<AccuracyCase> c = accuracy_case_of(cone, Ray{k.origin, k.direction});
+    ASSERT_TRUE(c);
+    EXPECT_EQ(primitive_name(c->primitive), "cone");
+    for (const LadderLevel& level : ladder_levels()) {
+      bool naive = level.name.starts_with("naive");
+      std::optional<double> expected = naive && k.textbook_divides_by_zero ? std::nullopt : k.t;
+      EXPECT_EQ(level.nearest(*c), expected)
+          << level.name << " from " << fmt::format("{}", k.origin);
+    }
+  }
+}
+
+// A cone is a case of the study only when the case gives back the very cone the solver
+// intersects: not with its cap, nor when apex − B is not exactly h·â (the unit axis of (1, 1, 0)
+// is irrational).
+TEST(Cone, OnlyAnExactOpenConeIsACase) {
+  Ray r{{0, 0, -5}, {0, 0, 1}};
+  EXPECT_TRUE(accuracy_case_of(Cone({1, 2, 3}, {0, 2, 0}, 1, 3, false), r));
+  EXPECT_FALSE(accuracy_case_of(Cone({0, 0, 0}, {0, 0, 1}, 1, 1, true), r));
+  EXPECT_FALSE(accuracy_case_of(Cone({0, 0, 0}, {1, 1, 0}, 1, 1, false), r));
+  std::optional<AccuracyCase> c = accuracy_case_of(Cone({1, 2, 3}, {0, 2, 0}, 1, 3, false), r);
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->points, (std::vector<Vec3d>{{1, 2, 3}, {1, 5, 3}}));
+  EXPECT_EQ(c->radius, 1);
 }
 
 // The default axis is +z, and the worked derivation carries a, b, c and Δ of the first case.

@@ -16,6 +16,7 @@ and one with every t off by 0.1%, so that the feedback on wrong numbers is print
 Prints one line per fault and exits 1 if there is any.
 """
 import json
+import math
 import os
 import re
 import subprocess
@@ -102,6 +103,10 @@ def corpus_problems(corpus_path, out_path, every):
             obj = {"type": "disk", "center": p[0], "normal": p[1], "radius": c["radius"]}
         elif kind == "capsule":
             obj = {"type": "capsule", "a": p[0], "b": p[1], "radius": c["radius"]}
+        elif kind == "cone":
+            axis = [p[1][i] - p[0][i] for i in range(3)]
+            obj = {"type": "cone", "base": p[0], "axis": axis, "radius": c["radius"],
+                   "height": math.sqrt(sum(x * x for x in axis))}
         else:
             sys.exit(f"finite_outputs: hard cases of a primitive it cannot pose: {kind}")
         problems.append({"id": c["id"].replace("/", "-"), "title": c["id"],

@@ -12,7 +12,6 @@
 
 #include "accuracy/certified.h"
 #include "accuracy/ladder.h"
-#include "accuracy/settle.h"
 #include "grading/grade.h"
 #include "reports/json_report.h"
 #include "reports/render.h"
@@ -134,15 +133,10 @@ void check_primitive() {
       EXPECT_TRUE(wrong.has_mistake(mistake)) << mistake;
     }
   }
-  if constexpr (HasLadder<T>) {
-    check_ladder<T>();
-  } else {
-    // Outside the precision study: no case, so that no level answers for it; the solver
-    // answers it in double.
-    std::unique_ptr<Shape> shape = testing::shape(examples.front().dump());
-    Vec3d w{0.36, 0.48, 0.8};
-    EXPECT_FALSE(accuracy_case_of(*shape, Ray{shape->center() + 10.0 * w, -1.0 * w}));
-  }
+  // Every primitive of the list is in the precision study.
+  static_assert(HasLadder<T>,
+                "a primitive joins the precision study (accuracy/ladder_primitives.h)");
+  check_ladder<T>();
 }
 
 TEST(Primitives, EveryPrimitiveSolvesRendersAndGradesItsExamples) {

@@ -68,6 +68,10 @@ function hardCaseBank() {
     box: (c) => ({type: 'box', min: c.points[0], max: c.points[1]}),
     disk: (c) => ({type: 'disk', center: c.points[0], normal: c.points[1], radius: c.radius}),
     capsule: (c) => ({type: 'capsule', a: c.points[0], b: c.points[1], radius: c.radius}),
+    cone: (c) => {
+      const axis = [0, 1, 2].map((i) => c.points[1][i] - c.points[0][i]);
+      return {type: 'cone', base: c.points[0], axis, radius: c.radius, height: Math.hypot(...axis)};
+    },
   };
   const unknown = cases.filter((c) => !objects[c.primitive]).map((c) => c.primitive);
   if (unknown.length) throw new Error(`hard cases of a primitive this test cannot pose: ${unknown[0]}`);

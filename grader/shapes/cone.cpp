@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "accuracy/accuracy_case.h"
+#include "accuracy/split_mix.h"
 #include "math/robust.h"
 #include "math/unit_vector.h"
 #include "shapes/describe.h"
@@ -12,21 +14,6 @@ namespace raygrade {
 namespace {
 
 using DD = DoubleDouble;
-
-// The side's quadratic, in double-double from the exact O − B: for whole-number data along a
-// coordinate axis a, b and c are exact, so that a tangent's or the apex's double root is found
-// as one (Δ = 0), not lost to rounding.
-struct ConeQuadratic {
-  DD a, half_b, c, fa, da;
-};
-
-ConeQuadratic cone_quadratic(const Vec3dd& f, const Vec3dd& d, const Vec3dd& axis, DD r, DD h) {
-  DD fa = dot(f, axis), da = dot(d, axis);
-  Vec3dd fp = f - fa * axis, dp = d - da * axis;
-  DD w = h - fa, hh = h * h, rr = r * r;
-  return {hh * dot(dp, dp) - rr * (da * da), hh * dot(fp, dp) + rr * (w * da),
-          hh * dot(fp, fp) - rr * (w * w), fa, da};
-}
 
 }  // namespace
 
@@ -72,63 +59,207 @@ std::string Cone::contained_line() const {
 Intersection Cone::intersect(const Ray& ray) const {
   if (std::optional<Intersection> x = intersect_rescaled(*this, ray)) return *x;
   Intersection out;
+  // The side's quadratic (cone_side, the study's template) in double-double from the exact
+  // O − A: for whole-number data along a coordinate axis a, b, c and Δ' are exact, so that a
+  // tangent's or the apex's double root is found as one (Δ' = 0), not lost to rounding. A
+  // point's part is decided by its height in double-double, with a seam relative to the cone's
+  // own size (not to a far origin's).
+  double seam = kSeamRelative * (radius_ + height_);
   Vec3dd o(ray.origin), d(ray.direction), base(base_);
-  Vec3dd axis = unit_dd(Vec3dd(axis_given_));
-  Vec3dd f = o - base;
-  DD r(radius_), h(height_);
-  ConeQuadratic k = cone_quadratic(f, d, axis, r, h);
-  double scale = length(ray.origin - base_) + length(ray.direction) + radius_ + height_;
-  double seam = kSeamRelative * scale;
-  // Compute the side's roots
-  std::vector<DD> roots;
-  if (k.a == DD(0)) {
-    if (k.half_b == DD(0)) {
-      if (k.c == DD(0) && k.da != DD(0)) {
-        // The ray's line is a line of the side: contained where 0 ≤ s ≤ h within the interval.
-        double t0 = static_cast<double>(-k.fa / k.da), t1 = static_cast<double>((h - k.fa) / k.da);
-        if (t1 < t0) std::swap(t0, t1);
-        out.contained = t0 <= ray.t_max && t1 >= ray.t_min;
-        return out;
-      }
-    } else {
-      roots.push_back(-k.c / (DD(2) * k.half_b));
-    }
-  } else {
-    DD disc = k.half_b * k.half_b - k.a * k.c;
-    if (disc == DD(0)) {
-      roots.push_back(-k.half_b / k.a);
-    } else if (DD(0) < disc) {
-      DD q = -(k.half_b + sign_of(k.half_b) * sqrt(disc));
-      roots.push_back(k.c / q);
-      roots.push_back(q / k.a);
-    }
+  DD r(radius_);
+  Vec3dd apex = apex_ ? Vec3dd(*apex_) : base + DD(height_) * unit_dd(Vec3dd(axis_given_));
+  Vec3dd v = apex - base, axis = unit_dd(v);
+  DD h = apex_ ? sqrt(dot(v, v)) : DD(height_);
+  ConeSide<DD> k = cone_side(o, d, apex, v, r);
+  bool contained = false;
+  Roots<DD> roots = cone_side_roots(k, contained);
+  if (contained && k.alpha != DD(0)) {
+    // The ray's line is a line of the side: contained where −v·v ≤ γ + tα ≤ 0 within the
+    // interval.
+    double t0 = static_cast<double>((-k.vv - k.gamma) / k.alpha),
+           t1 = static_cast<double>(-k.gamma / k.alpha);
+    if (t1 < t0) std::swap(t0, t1);
+    out.contained = t0 <= ray.t_max && t1 >= ray.t_min;
+    return out;
   }
-  for (const DD& t_dd : roots) {
-    double t = static_cast<double>(t_dd);
+  DD ts[2] = {roots.t0, roots.t1};
+  for (int i = 0; i < roots.count; ++i) {
+    double t = static_cast<double>(ts[i]);
     if (!ray.accepts(t)) continue;
-    double s = static_cast<double>(k.fa + t_dd * k.da);
+    // The height above the base: h + (γ + tα)/h.
+    double s = static_cast<double>(h + (k.gamma + ts[i] * k.alpha) / h);
     if (s < -seam || s > height_ + seam) continue;
-    Vec3dd v = f + t_dd * d;
-    Vec3dd across = v - dot(v, axis) * axis;
-    bool apex = s >= height_ - seam &&
-                length(Vec3d(static_cast<double>(across.x), static_cast<double>(across.y),
-                             static_cast<double>(across.z))) <= seam;
-    Vec3d normal = apex ? unit_rounded(axis) : unit_rounded(unit_dd(across) * h + axis * r);
-    out.hits.push_back(Hit{t, ray.at(t), normal, std::nullopt, apex ? "apex" : "side"});
+    Vec3dd g = k.g + ts[i] * d;
+    Vec3dd across = g - dot(g, axis) * axis;
+    bool at_apex = s >= height_ - seam && static_cast<double>(sqrt(dot(across, across))) <= seam;
+    Vec3d normal = at_apex ? unit_rounded(axis) : unit_rounded(unit_dd(across) * h + axis * r);
+    out.hits.push_back(Hit{t, ray.at(t), normal, std::nullopt, at_apex ? "apex" : "side"});
   }
-  // Compute the cap's hit
-  if (capped_ && k.da != DD(0)) {
-    double t = static_cast<double>(-k.fa / k.da);
+  // Compute the cap's hit: where γ + tα = −v·v, within the base circle.
+  if (capped_ && k.alpha != DD(0)) {
+    DD t_dd = (-k.vv - k.gamma) / k.alpha;
+    double t = static_cast<double>(t_dd);
     if (ray.accepts(t)) {
-      Vec3d p = ray.at(t);
-      Vec3d radial = (p - base_) - dot(p - base_, axis_) * axis_;
-      if (length(radial) <= radius_ + seam) {
-        out.hits.push_back(Hit{t, p, -axis_, std::nullopt, "base cap"});
+      Vec3dd g = k.g + t_dd * d;
+      Vec3dd radial = g - dot(g, axis) * axis;
+      if (static_cast<double>(sqrt(dot(radial, radial))) <= radius_ + seam) {
+        out.hits.push_back(Hit{t, ray.at(t), -axis_, std::nullopt, "base cap"});
       }
     }
   }
   finish_hits(out.hits, seam);
   return out;
+}
+
+// The accuracy study's cases of cones.
+
+bool Cone::Ladder::case_of(const Cone& cone, std::vector<Vec3d>& points, double& radius) {
+  if (cone.capped_) return false;
+  if (cone.apex_) {
+    points = {cone.base_, *cone.apex_};
+    radius = cone.radius_;
+    return true;
+  }
+  Vec3d apex = cone.base_ + cone.height_ * cone.axis_;
+  // apex − B must be h·â exactly as intersect takes it (in double-double), and the case must
+  // give back the same cone.
+  Vec3dd v = Vec3dd(apex) - Vec3dd(cone.base_);
+  Vec3dd hv = DD(cone.height_) * unit_dd(Vec3dd(cone.axis_given_));
+  for (int i = 0; i < 3; ++i) {
+    if (!(v[i] == hv[i])) return false;
+  }
+  std::unique_ptr<Shape> back = shape_of({cone.base_, apex}, cone.radius_);
+  const auto& same = static_cast<const Cone&>(*back);
+  if (!(same.base_ == cone.base_ && same.axis_ == cone.axis_ && same.height_ == cone.height_ &&
+        same.radius_ == cone.radius_ && !same.capped_)) {
+    return false;
+  }
+  points = {cone.base_, apex};
+  radius = cone.radius_;
+  return true;
+}
+
+void Cone::Ladder::random_case(SplitMix& rng, std::vector<Vec3d>& points, double& radius) {
+  Vec3d base = rng.point(0.5);
+  double height = rng.uniform(0.5, 1.5);
+  points = {base, base + height * rng.unit_vector()};
+  radius = rng.uniform(0.2, 0.8);
+}
+
+void Cone::Ladder::hard_cases(int round, SplitMix& /*shared*/, std::vector<AccuracyCase>& out) {
+  if (round != kOwnStreamRound) return;
+  SplitMix rng(20261126);
+  auto add = [&](std::string id, std::string group, Vec3d o, Vec3d d, Vec3d base, Vec3d apex,
+                 double r) {
+    out.push_back(
+        make_case(std::move(id), std::move(group), primitive_of<Cone>(), o, d, {base, apex}, r));
+  };
+  // A random cone: the base near the origin, the unit axis, the height and the radius.
+  struct Random {
+    Vec3d base, axis, apex, u, w;  // u across the axis, w across both
+    double h = 0, r = 0;
+  };
+  auto cone = [&] {
+    Random c;
+    c.base = rng.point(1);
+    c.axis = rng.unit_vector();
+    c.h = rng.uniform(0.5, 3);
+    c.r = rng.uniform(0.3, 1.5);
+    c.apex = c.base + c.h * c.axis;
+    c.u = perpendicular(c.axis, rng);
+    c.w = cross(c.axis, c.u);
+    return c;
+  };
+  // The ray from `distance` away, coming from the side of `outward`, aimed at `target`.
+  auto ray_to = [&](Vec3d target, Vec3d outward, double distance) {
+    Vec3d o = target + distance * normalized(rng.unit_vector() + 2.0 * outward);
+    return std::pair{o, target - o};
+  };
+  // (Each draw is a statement of its own, so that the order of the draws is the same with every
+  // compiler.)
+  // Through the apex: aimed at it, or at 10^-k·h from it across the axis or along it.
+  for (int i = 0; i < 8; ++i) {
+    Random c = cone();
+    double across = offset(rng, 6, 16), along = offset(rng, 6, 16);
+    Vec3d target = i % 4 == 0 ? c.apex : c.apex + (c.h * across) * c.u + (c.h * along) * c.axis;
+    auto [o, d] = ray_to(target, c.axis, 5);
+    add(fmt::format("cone-apex-{}", i), "cone-apex", o, d, c.base, c.apex, c.r);
+  }
+  // Through the rim: aimed at B + r(1 + δ)u + δ'h·â, δ and δ' = ±10^-k.
+  for (int i = 0; i < 8; ++i) {
+    Random c = cone();
+    double across = offset(rng, 6, 16), along = offset(rng, 6, 16);
+    Vec3d target = c.base + (c.r * (1 + across)) * c.u + (c.h * along) * c.axis;
+    auto [o, d] = ray_to(target, c.u, 5);
+    add(fmt::format("cone-rim-{}", i), "cone-rim", o, d, c.base, c.apex, c.r);
+  }
+  // A point at (1 + δ) times the side's radius at height s, u across the axis: a ray through it
+  // along w (and a little along the line of the side there) grazes the side.
+  auto side_point = [&](Random& c, int k_lo, int k_hi) {
+    double s = rng.uniform(0.2, 0.8) * c.h, delta = offset(rng, k_lo, k_hi);
+    return c.base + s * c.axis + (c.r * (1 - s / c.h) * (1 + delta)) * c.u;
+  };
+  // Tangent to the side, from 5 away.
+  for (int i = 0; i < 6; ++i) {
+    Random c = cone();
+    Vec3d target = side_point(c, 4, 15);
+    Vec3d line = normalized(c.apex - (c.base + c.r * c.u));
+    Vec3d d = c.w + rng.uniform(-0.3, 0.3) * line;
+    add(fmt::format("cone-side-tangent-{}", i), "grazing", target - 5.0 * d, d, c.base, c.apex,
+        c.r);
+  }
+  // Parallel to a line of the side (a = 0 up to the rounding of d): from a point inside, the
+  // ray crosses the side once, far from the other root.
+  for (int i = 0; i < 6; ++i) {
+    Random c = cone();
+    Vec3d rim = c.base + c.r * c.u;
+    Vec3d d = c.apex - rim;
+    Vec3d inside = c.base + (rng.uniform(0.1, 0.6) * c.h) * c.axis +
+                   (rng.uniform(-0.2, 0.2) * c.r) * c.w - (rng.uniform(0, 0.3) * c.r) * c.u;
+    add(fmt::format("cone-parallel-to-side-{}", i), "cone-parallel-to-side", inside - 3.0 * d, d,
+        c.base, c.apex, c.r);
+  }
+  // Far cones: at 10^4 to 10^8, the ray aimed within 10^-1 to 10^-10 of the rim or the apex.
+  for (int i = 0; i < 5; ++i) {
+    Random c = cone();
+    Vec3d target = i % 2 == 0 ? c.base + (c.r * (1 + offset(rng, 1, 10))) * c.u
+                              : c.apex + (c.h * offset(rng, 1, 10)) * c.u;
+    auto [o, d] = ray_to(target, i % 2 == 0 ? c.u : c.axis, std::pow(10.0, rng.uniform(4, 8)));
+    add(fmt::format("far-cone-{}", i), "far-cone", o, d, c.base, c.apex, c.r);
+  }
+  // Grazing the side from 10^8 to 10^10 away across the axis.
+  for (int i = 0; i < 4; ++i) {
+    Random c = cone();
+    Vec3d target = side_point(c, 3, 12);
+    Vec3d o = target - std::pow(10.0, rng.uniform(8, 10)) * c.w;
+    add(fmt::format("grazing-cone-{}", i), "grazing", o, target - o, c.base, c.apex, c.r);
+  }
+  // Huge coordinates: random cones shifted by 1e8.
+  for (int i = 0; i < 3; ++i) {
+    Vec3d shift = 1e8 * rng.unit_vector();
+    std::vector<Vec3d> p;
+    double r = 0;
+    random_case(rng, p, r);
+    Vec3d o = 4.0 * rng.unit_vector();
+    Vec3d target = 0.5 * (p[0] + p[1]) + rng.point(0.3);
+    add(fmt::format("huge-coordinates-cone-{}", i), "huge-coordinates", o + shift, target - o,
+        p[0] + shift, p[1] + shift, r);
+  }
+  // Worked by hand: the cone B = (0, 0, 0), apex (0, 0, 1), r = 1 (the radius at height s is
+  // 1 − s). From (−5, 0, 0.5) along +x the side at t = 4.5 in (−0.5, 0, 0.5); from (−2, 0, 1)
+  // along +x the apex at t = 2; from (−5, 0, 0) along +x the rim at t = 4 in (−1, 0, 0); from
+  // (0.5, −5, 0.5) along +y tangent at t = 5; from (0, 0, −0.5) along (1, 0, 1), parallel to the
+  // line of the side from (−1, 0, 0) to the apex (a = 0), once at t = 0.75 in (0.75, 0, 0.25);
+  // from (2, −5, 0.5) along +y a miss; from (0, 0, −5) along +z, through the open base, the apex
+  // at t = 6.
+  Vec3d base{0, 0, 0}, apex{0, 0, 1};
+  add("cone-by-hand-0", "cone-rim", {-5, 0, 0.5}, {1, 0, 0}, base, apex, 1);
+  add("cone-by-hand-1", "cone-apex", {-2, 0, 1}, {1, 0, 0}, base, apex, 1);
+  add("cone-by-hand-2", "cone-rim", {-5, 0, 0}, {1, 0, 0}, base, apex, 1);
+  add("cone-by-hand-3", "grazing", {0.5, -5, 0.5}, {0, 1, 0}, base, apex, 1);
+  add("cone-by-hand-4", "cone-parallel-to-side", {0, 0, -0.5}, {1, 0, 1}, base, apex, 1);
+  add("cone-by-hand-5", "cone-rim", {2, -5, 0.5}, {0, 1, 0}, base, apex, 1);
+  add("cone-by-hand-6", "cone-apex", {0, 0, -5}, {0, 0, 1}, base, apex, 1);
 }
 
 Derivation Cone::derive(const Ray& ray, std::string_view /*method*/,

@@ -2,22 +2,102 @@
 // base cap.
 #pragma once
 
+#include <algorithm>
+#include <optional>
+#include <vector>
+
 #include "generate/outcome.h"
+#include "shapes/round.h"
 #include "shapes/shape.h"
+#include "shapes/sphere.h"
 #include "shapes/surface_point.h"
 
 namespace raygrade {
 
-// A point P is on the side when, with q = P − B, s = q·â its height and q⊥ = q − s·â, it has
-// 0 ≤ s ≤ h and h·|q⊥| = r·(h − s). On the ray, with f = O − B, w = h − f·â, that is the
-// quadratic a t² + b t + c = 0 with (multiplied through by h², so that whole numbers stay
-// whole)
-//   a = h²|D⊥|² − r²(D·â)²,  b = 2(h² f⊥·D⊥ + r² w (D·â)),  c = h²|f⊥|² − r² w²,
-// whose roots outside 0 ≤ s ≤ h lie on the other nappe or below the base. The outward normal
-// is (h·ê + r·â)/√(h² + r²), ê the unit vector across the axis towards P; at the apex, where
-// ê is undefined, it is â (documented in docs/problem-format.md). The cap's is −â.
+struct AccuracyCase;
+class SplitMix;
+
+// The side's quadratic of the cone with apex A and axis vector v = A − B (|v| = h, B the base's
+// centre; any number type T), for the ray O + tD. A point P is on the side when, with q = P − B,
+// v·v |q × v|² = r² (v·v − q·v)² (that is h²|q⊥|² = r²(h − s)², times h²); with f = O − B,
+// α = D·v, β = f·v and w = v·v − β that is a t² + b t + c = 0 with
+//   a = (v·v)|D × v|² − r²α²,  b = 2((v·v)(f × v)·(D × v) + r² w α),  c = (v·v)|f × v|² − r² w².
+// It is computed from the apex, g = O − A (f × v = g × v, w = −g·v), and its quarter discriminant
+// from the identity
+//   Δ' = (b/2)² − ac = (v·v)² (r²(v·v)|m|² − (v·v + r²)(m·v)²),  m = D × g,
+// which cancels only where the ray is tangent (the plane through the apex and the ray touches
+// the cone), not where the ray passes near the apex or starts far away. No square root but Δ''s:
+// for whole-number data along a coordinate axis every term is a whole number. A root t lies on
+// the cone (not the other nappe, not below the base) where −v·v ≤ γ + tα ≤ 0, γ = g·v.
+template <typename T>
+struct ConeSide {
+  T a{}, half_b{}, c{}, vv{}, alpha{}, gamma{};
+  T disc{};   // Δ' / (v·v)²
+  Vec3<T> g;  // O − A
+};
+
+template <typename T>
+ConeSide<T> cone_side(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& apex, const Vec3<T>& v,
+                      const T& r) {
+  ConeSide<T> k;
+  k.g = o - apex;
+  k.vv = dot(v, v);
+  T rr = r * r;
+  Vec3<T> gv = cross_accurate(k.g, v), dv = cross_accurate(d, v), m = cross_accurate(d, k.g);
+  k.alpha = dot_accurate(d, v);
+  k.gamma = dot_accurate(k.g, v);
+  T w = -k.gamma, mv = dot_accurate(m, v);
+  k.a = k.vv * dot(dv, dv) - rr * (k.alpha * k.alpha);
+  k.half_b = k.vv * dot(gv, dv) + rr * (w * k.alpha);
+  k.c = k.vv * dot(gv, gv) - rr * (w * w);
+  k.disc = rr * k.vv * dot(m, m) - (k.vv + rr) * (mv * mv);
+  return k;
+}
+
+// The real roots of the side's quadratic, ascending, by the stable q = −(b/2 + sign(b)√Δ'),
+// t = q/a and c/q: one when a = 0 (a ray parallel to a line of the side), none and `contained`
+// when a = b = c = 0 (the ray's line is a line of the side, through the apex).
+template <typename T>
+Roots<T> cone_side_roots(const ConeSide<T>& k, bool& contained) {
+  using std::sqrt;
+  Roots<T> out;
+  contained = false;
+  if (k.a == T(0)) {
+    if (k.half_b == T(0)) {
+      contained = k.c == T(0);
+      return out;
+    }
+    out.count = 1;
+    out.t0 = out.t1 = -k.c / (T(2) * k.half_b);
+    return out;
+  }
+  if (k.disc < T(0)) return out;
+  if (k.disc == T(0)) {
+    out.count = 1;
+    out.t0 = out.t1 = -k.half_b / k.a;
+    return out;
+  }
+  T q = -(k.half_b + sign_of(k.half_b) * (k.vv * sqrt(k.disc)));
+  T t0 = k.c / q, t1 = q / k.a;
+  if (t1 < t0) std::swap(t0, t1);
+  out.count = 2;
+  out.t0 = t0;
+  out.t1 = t1;
+  return out;
+}
+
+// Whether the side's root t lies on the cone: −v·v ≤ γ + tα ≤ 0 (0 ≤ s ≤ h).
+template <typename T>
+bool cone_on_side(const ConeSide<T>& k, const T& t) {
+  T s = k.gamma + t * k.alpha;
+  return s >= -k.vv && s <= T(0);
+}
+
 class Cone final : public Shape {
  public:
+  // What the accuracy study needs of an open cone (accuracy/ladder_primitives.h).
+  struct Ladder;
+
   Cone(Vec3d base, Vec3d axis, double radius, double height, bool capped);
   static std::unique_ptr<Shape> read(const Cursor& object);
 
@@ -57,6 +137,113 @@ class Cone final : public Shape {
   double radius_;
   double height_;
   bool capped_;
+  // The apex, when the cone was made from an accuracy case (Ladder::shape_of): it is then
+  // intersected with v = apex − B exactly, as the case is, not with h·â rebuilt from the
+  // rounded height.
+  std::optional<Vec3d> apex_;
+};
+
+// The case's points: {base, apex} of an open cone; its radius. A capped cone has no case (as a
+// finite cylinder), nor a cone whose apex − base, rounded, is not exactly h·â: the case must be
+// the very cone the solver intersects.
+struct Cone::Ladder {
+  static constexpr std::size_t kPoints = 2;
+  static constexpr bool kMorePoints = false, kRadius = true;
+  static constexpr int kDirectionPoint = -1;
+
+  // The side's roots (cone_side_roots), the nearest at t ≥ 0 that lies on the cone, as intersect
+  // runs them in double-double. A ray along a line of the side (contained) has no answer here:
+  // the solver reports it as contained and settles nothing.
+  template <typename T>
+  [[gnu::always_inline]] static bool reference(const Vec3<T>& o, const Vec3<T>& d,
+                                               const std::vector<Vec3<T>>& p, const T& r, T& t) {
+    ConeSide<T> k = cone_side(o, d, p[1], Vec3<T>(p[1] - p[0]), r);
+    bool contained = false;
+    Roots<T> roots = cone_side_roots(k, contained);
+    T ts[2] = {roots.t0, roots.t1};
+    for (int i = 0; i < roots.count; ++i) {
+      if (ts[i] >= T(0) && cone_on_side(k, ts[i])) {
+        t = ts[i];
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // The textbook cone: from the apex A along ĉ = (B − A)/h, with cos²θ = h²/(h² + r²) and
+  // co = O − A, a = (D·ĉ)² − cos²θ D·D, b = 2((D·ĉ)(co·ĉ) − cos²θ D·co),
+  // c = (co·ĉ)² − cos²θ co·co; the roots (−b ∓ √Δ)/2a, kept where 0 ≤ (P − A)·ĉ ≤ h.
+  template <typename T>
+  static std::optional<T> naive(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p,
+                                const T& r) {
+    using std::sqrt;
+    Vec3<T> down = p[0] - p[1];
+    T h = sqrt(dot(down, down));
+    Vec3<T> c_hat = down / h;
+    T cos2 = h * h / (h * h + r * r);
+    Vec3<T> co = o - p[1];
+    T dc = dot(d, c_hat), cc = dot(co, c_hat);
+    T a = dc * dc - cos2 * dot(d, d), b = T(2) * (dc * cc - cos2 * dot(d, co)),
+      c = cc * cc - cos2 * dot(co, co);
+    T disc = b * b - T(4) * a * c;
+    if (a == T(0) || disc < T(0)) return std::nullopt;
+    T root = sqrt(disc);
+    T ts[2] = {(-b - root) / (T(2) * a), (-b + root) / (T(2) * a)};
+    if (ts[1] < ts[0]) std::swap(ts[0], ts[1]);
+    for (const T& t : ts) {
+      T s = dot(o + t * d - p[1], c_hat);
+      if (t >= T(0) && s >= T(0) && s <= h) return t;
+    }
+    return std::nullopt;
+  }
+
+  // Every root on the cone with its outward normal, the gradient of
+  // v·v |q × v|² − r²(v·v − q·v)², halved, which from the apex (q = v + g, g = P − A) is
+  // (v·v)((v·v) g − (g·v) v) − r²(g·v) v: (h·ê + r·â) times a positive number on the side, and
+  // zero at the apex. Within the solver's seam of the apex (64 ulps of r + h), where the solver
+  // gives the apex's documented normal â, the normal is ambiguous: zero.
+  template <typename T, typename Add>
+  static void hits(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Vec3<T>>& p, const T& r,
+                   Add&& add) {
+    using std::sqrt;
+    Vec3<T> v = p[1] - p[0];
+    ConeSide<T> k = cone_side(o, d, p[1], v, r);
+    bool contained = false;
+    Roots<T> roots = cone_side_roots(k, contained);
+    T ts[2] = {roots.t0, roots.t1};
+    for (int i = 0; i < roots.count; ++i) {
+      if (!cone_on_side(k, ts[i])) continue;
+      Vec3<T> g = k.g + ts[i] * d;
+      T gv = dot(g, v), seam = T(kSeamRelative) * (r + sqrt(k.vv));
+      Vec3<T> n = k.vv * (k.vv * g - gv * v) - ((r * r) * gv) * v;
+      add(ts[i], dot(g, g) <= seam * seam ? Vec3<T>{} : n);
+    }
+  }
+
+  // (h·ê + r·â)/√(h² + r²) at P, ê across the axis towards P; â at the apex.
+  static std::optional<Vec3d> naive_normal(const std::vector<Vec3d>& p, double r,
+                                           const Vec3d& point) {
+    Vec3d v = p[1] - p[0];
+    double h = length(v);
+    Vec3d axis = v / h, q = point - p[0];
+    Vec3d across = q - dot(q, axis) * axis;
+    if (length(across) == 0) return axis;
+    return normalized(h * normalized(across) + r * axis);
+  }
+
+  static bool case_of(const Cone& cone, std::vector<Vec3d>& points, double& radius);
+  static std::unique_ptr<Shape> shape_of(const std::vector<Vec3d>& p, double r) {
+    Vec3d v = p[1] - p[0];
+    auto cone = std::make_unique<Cone>(p[0], v, r, length(v), false);
+    cone->apex_ = p[1];
+    return cone;
+  }
+
+  static void random_case(SplitMix& rng, std::vector<Vec3d>& points, double& radius);
+  // Its own stream, in round kOwnStreamRound: rays through the apex and the rim, tangent to the
+  // side, parallel to a line of the side, grazing, far cones, huge coordinates, and rays worked
+  // by hand.
+  static void hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out);
 };
 
 }  // namespace raygrade
