@@ -77,13 +77,7 @@ Roots<T> cone_side_roots(const ConeSide<T>& k, bool& contained) {
     out.t0 = out.t1 = -k.half_b / k.a;
     return out;
   }
-  T q = -(k.half_b + sign_of(k.half_b) * (k.vv * sqrt(k.disc)));
-  T t0 = k.c / q, t1 = q / k.a;
-  if (t1 < t0) std::swap(t0, t1);
-  out.count = 2;
-  out.t0 = t0;
-  out.t1 = t1;
-  return out;
+  return both_roots(Quadratic<T>{k.a, k.half_b, k.c, k.disc}, k.vv * sqrt(k.disc));
 }
 
 // Whether the side's root t lies on the cone: −v·v ≤ γ + tα ≤ 0 (0 ≤ s ≤ h).
