@@ -26,8 +26,8 @@ class SplitMix;
 // from the identity
 //   Δ' = (b/2)² − ac = (v·v)² (r²(v·v)|m|² − (v·v + r²)(m·v)²),  m = D × g,
 // which cancels only where the ray is tangent (the plane through the apex and the ray touches
-// the cone), not where the ray passes near the apex or starts far away. No square root but Δ''s:
-// for whole-number data along a coordinate axis every term is a whole number. A root t lies on
+// the cone), not where the ray passes near the apex. No square root other than √Δ': for
+// whole-number data along a coordinate axis every term is a whole number. A root t lies on
 // the cone (not the other nappe, not below the base) where −v·v ≤ γ + tα ≤ 0, γ = g·v.
 template <typename T>
 struct ConeSide {
@@ -43,10 +43,10 @@ ConeSide<T> cone_side(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& apex, c
   k.g = o - apex;
   k.vv = dot(v, v);
   T rr = r * r;
-  Vec3<T> gv = cross_accurate(k.g, v), dv = cross_accurate(d, v), m = cross_accurate(d, k.g);
-  k.alpha = dot_accurate(d, v);
-  k.gamma = dot_accurate(k.g, v);
-  T w = -k.gamma, mv = dot_accurate(m, v);
+  Vec3<T> gv = cross_fused(k.g, v), dv = cross_fused(d, v), m = cross_fused(d, k.g);
+  k.alpha = dot_fused(d, v);
+  k.gamma = dot_fused(k.g, v);
+  T w = -k.gamma, mv = dot_fused(m, v);
   k.a = k.vv * dot(dv, dv) - rr * (k.alpha * k.alpha);
   k.half_b = k.vv * dot(gv, dv) + rr * (w * k.alpha);
   k.c = k.vv * dot(gv, gv) - rr * (w * w);
@@ -77,7 +77,7 @@ Roots<T> cone_side_roots(const ConeSide<T>& k, bool& contained) {
     out.t0 = out.t1 = -k.half_b / k.a;
     return out;
   }
-  return both_roots(Quadratic<T>{k.a, k.half_b, k.c, k.disc}, k.vv * sqrt(k.disc));
+  return both_roots(Quadratic<T>{k.a, k.half_b, k.c, k.vv * k.vv * k.disc}, k.vv * sqrt(k.disc));
 }
 
 // Whether the side's root t lies on the cone: −v·v ≤ γ + tα ≤ 0 (0 ≤ s ≤ h).
