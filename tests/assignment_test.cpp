@@ -316,6 +316,37 @@ TEST(Assignment, TheMistakesPolicyQuotesANumberItCouldNotRead) {
   EXPECT_NE(all.find("t: could not read '5,5'"), std::string::npos) << all;
 }
 
+// The sentence about an unreadable number is kept whatever names the value: a part
+// ("I1.reflected"), a colour channel ("intensity channel r"); a name that holds a reference
+// value ("Hit 1 (ball at t = 5)") drops the sentence.
+TEST(Assignment, TheMistakesPolicyQuotesAnUnreadableComponentOrChannel) {
+  GradeResult r;
+  r.problem_id = "p";
+  r.parts.push_back(
+      {"I1.reflected",
+       0,
+       1,
+       PartStatus::kWrong,
+       {"I1.reflected: could not read '0..4': a second decimal point at character 3"}});
+  r.parts.push_back({"intensity",
+                     0,
+                     1,
+                     PartStatus::kWrong,
+                     {"intensity channel r: could not read 'x': expected a number"}});
+  r.parts.push_back({"tree",
+                     0,
+                     1,
+                     PartStatus::kWrong,
+                     {"Hit 1 (ball at t = 5): n1: could not read '1..5': a second decimal point "
+                      "at character 3"}});
+  apply_feedback_policy(r, FeedbackPolicy::kMistakes);
+  std::string lines = fmt::format("{}", fmt::join(feedback_lines(r), "\n"));
+  EXPECT_NE(lines.find("I1.reflected: could not read '0..4'"), std::string::npos) << lines;
+  EXPECT_NE(lines.find("intensity channel r: could not read 'x'"), std::string::npos) << lines;
+  EXPECT_EQ(lines.find("t = 5"), std::string::npos) << lines;
+  EXPECT_EQ(lines.find("'1..5'"), std::string::npos) << lines;
+}
+
 TEST(Assignment, TheCheckDrawsSampleVariants) {
   TempDir dir("check");
   // ox = 4.99999999 makes every draw nearly tangent to the sphere of radius 5: no variant

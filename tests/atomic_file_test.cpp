@@ -1,4 +1,5 @@
-// write_file_atomically: whole files or nothing, and no temporary files left behind.
+// write_file_atomically: whole files or nothing, and no temporary files left behind;
+// update_generated_file: a generated file checked or brought up to date.
 #include "core/atomic_file.h"
 
 #include <gtest/gtest.h>
@@ -96,6 +97,25 @@ TEST(AtomicFile, FailedRenameLeavesTargetAndNoTemporaryFile) {
   EXPECT_THROW(write_file_atomically(dir.path() / "r.json", "{}"), Error);
   EXPECT_TRUE(fs::is_directory(dir.path() / "r.json" / "inside"));
   EXPECT_EQ(dir.names(), std::vector<std::string>{"r.json"});
+}
+
+// A generated file: checked, it is only reported stale (missing or changed by hand) and left
+// as it is; brought up to date, it is written once and then found up to date.
+TEST(AtomicFile, UpdateGeneratedFileChecksOrWrites) {
+  ScratchFolder dir;
+  fs::path p = dir.path() / "schema.json";
+  EXPECT_EQ(update_generated_file(p, "new\n", true), FileUpdate::kStale);
+  EXPECT_FALSE(fs::exists(p));
+  EXPECT_EQ(update_generated_file(p, "new\n", false), FileUpdate::kWritten);
+  EXPECT_EQ(read_all(p), "new\n");
+  EXPECT_EQ(update_generated_file(p, "new\n", true), FileUpdate::kUpToDate);
+  EXPECT_EQ(update_generated_file(p, "new\n", false), FileUpdate::kUpToDate);
+  write_file_atomically(p, "edited by hand\n");
+  EXPECT_EQ(update_generated_file(p, "new\n", true), FileUpdate::kStale);
+  EXPECT_EQ(read_all(p), "edited by hand\n");
+  EXPECT_EQ(update_generated_file(p, "new\n", false, false), FileUpdate::kWritten);
+  EXPECT_EQ(read_all(p), "new\n");
+  EXPECT_EQ(dir.names(), std::vector<std::string>{"schema.json"});
 }
 
 }  // namespace

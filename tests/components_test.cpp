@@ -87,6 +87,18 @@ TEST(ComponentGrade, TheTransmittedShareAndAMissingPart) {
   EXPECT_EQ(part(r, "I2.ambient")->status, PartStatus::kMissing);
 }
 
+// A wrong component is quoted as the student typed it ("0.40", "4e-1"), not reformatted.
+TEST(ComponentGrade, AWrongComponentIsQuotedAsTyped) {
+  const Problem& p = bank_problem("components-mirror-and-wall");
+  GradeResult r = grade_answer(
+      p, components(R"({"I1": {"ambient": "0.10", "reflected": "0.40", "total": "3e-1"},
+                        "I2": {"total": "4e-1"}})"));
+  EXPECT_DOUBLE_EQ(r.score, 3);
+  EXPECT_EQ(part(r, "I1.reflected")->feedback.at(0), "I1's reflected is 0.2, not 0.40.");
+  GradeResult e = grade_answer(p, components(R"({"I1": {"total": "5e-1"}})"));
+  EXPECT_EQ(part(e, "I1.total")->feedback.at(0), "I1's intensity is 0.3, not 5e-1.");
+}
+
 void expect_error(const std::string& components, const std::string& ask, const std::string& words) {
   try {
     testing::problem(R"({"id": "c", "kind": "ray-tree", "ask": ")" + ask + R"(",

@@ -16,7 +16,6 @@ and one with every t off by 0.1%, so that the feedback on wrong numbers is print
 Prints one line per fault and exits 1 if there is any.
 """
 import json
-import math
 import os
 import re
 import subprocess
@@ -81,38 +80,14 @@ def scan_folder(folder, where):
             scan_text(text, f"{where}/{os.path.relpath(path, folder)}", name.endswith(".json"))
 
 
-def corpus_problems(corpus_path, out_path, every):
-    """The hard cases as intersect problems (every `every`-th one)."""
-    with open(corpus_path) as f:
-        cases = json.load(f)["cases"][::every]
-    problems = []
-    for c in cases:
-        p = c["points"]
-        kind = c["primitive"]
-        if kind == "sphere":
-            obj = {"type": "sphere", "center": p[0], "radius": c["radius"]}
-        elif kind == "plane":
-            obj = {"type": "plane", "normal": p[0], "point": p[1]}
-        elif kind in ("triangle", "polygon"):
-            obj = {"type": kind, "vertices": p}
-        elif kind == "cylinder":
-            obj = {"type": "cylinder", "base": p[0], "axis": p[1], "radius": c["radius"]}
-        elif kind == "box":
-            obj = {"type": "box", "min": p[0], "max": p[1]}
-        elif kind == "disk":
-            obj = {"type": "disk", "center": p[0], "normal": p[1], "radius": c["radius"]}
-        elif kind == "capsule":
-            obj = {"type": "capsule", "a": p[0], "b": p[1], "radius": c["radius"]}
-        elif kind == "cone":
-            axis = [p[1][i] - p[0][i] for i in range(3)]
-            obj = {"type": "cone", "base": p[0], "axis": axis, "radius": c["radius"],
-                   "height": math.sqrt(sum(x * x for x in axis))}
-        else:
-            sys.exit(f"finite_outputs: hard cases of a primitive it cannot pose: {kind}")
-        problems.append({"id": c["id"].replace("/", "-"), "title": c["id"],
-                         "statement": f"The hard case {c['id']}.",
-                         "ray": {"origin": c["origin"], "direction": c["direction"]},
-                         "object": obj})
+def corpus_problems(raygrade, source, out_path, every):
+    """The hard cases as intersect problems (every `every`-th one), posed by raygrade itself
+    (each primitive writes its own object), so that no primitive is left out."""
+    corpus = os.path.join(source, "tests/data/hard_cases.json")
+    subprocess.run([raygrade, "bench", "--corpus", corpus, "--corpus-problems", out_path],
+                   check=True, capture_output=True)
+    with open(out_path) as f:
+        problems = json.load(f)["problems"][::every]
     with open(out_path, "w") as f:
         json.dump({"problems": problems}, f)
 
@@ -144,7 +119,7 @@ def main():
     every = int(sys.argv[4]) if len(sys.argv) > 4 else 1
     os.makedirs(work, exist_ok=True)
     corpus = os.path.join(work, "hard_cases_problems.json")
-    corpus_problems(os.path.join(source, "tests/data/hard_cases.json"), corpus, every)
+    corpus_problems(raygrade, source, corpus, every)
     # The corpus holds a few polygons that the problem reader rejects as non-planar beyond its
     # tolerance (exit 2, the rest still answered).
     banks = {

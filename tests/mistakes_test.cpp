@@ -3,10 +3,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <set>
+
 #include "core/error.h"
 #include "core/internal_error.h"
 #include "grading/grade.h"
 #include "grading/submission.h"
+#include "shapes/cylinder.h"
+#include "shapes/plane.h"
 #include "test_util.h"
 
 namespace raygrade {
@@ -153,6 +158,27 @@ TEST(Mistakes, CatalogueIsComplete) {
                          "pixel-centre", "cylinder-b-no-origin", "r-not-squared"}) {
     EXPECT_FALSE(mistake_info(id).explanation.empty()) << id;
   }
+}
+
+// A primitive's own mistakes join the catalogue and the formula mistakes from its own files,
+// after grading's own, and no id is in the catalogue twice.
+TEST(Mistakes, PrimitivesOwnMistakesJoinFromTheirFiles) {
+  for (const auto* own : {&Plane::mistakes(), &Cylinder::mistakes()}) {
+    for (const PrimitiveMistake& m : *own) {
+      EXPECT_EQ(mistake_info(m.info.id).title, m.info.title) << m.info.id;
+      auto it = std::find_if(formula_mistakes().begin(), formula_mistakes().end(),
+                             [&](const FormulaMistake& f) { return f.id == m.info.id; });
+      ASSERT_NE(it, formula_mistakes().end()) << m.info.id;
+      EXPECT_EQ(it->rewrite, m.rewrite) << m.info.id;
+      EXPECT_GT(it - formula_mistakes().begin(), 3) << m.info.id << " is tried after b-sign";
+    }
+  }
+  std::set<std::string_view> ids;
+  for (const MistakeInfo& m : mistake_catalogue()) EXPECT_TRUE(ids.insert(m.id).second) << m.id;
+  // The plane's D = +N·V0: step D's formula −N·V0 negated; another step untouched.
+  E d = -dot(sym("N", "N"), sym("V0", "V_0"));
+  ASSERT_TRUE(Plane::mistakes().front().rewrite("D", d).has_value());
+  EXPECT_FALSE(Plane::mistakes().front().rewrite("t", d).has_value());
 }
 
 // A mistake id missing from the catalogue is a bug of raygrade, never bad input: an

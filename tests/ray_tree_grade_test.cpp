@@ -1,5 +1,6 @@
 // Grading ray trees node by node: seed 001's own answer is right; a shadowed point given its
 // diffuse term, a missing ray and a ray the scene cannot spawn are marked with the reason.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "grading/grade.h"
@@ -147,6 +148,23 @@ TEST(RayTreeGrade, HitOnlyQuestionGradesObjectAndT) {
   EXPECT_DOUBLE_EQ(right.score, 1);
   GradeResult wrong = grade_answer(p, {{"object", "floor"}, {"hits", {{{"t", 5}}}}});
   EXPECT_DOUBLE_EQ(wrong.score, 0.5);
+}
+
+// The ball's point faces away and the floor's is in shadow: I = 0.1 + 0.5·0.2 = 0.2 (the
+// problem's own working). A wrong intensity is quoted as typed: "0.50" stays "0.50".
+TEST(RayTreeGrade, AWrongIntensityIsQuotedAsTyped) {
+  static const Bank bank =
+      load_bank({std::string(RAYGRADE_SOURCE_DIR) + "/problems/scenes/shadows.json"});
+  const Problem& p = bank.problems.at(0);
+  ASSERT_EQ(p.id, "scene-faces-away-and-shadow");
+  for (const char* typed : {"0.50", "5e-1", "1/2"}) {
+    GradeResult r = grade_answer(p, {{"intensity", typed}});
+    const PartResult* i = part(r, "intensity");
+    ASSERT_NE(i, nullptr);
+    EXPECT_EQ(i->status, PartStatus::kWrong);
+    EXPECT_EQ(i->feedback.at(0),
+              fmt::format("The intensity along the primary ray is 0.2, not {}.", typed));
+  }
 }
 
 }  // namespace

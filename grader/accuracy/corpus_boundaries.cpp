@@ -1,9 +1,8 @@
 // The hard cases across primitives (huge coordinates, direction scales), and the corpus file.
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "accuracy/corpus.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "json/source.h"
 
@@ -93,14 +92,12 @@ nlohmann::json corpus_json(const std::vector<TruthCase>& cases) {
 }
 
 std::vector<TruthCase> read_corpus(const std::string& path) {
-  std::ifstream in(path);
-  if (!in)
+  std::optional<std::string> text = read_whole_file(path);
+  if (!text)
     throw Error(Diagnostic{path, "", 0, 0, Severity::kError, "cannot read the corpus", "io"});
-  std::stringstream text;
-  text << in.rdbuf();
   JsonLimits limits;
   limits.max_bytes = 64 << 20;
-  auto file = parse_json_text(path, text.str(), limits);
+  auto file = parse_json_text(path, *text, limits);
   Cursor root(file);
   std::vector<TruthCase> out;
   for (const auto& item : root.at("cases").items()) {

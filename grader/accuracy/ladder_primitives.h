@@ -149,7 +149,7 @@ void for_each_ladder_primitive(F&& f) {
   for_each_type(f, LadderPrimitives{});
 }
 
-// The primitive's `type` key: "sphere", ...
+// The primitive's `type` key, as the list of primitives gives it.
 constexpr std::string_view primitive_name(Primitive p) {
   return [&]<std::size_t... I>(std::index_sequence<I...>) {
     constexpr std::string_view names[] = {LadderPrimitive<I>::kType...};

@@ -98,8 +98,9 @@ StressResult stress_edge_rays(const TriangleMesh& mesh, long long rays, std::uin
     const Vec3d &a = mesh.vertices[tri[k]], &b = mesh.vertices[tri[(k + 1) % 3]];
     Vec3d target = i % 3 == 0 ? a : a + rng.uniform() * (b - a);
     // From the side the surface faces, at a random slant.
-    Vec3d o =
-        target + rng.uniform(0.5, 4) * normalized(normalized(target) + 0.6 * rng.unit_vector());
+    Vec3d slant = rng.unit_vector();
+    double distance = rng.uniform(0.5, 4);
+    Vec3d o = target + distance * normalized(normalized(target) + 0.6 * slant);
     if (dot(o - target, target) <= 0) o = target + 2.0 * target;
     ++out.rays;
     if (!nearest(mesh, bounds, o, target - o, -kInfinity).hit) ++out.failures;

@@ -43,9 +43,14 @@ inline Vec3d perpendicular(const Vec3d& u, SplitMix& rng) {
   return normalized(cross(u, rng.unit_vector()));
 }
 
+// Each random number is drawn in a statement of its own (or in a braced list, which C++
+// evaluates in order): the order in which operands and arguments are evaluated is unspecified,
+// and the stored corpus and the generated banks must not depend on the compiler.
+
 // ±10^-k for k in [k_lo, k_hi]: the relative offset from a tangent of a grazing ray.
 inline double offset(SplitMix& rng, int k_lo, int k_hi) {
-  return (rng.uniform() < 0.5 ? -1 : 1) * std::pow(10.0, -rng.integer(k_lo, k_hi));
+  double sign = rng.uniform() < 0.5 ? -1 : 1;
+  return sign * std::pow(10.0, -rng.integer(k_lo, k_hi));
 }
 
 }  // namespace raygrade

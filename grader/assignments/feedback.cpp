@@ -23,12 +23,15 @@ std::string status_sentence(PartStatus s) {
 
 // A sentence about what the student typed and the grader could not read quotes only the
 // student's own text, so it stays; the graders may start it with the name of the value ("t: ",
-// "intensity: ").
+// "I1.reflected: ", "intensity channel r: "). A name with other characters may hold a reference
+// value ("Hit 1 (ball at t = 5): "), so its sentence goes.
 bool quotes_only_the_student(std::string_view s) {
   constexpr std::string_view kUnreadable = "could not read '";
+  auto in_name = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == ' ';
+  };
   std::size_t name = 0;
-  while (name < s.size() && (std::isalnum(static_cast<unsigned char>(s[name])) || s[name] == '_'))
-    ++name;
+  while (name < s.size() && in_name(s[name])) ++name;
   if (name > 0 && s.substr(name).starts_with(": ")) s.remove_prefix(name + 2);
   return s.starts_with(kUnreadable);
 }

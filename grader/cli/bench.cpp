@@ -2,6 +2,7 @@
 // docs/accuracy.md and its plot), the hard-case corpus generator, and the mesh stress runs.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +10,7 @@
 
 #include "accuracy/mesh.h"
 #include "accuracy/report.h"
+#include "accuracy/settle.h"
 #include "bench/peers.h"
 #include "cli/command.h"
 #include "core/atomic_file.h"
@@ -21,6 +23,7 @@ struct BenchOptions {
   std::string out = "docs/accuracy.md";
   std::string corpus = "tests/data/hard_cases.json";
   std::string write_corpus;
+  std::string corpus_problems;
   int random = 2000;
   long long stress = 0;
   long long spawn = 0;
@@ -46,8 +49,30 @@ int write_corpus(const std::string& path) {
   return kExitOk;
 }
 
+// Every case of the corpus as an intersect problem: its object (the primitive's own JSON, from
+// the case) and its ray, for tests that run the hard cases through every command.
+int write_corpus_problems(const std::string& corpus, const std::string& path) {
+  nlohmann::ordered_json problems = nlohmann::ordered_json::array();
+  for (const TruthCase& c : read_corpus(corpus)) {
+    std::string id = c.input.id;
+    std::replace(id.begin(), id.end(), '/', '-');
+    const Vec3d &o = c.input.origin, &d = c.input.direction;
+    problems.push_back({{"id", id},
+                        {"title", c.input.id},
+                        {"statement", fmt::format("The hard case {}.", c.input.id)},
+                        {"ray", {{"origin", {o.x, o.y, o.z}}, {"direction", {d.x, d.y, d.z}}}},
+                        {"object", shape_of(c.input)->to_json()}});
+  }
+  std::size_t count = problems.size();
+  write_file_atomically(path,
+                        nlohmann::ordered_json{{"problems", std::move(problems)}}.dump(1) + "\n");
+  fmt::print("wrote {} problems to {}\n", count, path);
+  return kExitOk;
+}
+
 int run_bench(const BenchOptions& o) {
   if (!o.write_corpus.empty()) return write_corpus(o.write_corpus);
+  if (!o.corpus_problems.empty()) return write_corpus_problems(o.corpus, o.corpus_problems);
   AccuracyReport report;
   if (o.stress > 0 || o.spawn > 0) {
     TriangleMesh mesh = subdivided_sphere(3);
@@ -92,6 +117,8 @@ Runner setup_bench(CLI::App& sub) {
       ->check(CLI::Range(10, 1000000));
   sub.add_option("--write-corpus", o->write_corpus,
                  "generate the hard cases, compute their MPFR truth, write them here, and stop");
+  sub.add_option("--corpus-problems", o->corpus_problems,
+                 "write every case of --corpus as an intersect problem here, and stop");
   sub.add_option("--stress", o->stress,
                  "instead of the report: this many edge and vertex rays at a closed mesh");
   sub.add_option("--spawn", o->spawn, "with --stress: this many hits to spawn rays from");

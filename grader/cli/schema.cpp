@@ -24,17 +24,13 @@ int run_schema(const SchemaOptions& o) {
     fmt::print("{}", text);
     return kExitOk;
   }
-  if (o.check) {
-    std::optional<std::string> have = read_whole_file(o.out);
-    if (have != text) {
+  switch (update_generated_file(o.out, text, o.check)) {
+    case FileUpdate::kStale:
       fmt::print("{} is out of date: run `raygrade schema --out {}`.\n", o.out, o.out);
       return kExitFailed;
-    }
-    fmt::print("{} is up to date.\n", o.out);
-    return kExitOk;
+    case FileUpdate::kWritten: fmt::print("Wrote {}.\n", o.out); break;
+    case FileUpdate::kUpToDate: fmt::print("{} is up to date.\n", o.out); break;
   }
-  write_file_atomically(o.out, text);
-  fmt::print("Wrote {}.\n", o.out);
   return kExitOk;
 }
 

@@ -42,12 +42,12 @@ int run_tables(const TablesOptions& o) {
       fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
       return kExitBadInput;
     }
-    if (text == *have) continue;
+    FileUpdate done = update_generated_file(path, text, o.check);
+    if (done == FileUpdate::kUpToDate) continue;
     ++stale;
-    if (o.check) {
+    if (done == FileUpdate::kStale) {
       fmt::print("stale: {}\n", path.string());
     } else {
-      write_file_atomically(path, text);
       fmt::print("Wrote {}.\n", path.string());
     }
   }

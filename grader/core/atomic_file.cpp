@@ -87,4 +87,12 @@ std::optional<std::string> read_whole_file(const std::filesystem::path& path) {
   return bytes;
 }
 
+FileUpdate update_generated_file(const std::filesystem::path& path, std::string_view bytes,
+                                 bool check_only, bool flush) {
+  if (read_whole_file(path) == bytes) return FileUpdate::kUpToDate;
+  if (check_only) return FileUpdate::kStale;
+  write_file_atomically(path, bytes, flush);
+  return FileUpdate::kWritten;
+}
+
 }  // namespace raygrade

@@ -24,4 +24,18 @@ void flush_folder(const std::filesystem::path& folder);
 // The bytes of the file at `path`, or nothing when it cannot be opened or read.
 std::optional<std::string> read_whole_file(const std::filesystem::path& path);
 
+// What bringing a generated file up to date found or did.
+enum class FileUpdate {
+  kUpToDate,  // the file already held the bytes
+  kStale,     // it did not (or could not be read), and it was only checked
+  kWritten,   // it did not, and now does
+};
+
+// Brings the file at `path` up to date with `bytes`, the text a command generates: nothing
+// happens when it holds them already; otherwise, with `check_only`, it is reported stale and
+// left as it is, else written with write_file_atomically(path, bytes, flush) (which throws
+// Error when it cannot write). A file that cannot be read counts as stale.
+FileUpdate update_generated_file(const std::filesystem::path& path, std::string_view bytes,
+                                 bool check_only, bool flush = true);
+
 }  // namespace raygrade

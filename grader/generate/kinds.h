@@ -1,5 +1,5 @@
 // Generators of the kinds that are not one primitive: first-hit and camera-ray. The
-// primitives' generators are in their own files (shapes/<name>_generate.cpp).
+// primitives' generators are in their own files (shapes/<name>.cpp).
 #pragma once
 
 #include "generate/generate.h"

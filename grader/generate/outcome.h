@@ -1,5 +1,5 @@
 // What a generator builds: the outcomes of a generated ray, and the draft of a problem. Each
-// primitive's generator (shapes/<name>_generate.cpp) speaks these words.
+// primitive's generator (shapes/<name>.cpp) speaks these words.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -471,6 +471,7 @@ class RayTreeGrader final : public KindGrader {
   struct IntensityCheck {
     bool right = false;
     std::optional<double> given;  // the student's value, when it reads as a number
+    std::string text;             // that value as the student typed it, for messages
     std::string fault;            // why it does not read, else ""
   };
   IntensityCheck check_intensity(const AnswerReader& given, double want) const {
@@ -481,6 +482,7 @@ class RayTreeGrader final : public KindGrader {
       return c;
     }
     c.given = n.value->value;
+    c.text = n.value->text;
     const Tolerance& tol = context_.tolerance.for_field("intensity");
     c.right = compare_number(*n.value, want, std::abs(want), tol).match == Match::kRight;
     return c;
@@ -511,7 +513,7 @@ class RayTreeGrader final : public KindGrader {
       out.parts.push_back(
           make_part(context_, "intensity", 0,
                     {c.given ? fmt::format("The intensity along the primary ray is {}, not {}.",
-                                           format_number(want), format_number(*c.given))
+                                           format_number(want), c.text)
                              : "intensity: " + c.fault}));
     }
   }
@@ -583,8 +585,7 @@ class RayTreeGrader final : public KindGrader {
         out.parts.push_back(make_part(context_, ask.part(), 0, {ask.part() + ": " + c.fault}));
         continue;
       }
-      std::string specific =
-          fmt::format("{} is {}, not {}.", what, format_number(want), format_number(*c.given));
+      std::string specific = fmt::format("{} is {}, not {}.", what, format_number(want), c.text);
       if (auto m = component_mistake(ask, n, *c.given, specific)) out.mistakes.push_back(*m);
       out.parts.push_back(make_part(context_, ask.part(), 0, {specific}));
     }

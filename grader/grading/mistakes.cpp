@@ -7,86 +7,106 @@
 
 #include "core/error.h"
 #include "core/internal_error.h"
+#include "shapes/primitives.h"
 
 namespace raygrade {
+namespace {
+
+// The primitives that have formula mistakes of their own (`mistakes()`, in their own files).
+template <typename P>
+concept HasOwnMistakes = requires {
+  { P::mistakes() } -> std::same_as<const std::vector<PrimitiveMistake>&>;
+};
+
+// Calls f(m) for every primitive's own mistake, in the list's order.
+template <typename F>
+void for_each_primitive_mistake(F&& f) {
+  for_each_type(
+      [&]<typename P>() {
+        if constexpr (HasOwnMistakes<P>) {
+          for (const PrimitiveMistake& m : P::mistakes()) f(m);
+        }
+      },
+      Primitives{});
+}
+
+}  // namespace
 
 const std::vector<MistakeInfo>& mistake_catalogue() {
-  static const std::vector<MistakeInfo> c = {
-      {"discriminant-sign", "sign", "Sign slip in the discriminant",
-       "The discriminant is b² − 4ac; with + 4ac the roots move.", 0},
-      {"b-sign", "sign", "Sign slip in the quadratic's b",
-       "b = 2 D·(O − C): with C − O instead of O − C the sign of b flips, and with it both "
-       "roots.",
-       0},
-      {"plane-d-sign", "sign", "Sign slip in the plane's D",
-       "In N·P + D = 0 a point V0 of the plane gives N·V0 + D = 0, so D = −N·V0 (not +N·V0).", 0},
-      {"far-root", "root-choice", "Far root given as the first hit",
-       "Of two roots, the ray meets the surface first at the smaller t ≥ 0; the larger is "
-       "where it leaves.",
-       0},
-      {"negative-t", "root-choice", "Negative t given as a hit",
-       "A root with t < 0 lies behind the ray's origin: it solves the equation but is not a "
-       "hit.",
-       0},
-      {"unit-direction-t", "convention", "t measured along the normalized direction",
-       "t counts lengths of the direction as given. The direction here is not a unit vector, "
-       "so a distance along D/|D| must be divided by |D| to give t.",
-       0},
-      {"cross-order", "orientation", "Cross product in the wrong order",
-       "a × b = −(b × a): swapping the factors flips the vector. With vertices a, b, c in "
-       "order the normal is (b − a) × (c − a); a camera's right vector is d × u.",
-       0.5},
-      {"inward-normal", "orientation", "Normal pointing inward",
-       "A closed surface's normal points outward, away from its inside.", 0.5},
-      {"normal-not-inverse-transpose", "orientation", "Normal transformed by the matrix",
-       "A transformed object's normal goes back to the world by the inverse transpose (A⁻¹)ᵀ, "
-       "which keeps it perpendicular to the surface; the matrix A itself tilts it whenever it "
-       "scales unevenly.",
-       0},
-      {"pixel-corner", "convention", "Pixel corner instead of pixel centre",
-       "The offsets x − resX/2 aim at the pixel's lower-left corner; the centre needs half a "
-       "pixel more, x + 0.5 − resX/2.",
-       0.5},
-      {"pixel-centre", "convention", "Pixel centre instead of pixel corner",
-       "This problem uses the corner convention x − resX/2 (as in the course's formula); the "
-       "extra half pixel aims at the centre instead.",
-       0.5},
-      {"cylinder-b-no-origin", "algebra", "Origin terms missing from b",
-       "(p_x + t v_x)² = p_x² + 2 p_x v_x t + v_x² t²: the middle term keeps p_x, so "
-       "b = 2(p_x v_x + p_y v_y), not 2v_x + 2v_y.",
-       0},
-      {"r-not-squared", "algebra", "r where r² belongs",
-       "The surface's equation has r² (|P − C|² = r²); using r itself changes every root.", 0},
-      {"diffuse-in-shadow", "lighting", "Diffuse term at a point in shadow",
-       "The diffuse and specular terms need light arriving from the light source; when the "
-       "shadow ray toward it meets an object first, only the ambient term remains.",
-       0},
-      {"media-not-nested", "refraction", "The space between objects where an outer medium is",
-       "Leaving a transparent object that lies inside another, the ray goes on in the outer "
-       "one: n is the index of the innermost medium the ray is still inside, not the "
-       "scene's.",
-       0},
-      {"n1-n2-swapped", "refraction", "n1 and n2 swapped",
-       "n1 is the index of the medium the ray comes from, n2 of the one it goes into.", 0},
-      {"component-is-total", "lighting", "The total given for one component",
-       "A node's intensity is the sum of its components: ambient, diffuse and specular (the "
-       "local part), then k_r·I_R and k_t·I_T from its children. One component is one of "
-       "those terms.",
-       0},
-      {"secondary-unweighted", "lighting", "A child's intensity without its weight",
-       "What a reflection or refraction ray brings is its intensity times the weight of the "
-       "surface it leaves: k_r·I_R and k_t·I_T (with a Fresnel model, F·k_r and (1 − F)·k_t).",
-       0},
-      {"lit-point-ambient-only", "lighting", "Ambient term only at a lit point",
-       "When the shadow ray reaches the light (and the surface faces it), the diffuse and "
-       "specular terms apply as well as the ambient one.",
-       0},
-      {"scalar-for-colour", "colour", "One number where a colour is asked",
-       "When a light or a material is a colour, every intensity is a colour [r, g, b], worked "
-       "channel by channel; one number does not say which channel it is.",
-       0},
-  };
-  return c;
+  static const std::vector<MistakeInfo> catalogue = [] {
+    std::vector<MistakeInfo> c = {
+        {"discriminant-sign", "sign", "Sign slip in the discriminant",
+         "The discriminant is b² − 4ac; with + 4ac the roots move.", 0},
+        {"b-sign", "sign", "Sign slip in the quadratic's b",
+         "b = 2 D·(O − C): with C − O instead of O − C the sign of b flips, and with it both "
+         "roots.",
+         0},
+        {"far-root", "root-choice", "Far root given as the first hit",
+         "Of two roots, the ray meets the surface first at the smaller t ≥ 0; the larger is "
+         "where it leaves.",
+         0},
+        {"negative-t", "root-choice", "Negative t given as a hit",
+         "A root with t < 0 lies behind the ray's origin: it solves the equation but is not a "
+         "hit.",
+         0},
+        {"unit-direction-t", "convention", "t measured along the normalized direction",
+         "t counts lengths of the direction as given. The direction here is not a unit vector, "
+         "so a distance along D/|D| must be divided by |D| to give t.",
+         0},
+        {"cross-order", "orientation", "Cross product in the wrong order",
+         "a × b = −(b × a): swapping the factors flips the vector. With vertices a, b, c in "
+         "order the normal is (b − a) × (c − a); a camera's right vector is d × u.",
+         0.5},
+        {"inward-normal", "orientation", "Normal pointing inward",
+         "A closed surface's normal points outward, away from its inside.", 0.5},
+        {"normal-not-inverse-transpose", "orientation", "Normal transformed by the matrix",
+         "A transformed object's normal goes back to the world by the inverse transpose (A⁻¹)ᵀ, "
+         "which keeps it perpendicular to the surface; the matrix A itself tilts it whenever it "
+         "scales unevenly.",
+         0},
+        {"pixel-corner", "convention", "Pixel corner instead of pixel centre",
+         "The offsets x − resX/2 aim at the pixel's lower-left corner; the centre needs half a "
+         "pixel more, x + 0.5 − resX/2.",
+         0.5},
+        {"pixel-centre", "convention", "Pixel centre instead of pixel corner",
+         "This problem uses the corner convention x − resX/2 (as in the course's formula); the "
+         "extra half pixel aims at the centre instead.",
+         0.5},
+        {"r-not-squared", "algebra", "r where r² belongs",
+         "The surface's equation has r² (|P − C|² = r²); using r itself changes every root.", 0},
+        {"diffuse-in-shadow", "lighting", "Diffuse term at a point in shadow",
+         "The diffuse and specular terms need light arriving from the light source; when the "
+         "shadow ray toward it meets an object first, only the ambient term remains.",
+         0},
+        {"media-not-nested", "refraction", "The space between objects where an outer medium is",
+         "Leaving a transparent object that lies inside another, the ray goes on in the outer "
+         "one: n is the index of the innermost medium the ray is still inside, not the "
+         "scene's.",
+         0},
+        {"n1-n2-swapped", "refraction", "n1 and n2 swapped",
+         "n1 is the index of the medium the ray comes from, n2 of the one it goes into.", 0},
+        {"component-is-total", "lighting", "The total given for one component",
+         "A node's intensity is the sum of its components: ambient, diffuse and specular (the "
+         "local part), then k_r·I_R and k_t·I_T from its children. One component is one of "
+         "those terms.",
+         0},
+        {"secondary-unweighted", "lighting", "A child's intensity without its weight",
+         "What a reflection or refraction ray brings is its intensity times the weight of the "
+         "surface it leaves: k_r·I_R and k_t·I_T (with a Fresnel model, F·k_r and (1 − F)·k_t).",
+         0},
+        {"lit-point-ambient-only", "lighting", "Ambient term only at a lit point",
+         "When the shadow ray reaches the light (and the surface faces it), the diffuse and "
+         "specular terms apply as well as the ambient one.",
+         0},
+        {"scalar-for-colour", "colour", "One number where a colour is asked",
+         "When a light or a material is a colour, every intensity is a colour [r, g, b], worked "
+         "channel by channel; one number does not say which channel it is.",
+         0},
+    };
+    for_each_primitive_mistake([&](const PrimitiveMistake& m) { c.push_back(m.info); });
+    return c;
+  }();
+  return catalogue;
 }
 
 const MistakeInfo& mistake_info(std::string_view id) {
@@ -123,15 +143,6 @@ bool is_symbol(const E& e, std::string_view name) {
   return !e.empty() && e.node().op == Op::kSymbol && e.node().name == name;
 }
 
-bool mentions(const E& e, std::string_view name) {
-  if (e.empty()) return false;
-  if (is_symbol(e, name)) return true;
-  for (const auto& a : e.node().args) {
-    if (mentions(a, name)) return true;
-  }
-  return false;
-}
-
 std::optional<E> discriminant_sign(std::string_view step, const E& f) {
   if (step != "discriminant" || f.empty() || f.node().op != Op::kSub) return std::nullopt;
   return f.node().args[0] + f.node().args[1];
@@ -140,17 +151,6 @@ std::optional<E> discriminant_sign(std::string_view step, const E& f) {
 std::optional<E> b_sign(std::string_view step, const E& f) {
   if (step != "b") return std::nullopt;
   return -f;
-}
-
-std::optional<E> plane_d_sign(std::string_view step, const E& f) {
-  if (step != "D" || f.empty()) return std::nullopt;
-  return -f;
-}
-
-// Seed 000: (p_x + t v_x)² expanded as p_x² + 2t v_x + t² v_x², so b = 2v_x + 2v_y.
-std::optional<E> cylinder_b_no_origin(std::string_view step, const E& f) {
-  if (step != "b" || !mentions(f, "vx") || !mentions(f, "vy")) return std::nullopt;
-  return 2 * sym("vx", "v_x") + 2 * sym("vy", "v_y");
 }
 
 // a × b written b × a: every cross product in the step's formula with its factors swapped.
@@ -203,12 +203,19 @@ bool same_parts(const std::vector<SolutionPart>& a, const std::vector<SolutionPa
 }  // namespace
 
 const std::vector<FormulaMistake>& formula_mistakes() {
-  static const std::vector<FormulaMistake> m = {
-      {"discriminant-sign", &discriminant_sign}, {"b-sign", &b_sign},
-      {"plane-d-sign", &plane_d_sign},           {"cylinder-b-no-origin", &cylinder_b_no_origin},
-      {"r-not-squared", &r_not_squared},         {"cross-order", &cross_order},
-  };
-  return m;
+  static const std::vector<FormulaMistake> mistakes = [] {
+    std::vector<FormulaMistake> m = {
+        {"discriminant-sign", &discriminant_sign},
+        {"b-sign", &b_sign},
+        {"r-not-squared", &r_not_squared},
+        {"cross-order", &cross_order},
+    };
+    for_each_primitive_mistake([&](const PrimitiveMistake& own) {
+      m.push_back({own.info.id, own.rewrite});
+    });
+    return m;
+  }();
+  return mistakes;
 }
 
 std::vector<MistakenSolution> mistaken_solutions(const Task& task) {

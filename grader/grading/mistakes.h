@@ -9,19 +9,14 @@
 #include <vector>
 
 #include "derivation/derivation.h"
+#include "derivation/mistake.h"
 #include "grading/result.h"
 #include "problems/problem.h"
 
 namespace raygrade {
 
-struct MistakeInfo {
-  std::string_view id;
-  std::string_view kind;  // sign, root-choice, convention, orientation, algebra
-  std::string_view title;
-  std::string_view explanation;  // the general lesson, appended to the specific message
-  double credit;                 // the fraction of the part's points it still earns
-};
-
+// The catalogue: grading's own mistakes, then each primitive's own (its `mistakes()`), in the
+// list's order.
 const std::vector<MistakeInfo>& mistake_catalogue();
 // The entry for `id` (a defect if unknown: throws Error).
 const MistakeInfo& mistake_info(std::string_view id);
@@ -29,12 +24,7 @@ const MistakeInfo& mistake_info(std::string_view id);
 // A found mistake: `specific` says what the student wrote; the catalogue adds the lesson.
 FoundMistake make_mistake(std::string_view id, std::string part, const std::string& specific);
 
-// A mistake that is a change to a step's formula.
-struct FormulaMistake {
-  std::string_view id;
-  // The mistaken formula for `step`, or nothing when the mistake does not touch it.
-  std::optional<E> (*rewrite)(std::string_view step, const E& formula);
-};
+// The formula mistakes, in the order they are tried: grading's own, then the primitives'.
 const std::vector<FormulaMistake>& formula_mistakes();
 
 // Copies a formula tree, replacing every subtree for which `replace` returns a value.

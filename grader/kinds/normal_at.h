@@ -15,7 +15,7 @@
 namespace raygrade {
 
 // The part of `primitive`'s surface nearest to `p` (object space), with its outward normal
-// there: the primitive's own nearest_surface (shapes/<name>_normal.cpp).
+// there: the primitive's own nearest_surface (in shapes/<name>.cpp).
 SurfacePoint nearest_surface(const Shape& primitive, const Vec3d& p);
 
 class NormalTask final : public Task {

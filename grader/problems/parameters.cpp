@@ -6,6 +6,7 @@
 #include <cmath>
 #include <set>
 
+#include "generate/lattice.h"
 #include "grading/formula.h"
 
 namespace raygrade {
@@ -40,11 +41,6 @@ double rounded(double v, int decimals) {
   double s = std::pow(10.0, decimals);
   double r = std::round(v * s) / s;
   return r == 0 ? 0.0 : r;  // no "-0"
-}
-
-nlohmann::json number_value(double v) {
-  if (v == std::round(v) && std::abs(v) < 1e15) return static_cast<long long>(v);
-  return v;
 }
 
 bool is_vector(const nlohmann::json& v) {
@@ -116,7 +112,7 @@ nlohmann::json evaluate(std::string_view expr, const ParameterSet& set,
   }
   // Rounding noise of the arithmetic (0.1 + 0.2) is cut at 12 decimals, so that the numbers
   // written into the problem are the ones a person computes.
-  return number_value(rounded(v, 12));
+  return number_json(rounded(v, 12));
 }
 
 // Fills "{expression}" in a text.
@@ -264,7 +260,7 @@ nlohmann::json Parameter::value(std::uint64_t i) const {
   switch (domain) {
     case Domain::kInteger: return static_cast<long long>(lo) + static_cast<long long>(i);
     case Domain::kRange:
-      return number_value(rounded(lo + static_cast<double>(i) * step, step_decimals));
+      return number_json(rounded(lo + static_cast<double>(i) * step, step_decimals));
     case Domain::kChoices: return choices[i];
   }
   return nullptr;

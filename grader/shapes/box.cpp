@@ -1,8 +1,13 @@
 // Box: reading, reference slab intersection and seed 004's slab derivation.
 #include "shapes/box.h"
 
+#include <algorithm>
+
 #include "accuracy/accuracy_case.h"
 #include "accuracy/split_mix.h"
+#include "derivation/number_format.h"
+#include "generate/draft.h"
+#include "generate/solids.h"
 #include "shapes/describe.h"
 
 namespace raygrade {
@@ -230,6 +235,81 @@ void Box::Ladder::hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>
     Vec3d o = target + Vec3d{rng.uniform(-3, -1), rng.uniform(-2, 2), rng.uniform(-3, -1)};
     box_case(fmt::format("box-edge-{}", i), o, target - o, a, b);
   }
+}
+
+// The box's normal at a point: its face's, ±x, ±y or ±z; an edge, where two faces meet, has
+// none.
+
+SurfacePoint Box::nearest_surface(const Vec3d& p, double tie) const {
+  const char* axis[] = {"x", "y", "z"};
+  std::vector<SurfaceCandidate> cs;
+  for (int i = 0; i < 3; ++i) {
+    for (int side = 0; side < 2; ++side) {
+      Vec3d q{std::clamp(p.x, lo_.x, hi_.x), std::clamp(p.y, lo_.y, hi_.y),
+              std::clamp(p.z, lo_.z, hi_.z)};
+      double face = side ? hi_[i] : lo_[i];
+      q[i] = face;
+      Vec3d n{};
+      n[i] = side ? 1 : -1;
+      cs.push_back({q, n, fmt::format("face {} = {}", axis[i], format_number(face))});
+    }
+  }
+  return nearest_of(cs, p, tie);
+}
+
+void Box::derive_normal(Deriver& d, const E& /*P*/, const SurfacePoint& s,
+                        const NormalNames& n) const {
+  d.given(n.name, n.display, s.normal, fmt::format("P is on the {}: its outward normal", s.part));
+}
+
+// The box's generator: builds the answer first (hits at lattice points, at integer t) and the ray
+// backwards from it.
+
+namespace {
+
+// Boxes have no tangent case here (a ray grazing an edge is an edge case of the slabs).
+const std::vector<Outcome> kBoxOutcomes = {Outcome::kHit, Outcome::kMiss, Outcome::kInside,
+                                           Outcome::kBehind};
+
+}  // namespace
+
+const std::vector<Outcome>& Box::outcomes() { return kBoxOutcomes; }
+
+Draft Box::generate(Prng& rng, std::optional<Outcome> asked) {
+  Outcome o = choose_outcome(rng, asked, kBoxOutcomes);
+  AxisMap map = random_axis_map(rng);
+  Vec3d lo = random_point(rng, 3);
+  Vec3d size{double(rng.range(2, 5)), double(rng.range(2, 5)), double(rng.range(2, 5))};
+  Vec3d hi = lo + size;
+  // Enter through the face x = lo.x and leave through x = hi.x, away from every edge.
+  auto inner = [&](int axis) { return double(rng.range(1, static_cast<int>(size[axis]) - 1)); };
+  Vec3d p0, p1, full;
+  int steps = 1;
+  do {
+    p0 = {lo.x, lo.y + inner(1), lo.z + inner(2)};
+    p1 = {hi.x, lo.y + inner(1), lo.z + inner(2)};
+    full = p1 - p0;
+    steps = static_cast<int>(component_gcd(full));
+  } while (o == Outcome::kInside && steps < 2);
+  Vec3d d = reduced(full);
+  int s = rng.range(1, 3);
+  Vec3d origin;
+  std::vector<KnownHit> hits;
+  if (o != Outcome::kMiss) {
+    chord_ray(rng, o, p0, p1, d, steps, s, origin, hits);
+  } else {
+    // The same line moved past the box's top in y: clear of it by at least one unit.
+    origin = p0 - s * d + Vec3d{0, size.y + std::abs(p1.y - p0.y) + 1, 0};
+  }
+  Vec3d a = map(lo), b = map(hi);
+  Vec3d mn{std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
+  Vec3d mx{std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
+  nlohmann::ordered_json object = {
+      {"type", "box"}, {"min", vector_json(mn)}, {"max", vector_json(mx)}};
+  for (auto& h : hits) h.point = map(h.point);
+  return intersect_draft(
+      map(origin), map(d), object,
+      fmt::format("the axis-aligned box from {} to {}", point_text(mn), point_text(mx)), hits);
 }
 
 }  // namespace raygrade

@@ -60,13 +60,13 @@ class Box final : public Shape {
   static constexpr std::string_view kSummary = "axis-aligned, min and max corners";
   // Its fragment of the problem schema: its own keys, and examples.
   static nlohmann::ordered_json schema();
-  // Its generator (shapes/box_generate.cpp): the outcomes it can build, and a problem for one
-  // of them (a random one when none is asked) with nice numbers.
+  // Its generator: the outcomes it can build, and a problem for one of them (a random one when none
+  // is asked) with nice numbers.
   static const std::vector<Outcome>& outcomes();
   static Draft generate(Prng& rng, std::optional<Outcome> outcome);
-  // The normal kind (shapes/box_normal.cpp): the part of its surface nearest to the
-  // object-space point p, with the outward normal there (`tie`: how near two parts must both be
-  // for p to lie where they meet), and the steps that derive that normal at P.
+  // The normal kind: the part of its surface nearest to the object-space point p, with the outward
+  // normal there (`tie`: how near two parts must both be for p to lie where they meet), and the
+  // steps that derive that normal at P.
   SurfacePoint nearest_surface(const Vec3d& p, double tie) const;
   void derive_normal(Deriver& d, const E& P, const SurfacePoint& s, const NormalNames& n) const;
 

@@ -5,6 +5,8 @@
 
 #include "accuracy/accuracy_case.h"
 #include "accuracy/split_mix.h"
+#include "generate/draft.h"
+#include "generate/solids.h"
 #include "math/unit_vector.h"
 #include "shapes/describe.h"
 #include "shapes/round.h"
@@ -378,7 +380,8 @@ void small_far(std::vector<AccuracyCase>& out, SplitMix& rng) {
     Vec3d u = rng.unit_vector(), axis = perpendicular(u, rng);
     Vec3d base = o + dist * u + rng.uniform(-1, 1) * axis;
     Vec3d across = normalized(cross(axis, u));
-    Vec3d target = base + (r * rng.uniform(-0.9, 0.9)) * across + rng.uniform(-1, 1) * axis;
+    double height = rng.uniform(-1, 1), aside = rng.uniform(-0.9, 0.9);
+    Vec3d target = base + (r * aside) * across + height * axis;
     out.push_back(cylinder_case(fmt::format("small-far-cylinder-{}", i), "small-far", o, target - o,
                                 base, axis, r));
   }
@@ -404,6 +407,121 @@ void Cylinder::Ladder::hard_cases(int round, SplitMix& rng, std::vector<Accuracy
     case 8: small_far(out, rng); break;
     default: break;
   }
+}
+
+// The cylinder's normal at a point: the part of P − B across the axis on the side, ±â on a
+// cap; a capped cylinder's rim, where side and cap meet, has none.
+
+SurfacePoint Cylinder::nearest_surface(const Vec3d& p, double tie) const {
+  Vec3d q = p - base_;
+  double y = dot(q, axis_);
+  Vec3d radial = q - y * axis_;
+  Vec3d out = unit_across(p, base_, axis_);
+  std::vector<SurfaceCandidate> cs;
+  double ys = height_ ? std::clamp(y, 0.0, *height_) : y;
+  cs.push_back({base_ + ys * axis_ + radius_ * out, radial, "side"});
+  if (capped_ && height_) {
+    Vec3d across = length(radial) <= radius_ ? radial : radius_ * out;
+    cs.push_back({base_ + across, -axis_, "bottom cap"});
+    cs.push_back({base_ + *height_ * axis_ + across, axis_, "top cap"});
+  }
+  return nearest_of(cs, p, tie);
+}
+
+void Cylinder::derive_normal(Deriver& d, const E& P, const SurfacePoint& s,
+                             const NormalNames& n) const {
+  E B = d.given("B", "B", base_, "the centre of the base");
+  E a = d.given("a_hat", "â", axis_, "the unit axis");
+  if (s.part == "side") {
+    d.step("q", "q", P - B);
+    d.step("y", "y", dot(d.sym("q"), a), "the height of P along the axis");
+    d.step("radial", "q_⊥", d.sym("q") - d.sym("y") * a, "the part of q across the axis");
+    d.step(n.name, n.display, d.sym("radial") / norm(d.sym("radial")),
+           "the outward unit normal of the side");
+  } else {
+    d.step(n.name, n.display, s.part == "top cap" ? a : -a,
+           fmt::format("P is on the {}: the normal is the axis, pointing out", s.part));
+  }
+}
+
+// The cylinder's generator: builds the answer first (hits at lattice points, at integer t) and the
+// ray backwards from it.
+
+const std::vector<Outcome>& Cylinder::outcomes() { return kSolidOutcomes; }
+
+Draft Cylinder::generate(Prng& rng, std::optional<Outcome> asked) {
+  Outcome o = choose_outcome(rng, asked, kSolidOutcomes);
+  AxisMap map = random_axis_map(rng);
+  int r = rng.pick(std::vector<int>{2, 3, 5, 10});
+  Vec3d base = random_point(rng, 3);
+  const auto& points = lattice_circle(r);
+  Vec3d up{0, 0, 1};
+  int s = rng.range(1, 3);
+  // Built around the z axis, then turned by `map` (a rotation or reflection of the axes).
+  Vec3d origin, d;
+  std::vector<KnownHit> hits;
+  int top = 0;  // the highest hit's height above the base
+  if (o == Outcome::kTangent || o == Outcome::kMiss) {
+    Vec3d a = rng.pick(points);
+    int z = rng.range(1, 3);
+    d = reduced(Vec3d{-a.y, a.x, 0}) + double(rng.range(-1, 1)) * up;
+    Vec3d p = base + a + double(z) * up;
+    origin = p - s * d;
+    if (o == Outcome::kMiss)
+      origin = origin + a;
+    else
+      hits.push_back({double(s), p});
+    top = z;
+  } else {
+    Chord ch;
+    int z0 = 0, z1 = 0;
+    do {
+      ch = random_chord(rng, points, 1);
+      z0 = rng.range(1, 4);
+      z1 = rng.range(1, 4);
+      Vec3d full = (ch.b + double(z1) * up) - (ch.a + double(z0) * up);
+      ch.steps = static_cast<int>(component_gcd(full));
+      ch.d = reduced(full);
+    } while (o == Outcome::kInside && ch.steps < 2);
+    d = ch.d;
+    Vec3d p0 = base + ch.a + double(z0) * up, p1 = base + ch.b + double(z1) * up;
+    top = std::max(z0, z1);
+    chord_ray(rng, o, p0, p1, d, ch.steps, s, origin, hits);
+  }
+  nlohmann::ordered_json object = {{"type", "cylinder"},
+                                   {"base", vector_json(map(base))},
+                                   {"axis", vector_json(map(up))},
+                                   {"radius", r}};
+  std::string text =
+      fmt::format("the infinite cylinder of radius {} around the axis through {} along {}", r,
+                  point_text(map(base)), direction_text(map(up)));
+  if (rng.below(2) && o != Outcome::kInside) {
+    int height = top + rng.range(1, 2);
+    bool capped = rng.below(2);
+    object["height"] = height;
+    if (capped) object["capped"] = true;
+    text = fmt::format(
+        "the {} cylinder of radius {} and height {} whose axis starts at {} along {}",
+        capped ? "closed" : "open", r, height, point_text(map(base)), direction_text(map(up)));
+  }
+  for (auto& h : hits) h.point = map(h.point);
+  return intersect_draft(map(origin), map(d), object, text, hits);
+}
+
+// Seed 000: (p_x + t v_x)² expanded as p_x² + 2t v_x + t² v_x², so b = 2v_x + 2v_y.
+const std::vector<PrimitiveMistake>& Cylinder::mistakes() {
+  static const std::vector<PrimitiveMistake> m = {
+      {{"cylinder-b-no-origin", "algebra", "Origin terms missing from b",
+        "(p_x + t v_x)² = p_x² + 2 p_x v_x t + v_x² t²: the middle term keeps p_x, so "
+        "b = 2(p_x v_x + p_y v_y), not 2v_x + 2v_y.",
+        0},
+       [](std::string_view step, const E& f) -> std::optional<E> {
+         if (step != "b" || !mentions_symbol(f, "vx") || !mentions_symbol(f, "vy"))
+           return std::nullopt;
+         return 2 * sym("vx", "v_x") + 2 * sym("vy", "v_y");
+       }},
+  };
+  return m;
 }
 
 }  // namespace raygrade

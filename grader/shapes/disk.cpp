@@ -5,6 +5,8 @@
 
 #include "accuracy/accuracy_case.h"
 #include "accuracy/split_mix.h"
+#include "generate/draft.h"
+#include "generate/flats.h"
 #include "math/unit_vector.h"
 #include "shapes/describe.h"
 #include "shapes/flat.h"
@@ -145,7 +147,9 @@ void Disk::Ladder::hard_cases(int round, SplitMix& /*shared*/, std::vector<Accur
     return std::pair{o, target - o};
   };
   for (int i = 0; i < 12; ++i) {
-    Vec3d c = rng.point(1), n = rng.unit_vector() * rng.uniform(0.5, 3);
+    Vec3d c = rng.point(1);
+    double length = rng.uniform(0.5, 3);
+    Vec3d n = rng.unit_vector() * length;
     double r = rng.uniform(0.5, 2);
     auto [o, d] = rim_ray(c, n, r, 5, offset(rng, 6, 16));
     add(fmt::format("disk-rim-{}", i), "disk-rim", o, d, c, n, r);
@@ -154,7 +158,8 @@ void Disk::Ladder::hard_cases(int round, SplitMix& /*shared*/, std::vector<Accur
   for (int i = 0; i < 10; ++i) {
     Vec3d c = rng.point(1), n = rng.unit_vector();
     double r = 1;
-    auto [o, d] = rim_ray(c, n, r, std::pow(10.0, rng.uniform(4, 8)), offset(rng, 1, 10));
+    double delta = offset(rng, 1, 10), distance = std::pow(10.0, rng.uniform(4, 8));
+    auto [o, d] = rim_ray(c, n, r, distance, delta);
     add(fmt::format("far-disk-{}", i), "far-disk", o, d, c, n, r);
   }
   // Grazing: from 10^8 to 10^11 away along the plane and 0.5 to 2 off it (an angle of 10^-8 to
@@ -185,6 +190,61 @@ void Disk::Ladder::hard_cases(int round, SplitMix& /*shared*/, std::vector<Accur
   add("disk-by-hand-1", "disk-rim", {3, 4.5, 7}, {0, 0, -1}, {0, 0, 0}, {0, 0, 1}, 5);
   add("disk-by-hand-2", "disk-rim", {0, 0, -2}, {0, 0, 1}, {0, 0, 0}, {0, 0, 1}, 5);
   add("disk-by-hand-3", "disk-rim", {1, 1, 2}, {0, 0, 1}, {0, 0, 0}, {0, 0, 1}, 5);
+}
+
+// The disk's normal at a point: the given one, normalized, the same over the disk and its rim
+// (the disk is flat: its rim is no edge between two parts).
+
+SurfacePoint Disk::nearest_surface(const Vec3d& p, double /*tie*/) const {
+  Vec3d u = normalized(normal_);
+  Vec3d q = p - dot(p - center_, u) * u;
+  Vec3d off = q - center_;
+  double rho = length(off);
+  if (rho > radius_) q = center_ + (radius_ / rho) * off;  // beyond the rim: the rim's point
+  return SurfacePoint{q, normal_, "", ""};
+}
+
+void Disk::derive_normal(Deriver& d, const E& /*P*/, const SurfacePoint& /*s*/,
+                         const NormalNames& n) const {
+  E given = d.given("n", "n", normal_, "the disk's normal as given");
+  d.step(n.name, n.display, given / norm(given),
+         "the same at every point of the disk, its rim included");
+}
+
+// The disk's generator: a disk across an axis, the hit at a lattice point of its plane (inside,
+// on the rim, or outside for a miss) and the ray built backwards from it.
+
+// The tangent outcome of a disk is a ray through its rim (the disk is closed: the rim hits).
+const std::vector<Outcome>& Disk::outcomes() { return kFlatOutcomes; }
+
+Draft Disk::generate(Prng& rng, std::optional<Outcome> asked) {
+  Outcome o = choose_outcome(rng, asked, kFlatOutcomes);
+  AxisMap map = random_axis_map(rng);
+  int r = rng.pick(std::vector<int>{2, 3, 5, 10});
+  Vec3d c = random_point(rng, 4);
+  // Built across the z axis, then turned by `map`.
+  Vec3d n{0, 0, 1};
+  Vec3d offset;  // from the centre to the point the ray passes through, in the disk's plane
+  if (o == Outcome::kTangent) {
+    offset = rng.pick(lattice_circle(r));
+  } else if (o == Outcome::kMiss) {
+    offset = 2 * rng.pick(lattice_circle(r));  // twice the radius from the centre
+  } else {
+    // A lattice point strictly inside: |offset| < r.
+    do {
+      offset = {double(rng.range(-r + 1, r - 1)), double(rng.range(-r + 1, r - 1)), 0};
+    } while (length_squared(offset) >= double(r * r));
+  }
+  // A normal of length 1 or 2 as given, either way across the disk.
+  int sign = rng.sign();
+  Vec3d given = double(sign * rng.range(1, 2)) * map(n);
+  nlohmann::ordered_json object = {{"type", kType},
+                                   {"center", vector_json(map(c))},
+                                   {"normal", vector_json(given)},
+                                   {"radius", r}};
+  return flat_draft(rng, o, map(c + offset), map(n), object,
+                    fmt::format("the disk with center {}, normal {} and radius {}",
+                                point_text(map(c)), direction_text(given), r));
 }
 
 }  // namespace raygrade

@@ -3,6 +3,8 @@
 
 #include "accuracy/accuracy_case.h"
 #include "accuracy/split_mix.h"
+#include "generate/draft.h"
+#include "generate/flats.h"
 #include "math/unit_vector.h"
 #include "shapes/describe.h"
 #include "shapes/flat.h"
@@ -214,14 +216,80 @@ void Plane::Ladder::random_case(SplitMix& rng, std::vector<Vec3d>& points, doubl
 void Plane::Ladder::hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out) {
   if (round != 3) return;
   for (int i = 0; i < 60; ++i) {
-    Vec3d n = rng.unit_vector() * rng.uniform(0.5, 3);
+    double length = rng.uniform(0.5, 3);
+    Vec3d n = rng.unit_vector() * length;
     Vec3d p{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
-    Vec3d o = p + rng.uniform(-2, 2) * normalized(n) + 0.5 * rng.unit_vector();
+    Vec3d aside = rng.unit_vector();
+    double off = rng.uniform(-2, 2);
+    Vec3d o = p + off * normalized(n) + 0.5 * aside;
     Vec3d along = perpendicular(normalized(n), rng);
     Vec3d d = along + offset(rng, 10, 16) * normalized(n);
     out.push_back(make_case(fmt::format("near-parallel-{}", i), "near-parallel",
                             primitive_of<Plane>(), o, d, {n, p}));
   }
+}
+
+// The plane's normal at a point: the given one, the same everywhere.
+
+SurfacePoint Plane::nearest_surface(const Vec3d& p, double /*tie*/) const {
+  Vec3d on = some_point();
+  return SurfacePoint{p - dot(p - on, normal_) / length_squared(normal_) * normal_, normal_, "",
+                      ""};
+}
+
+void Plane::derive_normal(Deriver& d, const E& /*P*/, const SurfacePoint& /*s*/,
+                          const NormalNames& n) const {
+  E given = d.given("n", "n", normal_, "the plane's normal as given");
+  d.step(n.name, n.display, given / norm(given), "the same at every point of the plane");
+}
+
+// The plane's generator: puts the hit at a lattice point of its plane and builds the ray backwards
+// from it.
+
+const std::vector<Outcome>& Plane::outcomes() { return kFlatOutcomes; }
+
+Draft Plane::generate(Prng& rng, std::optional<Outcome> asked) {
+  Outcome o = choose_outcome(rng, asked, kFlatOutcomes);
+  Frame f = random_frame(rng);
+  Vec3d n = reduced(f.normal());
+  int py = rng.range(-2, 2), px = rng.range(-2, 2);
+  Vec3d p = f.at(px, py);
+  nlohmann::ordered_json object = {{"type", "plane"}};
+  std::string text;
+  if (rng.below(2)) {
+    int ay = rng.range(-2, 2), ax = rng.range(-2, 2);
+    Vec3d a = f.at(ax, ay);
+    object["point"] = vector_json(a);
+    object["normal"] = vector_json(n);
+    text = fmt::format("the plane through {} with normal {}", point_text(a), point_text(n));
+  } else {
+    double dd = -dot(n, p);
+    object["normal"] = vector_json(n);
+    object["d"] = number_json(dd);
+    text = fmt::format("the plane n·p + d = 0 with n = {} and d = {}", point_text(n),
+                       number_json(dd).dump());
+  }
+  if (o == Outcome::kHit || o == Outcome::kBehind) return flat_draft(rng, o, p, n, object, text);
+  // Parallel rays: in the plane (the tangent case: contained) or one or two normals off it.
+  double side = rng.sign(), steps = rng.range(1, 2);
+  Vec3d d = reduced(steps * f.e1 + side * f.e2);
+  int s = rng.range(1, 3);
+  Vec3d origin = p - double(s) * d;
+  if (o == Outcome::kMiss)
+    return intersect_draft(origin + double(rng.sign()) * n, d, object, text, {});
+  return intersect_draft(origin, d, object, text, {}, true);
+}
+
+const std::vector<PrimitiveMistake>& Plane::mistakes() {
+  static const std::vector<PrimitiveMistake> m = {
+      {{"plane-d-sign", "sign", "Sign slip in the plane's D",
+        "In N·P + D = 0 a point V0 of the plane gives N·V0 + D = 0, so D = −N·V0 (not +N·V0).", 0},
+       [](std::string_view step, const E& f) -> std::optional<E> {
+         if (step != "D" || f.empty()) return std::nullopt;
+         return -f;
+       }},
+  };
+  return m;
 }
 
 }  // namespace raygrade

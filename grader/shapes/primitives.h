@@ -39,11 +39,11 @@ concept PrimitiveType = std::derived_from<T, Shape> && std::is_final_v<T> &&
   { T::kSummary } -> std::convertible_to<std::string_view>;
   { T::read(object) } -> std::same_as<std::unique_ptr<Shape>>;
   { T::schema() } -> std::same_as<nlohmann::ordered_json>;
-  // Its generator (shapes/<name>_generate.cpp): the outcomes it can build (Outcome,
+  // Its generator (in the primitive's own .cpp): the outcomes it can build (Outcome,
   // generate/outcome.h), and a problem with nice numbers for one of them.
   { T::outcomes() } -> std::same_as<const std::vector<Outcome>&>;
   { T::generate(rng, outcome) } -> std::same_as<Draft>;
-  // The normal kind (shapes/<name>_normal.cpp, shapes/surface_point.h): the part of its
+  // The normal kind (in its own .cpp; shapes/surface_point.h): the part of its
   // surface nearest to a point with the outward normal there, and the steps that derive it.
   { shape.nearest_surface(p, 0.0) } -> std::same_as<SurfacePoint>;
   { shape.derive_normal(d, P, s, n) } -> std::same_as<void>;

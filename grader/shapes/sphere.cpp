@@ -3,6 +3,8 @@
 
 #include "accuracy/accuracy_case.h"
 #include "accuracy/split_mix.h"
+#include "generate/draft.h"
+#include "generate/solids.h"
 #include "math/unit_vector.h"
 #include "shapes/describe.h"
 
@@ -211,13 +213,16 @@ void far_spheres(std::vector<AccuracyCase>& out, SplitMix& rng) {
   for (int i = 0; i < 100; ++i) {
     Vec3d o{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
     double dist = std::pow(10.0, rng.uniform(4, 9));
-    out.push_back(sphere_pass(fmt::format("far-sphere-{}", i), "far-sphere", o,
-                              o + dist * rng.unit_vector(), 1, offset(rng, 1, 12), rng));
+    double delta = offset(rng, 1, 12);
+    Vec3d c = o + dist * rng.unit_vector();
+    out.push_back(sphere_pass(fmt::format("far-sphere-{}", i), "far-sphere", o, c, 1, delta, rng));
   }
   for (int i = 0; i < 40; ++i) {
     double r = std::pow(10.0, -rng.uniform(3, 6)), dist = std::pow(10.0, rng.uniform(3, 6));
-    out.push_back(sphere_pass(fmt::format("tiny-far-sphere-{}", i), "far-sphere", Vec3d{},
-                              dist * rng.unit_vector(), r, offset(rng, 1, 10), rng));
+    double delta = offset(rng, 1, 10);
+    Vec3d c = dist * rng.unit_vector();
+    out.push_back(
+        sphere_pass(fmt::format("tiny-far-sphere-{}", i), "far-sphere", Vec3d{}, c, r, delta, rng));
   }
 }
 
@@ -245,8 +250,9 @@ void grazing(std::vector<AccuracyCase>& out, SplitMix& rng) {
   for (int i = 0; i < 80; ++i) {
     Vec3d c{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
     double r = rng.uniform(0.5, 2);
-    out.push_back(sphere_pass(fmt::format("grazing-sphere-{}", i), "grazing",
-                              c + 5.0 * rng.unit_vector(), c, r, offset(rng, 4, 15), rng));
+    double delta = offset(rng, 4, 15);
+    Vec3d o = c + 5.0 * rng.unit_vector();
+    out.push_back(sphere_pass(fmt::format("grazing-sphere-{}", i), "grazing", o, c, r, delta, rng));
   }
 }
 
@@ -304,14 +310,15 @@ void small_far_spheres(std::vector<AccuracyCase>& out, SplitMix& rng) {
   auto sphere = [&](std::string id, double r, double dist) {
     Vec3d o{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
     Vec3d u = rng.unit_vector(), c = o + dist * u;
-    Vec3d target = c + (r * rng.uniform(-0.9, 0.9)) * perpendicular(u, rng);
+    Vec3d across = perpendicular(u, rng);
+    Vec3d target = c + (r * rng.uniform(-0.9, 0.9)) * across;
     out.push_back(sphere_case(std::move(id), "small-far", o, target - o, c, r));
   };
   for (int i = 0; i < 10; ++i) sphere(fmt::format("small-far-sphere-{}", i), 6e-9, 1000);
   for (int i = 0; i < 10; ++i) sphere(fmt::format("far-sphere-1e11-{}", i), 1, 1e11);
   for (int i = 0; i < 20; ++i) {
-    sphere(fmt::format("small-far-sphere-{}", i + 10), std::pow(10.0, -rng.uniform(6, 9)),
-           std::pow(10.0, rng.uniform(2, 4)));
+    double dist = std::pow(10.0, rng.uniform(2, 4)), r = std::pow(10.0, -rng.uniform(6, 9));
+    sphere(fmt::format("small-far-sphere-{}", i + 10), r, dist);
   }
 }
 
@@ -331,6 +338,54 @@ void Sphere::Ladder::hard_cases(int round, SplitMix& rng, std::vector<AccuracyCa
     case 8: small_far_spheres(out, rng); break;
     default: break;
   }
+}
+
+// The sphere's normal at a point: from the centre to the point, the gradient of |X − C|² − r².
+
+SurfacePoint Sphere::nearest_surface(const Vec3d& p, double /*tie*/) const {
+  Vec3d pc = p - center_;
+  Vec3d dir = length(pc) > 0 ? normalized(pc) : Vec3d{0, 0, 1};
+  return SurfacePoint{center_ + radius_ * dir, pc, "", ""};
+}
+
+void Sphere::derive_normal(Deriver& d, const E& P, const SurfacePoint& /*s*/,
+                           const NormalNames& n) const {
+  E C = d.given("C", "C", center_, "the sphere's centre");
+  d.step("PC", n.point + " − C", P - C,
+         "from the centre to the point: the gradient of |X − C|² − r²");
+  d.step(n.name, n.display, d.sym("PC") / norm(d.sym("PC")), "the outward unit normal");
+}
+
+// The sphere's generator: builds the answer first (hits at lattice points, at integer t) and the
+// ray backwards from it.
+
+const std::vector<Outcome>& Sphere::outcomes() { return kSolidOutcomes; }
+
+Draft Sphere::generate(Prng& rng, std::optional<Outcome> asked) {
+  Outcome o = choose_outcome(rng, asked, kSolidOutcomes);
+  int r = rng.pick(std::vector<int>{2, 3, 5, 6, 7, 9});
+  Vec3d c = random_point(rng, 5);
+  const auto& points = lattice_sphere(r);
+  int s = rng.range(1, 3);
+  Vec3d origin, d;
+  std::vector<KnownHit> hits;
+  if (o == Outcome::kTangent || o == Outcome::kMiss) {
+    Vec3d a = rng.pick(points);
+    d = perpendicular(rng, a);
+    origin = c + a - s * d;
+    if (o == Outcome::kMiss)
+      origin = origin + a;  // the line passes 2r from the centre
+    else
+      hits.push_back({double(s), c + a});
+  } else {
+    Chord ch = random_chord(rng, points, o == Outcome::kInside ? 2 : 1);
+    d = ch.d;
+    chord_ray(rng, o, c + ch.a, c + ch.b, d, ch.steps, s, origin, hits);
+  }
+  nlohmann::ordered_json object = {{"type", "sphere"}, {"center", vector_json(c)}, {"radius", r}};
+  return intersect_draft(origin, d, object,
+                         fmt::format("the sphere with center {} and radius {}", point_text(c), r),
+                         hits);
 }
 
 }  // namespace raygrade

@@ -1,6 +1,6 @@
 // The nearest point of a primitive's surface to a given point, with the outward normal there:
 // what the normal kind asks of each primitive (its nearest_surface and derive_normal, in its
-// own shapes/<name>_normal.cpp).
+// own shapes/<name>.cpp).
 #pragma once
 
 #include <string>

@@ -5,6 +5,8 @@
 
 #include "accuracy/accuracy_case.h"
 #include "accuracy/split_mix.h"
+#include "generate/draft.h"
+#include "generate/flats.h"
 #include "math/unit_vector.h"
 #include "shapes/describe.h"
 #include "shapes/flat.h"
@@ -228,7 +230,8 @@ void needles(std::vector<AccuracyCase>& out, SplitMix& rng) {
     Vec3d e1 = rng.unit_vector(), e2 = perpendicular(e1, rng);
     double h = std::pow(10.0, -rng.uniform(6, 12));
     Vec3d b = a + 2.0 * e1, c = a + 1.0 * e1 + h * e2;
-    Vec3d target = a + rng.uniform(0.1, 1.9) * e1 + (h * rng.uniform(-0.5, 1.5) / 2) * e2;
+    double across = rng.uniform(-0.5, 1.5), along = rng.uniform(0.1, 1.9);
+    Vec3d target = a + along * e1 + (h * across / 2) * e2;
     Vec3d o = target + 3.0 * rng.unit_vector();
     out.push_back(triangle_case(fmt::format("needle-{}", i), "needle", o, target - o, a, b, c));
   }
@@ -239,6 +242,48 @@ void needles(std::vector<AccuracyCase>& out, SplitMix& rng) {
 void Triangle::Ladder::hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out) {
   if (round == 3) shared_edges(out, rng);
   if (round == 4) needles(out, rng);
+}
+
+// The triangle's normal at a point: e₁ × e₂ by vertex order, the same over the face.
+
+SurfacePoint Triangle::nearest_surface(const Vec3d& p, double /*tie*/) const {
+  return nearest_flat({v_.begin(), v_.end()}, p);
+}
+
+void Triangle::derive_normal(Deriver& d, const E& /*P*/, const SurfacePoint& /*s*/,
+                             const NormalNames& n) const {
+  derive_flat_normal(d, {v_.begin(), v_.end()}, n);
+}
+
+// The triangle's generator: puts the hit at a lattice point of its plane and builds the ray
+// backwards from it.
+
+const std::vector<Outcome>& Triangle::outcomes() { return kFlatOutcomes; }
+
+Draft Triangle::generate(Prng& rng, std::optional<Outcome> asked) {
+  Outcome o = choose_outcome(rng, asked, kFlatOutcomes);
+  Frame f = random_frame(rng);
+  int w = rng.range(3, 6), h = rng.range(3, 6);
+  std::vector<Vec3d> v = {f.at(0, 0), f.at(w, 0), f.at(0, h)};
+  if (rng.below(2)) std::swap(v[1], v[2]);  // either winding: the normal flips
+  std::rotate(v.begin(), v.begin() + rng.below(3), v.end());
+  Vec3d p;
+  if (o == Outcome::kMiss) {
+    p = rng.below(2) ? f.at(w, h) : f.at(-1, rng.range(1, h - 1));
+  } else if (o == Outcome::kTangent) {
+    p = rng.below(2) ? f.at(rng.range(1, w - 1), 0) : f.at(0, rng.range(1, h - 1));
+  } else {
+    // A lattice point strictly inside: x, y >= 1 and x/w + y/h < 1.
+    int x, y;
+    do {
+      x = rng.range(1, w - 2);
+      y = rng.range(1, h - 2);
+    } while (x * h + y * w >= w * h);
+    p = f.at(x, y);
+  }
+  nlohmann::ordered_json object = {{"type", "triangle"}, {"vertices", vertices_json(v)}};
+  return flat_draft(rng, o, p, f.normal(), object,
+                    fmt::format("the triangle with vertices {}", vertices_text(v)));
 }
 
 }  // namespace raygrade
