@@ -115,7 +115,10 @@ require(path.resolve(raygradeJs))().then((raygrade) => {
           runNative(['solve', hard.slice(1), '--format', 'json'], '/'));
   const levels = {};
   for (const s of JSON.parse(raygrade.solve({'hard.json': fs.readFileSync(hard, 'utf8')})).solutions) {
-    levels[s.level] = (levels[s.level] || 0) + 1;
+    // No level: an object the study has no case for (a cone whose apex − base is not exactly
+    // h·â once written as a problem), answered in double.
+    const level = s.level || 'none';
+    levels[level] = (levels[level] || 0) + 1;
   }
   fs.rmSync(scratch, {recursive: true});
   const broken = '{"problems": [{"id": "p", "kind": "intersect", "ray": {"origin": [0, 0, 0],\n' +
