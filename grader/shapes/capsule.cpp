@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "accuracy/accuracy_case.h"
+#include "accuracy/huge_coordinates.h"
 #include "accuracy/split_mix.h"
 #include "generate/draft.h"
 #include "generate/solids.h"
@@ -285,16 +286,7 @@ void Capsule::Ladder::hard_cases(int round, SplitMix& /*shared*/, std::vector<Ac
     add(fmt::format("grazing-capsule-{}", i), "grazing", o, p.target - o, p.a, p.b, p.r);
   }
   // Huge coordinates: random capsules shifted by 1e8.
-  for (int i = 0; i < 3; ++i) {
-    Vec3d shift = 1e8 * rng.unit_vector();
-    std::vector<Vec3d> p;
-    double r = 0;
-    random_case(rng, p, r);
-    Vec3d o = 4.0 * rng.unit_vector();
-    Vec3d target = 0.5 * (p[0] + p[1]) + rng.point(0.5);
-    add(fmt::format("huge-coordinates-capsule-{}", i), "huge-coordinates", o + shift, target - o,
-        p[0] + shift, p[1] + shift, r);
-  }
+  two_point_huge_coordinate_cases<Capsule>(3, 0.5, rng, out);
   // Worked by hand: the capsule a = (0, 0, 0), b = (0, 0, 4), r = 1. From (−5, 0, 2) along +x
   // the side at t = 4 in (−1, 0, 2); from (0, 0, 10) along −z the end b at t = 5 in (0, 0, 5);
   // from (−5, 0, 0) along +x the rim at a, t = 4 in (−1, 0, 0); from (0.6, 0, −5) along +z the

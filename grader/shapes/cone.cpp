@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "accuracy/accuracy_case.h"
+#include "accuracy/huge_coordinates.h"
 #include "accuracy/split_mix.h"
 #include "generate/draft.h"
 #include "generate/solids.h"
@@ -237,16 +238,7 @@ void Cone::Ladder::hard_cases(int round, SplitMix& /*shared*/, std::vector<Accur
     add(fmt::format("grazing-cone-{}", i), "grazing", o, target - o, c.base, c.apex, c.r);
   }
   // Huge coordinates: random cones shifted by 1e8.
-  for (int i = 0; i < 3; ++i) {
-    Vec3d shift = 1e8 * rng.unit_vector();
-    std::vector<Vec3d> p;
-    double r = 0;
-    random_case(rng, p, r);
-    Vec3d o = 4.0 * rng.unit_vector();
-    Vec3d target = 0.5 * (p[0] + p[1]) + rng.point(0.3);
-    add(fmt::format("huge-coordinates-cone-{}", i), "huge-coordinates", o + shift, target - o,
-        p[0] + shift, p[1] + shift, r);
-  }
+  two_point_huge_coordinate_cases<Cone>(3, 0.3, rng, out);
   // Worked by hand: the cone B = (0, 0, 0), apex (0, 0, 1), r = 1 (the radius at height s is
   // 1 − s). From (−5, 0, 0.5) along +x the side at t = 4.5 in (−0.5, 0, 0.5); from (−2, 0, 1)
   // along +x the apex at t = 2; from (−5, 0, 0) along +x the rim at t = 4 in (−1, 0, 0); from
