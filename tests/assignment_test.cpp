@@ -169,6 +169,110 @@ TEST(Assignment, TheRosterNamesTheStudents) {
   EXPECT_THROW((void)load_roster((dir.path() / "twice.csv").string()), Error);
 }
 
+// A submission naming `student` (any of id, name, email) with `answers`.
+std::string submission_by(const nlohmann::json& student, const nlohmann::json& answers) {
+  return nlohmann::json{{"student", student}, {"answers", answers}}.dump(2);
+}
+
+// Two students named alike and two emails: which fields name whom is known by construction.
+constexpr const char* kTwinRoster =
+    "id,name,email\n"
+    "s001,Ann Lee,ann.lee@example.edu\n"
+    "s002,Ann Lee,ann.lee2@example.edu\n"
+    "s003,Bo Chen,bo@example.edu\n";
+
+TEST(Identity, EveryFieldMustNameTheSameRosterStudent) {
+  TempDir dir("identity");
+  write_text(dir.path() / "r.csv", kTwinRoster);
+  auto roster = load_roster((dir.path() / "r.csv").string());
+  // A name two students share names nobody, and the candidates are listed.
+  RosterMatch twin = match_on_roster(roster, {"Ann Lee", "", ""});
+  EXPECT_FALSE(twin.entry);
+  EXPECT_EQ(twin.code, "ambiguous-student");
+  EXPECT_NE(twin.problem.find("s001"), std::string::npos) << twin.problem;
+  EXPECT_NE(twin.problem.find("s002"), std::string::npos) << twin.problem;
+  // The shared name with an id or an email is one student.
+  ASSERT_TRUE(match_on_roster(roster, {"Ann Lee", "s002", ""}).entry);
+  EXPECT_EQ(match_on_roster(roster, {"Ann Lee", "s002", ""}).entry->id, "s002");
+  EXPECT_EQ(match_on_roster(roster, {"Ann Lee", "", "ANN.LEE2@example.edu"}).entry->id, "s002");
+  // Fields that name two students: rejected, saying which.
+  RosterMatch mixed = match_on_roster(roster, {"", "s003", "ann.lee@example.edu"});
+  EXPECT_FALSE(mixed.entry);
+  EXPECT_EQ(mixed.code, "student-mismatch");
+  EXPECT_NE(mixed.problem.find("email 'ann.lee@example.edu'"), std::string::npos) << mixed.problem;
+  EXPECT_NE(mixed.problem.find("id 's001'"), std::string::npos) << mixed.problem;
+  EXPECT_EQ(match_on_roster(roster, {"Bo Chen", "s001", ""}).code, "student-mismatch");
+  EXPECT_EQ(match_on_roster(roster, {"", "s009", ""}).code, "not-on-roster");
+}
+
+TEST(Identity, AnAmbiguousNameIsRejectedNotGradedAsTheWrongTwin) {
+  AssignmentSpec spec = load_assignment(kExample);
+  AssignmentBank bank = load_assignment_bank(spec);
+  TempDir dir("twins");
+  write_text(dir.path() / "r.csv", kTwinRoster);
+  // The second Ann's own right answers, naming her by name alone.
+  write_text(dir.path() / "ann.json", submission_by("Ann Lee", right_answers(spec, bank, "s002")));
+  write_text(dir.path() / "ann2.json", submission_by({{"name", "Ann Lee"}, {"id", "s002"}},
+                                                     right_answers(spec, bank, "s002")));
+  AssignmentGradeOptions options;
+  options.now = kDue - 60;
+  options.roster = load_roster((dir.path() / "r.csv").string());
+  AssignmentGrader grader(spec, bank.problems, options);
+  SubmissionGrade ann = grader.grade_file((dir.path() / "ann.json").string());
+  EXPECT_FALSE(ann.gradable);
+  ASSERT_TRUE(ann.fault);
+  EXPECT_EQ(ann.fault->code, "ambiguous-student");
+  EXPECT_EQ(ann.fault->path, "/student");
+  SubmissionGrade ann2 = grader.grade_file((dir.path() / "ann2.json").string());
+  ASSERT_TRUE(ann2.gradable) << format_diagnostic(*ann2.fault);
+  EXPECT_EQ(ann2.identity.id, "s002");
+  EXPECT_DOUBLE_EQ(ann2.score, 21);
+}
+
+TEST(Identity, TheUploaderNotTheFileDecidesWhoseNumbersAreGraded) {
+  AssignmentSpec spec = load_assignment(kExample);
+  AssignmentBank bank = load_assignment_bank(spec);
+  TempDir dir("uploader");
+  write_text(dir.path() / "r.csv", kTwinRoster);
+  nlohmann::json bo = right_answers(spec, bank, "s003");
+  ASSERT_NE(bo, right_answers(spec, bank, "s001"));
+  AssignmentGradeOptions options;
+  options.now = kDue - 60;
+  options.roster = load_roster((dir.path() / "r.csv").string());
+  options.uploaders = {StudentIdentity{"Ann Lee", "", "ann.lee@example.edu"}};
+  AssignmentGrader grader(spec, bank.problems, options);
+  auto grade = [&](const nlohmann::json& student, const nlohmann::json& answers) {
+    write_text(dir.path() / "up.json", student.is_null()
+                                           ? nlohmann::json{{"answers", answers}}.dump()
+                                           : submission_by(student, answers));
+    return grader.grade_file((dir.path() / "up.json").string());
+  };
+  // Bo's id with the uploader's own email: the two fields name two students.
+  SubmissionGrade mixed = grade({{"id", "s003"}, {"email", "ann.lee@example.edu"}}, bo);
+  EXPECT_FALSE(mixed.gradable);
+  EXPECT_EQ(mixed.fault->code, "student-mismatch");
+  EXPECT_DOUBLE_EQ(mixed.score, 0);
+  // Bo's whole identity from Ann's account.
+  SubmissionGrade bos =
+      grade({{"id", "s003"}, {"name", "Bo Chen"}, {"email", "bo@example.edu"}}, bo);
+  EXPECT_FALSE(bos.gradable);
+  EXPECT_EQ(bos.fault->code, "not-uploader");
+  // Naming nobody: the account is the student, and her own numbers are graded.
+  SubmissionGrade own = grade(nullptr, right_answers(spec, bank, "s001"));
+  ASSERT_TRUE(own.gradable) << format_diagnostic(*own.fault);
+  EXPECT_EQ(own.identity.id, "s001");
+  EXPECT_DOUBLE_EQ(own.score, 21);
+  // Without a roster nothing ties an account to an id: an assignment with per-student numbers
+  // is refused rather than graded as the id the file claims.
+  options.roster.clear();
+  AssignmentGrader no_roster(spec, bank.problems, options);
+  write_text(dir.path() / "claim.json",
+             submission_by({{"id", "s003"}, {"email", "ann.lee@example.edu"}}, bo));
+  SubmissionGrade claim = no_roster.grade_file((dir.path() / "claim.json").string());
+  EXPECT_FALSE(claim.gradable);
+  EXPECT_EQ(claim.fault->code, "no-roster");
+}
+
 TEST(Assignment, TheBlankTemplateEarnsNothingAndIsNotAFault) {
   AssignmentSpec spec = load_assignment(kExample);
   AssignmentBank bank = load_assignment_bank(spec);

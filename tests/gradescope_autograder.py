@@ -32,6 +32,12 @@ POINTS = {"variant-sphere": 3, "variant-plane": 2, "variant-triangle": 3,
           "variant-refract": 2, "variant-shade": 3, "scene-first-hit-only": 1,
           "seed000-cylinder-derive-origin": 2}
 STUDENT = {"id": "s1042", "name": "Ada Lovelace", "email": "ada@example.edu"}
+OTHER = {"id": "s002", "name": "Grace Hopper", "email": "grace@example.edu"}
+# The roster the handouts were written from; the autograder ties each account to its id by it.
+ROSTER = ("id,name,email\n"
+          f"{STUDENT['id']},{STUDENT['name']},{STUDENT['email']}\n"
+          f"{OTHER['id']},{OTHER['name']},{OTHER['email']}\n"
+          "s003,Alan Turing,alan@example.edu\n")
 
 failures = []
 
@@ -62,6 +68,7 @@ def run_upload(root, files, meta):
         shutil.rmtree(root / d, ignore_errors=True)
         (root / d).mkdir()
     for name, text in files.items():
+        (root / "submission" / name).parent.mkdir(parents=True, exist_ok=True)
         (root / "submission" / name).write_text(text, encoding="utf-8")
     (root / "submission_metadata.json").write_text(json.dumps(meta), encoding="utf-8")
     proc = subprocess.run([str(root / "run_autograder")], cwd=root, capture_output=True,
@@ -95,36 +102,89 @@ def scored(r):
     return {t["name"].split(":")[0]: t for t in r["tests"] if "score" in t}
 
 
+def install(raygrade, assignment, static, tmp, name):
+    """Exports the autograder of `assignment` with the roster and lays it out as Gradescope
+    does in tmp/name; returns that AUTOGRADER_ROOT."""
+    (tmp / "roster.csv").write_text(ROSTER, encoding="utf-8")
+    export = tmp / (name + "-export")
+    proc = subprocess.run([raygrade, "export", "gradescope", assignment, "--out", str(export),
+                           "--binary", static or raygrade, "--roster", str(tmp / "roster.csv")],
+                          capture_output=True, text=True)
+    if proc.returncode != 0:
+        sys.exit(f"export failed ({proc.returncode}): {proc.stderr}")
+    root = tmp / name
+    with zipfile.ZipFile(export / "autograder.zip") as z:
+        names = set(z.namelist())
+        for f in ("setup.sh", "run_autograder", "raygrade", "assignment.json", "roster.csv"):
+            check(f in names, f"autograder.zip lacks {f} at its root")
+        z.extractall(root / "source")
+    # zipfile drops permissions; Gradescope's unzip keeps them, and setup.sh sets them.
+    for f in ("setup.sh", "run_autograder", "raygrade"):
+        info = zipfile.ZipFile(export / "autograder.zip").getinfo(f)
+        check((info.external_attr >> 16) & 0o111, f"{f} is not executable in the zip")
+        (root / "source" / f).chmod(0o755)
+    unpacked = sorted(p.relative_to(export / "autograder").as_posix()
+                      for p in (export / "autograder").rglob("*") if p.is_file())
+    check(unpacked == sorted(names), "the folder and the zip differ")
+    proc = subprocess.run(["bash", str(root / "source" / "setup.sh")], capture_output=True,
+                          text=True)
+    check(proc.returncode == 0, f"setup.sh failed: {proc.stderr}")
+    shutil.copy(root / "source" / "run_autograder", root / "run_autograder")
+    return root
+
+
+def solve(raygrade, assignment, student):
+    solved = subprocess.run([raygrade, "solve", assignment, "--student", student,
+                             "--format", "json"], capture_output=True, text=True, check=True)
+    return {s["id"]: s["answer"] for s in json.loads(solved.stdout)["solutions"]}
+
+
+def numbers(answer):
+    """The numbers of an answer with a fraction part, as feedback could print them."""
+    out = set()
+    def walk(x):
+        if isinstance(x, bool):
+            return
+        if isinstance(x, (int, float)):
+            if abs(x - round(x)) > 1e-6:
+                for d in (2, 3, 4):
+                    out.add(f"{x:.{d}f}".rstrip("0"))
+            return
+        for v in (x.values() if isinstance(x, dict) else x if isinstance(x, list) else []):
+            walk(v)
+    walk(answer)
+    return out
+
+
+def leaked(r, values):
+    """The reference values that any text of results.json shows."""
+    import re
+    texts = [r.get("output", "")] + [t.get("output", "") for t in r.get("tests", [])]
+    found = set()
+    for text in texts:
+        tokens = set(re.findall(r"-?\d+\.\d+", text))
+        found |= {v for v in values if v in tokens}
+    return found
+
+
+def policy_everywhere(raygrade, assignment, static, tmp, policy):
+    """The assignment with one feedback policy at all times, as a copy in tmp."""
+    a = json.loads(pathlib.Path(assignment).read_text(encoding="utf-8"))
+    a["bank"] = str((pathlib.Path(assignment).parent / a["bank"]).resolve())
+    a.pop("$schema", None)
+    a["feedback"] = policy
+    for p in a["problems"]:
+        p.pop("feedback", None)
+    path = tmp / f"assignment-{policy}.json"
+    path.write_text(json.dumps(a), encoding="utf-8")
+    return str(path)
+
+
 def main(raygrade, assignment, static=None):
     with tempfile.TemporaryDirectory() as tmp:
         tmp = pathlib.Path(tmp)
-        proc = subprocess.run([raygrade, "export", "gradescope", assignment, "--out",
-                               str(tmp / "export"), "--binary", static or raygrade],
-                              capture_output=True, text=True)
-        if proc.returncode != 0:
-            sys.exit(f"export failed ({proc.returncode}): {proc.stderr}")
-        root = tmp / "autograder"
-        with zipfile.ZipFile(tmp / "export" / "autograder.zip") as z:
-            names = set(z.namelist())
-            for f in ("setup.sh", "run_autograder", "raygrade", "assignment.json"):
-                check(f in names, f"autograder.zip lacks {f} at its root")
-            z.extractall(root / "source")
-        # zipfile drops permissions; Gradescope's unzip keeps them, and setup.sh sets them.
-        for f in ("setup.sh", "run_autograder", "raygrade"):
-            info = zipfile.ZipFile(tmp / "export" / "autograder.zip").getinfo(f)
-            check((info.external_attr >> 16) & 0o111, f"{f} is not executable in the zip")
-            (root / "source" / f).chmod(0o755)
-        unpacked = sorted(p.relative_to(tmp / "export" / "autograder").as_posix()
-                          for p in (tmp / "export" / "autograder").rglob("*") if p.is_file())
-        check(unpacked == sorted(names), "the folder and the zip differ")
-        proc = subprocess.run(["bash", str(root / "source" / "setup.sh")], capture_output=True,
-                              text=True)
-        check(proc.returncode == 0, f"setup.sh failed: {proc.stderr}")
-        shutil.copy(root / "source" / "run_autograder", root / "run_autograder")
-
-        solved = subprocess.run([raygrade, "solve", assignment, "--student", STUDENT["id"],
-                                 "--format", "json"], capture_output=True, text=True, check=True)
-        answers = {s["id"]: s["answer"] for s in json.loads(solved.stdout)["solutions"]}
+        root = install(raygrade, assignment, static, tmp, "autograder")
+        answers = solve(raygrade, assignment, STUDENT["id"])
         check(set(answers) == set(POINTS), f"solve gave {sorted(answers)}")
         meta = metadata(STUDENT["email"], STUDENT["name"])
 
@@ -155,13 +215,43 @@ def main(raygrade, assignment, static=None):
         worked = {t["name"].split(":")[0] for t in wrong["tests"] if "score" not in t}
         check(worked <= {"variant-plane", "variant-reflect"}, f"wrong: worked tests {worked}")
 
+        # The full feedback after the due date shows the reference values: the check of the
+        # policies below can see them.
+        wrong_values = set()
+        for pid in ("variant-plane", "variant-reflect"):
+            wrong_values |= numbers(answers[pid])
+        check(leaked(wrong, wrong_values), "wrong: the after-due feedback shows no value")
+
+        # A Mac's archive metadata is not an answers file.
+        mac = run_upload(root, {"answers.json": json.dumps({"student": STUDENT,
+                                                            "answers": answers}),
+                                "__MACOSX/._answers.json": "\x00\x05\x16\x07Mac OS X",
+                                "._answers.json": "\x00\x05\x16\x07"}, meta)
+        check(mac["score"] == sum(POINTS.values()), f"__MACOSX: score {mac['score']}")
+
+        # Another student's answers, under another student's id, uploaded from one's own
+        # account: the variant is the account's, so it never scores.
+        other = solve(raygrade, assignment, OTHER["id"])
+        check(other != answers, "two students got the same numbers")
         cases = {
             "broken JSON": ({"answers.json": '{"student": '}, meta, "answers.json"),
             "no .json": ({"answers.txt": "t = 3"}, meta, "one file ending in .json"),
-            "two .json": ({"a.json": "{}", "b.json": "{}"}, meta, "Upload one"),
+            "two .json": ({"a.json": "{}", "b.json": "{}"}, meta, "Upload one: the answers.json"),
+            "a PDF named .json": ({"answers.json": "%PDF-1.4\n%\xe2\xe3\n"}, meta,
+                                  "answers.json"),
             "someone else's": ({"answers.json": json.dumps(
                 {"student": STUDENT, "answers": answers})},
                 metadata("grace@example.edu", "Grace Hopper"), "not the account"),
+            "another's id, one's own email": ({"answers.json": json.dumps(
+                {"student": {"id": OTHER["id"], "email": STUDENT["email"]},
+                 "answers": other})}, meta, "name different students"),
+            "another's id alone": ({"answers.json": json.dumps(
+                {"student": {"id": OTHER["id"]}, "answers": other})}, meta, "not the account"),
+            "another's whole identity": ({"answers.json": json.dumps(
+                {"student": OTHER, "answers": other})}, meta, "not the account"),
+            "an account not on the roster": ({"answers.json": json.dumps(
+                {"student": STUDENT, "answers": answers})},
+                metadata("mallory@example.edu", "Mallory"), "not on the course's roster"),
             "html in the name": ({"answers.json": json.dumps(
                 {"student": {"name": "<b>x</b>", "email": "ada@example.edu"},
                  "answers": {"nope": 1}})}, meta, ""),
@@ -171,6 +261,23 @@ def main(raygrade, assignment, static=None):
             check_results(r, what)
             check(r["score"] == 0, f"{what}: score {r['score']}")
             check(says in r.get("output", ""), f"{what}: output {r.get('output')!r} lacks {says!r}")
+            check(str(tmp) not in json.dumps(r), f"{what}: results.json shows a server path")
+
+        # No student and no answers file name: the account alone says who it is.
+        r = run_upload(root, {"answers.json": json.dumps({"answers": answers})}, meta)
+        check(r["score"] == sum(POINTS.values()), f"no student named: score {r['score']}")
+
+        # Under a policy that never shows reference values, no output shows one, at any time.
+        for policy in ("mistakes", "score"):
+            copy = policy_everywhere(raygrade, assignment, static, tmp, policy)
+            proot = install(raygrade, copy, static, tmp, "autograder-" + policy)
+            r = run_upload(proot, {"answers.json": json.dumps(
+                {"student": STUDENT, "answers": wrong_answers})}, meta)
+            check_results(r, policy)
+            check(not [t for t in r["tests"] if t.get("visibility") != "visible"],
+                  f"{policy}: a test shown later")
+            check(not leaked(r, wrong_values),
+                  f"{policy}: results.json shows {sorted(leaked(r, wrong_values))}")
     for f in failures:
         print("FAIL:", f)
     print(f"gradescope_autograder: {len(failures)} failures")

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "assignments/feedback.h"
@@ -25,68 +26,109 @@ AssignmentGrader::AssignmentGrader(const AssignmentSpec& spec, std::vector<const
 
 AssignmentGrader::~AssignmentGrader() = default;
 
-const AssignmentGrader::Student& AssignmentGrader::student(const std::string& key) {
+std::shared_ptr<const AssignmentGrader::Student> AssignmentGrader::student(const std::string& key) {
   std::string k = spec_.per_student ? key : "";
   {
     std::lock_guard lock(students_mutex_);
     auto it = students_.find(k);
-    if (it != students_.end()) return *it->second;
+    if (it != students_.end()) {
+      recent_.splice(recent_.begin(), recent_, it->second.second);
+      return it->second.first;
+    }
   }
   // Drawn outside the lock, so that threads grading different students draw at once; two
   // threads drawing the same student draw the same problems, and the first one kept is used.
-  auto s = std::make_unique<Student>();
+  auto s = std::make_shared<Student>();
   s->problems = student_problems(spec_, problems_, k);
   s->graders = std::make_unique<Assignment>(s->problems);
   if (!s->graders->errors().empty()) throw Error(s->graders->errors().front());
   std::lock_guard lock(students_mutex_);
-  return *students_.emplace(k, std::move(s)).first->second;
-}
-
-namespace {
-
-std::string lower(std::string s) {
-  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  auto [it, added] = students_.try_emplace(k, s, recent_.end());
+  if (!added) return it->second.first;
+  recent_.push_front(k);
+  it->second.second = recent_.begin();
+  // A class's submissions come one or two per student: keep the few most recent, so that
+  // memory stays flat in the number of students (a thread grading one holds its own pointer).
+  while (students_.size() > kCachedStudents) {
+    students_.erase(recent_.back());
+    recent_.pop_back();
+  }
   return s;
 }
 
-void check_uploader(const Cursor& root, const StudentIdentity& who,
-                    const std::vector<StudentIdentity>& uploaders) {
-  std::string accounts;
-  for (const auto& u : uploaders) {
-    if (!who.email.empty() ? lower(u.email) == lower(who.email)
-                           : !who.name.empty() && u.name == who.name) {
-      return;
-    }
-    accounts += fmt::format("{}'{}'", accounts.empty() ? "" : ", ", u.email);
-  }
-  root.at("student").fail(
-      who.email.empty() && who.name.empty()
-          ? fmt::format("the submission names its student by id alone; give the email of the "
-                        "account that uploads it ({})",
-                        accounts)
-          : fmt::format("the submission names '{}', who is not the account that uploaded it ({})",
-                        who.email.empty() ? who.name : who.email, accounts),
-      "not-uploader");
-}
-
-}  // namespace
-
 StudentIdentity AssignmentGrader::identify(const Cursor& root) const {
-  auto who = read_student(root);
-  if (!who) {
+  std::optional<StudentIdentity> claimed = read_student(root);
+  if (!options_.uploaders.empty()) return identify_uploader(root, claimed);
+  if (!claimed) {
     root.fail(fmt::format("the submission names no student: add \"student\": {{\"id\": "
                           "\"...\"}} (each student of '{}' has their own numbers)",
                           spec_.id),
               "no-student");
   }
-  if (!options_.uploaders.empty()) check_uploader(root, *who, options_.uploaders);
-  if (options_.roster.empty()) return *who;
-  const StudentIdentity* entry = find_on_roster(options_.roster, *who);
-  if (!entry) {
-    root.at("student").fail(fmt::format("'{}' is not on the roster", student_key(*who)),
-                            "not-on-roster");
+  if (options_.roster.empty()) return *claimed;
+  RosterMatch m = match_on_roster(options_.roster, *claimed);
+  if (!m.entry) root.at("student").fail(m.problem, m.code);
+  return *m.entry;
+}
+
+StudentIdentity AssignmentGrader::identify_uploader(
+    const Cursor& root, const std::optional<StudentIdentity>& claimed) const {
+  const auto& uploaders = options_.uploaders;
+  std::string accounts;
+  for (const auto& u : uploaders)
+    accounts += fmt::format("{}'{}'", accounts.empty() ? "" : ", ", u.email);
+  auto uploaded_by = [&](const std::string& email) {
+    return std::any_of(uploaders.begin(), uploaders.end(),
+                       [&](const auto& u) { return email_key(u.email) == email_key(email); });
+  };
+  if (options_.roster.empty()) {
+    // No roster: an account cannot be tied to a student id, so nothing may depend on one.
+    if (spec_.per_student) {
+      root.fail(fmt::format("this autograder has no roster, so it cannot tell which student's "
+                            "numbers the account {} was given; please tell your instructor "
+                            "(raygrade export gradescope --roster)",
+                            accounts),
+                "no-roster");
+    }
+    if (claimed && !claimed->email.empty() && !uploaded_by(claimed->email)) {
+      root.at("student").fail(
+          fmt::format("the submission names '{}', who is not the account that uploaded it ({})",
+                      claimed->email, accounts),
+          "not-uploader");
+    }
+    for (const auto& u : uploaders) {
+      if (!claimed || claimed->email.empty() || email_key(u.email) == email_key(claimed->email))
+        return StudentIdentity{u.name, "", u.email};
+    }
   }
-  return *entry;
+  // The roster entries of the accounts that uploaded the submission: who it is from.
+  std::vector<const StudentIdentity*> own;
+  for (const auto& s : options_.roster) {
+    if (!trimmed(s.email).empty() && uploaded_by(s.email)) own.push_back(&s);
+  }
+  if (own.empty()) {
+    root.fail(fmt::format("the account that uploaded this submission ({}) is not on the "
+                          "course's roster; please tell your instructor",
+                          accounts),
+              "not-on-roster");
+  }
+  if (!claimed) {
+    if (own.size() == 1) return *own.front();
+    root.fail(fmt::format("a group upload ({}) must name its student: add \"student\": "
+                          "{{\"id\": \"...\"}}",
+                          accounts),
+              "no-student");
+  }
+  RosterMatch m = match_on_roster(options_.roster, *claimed);
+  if (!m.entry) root.at("student").fail(m.problem, m.code);
+  if (std::find(own.begin(), own.end(), m.entry) == own.end()) {
+    root.at("student").fail(
+        fmt::format("the submission names student '{}', who is not the account that uploaded "
+                    "it ({}, student '{}'): upload your own answers",
+                    m.entry->id, accounts, own.front()->id),
+        "not-uploader");
+  }
+  return *m.entry;
 }
 
 SubmissionGrade AssignmentGrader::grade_file(const std::string& path) {
@@ -98,7 +140,7 @@ SubmissionGrade AssignmentGrader::grade_file(const std::string& path) {
     Cursor root(file);
     if (!root.is_object()) root.fail("a submission is a JSON object", "type");
     who = identify(root);
-    g = student(student_key(who)).graders->grade(file);
+    g = student(student_key(who))->graders->grade(file);
   } catch (const Error& e) {
     g.file = path;
     g.gradable = false;
@@ -108,6 +150,18 @@ SubmissionGrade AssignmentGrader::grade_file(const std::string& path) {
     if (d.line == 0 && !d.path.empty() && file)
       std::tie(d.line, d.column) = locate(file->text, d.path);
     g.fault = d;
+  } catch (const std::bad_alloc&) {
+    // Out of memory costs this submission alone; the batch goes on, and its exit code says so.
+    g = SubmissionGrade{};
+    g.file = path;
+    g.gradable = false;
+    g.fault = Diagnostic{path,
+                         "",
+                         0,
+                         0,
+                         Severity::kError,
+                         "not graded: out of memory while grading this submission",
+                         "resource"};
   }
   if (!who.empty()) {
     g.identity = who;

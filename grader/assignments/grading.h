@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <list>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -20,8 +21,10 @@ struct AssignmentGradeOptions {
   std::optional<FeedbackPolicy> feedback;  // overrides the assignment's policy for every problem
   std::vector<StudentIdentity> roster;     // when not empty, every student must be on it
   // The accounts that uploaded the submission (Gradescope's submission_metadata.json): when
-  // not empty, the student a submission names must be one of them, by email (or by name when
-  // the submission gives no email). The variant stays that of the student the file names.
+  // not empty, they are who the submission is from. With a roster, the student is the roster
+  // entry of an uploader's email, and whatever the submission names must be that entry; without
+  // one, the student is the account itself, and an assignment whose numbers differ per student
+  // is refused (nothing ties an account to the id its numbers were drawn for).
   std::vector<StudentIdentity> uploaders;
 };
 
@@ -37,22 +40,31 @@ class AssignmentGrader {
   // drawn.
   SubmissionGrade grade_file(const std::string& path);
 
-  // The student a submission names, completed from the roster; throws Error when it names
-  // nobody or someone not on the roster.
+  // The student a submission is from: the uploader when there are uploaders, else the one it
+  // names, completed from the roster. Throws Error when it names nobody, someone not on the
+  // roster, a name two students share, fields that name different students, or someone other
+  // than the uploader.
   StudentIdentity identify(const Cursor& root) const;
 
   const std::vector<std::string>& problem_ids() const { return ids_; }
 
  private:
   struct Student;
-  const Student& student(const std::string& key);
+  StudentIdentity identify_uploader(const Cursor& root,
+                                    const std::optional<StudentIdentity>& claimed) const;
+  std::shared_ptr<const Student> student(const std::string& key);
 
   const AssignmentSpec& spec_;
   std::vector<const Problem*> problems_;
   AssignmentGradeOptions options_;
   std::vector<std::string> ids_;
   std::mutex students_mutex_;
-  std::map<std::string, std::unique_ptr<Student>> students_;
+  // The students drawn most recently, at most kCachedStudents, by key; recent_ orders the keys
+  // from the most recently used.
+  static constexpr std::size_t kCachedStudents = 64;
+  std::list<std::string> recent_;
+  std::map<std::string, std::pair<std::shared_ptr<const Student>, std::list<std::string>::iterator>>
+      students_;
 };
 
 }  // namespace raygrade

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <set>
 
+#include "assignments/roster.h"
 #include "core/atomic_file.h"
 #include "json/cursor.h"
 #include "json/source.h"
@@ -27,7 +28,7 @@ chmod 755 raygrade run_autograder
 // exits 0: a file it cannot grade is a result with the reason and no points.
 constexpr const char* kRunAutograder = R"sh(#!/usr/bin/env bash
 # Grades one upload with raygrade: the one .json file in submission/, as the variant of the
-# student it names, who must be the account that uploaded it (submission_metadata.json).
+# account that uploaded it (submission_metadata.json), found on the roster by its email.
 # AUTOGRADER_ROOT (default /autograder) is where Gradescope's folders are.
 set -u
 root="${AUTOGRADER_ROOT:-/autograder}"
@@ -44,21 +45,27 @@ reject() {
   exit 0
 }
 
+# The answers: files ending in .json, less what an operating system adds to an archive
+# (a Mac's __MACOSX/ folder and ._ files). Paths are kept relative to submission/, so that
+# no message shows where the autograder keeps them.
 files=()
 if [ -d "$root/submission" ]; then
-  while IFS= read -r -d '' f; do files+=("$f"); done \
-    < <(find "$root/submission" -type f -iname '*.json' -print0)
+  while IFS= read -r -d '' f; do files+=("${f#./}"); done < <(cd "$root/submission" &&
+    find . -type f -iname '*.json' -not -path '*/__MACOSX/*' -not -name '._*' -print0)
 fi
 if [ "${#files[@]}" -eq 0 ]; then
-  reject "No answers file found. Upload one file ending in .json: the answers-template.json of your handout, filled in."
+  reject "No answers file found. Upload one file ending in .json: the answers.json your handout page saves."
 fi
 if [ "${#files[@]}" -gt 1 ]; then
-  reject "${#files[@]} files ending in .json were uploaded. Upload one: the answers-template.json of your handout, filled in."
+  reject "${#files[@]} files ending in .json were uploaded. Upload one: the answers.json your handout page saves."
 fi
 
+roster=()
+[ -f "$source/roster.csv" ] && roster=(--roster "$source/roster.csv")
 # raygrade's exit status 2 (the file was rejected) still leaves results.json with the reason.
-"$source/raygrade" grade --assignment "$source/assignment.json" --format gradescope \
-  --gradescope-metadata "$root/submission_metadata.json" --out "$results" "${files[0]}"
+(cd "$root/submission" && "$source/raygrade" grade --assignment "$source/assignment.json" \
+  --format gradescope --gradescope-metadata "$root/submission_metadata.json" "${roster[@]}" \
+  --out "$results" "${files[0]}")
 status=$?
 if [ ! -s "$results/results.json" ]; then
   reject "The autograder could not grade this upload (raygrade exited with status $status). Please tell your instructor."
@@ -137,10 +144,23 @@ std::vector<ZipEntry> assignment_files(const AssignmentSpec& spec, const Bank& b
 }
 
 std::vector<ZipEntry> gradescope_autograder(const AssignmentSpec& spec, const Bank& bank,
-                                            const std::filesystem::path& binary) {
+                                            const std::filesystem::path& binary,
+                                            const std::string& roster) {
+  if (spec.per_student && roster.empty()) {
+    throw Error(Diagnostic{spec.file, "/variants", 0, 0, Severity::kError,
+                           "each student has their own numbers: give --roster (the roster the "
+                           "handouts were written from, with each student's email as Gradescope "
+                           "knows it), so that the autograder grades each upload as the variant "
+                           "of the account that uploaded it",
+                           "no-roster"});
+  }
   std::vector<ZipEntry> entries = {{"setup.sh", kSetup, true},
                                    {"run_autograder", kRunAutograder, true},
                                    {"raygrade", read_file_bytes(binary), true}};
+  if (!roster.empty()) {
+    load_roster(roster);  // read now, so that a faulty roster fails the export, not each upload
+    entries.push_back({"roster.csv", read_file_bytes(roster), false});
+  }
   for (auto& e : assignment_files(spec, bank)) entries.push_back(std::move(e));
   return entries;
 }

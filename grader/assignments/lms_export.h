@@ -36,9 +36,13 @@ std::vector<ZipEntry> assignment_files(const AssignmentSpec& spec, const Bank& b
 
 // The files of the Gradescope autograder, as paths inside its zip: setup.sh, run_autograder,
 // raygrade (`binary`'s bytes), assignment.json (the assignment with "bank": "bank") and
-// bank/*.json (the files of its bank). Throws Error when a file cannot be read.
+// bank/*.json (the files of its bank), and roster.csv when `roster` names one. An assignment
+// whose numbers differ per student needs the roster: it ties each uploading account (by email)
+// to the id its numbers were drawn for. Throws Error when a file cannot be read, the roster is
+// faulty, or a needed roster is missing.
 std::vector<ZipEntry> gradescope_autograder(const AssignmentSpec& spec, const Bank& bank,
-                                            const std::filesystem::path& binary);
+                                            const std::filesystem::path& binary,
+                                            const std::string& roster);
 
 // A PrairieLearn course fragment: questions/<assignment>/<problem>/ with info.json, question.html
 // (one input per value the student types), server.py (prairielearn_server.py) and

@@ -8,6 +8,7 @@
 
 #include "assignments/variants.h"
 #include "core/atomic_file.h"
+#include "core/escape.h"
 
 namespace raygrade {
 namespace {
@@ -76,6 +77,18 @@ std::vector<StudentIdentity> load_roster(const std::string& path) {
   std::string text = std::move(*bytes);
   if (text.size() > kMaxRosterBytes) fail(path, 0, 0, "the roster is larger than 4 MiB");
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // a spreadsheet's byte order mark
+  // Rosters are UTF-8. A legacy encoding (a spreadsheet's "CSV" in Windows-1252 or Latin-1) is
+  // not guessed: its names would be read wrong, so the first byte that is not UTF-8 is named.
+  if (std::size_t bad = first_invalid_utf8(text); bad != std::string::npos) {
+    std::size_t line_start = bad == 0 ? std::string::npos : text.rfind('\n', bad - 1);
+    line_start = line_start == std::string::npos ? 0 : line_start + 1;
+    int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + bad, '\n'));
+    int byte = static_cast<int>(bad - line_start) + 1;
+    fail(path, line, byte,
+         fmt::format("byte 0x{:02X} (byte {} of line {}) is not UTF-8: save the roster as \"CSV "
+                     "UTF-8\" (a spreadsheet's other CSV is Windows-1252, which is not read)",
+                     static_cast<unsigned char>(text[bad]), byte, line));
+  }
   auto rows = csv_rows(text, path);
   if (rows.empty())
     fail(path, 1, 1, "the roster is empty: its first line names the columns id, name, email");
@@ -112,17 +125,106 @@ std::vector<StudentIdentity> load_roster(const std::string& path) {
   return out;
 }
 
-const StudentIdentity* find_on_roster(const std::vector<StudentIdentity>& roster,
-                                      const StudentIdentity& who) {
-  std::string key = student_key(who);
+std::string email_key(const std::string& email) {
+  std::string e = trimmed(email);
+  std::transform(e.begin(), e.end(), e.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return e;
+}
+
+namespace {
+
+std::string describe_entry(const StudentIdentity& s) {
+  std::string d = fmt::format("id '{}'", s.id);
+  if (!s.name.empty()) d += fmt::format(", name '{}'", s.name);
+  if (!s.email.empty()) d += fmt::format(", email '{}'", s.email);
+  return d;
+}
+
+// The entries one field names.
+template <typename Same>
+std::vector<const StudentIdentity*> entries_where(const std::vector<StudentIdentity>& roster,
+                                                  Same same) {
+  std::vector<const StudentIdentity*> out;
   for (const auto& s : roster) {
-    if (!who.id.empty()      ? s.id == key
-        : !who.email.empty() ? student_key(StudentIdentity{"", "", s.email}) == key
-                             : s.name == key) {
-      return &s;
+    if (same(s)) out.push_back(&s);
+  }
+  return out;
+}
+
+}  // namespace
+
+RosterMatch match_on_roster(const std::vector<StudentIdentity>& roster,
+                            const StudentIdentity& who) {
+  struct Field {
+    const char* name;
+    std::string value;
+    std::vector<const StudentIdentity*> entries;
+  };
+  std::vector<Field> fields;
+  if (std::string id = trimmed(who.id); !id.empty())
+    fields.push_back({"id", id, entries_where(roster, [&](const auto& s) { return s.id == id; })});
+  if (std::string e = email_key(who.email); !e.empty()) {
+    fields.push_back({"email", trimmed(who.email), entries_where(roster, [&](const auto& s) {
+                        return email_key(s.email) == e;
+                      })});
+  }
+  if (std::string n = trimmed(who.name); !n.empty()) {
+    fields.push_back(
+        {"name", n, entries_where(roster, [&](const auto& s) { return trimmed(s.name) == n; })});
+  }
+  RosterMatch m;
+  if (fields.empty()) {
+    m.problem = "the submission names no student";
+    m.code = "not-on-roster";
+    return m;
+  }
+  for (const auto& f : fields) {
+    if (f.entries.empty()) {
+      m.problem = fmt::format("no student on the roster has the {} '{}'", f.name, f.value);
+      m.code = "not-on-roster";
+      return m;
     }
   }
-  return nullptr;
+  // The first field that names one entry decides; every other field must name it too.
+  const Field* decisive = nullptr;
+  for (const auto& f : fields) {
+    if (f.entries.size() == 1) {
+      decisive = &f;
+      break;
+    }
+  }
+  if (!decisive) {
+    const Field& f = fields.front();
+    std::string candidates;
+    for (const auto* s : f.entries)
+      candidates += fmt::format("{}{}", candidates.empty() ? "" : "; ", describe_entry(*s));
+    m.problem =
+        fmt::format("the {} '{}' is that of {} students on the roster ({}): give the student's id",
+                    f.name, f.value, f.entries.size(), candidates);
+    m.code = "ambiguous-student";
+    return m;
+  }
+  const StudentIdentity* entry = decisive->entries.front();
+  for (const auto& f : fields) {
+    if (std::find(f.entries.begin(), f.entries.end(), entry) == f.entries.end()) {
+      m.problem = fmt::format(
+          "the submission's {} '{}' and its {} '{}' name different students on the roster "
+          "(the {} belongs to {})",
+          decisive->name, decisive->value, f.name, f.value, f.name,
+          f.entries.size() == 1 ? describe_entry(*f.entries.front())
+                                : fmt::format("{} others", f.entries.size()));
+      m.code = "student-mismatch";
+      return m;
+    }
+  }
+  m.entry = entry;
+  return m;
+}
+
+const StudentIdentity* find_on_roster(const std::vector<StudentIdentity>& roster,
+                                      const StudentIdentity& who) {
+  return match_on_roster(roster, who).entry;
 }
 
 }  // namespace raygrade

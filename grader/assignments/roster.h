@@ -13,8 +13,22 @@ namespace raygrade {
 // Cells may be quoted ("Lovelace, Ada"). Throws Error naming the file, line and column.
 std::vector<StudentIdentity> load_roster(const std::string& path);
 
-// The roster entry a submission's student matches (by id, else email, else name), or nullptr.
+// The roster entry a submission's student is, and why there is none: every field the
+// submission gives (id, email, name) must name the same one entry. A name that two entries
+// share names nobody (the candidates are listed); a field that names another entry than the
+// others is a mismatch that says which.
+struct RosterMatch {
+  const StudentIdentity* entry = nullptr;
+  std::string problem;  // when there is no entry: what is wrong, for the student to read
+  std::string code;     // "not-on-roster", "ambiguous-student" or "student-mismatch"
+};
+RosterMatch match_on_roster(const std::vector<StudentIdentity>& roster, const StudentIdentity& who);
+
+// The entry of match_on_roster, or nullptr.
 const StudentIdentity* find_on_roster(const std::vector<StudentIdentity>& roster,
                                       const StudentIdentity& who);
+
+// An email as compared: trimmed, ASCII letters in lower case.
+std::string email_key(const std::string& email);
 
 }  // namespace raygrade

@@ -17,6 +17,7 @@ struct ExportOptions {
   std::string assignment;
   std::string out;
   std::string binary;
+  std::string roster;  // Gradescope: the class roster, which ties accounts to student ids
 };
 
 int run_export(const ExportOptions& o) {
@@ -59,7 +60,7 @@ int run_export(const ExportOptions& o) {
     }
     std::filesystem::path out(o.out);
     if (gradescope) {
-      std::vector<ZipEntry> entries = gradescope_autograder(spec, bank.bank, binary);
+      std::vector<ZipEntry> entries = gradescope_autograder(spec, bank.bank, binary, o.roster);
       write_entries(out / "autograder", entries);
       write_file_atomically(out / "autograder.zip", zip_archive(entries));
       fmt::print(stderr,
@@ -94,7 +95,16 @@ Runner setup_export(CLI::App& sub) {
   sub.add_option("--out", o->out, "the folder to write into")->required();
   sub.add_option("--binary", o->binary,
                  "the raygrade to ship (default: a static one next to this build)");
-  return [o] { return run_export(*o); };
+  sub.add_option("--roster", o->roster,
+                 "gradescope: the roster CSV the handouts were written from (id, name, email); "
+                 "needed when each student has their own numbers");
+  return [o] {
+    if (!o->roster.empty() && o->platform != "gradescope") {
+      fmt::print(stderr, "raygrade export: --roster goes with gradescope\n");
+      return static_cast<int>(kExitBadInput);
+    }
+    return run_export(*o);
+  };
 }
 
 }  // namespace raygrade::cli
