@@ -86,6 +86,31 @@ TEST(Escape, SafeFileNamesStayInTheirFolder) {
   EXPECT_EQ(safe_file_name("a\\b"), "a_b");
   EXPECT_EQ(safe_file_name("s001"), "s001");
   EXPECT_EQ(safe_file_name(std::string(300, 'x')).size(), 100u);
+  // A leading '-' would be an option to a command and a formula to a spreadsheet.
+  EXPECT_EQ(safe_file_name("-rf"), "_rf");
+  EXPECT_EQ(csv_cell(safe_file_name("-s1")), "_s1");
+}
+
+// U+202E (E2 80 AE), RIGHT-TO-LEFT OVERRIDE, and U+2066 (E2 81 A6), LEFT-TO-RIGHT ISOLATE, make
+// "Eve<RLO>gnp.exe" show as "Eveexe.png": no output shows them as they act. U+200F (E2 80 8F),
+// the right-to-left mark of Hebrew and Arabic text, reorders nothing and is kept.
+TEST(Escape, ReorderingControlsNeverReachAnOutput) {
+  const std::string rlo = "Eve\xE2\x80\xAEgnp.exe\xE2\x81\xA6x";
+  EXPECT_EQ(html_escape(rlo), "Evegnp.exex");
+  EXPECT_EQ(xml_escape(rlo), "Evegnp.exex");
+  EXPECT_EQ(text_escape(rlo), "Evegnp.exex");
+  EXPECT_EQ(markdown_escape(rlo), "Evegnp\\.exex");
+  EXPECT_EQ(printable(rlo), "Eve\\u202Egnp.exe\\u2066x");
+  EXPECT_EQ(csv_cell(rlo), "Eve\\u202Egnp.exe\\u2066x");
+  EXPECT_EQ(html_escape("\xD7\xA9\xE2\x80\x8F"), "\xD7\xA9\xE2\x80\x8F");
+}
+
+// Markdown is read on terminals too: ESC, NUL, DEL and C1 controls (here CSI, C2 9B) never pass.
+TEST(Escape, MarkdownDropsTerminalControls) {
+  EXPECT_EQ(markdown_escape(std::string("a\x1b[2Jb\0c\x7f\xc2\x9b"
+                                        "d",
+                                        12)),
+            "a\\[2Jbcd");
 }
 
 }  // namespace

@@ -42,6 +42,21 @@ bool is_disallowed_control(char c) {
   return static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r';
 }
 
+// A directional formatting character that reorders the text around it (U+202A to U+202E,
+// U+2066 to U+2069: embeddings, overrides, isolates) starts at s[i]: shown as written, it can
+// make a name or a statement read as something else. The escapers drop it (the marks U+200E,
+// U+200F and U+061C, which reorder nothing beyond their neighbours, are kept).
+bool is_bidi_control_at(std::string_view s, std::size_t i) {
+  if (i + 2 >= s.size() || s[i] != '\xE2') return false;
+  auto b1 = static_cast<unsigned char>(s[i + 1]), b2 = static_cast<unsigned char>(s[i + 2]);
+  return (b1 == 0x80 && b2 >= 0xAA && b2 <= 0xAE) || (b1 == 0x81 && b2 >= 0xA6 && b2 <= 0xA9);
+}
+
+// A C1 control (U+0080 to U+009F, bytes C2 80 to C2 9F) starts at s[i].
+bool is_c1_control_at(std::string_view s, std::size_t i) {
+  return s[i] == '\xC2' && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) < 0xA0;
+}
+
 }  // namespace
 
 std::string html_escape(std::string_view s) {
@@ -50,8 +65,12 @@ std::string html_escape(std::string_view s) {
   for (std::size_t i = 0; i < s.size(); ++i) {
     char c = s[i];
     // C1 controls (U+0080 to U+009F, bytes C2 80 to C2 9F) are not allowed in HTML either.
-    if (c == '\xC2' && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) < 0xA0) {
+    if (is_c1_control_at(s, i)) {
       ++i;
+      continue;
+    }
+    if (is_bidi_control_at(s, i)) {
+      i += 2;
       continue;
     }
     switch (c) {
@@ -73,7 +92,11 @@ std::string xml_escape(std::string_view s) {
   for (std::size_t i = 0; i < s.size(); ++i) {
     char c = s[i];
     auto u = static_cast<unsigned char>(c);
-    if (is_disallowed_control(c)) continue;
+    if (is_disallowed_control(c) || c == '\x7F') continue;
+    if (is_c1_control_at(s, i) || is_bidi_control_at(s, i)) {
+      i += is_c1_control_at(s, i) ? 1 : 2;
+      continue;
+    }
     if (u >= 0x80) {
       // XML parsers reject a whole document over one ill-formed byte: write U+FFFD instead.
       std::size_t n = utf8_sequence_length(s, i);
@@ -100,10 +123,18 @@ std::string xml_escape(std::string_view s) {
 std::string markdown_escape(std::string_view s) {
   static constexpr std::string_view kSpecial = "\\`*_{}[]()#+-.!|<>&$~";
   std::string out;
-  for (char c : s) {
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    char c = s[i];
     // A line break would end a table row or start a heading: text stays on its line.
     if (c == '\n' || c == '\r') {
       out += ' ';
+      continue;
+    }
+    // Control characters (terminal escape sequences, NUL) and reordering marks: dropped, as
+    // text_escape drops them, since Markdown is read on terminals too.
+    if (is_disallowed_control(c) || c == '\x7F') continue;
+    if (is_c1_control_at(s, i) || is_bidi_control_at(s, i)) {
+      i += is_c1_control_at(s, i) ? 1 : 2;
       continue;
     }
     if (kSpecial.find(c) != std::string_view::npos) out += '\\';
@@ -155,8 +186,12 @@ std::string text_escape(std::string_view s) {
   for (std::size_t i = 0; i < s.size(); ++i) {
     auto u = static_cast<unsigned char>(s[i]);
     if ((u < 0x20 && u != '\t' && u != '\n') || u == 0x7f) continue;
-    if (u == 0xC2 && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) < 0xA0) {
+    if (is_c1_control_at(s, i)) {
       ++i;  // a C1 control (U+0080 to U+009F)
+      continue;
+    }
+    if (is_bidi_control_at(s, i)) {
+      i += 2;
       continue;
     }
     out += s[i];
@@ -173,18 +208,22 @@ std::string safe_file_name(std::string_view id) {
     if (out.size() >= 100) break;
   }
   if (out.empty() || out.find_first_not_of('.') == std::string::npos) out = "_" + out;
-  if (out[0] == '.') out[0] = '_';
+  // Never a leading '.' (hidden, or a path of dots) nor '-' (read as an option by commands,
+  // and as a formula by spreadsheets, whose guard would then change the name in an index).
+  if (out[0] == '.' || out[0] == '-') out[0] = '_';
   return out;
 }
 
-bool is_valid_utf8(std::string_view s) {
+std::size_t first_invalid_utf8(std::string_view s) {
   for (std::size_t i = 0; i < s.size();) {
     std::size_t n = utf8_sequence_length(s, i);
-    if (n == 0) return false;
+    if (n == 0) return i;
     i += n;
   }
-  return true;
+  return std::string_view::npos;
 }
+
+bool is_valid_utf8(std::string_view s) { return first_invalid_utf8(s) == std::string_view::npos; }
 
 std::string printable(std::string_view s, std::size_t max_bytes) {
   std::string out;
@@ -195,10 +234,16 @@ std::string printable(std::string_view s, std::size_t max_bytes) {
     if (n == 0 || c < 0x20 || c == 0x7F) {
       out += fmt::format("\\x{:02X}", c);
       ++i;
-    } else if (n == 2 && c == 0xC2 && static_cast<unsigned char>(s[i + 1]) < 0xA0) {
+    } else if (n == 2 && is_c1_control_at(s, i)) {
       // C1 controls (U+0080 to U+009F): some terminals act on them as on escape sequences.
       out += fmt::format("\\u{:04X}", static_cast<unsigned char>(s[i + 1]));
       i += 2;
+    } else if (is_bidi_control_at(s, i)) {
+      // Reordering marks: shown by their code point, so that a quoted name reads as typed.
+      out +=
+          fmt::format("\\u{:04X}", 0x2000 + ((static_cast<unsigned char>(s[i + 1]) - 0x80) << 6) +
+                                       (static_cast<unsigned char>(s[i + 2]) - 0x80));
+      i += 3;
     } else {
       out.append(s.substr(i, n));
       i += n;

@@ -32,6 +32,8 @@ std::string safe_file_name(std::string_view id);
 // True when `s` is well-formed UTF-8 (no overlong forms, surrogates or code points above
 // U+10FFFF).
 bool is_valid_utf8(std::string_view s);
+// The offset of the first byte of `s` that starts no well-formed UTF-8 sequence, or npos.
+std::size_t first_invalid_utf8(std::string_view s);
 // Text quoted in a diagnostic or printed to a terminal: well-formed UTF-8 is kept, control
 // characters (escape sequences included) and ill-formed bytes become \xNN, and the result is
 // cut after `max_bytes` of input with "...". Always valid UTF-8 with no control characters.
