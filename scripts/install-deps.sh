@@ -33,5 +33,34 @@ echo "install-deps: installing ${missing[*]}"
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
 export DEBIAN_FRONTEND=noninteractive
-$sudo apt-get update -qq
-$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+
+# Another apt-get or dpkg (an unattended upgrade, a second terminal) may hold the dpkg or
+# package-list lock: wait for it, up to RAYGRADE_APT_WAIT seconds (default 900), saying so,
+# then give up with apt's own message.
+wait_limit=${RAYGRADE_APT_WAIT:-900}
+deadline=$(( $(date +%s) + wait_limit ))
+apt_waiting() {
+  local log status
+  log=$(mktemp)
+  while true; do
+    # DPkg::Lock::Timeout makes apt itself wait for the dpkg frontend lock; the loop covers the
+    # locks it does not wait for (the package lists' during an update).
+    if $sudo apt-get -o DPkg::Lock::Timeout="$wait_limit" "$@" 2>"$log"; then
+      cat "$log" >&2
+      rm -f "$log"
+      return 0
+    fi
+    status=$?
+    if grep -qiE 'could not get lock|unable to acquire|another process' "$log" &&
+       [ "$(date +%s)" -lt "$deadline" ]; then
+      echo "install-deps: another apt-get or dpkg holds its lock; waiting (at most ${wait_limit} s in all)" >&2
+      sleep 5
+      continue
+    fi
+    cat "$log" >&2
+    rm -f "$log"
+    return "$status"
+  done
+}
+apt_waiting update -qq
+apt_waiting install -y -qq --no-install-recommends "${missing[@]}"

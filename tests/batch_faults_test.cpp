@@ -219,6 +219,8 @@ TEST_F(BatchFaults, SecondGraderOnOneFolderIsRefused) {
   r = grade("'" + subs_.string() + "' --format html --out '" + out.string() + "'");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(out / "Ada.html"));
+  // A run that ends normally leaves no lock file behind.
+  EXPECT_FALSE(fs::exists(out / ".raygrade.lock"));
 }
 
 // A batch of pages is made durable with one flush of the file system at the end, not one

@@ -85,16 +85,15 @@ std::string nested(int n) {
   return s;
 }
 
-// Beyond the limits is not a slip: the submission reader rejects it (over_limit).
+// Beyond the limits is told apart from a slip (over_limit); either costs that answer alone.
 TEST(Formula, LimitsAreToldApartFromSlips) {
   EXPECT_TRUE(parse_formula(std::string(1001, '1')).over_limit);
   std::string sum = "1";  // 1+1+...+1: 999 characters, within the limit
   while (sum.size() < 999) sum += "+1";
   EXPECT_TRUE(parse_formula(sum).ok);
-  // Each parenthesis is two grammar levels (the sum inside, and the factor), and the whole
-  // answer one more: 19 nest within the 40 levels, 20 do not.
-  EXPECT_TRUE(parse_formula(nested(19)).ok);
-  EXPECT_TRUE(parse_formula(nested(20)).over_limit);
+  // The documented limit: 20 nested parentheses are read, 21 are not.
+  EXPECT_TRUE(parse_formula(nested(20)).ok);
+  EXPECT_TRUE(parse_formula(nested(21)).over_limit);
   FormulaParse deep = parse_formula(nested(30));
   EXPECT_FALSE(deep.ok);
   EXPECT_TRUE(deep.over_limit);
@@ -111,11 +110,19 @@ TEST(Formula, NestingBombIsRefusedNotRecursed) {
   bomb += "1";
   p = parse_formula(bomb);
   EXPECT_FALSE(p.ok);
-  EXPECT_NE(p.message.find("levels deep"), std::string::npos);
-  // Each parenthesis is two grammar levels: ten nested ones are well inside the limit.
-  std::string ok(10, '(');
-  ok += "1" + std::string(10, ')');
-  EXPECT_TRUE(parse_formula(ok).ok);
+  EXPECT_NE(p.message.find("parentheses deep"), std::string::npos);
+  // The documented limit is 20 nested parentheses: 20 are read, 21 are not.
+  std::string twenty(20, '(');
+  twenty += '1';
+  twenty.append(20, ')');
+  FormulaParse at_limit = parse_formula(twenty);
+  EXPECT_TRUE(at_limit.ok) << at_limit.message;
+  EXPECT_EQ(at_limit.formula.evaluate(), 1);
+  std::string over(21, '(');
+  over += '1';
+  over.append(21, ')');
+  EXPECT_FALSE(parse_formula(over).ok);
+  EXPECT_TRUE(parse_formula(over).over_limit);
 }
 
 TEST(Formula, TooLongIsRefused) {

@@ -35,8 +35,6 @@ const std::map<std::string, std::string> kExpectedFault = {
     {"bad-duplicate-answer.json", "duplicate-key"},
     {"bad-duplicate-key-in-hit.json", "duplicate-key"},
     {"bad-empty.json", "bad-json"},
-    {"bad-formula-too-deep.json", "limit"},
-    {"bad-formula-too-long.json", "limit"},
     {"bad-hits-is-string.json", "type"},
     {"bad-huge-string.json", "limit"},
     {"bad-infinity-token.json", "bad-json"},
@@ -69,6 +67,13 @@ const std::map<std::string, std::string> kExpectedFault = {
 // id a finding with its JSON path, never a rejection of the file.
 const std::set<std::string> kFindings = {"finding-path-traversal-problem.json",
                                          "finding-unknown-problem.json"};
+
+// A typed number beyond the parser's limits: that answer alone is wrong, with the limit in its
+// feedback; the file is graded.
+const std::map<std::string, std::string> kWrongAnswer = {
+    {"wrong-formula-too-deep.json", "20 parentheses"},
+    {"wrong-formula-too-long.json", "1000 characters"},
+};
 
 // A right answer to both problems of problems.json: the ray along +x meets the unit sphere at
 // (2, 0, 0) at t = 1 and 3, and the plane x = 2 at t = 2.
@@ -132,6 +137,15 @@ TEST_F(HostileBatch, EveryHostileFileRejectedEveryGoodOneGradedRight) {
       // The message speaks of the input, not of the parser's internals.
       EXPECT_EQ(f["message"].get<std::string>().find("nlohmann"), std::string::npos) << name;
       EXPECT_EQ(f["message"].get<std::string>().find("[json.exception"), std::string::npos) << name;
+    } else if (kWrongAnswer.count(name)) {
+      ASSERT_TRUE(s.at("gradable").get<bool>()) << name << ": " << s.dump();
+      bool said = false;
+      for (const json& result : s.at("problems")) {
+        if (!result.at("answered").get<bool>()) continue;
+        EXPECT_LT(result.at("score").get<double>(), result.at("max_score").get<double>()) << name;
+        said = said || result.dump().find(kWrongAnswer.at(name)) != std::string::npos;
+      }
+      EXPECT_TRUE(said) << name << " does not name its limit: " << s.dump();
     } else if (kFindings.count(name)) {
       ASSERT_TRUE(s.at("gradable").get<bool>()) << name;
       ASSERT_EQ(s.at("findings").size(), 1u) << name;
@@ -179,7 +193,7 @@ TEST_F(HostileBatch, FilesStayInTheOutputFolderAndTextIsEscaped) {
     EXPECT_EQ(html.find("\x1b"), std::string::npos) << entry.path();
   }
   // One page per file, a rejection included.
-  EXPECT_EQ(pages, kExpectedFault.size() + kFindings.size() + 11);
+  EXPECT_EQ(pages, kExpectedFault.size() + kFindings.size() + kWrongAnswer.size() + 11);
 }
 
 // The cells of a CSV text (RFC 4180: quoted cells, "" for a quote inside one).

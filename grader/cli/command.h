@@ -15,6 +15,7 @@ enum ExitCode : int {
   kExitFailed = 1,    // wrong answers, failed checks or stale files
   kExitBadInput = 2,  // bad usage, or some input could not be read
   kExitInternal = 3,  // a bug of raygrade (an internal error), whatever the input
+  kExitResource = 4,  // the machine's limits: out of memory, a full disk, no thread could start
 };
 
 using Runner = std::function<int()>;

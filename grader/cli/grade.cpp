@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include "assignments/grading.h"
 #include "assignments/lms_export.h"
 #include "assignments/roster.h"
+#include "assignments/variants.h"
 #include "cli/command.h"
 #include "core/atomic_file.h"
 #include "core/escape.h"
@@ -54,6 +56,23 @@ class Progress {
   std::size_t total_;
   bool on_;
 };
+
+// The submission (a folder, or a submitted file's folder) that the folder `out` is or is inside:
+// writing there could overwrite submissions before they are read.
+std::optional<std::string> out_among_submissions(const std::string& out,
+                                                 const std::vector<std::string>& submissions) {
+  std::error_code ec;
+  auto o = std::filesystem::weakly_canonical(out, ec);
+  if (ec) return std::nullopt;
+  for (const auto& s : submissions) {
+    auto p = std::filesystem::weakly_canonical(s, ec);
+    if (ec) continue;
+    if (!std::filesystem::is_directory(p, ec)) p = p.parent_path();
+    auto rel = o.lexically_relative(p);
+    if (!rel.empty() && *rel.begin() != "..") return s;
+  }
+  return std::nullopt;
+}
 
 int run_grade(const GradeCliOptions& o) {
   const GradeFormat* format = find_grade_format(o.format);
@@ -129,9 +148,10 @@ int run_grade(const GradeCliOptions& o) {
     spec_grader = std::make_unique<AssignmentGrader>(*spec, spec_bank->problems, options);
     ids = spec_grader->problem_ids();
     grade_one = [&](const std::string& f) { return spec_grader->grade_file(f); };
-    if (format->full_feedback_too) {
-      // The full feedback too, which Gradescope shows after the due date.
-      options.feedback = FeedbackPolicy::kFull;
+    if (format->full_feedback_too && !options.feedback && spec->due && options.now <= *spec->due) {
+      // The feedback the policy allows after the due date too, which Gradescope shows once it
+      // has passed: never more than that policy (an override holds at all times).
+      options.now = *spec->due + 1;
       worked_grader = std::make_unique<AssignmentGrader>(*spec, spec_bank->problems, options);
     }
   }
@@ -144,6 +164,15 @@ int run_grade(const GradeCliOptions& o) {
     fmt::print(stderr, "raygrade grade: --format {} with several submissions needs --out DIR\n",
                o.format);
     return kExitBadInput;
+  }
+  if (!o.out.empty()) {
+    if (auto s = out_among_submissions(o.out, o.submissions)) {
+      fmt::print(stderr,
+                 "raygrade grade: --out {} is inside the submissions ({}), whose files it could "
+                 "overwrite; choose a folder outside them\n",
+                 printable(o.out), printable(*s));
+      return kExitBadInput;
+    }
   }
   std::optional<FolderLock> lock;
   if (!o.out.empty()) {
@@ -160,7 +189,12 @@ int run_grade(const GradeCliOptions& o) {
   if (gradebook) (o.out.empty() ? std::cout : csv_file) << gradebook_csv_header(ids);
   JsonArrayStream json_out(std::cout);
   Progress progress(files.size());
-  std::size_t rejected = 0, internal = 0;
+  std::size_t rejected = 0, internal = 0, resource = 0;
+  // The files of each student (by the key their variant is drawn for), to find the doubles.
+  std::map<std::string, std::vector<std::string>> by_student;
+  auto spec_key_of = [&](const SubmissionGrade& g) {
+    return spec && g.gradable && !g.identity.empty() ? student_key(g.identity) : std::string();
+  };
   // What a thread makes of one file; the main thread writes them out in the files' order.
   struct Graded {
     SubmissionGrade grade;
@@ -194,6 +228,7 @@ int run_grade(const GradeCliOptions& o) {
       if (!g.gradable) {
         ++rejected;
         internal += g.fault && g.fault->code == "internal";
+        resource += g.fault && g.fault->code == "resource";
         if (!single || gradebook) fmt::print(stderr, "{}\n", format_diagnostic(*g.fault));
       }
       for (const auto& d : g.findings) fmt::print(stderr, "{}\n", format_diagnostic(d));
@@ -213,6 +248,7 @@ int run_grade(const GradeCliOptions& o) {
       } else {
         std::cout << graded[k].text;
       }
+      if (!spec_key_of(g).empty()) by_student[spec_key_of(g)].push_back(g.file);
       progress.step(begin + k + 1);
     }
   }
@@ -220,6 +256,15 @@ int run_grade(const GradeCliOptions& o) {
     write_file_atomically(
         std::filesystem::path(o.out) / ("gradebook" + std::string(format->extension)),
         csv_file.str(), false);
+  // Two files of one student are both graded, and never silently.
+  for (const auto& [key, of] : by_student) {
+    if (of.size() < 2) continue;
+    std::string list;
+    for (const auto& f : of) list += fmt::format("{}{}", list.empty() ? "" : ", ", printable(f));
+    fmt::print(stderr,
+               "raygrade grade: warning: student '{}' has {} submissions, each graded: {}\n",
+               printable(key), of.size(), list);
+  }
   if (json_stream) json_out.finish();
   std::cout.flush();
   if (!o.out.empty()) {
@@ -228,7 +273,7 @@ int run_grade(const GradeCliOptions& o) {
                rejected ? fmt::format(" ({} rejected)", rejected) : "");
   }
   bool bad = rejected || !errors.empty() || !setup_errors.empty();
-  return internal ? kExitInternal : bad ? kExitBadInput : kExitOk;
+  return internal ? kExitInternal : resource ? kExitResource : bad ? kExitBadInput : kExitOk;
 }
 
 }  // namespace

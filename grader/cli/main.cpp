@@ -3,10 +3,27 @@
 
 #include <cstring>
 #include <iostream>
+#include <new>
 #include <string>
+#include <system_error>
 
 #include "cli/command.h"
+#include "core/error.h"
 #include "json/cursor.h"
+
+namespace {
+
+bool is_resource_error(const std::error_code& code) {
+  using std::errc;
+  for (errc e :
+       {errc::resource_unavailable_try_again, errc::not_enough_memory, errc::no_space_on_device,
+        errc::too_many_files_open, errc::too_many_files_open_in_system, errc::file_too_large}) {
+    if (code == e) return true;
+  }
+  return false;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace raygrade::cli;
@@ -42,6 +59,17 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "raygrade: internal error: {}; please report it with the input\n",
                    e.what());
         return kExitInternal;
+      } catch (const std::bad_alloc&) {
+        fmt::print(stderr, "raygrade: out of memory\n");
+        return kExitResource;
+      } catch (const std::system_error& e) {
+        // A thread, memory, disk space or a file the system would not give is a resource;
+        // anything else (a folder that cannot be made, say) is the input's.
+        fmt::print(stderr, "raygrade: {}\n", e.what());
+        return is_resource_error(e.code()) ? kExitResource : kExitBadInput;
+      } catch (const raygrade::Error& e) {
+        fmt::print(stderr, "{}\n", raygrade::format_diagnostic(e.diagnostic()));
+        return e.diagnostic().code == "resource" ? kExitResource : kExitBadInput;
       } catch (const std::exception& e) {
         fmt::print(stderr, "raygrade: {}\n", e.what());
         return kExitBadInput;

@@ -18,9 +18,13 @@ namespace raygrade {
 namespace {
 
 [[noreturn]] void fail(const std::filesystem::path& path, std::string_view what, int error) {
+  // A full disk, a quota, no memory or no file descriptors left: the machine's limits, which
+  // another run may not meet, not a fault of the path.
+  bool resource = error == ENOSPC || error == EDQUOT || error == ENOMEM || error == EMFILE ||
+                  error == ENFILE || error == EFBIG;
   throw Error(Diagnostic{path.string(), "", 0, 0, Severity::kError,
                          fmt::format("cannot write the file: {}: {}", what, std::strerror(error)),
-                         "unwritable"});
+                         resource ? "resource" : "unwritable"});
 }
 
 // Removes the temporary file when the write does not complete.

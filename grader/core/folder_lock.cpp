@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -50,12 +51,28 @@ bool is_temporary_name(const std::string& name) {
 
 }  // namespace
 
-FolderLock::FolderLock(const std::filesystem::path& folder, const std::string& what) {
-  std::filesystem::path path = folder / kLockName;
-  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
-  if (fd_ < 0)
-    fail(path, fmt::format("cannot make the lock file: {}", std::strerror(errno)), "unwritable");
-  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+FolderLock::FolderLock(const std::filesystem::path& folder, const std::string& what)
+    : path_(folder / kLockName) {
+  const std::filesystem::path& path = path_;
+  // A holder removes the file when it is done, while it still holds the lock: a lock taken on a
+  // file that is no longer at the path (removed between our open and our flock) guards nothing,
+  // so it is let go and taken again on the file now there.
+  bool locked = false;
+  for (int attempt = 0; !locked; ++attempt) {
+    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd_ < 0)
+      fail(path, fmt::format("cannot make the lock file: {}", std::strerror(errno)), "unwritable");
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) break;  // held by another: reported below
+    struct stat held {
+    }, there{};
+    locked = ::fstat(fd_, &held) == 0 && ::stat(path.c_str(), &there) == 0 &&
+             held.st_dev == there.st_dev && held.st_ino == there.st_ino;
+    if (locked) break;
+    ::close(fd_);
+    fd_ = -1;
+    if (attempt == 100) fail(path, "the lock file keeps being replaced", "locked");
+  }
+  if (!locked) {
     int error = errno;
     std::string holder = error == EWOULDBLOCK ? read_all(fd_) : "";
     ::close(fd_);
@@ -82,7 +99,11 @@ FolderLock::FolderLock(const std::filesystem::path& folder, const std::string& w
 }
 
 FolderLock::~FolderLock() {
-  if (fd_ >= 0) ::close(fd_);  // closing releases the flock
+  if (fd_ < 0) return;
+  // Removed while held, so that a finished run leaves nothing behind; a writer waiting on the
+  // old file sees it gone and takes a new one (see the constructor).
+  ::unlink(path_.c_str());
+  ::close(fd_);  // closing releases the flock
 }
 
 std::vector<std::string> remove_stale_temporaries(const std::filesystem::path& folder) {

@@ -9,8 +9,10 @@ namespace raygrade {
 
 // An exclusive lock on an output folder: flock() on "<folder>/.raygrade.lock", which also holds
 // who took it (process id, host, time, what). The kernel releases the lock when the process
-// ends, however it ends, so a killed writer never leaves the folder locked. The lock file
-// itself stays: removing it would let two writers lock two different files.
+// ends, however it ends, so a killed writer never leaves the folder locked. The lock file is
+// removed when the lock is let go (a finished run leaves no file behind); a writer that locked
+// a file removed meanwhile finds it no longer at the path and locks the new one, so two writers
+// never hold two different files.
 class FolderLock {
  public:
   // Takes the lock without waiting. Throws Error (code "locked", naming the folder and the
@@ -21,6 +23,7 @@ class FolderLock {
   FolderLock& operator=(const FolderLock&) = delete;
 
  private:
+  std::filesystem::path path_;
   int fd_ = -1;
 };
 

@@ -90,9 +90,8 @@ AnswerReader::Number AnswerReader::number() const {
   if (value_->is_string()) {
     const std::string& text = value_->get_ref<const std::string&>();
     FormulaParse p = parse_formula(text);
-    // Beyond the parser's limits is hostile input, not a slip to give feedback on: the
-    // submission is rejected, as for a string over the file's limit.
-    if (p.over_limit) fail("a typed number beyond the limits: " + p.message, "limit");
+    // Beyond the parser's limits (p.over_limit) is read no further: like any number that does
+    // not parse, it costs that answer alone, with the limit named in its feedback.
     return student_number(text, std::move(p));
   }
   fail("expected a number (or a number typed as a string, like \"1/3\")", "type");

@@ -223,7 +223,8 @@ class Parser {
   bool enter(int depth) {
     if (depth > kMaxFormulaDepth) {
       if (!failed_) too_deep_ = true;
-      fail(pos_, fmt::format("the answer nests more than {} levels deep", kMaxFormulaDepth));
+      fail(pos_,
+           fmt::format("the answer nests more than {} parentheses deep", kMaxFormulaParentheses));
       return false;
     }
     return !failed_;

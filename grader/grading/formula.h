@@ -11,7 +11,10 @@ namespace raygrade {
 
 // Limits on typed input. A real answer is a few dozen characters and nests two or three deep.
 constexpr std::size_t kMaxFormulaLength = 1000;  // characters (bytes of UTF-8)
-constexpr int kMaxFormulaDepth = 40;             // nested parentheses, functions and powers
+// Nested parentheses (and functions) a typed number may have; the parser counts grammar levels,
+// two per pair of parentheses (an expression inside a primary) and two for the outermost.
+constexpr int kMaxFormulaParentheses = 20;
+constexpr int kMaxFormulaDepth = 2 * kMaxFormulaParentheses + 2;
 
 // Symbols a formula may use: each name (and its aliases) maps to a slot in the values.
 class SymbolTable {

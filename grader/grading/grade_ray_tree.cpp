@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <set>
+#include <unordered_map>
 
 #include "derivation/number_format.h"
 #include "grading/grade_colour.h"
@@ -262,22 +263,26 @@ class RayTreeGrader final : public KindGrader {
       out.push_back(std::move(s));
     }
     // Place each node in the tree: by its path, or by its parent and the kind of its ray.
-    for (auto& s : out) s.resolved = resolve(s, out, 0);
+    // A parent is the first node with its label, found by a map: linear in the nodes.
+    Labels labels;
+    for (std::size_t i = 0; i < out.size(); ++i) labels.try_emplace(out[i].label, i);
+    for (auto& s : out) s.resolved = resolve(s, out, labels, 0);
     return out;
   }
 
-  static std::string resolve(const StudentNode& s, const std::vector<StudentNode>& all, int depth) {
+  using Labels = std::unordered_map<std::string, std::size_t>;
+
+  static std::string resolve(const StudentNode& s, const std::vector<StudentNode>& all,
+                             const Labels& labels, int depth) {
     if (s.path) return *s.path;
     if (depth > kMaxTreeDepth) return "";  // a cycle of parents
     if (!s.parent) return !s.ray || *s.ray == "primary" ? "P" : "";
-    for (const auto& p : all) {
-      if (p.label != *s.parent) continue;
-      std::string base = resolve(p, all, depth + 1);
-      if (base.empty() || !s.ray) return "";
-      if (*s.ray == "reflection") return base + ".R";
-      if (*s.ray == "refraction") return base + ".T";
-      return "";
-    }
+    auto p = labels.find(*s.parent);
+    if (p == labels.end()) return "";
+    std::string base = resolve(all[p->second], all, labels, depth + 1);
+    if (base.empty() || !s.ray) return "";
+    if (*s.ray == "reflection") return base + ".R";
+    if (*s.ray == "refraction") return base + ".T";
     return "";
   }
 

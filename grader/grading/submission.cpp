@@ -131,8 +131,14 @@ SubmissionGrade Assignment::grade(const std::shared_ptr<const SourceFile>& file)
     if (!answers.is_object()) answers.fail("answers is an object: problem id → answer", "type");
     std::vector<std::string> ids;
     for (const auto& [id, i] : by_id_) ids.push_back(id);
+    // Each unknown id is reported with its closest known one and its line, for the first few:
+    // past them a count, so that a file of thousands of unknown ids costs time linear in its
+    // size (a suggestion scans every known id, and a line scans the text).
+    constexpr std::size_t kReportedUnknown = 20;
+    std::size_t unknown = 0;
     for (const auto& [id, v] : answers.json().items()) {
       if (by_id_.count(id)) continue;
+      if (++unknown > kReportedUnknown) continue;
       std::string hint = closest_match(id, ids);
       Diagnostic d;
       d.file = file->name;
@@ -144,6 +150,18 @@ SubmissionGrade Assignment::grade(const std::shared_ptr<const SourceFile>& file)
                                      "no problem '{}' in this assignment (did you mean "
                                      "'{}'?): not graded",
                                      id, hint);
+      d.code = "unknown-problem";
+      g.findings.push_back(std::move(d));
+    }
+    if (unknown > kReportedUnknown) {
+      Diagnostic d;
+      d.file = file->name;
+      d.path = answers.path();
+      std::tie(d.line, d.column) = locate(file->text, d.path);
+      d.severity = Severity::kWarning;
+      d.message =
+          fmt::format("{} more answers to problems this assignment does not have: not graded",
+                      unknown - kReportedUnknown);
       d.code = "unknown-problem";
       g.findings.push_back(std::move(d));
     }
@@ -268,8 +286,11 @@ void walk(const fs::path& folder, const fs::path& root, std::vector<std::string>
       errors.push_back(skipped(p, "skipped: " + kind_of(target.type()) + ", not a regular file"));
       continue;
     }
-    // Other regular files (a README, notes) are not submissions.
-    if (p.extension() == ".json") out.push_back(p.string());
+    // Other regular files (a README, notes) are not submissions. A link is listed as the file
+    // it was checked to lead to, which is then opened without following links: a link swapped
+    // in after this check is not read.
+    if (p.extension() == ".json")
+      out.push_back(fs::is_symlink(own) ? fs::canonical(p, ec).string() : p.string());
   }
 }
 
@@ -286,7 +307,11 @@ std::vector<std::string> submission_files(const std::vector<std::string>& paths,
       fs::path root = fs::canonical(p, ec);
       walk(p, ec ? fs::path(p) : root, out, errors);
     } else if (fs::is_regular_file(status)) {
-      out.push_back(p);
+      // Named on the command line, a link is followed; it is listed as its target, which is
+      // opened without following links (submission files are).
+      fs::path resolved =
+          fs::is_symlink(fs::symlink_status(p, ec)) ? fs::canonical(p, ec) : fs::path(p);
+      out.push_back(ec ? p : resolved.string());
     } else if (fs::exists(status)) {
       errors.push_back(skipped(p, "skipped: " + kind_of(status.type()) + ", not a regular file"));
     } else {

@@ -149,7 +149,12 @@ std::shared_ptr<const SourceFile> load_json_file(const std::string& path,
   // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer forever. Only a
   // regular file is read; fstat on the open descriptor, so the file cannot be swapped between
   // the check and the read.
-  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC |
+                                    (limits.no_follow ? O_NOFOLLOW : 0));
+  if (fd < 0 && errno == ELOOP && limits.no_follow) {
+    fail(path, "not read: the file became a symbolic link after the submissions were listed", 0, 0,
+         "unreadable");
+  }
   if (fd < 0) {
     fail(path, fmt::format("cannot open the file: {}", std::strerror(errno)), 0, 0, "unreadable");
   }

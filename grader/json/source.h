@@ -19,6 +19,10 @@ struct JsonLimits {
   int max_depth = 64;                  // problems nest 6 deep; nlohmann's parser recurses
   std::size_t max_string = 64u << 10;  // 64 KiB: a long problem statement
   std::size_t max_items = 100000;      // items in one array or object: 50,000 problems fit
+  // Refuse a file whose last path component is a symbolic link (O_NOFOLLOW): submissions are
+  // listed with their links resolved and checked, so a link found when opening one is a swap
+  // made after the check.
+  bool no_follow = false;
 
   // The limits for a student's submission: one student's answers to one assignment.
   static JsonLimits submission() {
@@ -27,6 +31,7 @@ struct JsonLimits {
     l.max_depth = 32;          // a submission nests 5 deep (answers, steps, hits, vectors)
     l.max_string = 16u << 10;  // 16 KiB: a long free-text explanation
     l.max_items = 10000;       // answers, or steps of one answer
+    l.no_follow = true;
     return l;
   }
 };
