@@ -56,7 +56,8 @@ same check BIN check REPO/problems --format text
 same generate BIN generate --seed 42 -n 20 --out out
 same handout BIN handout REPO/assignments/homework-rays.json --student s001 --out out
 same bench-corpus BIN bench --write-corpus out
-same export BIN export gradescope REPO/assignments/homework-rays.json --out out --binary "$static"
+same export BIN export gradescope REPO/assignments/homework-rays.json --roster REPO/assignments/roster.csv \
+  --out out --binary "$static"
 same export-prairielearn BIN export prairielearn REPO/assignments/homework-rays.json --out out \
   --binary "$static"
 [ "$failures" -eq 0 ] || exit 1
