@@ -250,12 +250,14 @@ TEST(Identity, TheUploaderNotTheFileDecidesWhoseNumbersAreGraded) {
   // Bo's id with the uploader's own email: the two fields name two students.
   SubmissionGrade mixed = grade({{"id", "s003"}, {"email", "ann.lee@example.edu"}}, bo);
   EXPECT_FALSE(mixed.gradable);
+  ASSERT_TRUE(mixed.fault);
   EXPECT_EQ(mixed.fault->code, "student-mismatch");
   EXPECT_DOUBLE_EQ(mixed.score, 0);
   // Bo's whole identity from Ann's account.
   SubmissionGrade bos =
       grade({{"id", "s003"}, {"name", "Bo Chen"}, {"email", "bo@example.edu"}}, bo);
   EXPECT_FALSE(bos.gradable);
+  ASSERT_TRUE(bos.fault);
   EXPECT_EQ(bos.fault->code, "not-uploader");
   // Naming nobody: the account is the student, and her own numbers are graded.
   SubmissionGrade own = grade(nullptr, right_answers(spec, bank, "s001"));
@@ -270,6 +272,7 @@ TEST(Identity, TheUploaderNotTheFileDecidesWhoseNumbersAreGraded) {
              submission_by({{"id", "s003"}, {"email", "ann.lee@example.edu"}}, bo));
   SubmissionGrade claim = no_roster.grade_file((dir.path() / "claim.json").string());
   EXPECT_FALSE(claim.gradable);
+  ASSERT_TRUE(claim.fault);
   EXPECT_EQ(claim.fault->code, "no-roster");
 }
 
