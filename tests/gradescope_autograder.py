@@ -47,17 +47,22 @@ def check(ok, what):
         failures.append(what)
 
 
-def metadata(email, name):
+def metadata(email, name, due="2026-12-04T23:59:00.000000+00:00", extension=None):
+    """Gradescope's submission_metadata.json for an upload on 2026-11-30 by one account;
+    `extension` is that account's own due date, when it has one."""
+    user = {"email": email, "id": 1234, "name": name}
+    if extension:
+        user["assignment"] = {"due_date": extension}
     return {
         "id": 123456,
         "created_at": "2026-11-30T14:22:32.365935-08:00",
-        "assignment": {"due_date": "2026-12-04T23:59:00.000000+00:00", "group_size": None,
+        "assignment": {"due_date": due, "group_size": None,
                        "group_submission": False, "id": 25828,
                        "late_due_date": None, "outline": [],
                        "release_date": "2026-11-01T00:00:00.000000+00:00",
                        "title": "Homework: rays", "total_points": "21.0"},
         "submission_method": "upload",
-        "users": [{"email": email, "id": 1234, "name": name}],
+        "users": [user],
         "previous_submissions": [],
     }
 
@@ -266,6 +271,24 @@ def main(raygrade, assignment, static=None):
         # No student and no answers file name: the account alone says who it is.
         r = run_upload(root, {"answers.json": json.dumps({"answers": answers})}, meta)
         check(r["score"] == sum(POINTS.values()), f"no student named: score {r['score']}")
+
+        # Gradescope's due date, and a student's extension, decide which policy is in force at
+        # the submission's own time (2026-11-30), whatever the assignment file says.
+        late = run_upload(root, {"answers.json": json.dumps(
+            {"student": STUDENT, "answers": wrong_answers})},
+            metadata(STUDENT["email"], STUDENT["name"], due="2026-11-29T23:59:00.000000-08:00"))
+        check_results(late, "late")
+        check(not [t for t in late["tests"] if t.get("visibility") != "visible"],
+              "late: graded after the due date, yet a test waits for it")
+        check(leaked(late, wrong_values), "late: the after-due policy (full) shows no value")
+        extended = run_upload(root, {"answers.json": json.dumps(
+            {"student": STUDENT, "answers": wrong_answers})},
+            metadata(STUDENT["email"], STUDENT["name"], due="2026-11-29T23:59:00.000000-08:00",
+                     extension="2026-12-10T23:59:00.000000-08:00"))
+        check_results(extended, "extended")
+        check(not leaked({"tests": [t for t in extended["tests"]
+                                    if t.get("visibility") == "visible"]}, wrong_values),
+              "extended: reference values shown before the student's own due date")
 
         # Under a policy that never shows reference values, no output shows one, at any time.
         for policy in ("mistakes", "score"):

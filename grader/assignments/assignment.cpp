@@ -89,6 +89,13 @@ std::optional<std::int64_t> parse_time(std::string_view s) {
     if (at < s.size() && s[at] == ':') {
       if (!digits(s, at + 1, 2, sec)) return std::nullopt;
       at += 3;
+      // A fraction of a second (Gradescope writes microseconds) is dropped.
+      if (at < s.size() && s[at] == '.') {
+        std::size_t end = at + 1;
+        while (end < s.size() && s[end] >= '0' && s[end] <= '9') ++end;
+        if (end == at + 1) return std::nullopt;
+        at = end;
+      }
     }
     if (h > 23 || mi > 59 || sec > 59) return std::nullopt;
     if (at < s.size() && s[at] == 'Z') {

@@ -87,16 +87,36 @@ std::string read_file_bytes(const std::filesystem::path& path) {
   return std::move(*bytes);
 }
 
-std::vector<StudentIdentity> read_gradescope_users(const std::string& path) {
+namespace {
+
+// A date of submission_metadata.json, or nothing when it is absent or null.
+std::optional<std::int64_t> metadata_time(const Cursor& object, const char* key) {
+  auto at = object.find(key);
+  if (!at || at->json().is_null()) return std::nullopt;
+  auto t = parse_time(at->string());
+  if (!t) at->fail("a date and time, like 2026-12-04T23:59:00.000000-08:00", "invalid");
+  return t;
+}
+
+}  // namespace
+
+GradescopeMetadata read_gradescope_metadata(const std::string& path) {
   Cursor root(load_json_file(path));
   if (!root.is_object()) root.fail("submission_metadata.json is a JSON object", "type");
-  std::vector<StudentIdentity> users;
+  GradescopeMetadata m;
+  m.submitted = metadata_time(root, "created_at");
+  if (auto a = root.find("assignment"); a && a->is_object()) m.due = metadata_time(*a, "due_date");
+  std::optional<std::int64_t> extended;
   for (const auto& u : root.at("users").items()) {
     if (!u.is_object()) u.fail("a user is an object with email and name", "type");
-    users.push_back(StudentIdentity{u.string_or("name", ""), "", u.at("email").string()});
+    m.users.push_back(StudentIdentity{u.string_or("name", ""), "", u.at("email").string()});
+    if (auto a = u.find("assignment"); a && a->is_object()) {
+      if (auto d = metadata_time(*a, "due_date")) extended = std::max(extended.value_or(*d), *d);
+    }
   }
-  if (users.empty()) root.at("users").fail("no user uploaded this submission");
-  return users;
+  if (m.users.empty()) root.at("users").fail("no user uploaded this submission");
+  if (extended) m.due = extended;
+  return m;
 }
 
 bool is_static_executable(const std::filesystem::path& path) {

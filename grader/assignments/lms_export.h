@@ -14,11 +14,19 @@
 
 namespace raygrade {
 
-// The accounts that uploaded a submission, from Gradescope's submission_metadata.json: the
-// "users" list, each with "email", "name" and Gradescope's numeric "id" (not the student's id,
-// so it is not used). The other keys are Gradescope's and are not read. Throws Error naming
-// the file and JSON path when "users" is missing, empty or malformed.
-std::vector<StudentIdentity> read_gradescope_users(const std::string& path);
+// What raygrade reads of Gradescope's submission_metadata.json: the accounts that uploaded the
+// submission ("users", each with "email" and "name"; Gradescope's numeric "id" is not the
+// student's id and is not read), when it was submitted ("created_at"), and its due date: a
+// user's own "assignment": {"due_date"} (an extension) when present, else the assignment's
+// "assignment": {"due_date"}. The other keys are Gradescope's and are not read. Throws Error
+// naming the file and JSON path when "users" is missing, empty or malformed, or a date given
+// is not one.
+struct GradescopeMetadata {
+  std::vector<StudentIdentity> users;
+  std::optional<std::int64_t> submitted;  // seconds since 1970 UTC
+  std::optional<std::int64_t> due;
+};
+GradescopeMetadata read_gradescope_metadata(const std::string& path);
 
 // Whether a file is an ELF executable linked statically (it asks for no program interpreter).
 bool is_static_executable(const std::filesystem::path& path);

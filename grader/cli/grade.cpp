@@ -109,11 +109,17 @@ int run_grade(const GradeCliOptions& o) {
     grade_one = [&](const std::string& f) { return assignment->grade_file(f); };
   } else {
     AssignmentGradeOptions options;
+    std::optional<std::int64_t> submitted;  // Gradescope's time of the submission
     try {
       spec = std::make_unique<AssignmentSpec>(load_assignment(o.assignment));
       if (!o.roster.empty()) options.roster = load_roster(o.roster);
-      if (!o.gradescope_metadata.empty())
-        options.uploaders = read_gradescope_users(o.gradescope_metadata);
+      if (!o.gradescope_metadata.empty()) {
+        GradescopeMetadata m = read_gradescope_metadata(o.gradescope_metadata);
+        options.uploaders = std::move(m.users);
+        submitted = m.submitted;
+        // Gradescope's due date, with the student's extension, is the one students were given.
+        if (m.due) spec->due = m.due;
+      }
     } catch (const Error& e) {
       fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
       return kExitBadInput;
@@ -126,12 +132,15 @@ int run_grade(const GradeCliOptions& o) {
         return kExitBadInput;
       }
     }
+    // The time the feedback policy is taken at: --now, else Gradescope's time of the
+    // submission, else the clock.
     auto now =
-        o.now.empty()
-            ? std::optional<std::int64_t>(std::chrono::duration_cast<std::chrono::seconds>(
+        !o.now.empty() ? parse_time(o.now)
+        : submitted
+            ? submitted
+            : std::optional<std::int64_t>(std::chrono::duration_cast<std::chrono::seconds>(
                                               std::chrono::system_clock::now().time_since_epoch())
-                                              .count())
-            : parse_time(o.now);
+                                              .count());
     if (!now) {
       fmt::print(stderr,
                  "raygrade grade: --now '{}' is not a date and time (2026-12-04T23:59:00Z)\n",
