@@ -2,6 +2,7 @@
 #include "assignments/grading.h"
 
 #include <fmt/format.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -55,6 +56,31 @@ std::shared_ptr<const AssignmentGrader::Student> AssignmentGrader::student(const
   }
   return s;
 }
+
+namespace {
+
+// The submission's "submitted" time, when it gives one that reads as a date and time; one
+// that does not is a warning, and the file's time orders it instead.
+std::optional<std::int64_t> submitted_time(const Cursor& root, SubmissionGrade& g) {
+  auto at = root.find("submitted");
+  if (!at) return std::nullopt;
+  std::optional<std::int64_t> t =
+      at->json().is_string() ? parse_time(at->json().get<std::string>()) : std::nullopt;
+  if (!t) {
+    Diagnostic d{g.file,
+                 "/submitted",
+                 0,
+                 0,
+                 Severity::kWarning,
+                 "submitted is not a date and time with its zone (2026-12-04T23:59:00Z): the "
+                 "file's time orders this submission",
+                 "invalid"};
+    g.findings.push_back(std::move(d));
+  }
+  return t;
+}
+
+}  // namespace
 
 StudentIdentity AssignmentGrader::identify(const Cursor& root) const {
   std::optional<StudentIdentity> claimed = read_student(root);
@@ -141,6 +167,7 @@ SubmissionGrade AssignmentGrader::grade_file(const std::string& path) {
     if (!root.is_object()) root.fail("a submission is a JSON object", "type");
     who = identify(root);
     g = student(student_key(who))->graders->grade(file);
+    g.submitted = submitted_time(root, g);
   } catch (const Error& e) {
     g.file = path;
     g.gradable = false;
@@ -150,6 +177,13 @@ SubmissionGrade AssignmentGrader::grade_file(const std::string& path) {
     if (d.line == 0 && !d.path.empty() && file)
       std::tie(d.line, d.column) = locate(file->text, d.path);
     g.fault = d;
+    if (who.empty() && file) {
+      try {
+        if (auto c = read_student(Cursor(file))) g.claimed = *c;
+      } catch (const Error&) {
+        // It names nobody readable: no row shows the rejection.
+      }
+    }
   } catch (const std::bad_alloc&) {
     // Out of memory costs this submission alone; the batch goes on, and its exit code says so.
     g = SubmissionGrade{};
@@ -163,6 +197,8 @@ SubmissionGrade AssignmentGrader::grade_file(const std::string& path) {
                          "not graded: out of memory while grading this submission",
                          "resource"};
   }
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) g.file_time = st.st_mtim.tv_sec;
   if (!who.empty()) {
     g.identity = who;
     g.student = who.display();

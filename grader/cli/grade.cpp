@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "assignments/gradebook.h"
 #include "assignments/grading.h"
 #include "assignments/lms_export.h"
 #include "assignments/roster.h"
@@ -34,6 +35,7 @@ struct GradeCliOptions {
   bool answered_only = false;
   std::string assignment;  // an assignment file: each submission graded as its student's variant
   std::string roster;
+  std::string pick = "latest";      // with --roster: which of a student's submissions counts
   std::string feedback;             // overrides the assignment's feedback policy
   std::string now;                  // the time the due date is compared with (default: the clock)
   std::string gradescope_metadata;  // submission_metadata.json: who uploaded the submission
@@ -82,6 +84,12 @@ int run_grade(const GradeCliOptions& o) {
     return kExitBadInput;
   }
   bool gradebook = format->layout == GradeLayout::kGradebook;
+  std::optional<PickPolicy> pick = parse_pick_policy(o.pick);
+  if (!pick) {
+    fmt::print(stderr, "raygrade grade: unknown --pick '{}' (latest, best, first)\n", o.pick);
+    return kExitBadInput;
+  }
+  std::vector<StudentIdentity> roster;
   // What grades one file, and the problems in gradebook order: the bank's, or an assignment's.
   std::function<SubmissionGrade(const std::string&)> grade_one;
   std::vector<std::string> ids;
@@ -112,7 +120,7 @@ int run_grade(const GradeCliOptions& o) {
     std::optional<std::int64_t> submitted;  // Gradescope's time of the submission
     try {
       spec = std::make_unique<AssignmentSpec>(load_assignment(o.assignment));
-      if (!o.roster.empty()) options.roster = load_roster(o.roster);
+      if (!o.roster.empty()) roster = options.roster = load_roster(o.roster);
       if (!o.gradescope_metadata.empty()) {
         GradescopeMetadata m = read_gradescope_metadata(o.gradescope_metadata);
         options.uploaders = std::move(m.users);
@@ -195,7 +203,10 @@ int run_grade(const GradeCliOptions& o) {
   std::set<std::string> names;
   // The gradebook on standard output goes a row at a time; a file is written whole at the end.
   std::ostringstream csv_file;
-  if (gradebook) (o.out.empty() ? std::cout : csv_file) << gradebook_csv_header(ids);
+  // With a roster, the gradebook has one row per roster student, written at the end.
+  std::optional<RosterGradebook> class_book;
+  if (gradebook && !roster.empty()) class_book.emplace(roster, ids, *pick);
+  if (gradebook && !class_book) (o.out.empty() ? std::cout : csv_file) << gradebook_csv_header(ids);
   JsonArrayStream json_out(std::cout);
   Progress progress(files.size());
   std::size_t rejected = 0, internal = 0, resource = 0;
@@ -241,7 +252,9 @@ int run_grade(const GradeCliOptions& o) {
         if (!single || gradebook) fmt::print(stderr, "{}\n", format_diagnostic(*g.fault));
       }
       for (const auto& d : g.findings) fmt::print(stderr, "{}\n", format_diagnostic(d));
-      if (gradebook) {
+      if (class_book) {
+        class_book->add(g);
+      } else if (gradebook) {
         (o.out.empty() ? std::cout : csv_file) << graded[k].text;
       } else if (!o.out.empty()) {
         std::string base = single && format->results_file ? "results" : safe_file_name(g.student);
@@ -257,9 +270,14 @@ int run_grade(const GradeCliOptions& o) {
       } else {
         std::cout << graded[k].text;
       }
-      if (!spec_key_of(g).empty()) by_student[spec_key_of(g)].push_back(g.file);
+      if (!class_book && !spec_key_of(g).empty()) by_student[spec_key_of(g)].push_back(g.file);
       progress.step(begin + k + 1);
     }
+  }
+  if (class_book) {
+    (o.out.empty() ? std::cout : csv_file) << class_book->csv();
+    for (const auto& c : class_book->choices())
+      fmt::print(stderr, "raygrade grade: {}\n", printable(c));
   }
   if (gradebook && !o.out.empty())
     write_file_atomically(
@@ -330,6 +348,10 @@ Runner setup_grade(CLI::App& sub) {
                  "an assignment file: each submission is graded as the variant of its student");
   sub.add_option("--roster", o->roster,
                  "with --assignment: a roster CSV (id, name, email); every student must be on it");
+  sub.add_option("--pick", o->pick,
+                 "with --roster, for the gradebook: which of a student's several submissions "
+                 "counts: latest (by its \"submitted\" time, then the file's), best or first")
+      ->capture_default_str();
   sub.add_option("--feedback", o->feedback,
                  "with --assignment: score, mistakes or full, whatever the assignment says");
   sub.add_option("--gradescope-metadata", o->gradescope_metadata,

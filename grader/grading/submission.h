@@ -2,6 +2,7 @@
 // (docs/submission-format.md) and graded with every problem prepared once.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -35,6 +36,9 @@ struct SubmissionGrade {
   std::string file;
   std::string student;       // the submission's "student", or the file's name without .json
   StudentIdentity identity;  // as the submission gives it (empty when it names nobody)
+  // Who a submission rejected before it could be tied to a student says it is from (empty
+  // when it says nothing readable): a gradebook shows the rejection on that student's row.
+  StudentIdentity claimed;
   bool gradable = true;
   std::optional<Diagnostic> fault;  // why it could not be graded (file, JSON path, fault)
   std::vector<GradeResult> results;
@@ -43,6 +47,10 @@ struct SubmissionGrade {
   std::vector<Diagnostic> findings;
   double score = 0;
   double max_score = 0;
+  // When it was handed in: the submission's own "submitted" time (seconds since 1970 UTC) when
+  // it gives one, and the file's modification time. They order a student's submissions.
+  std::optional<std::int64_t> submitted;
+  std::int64_t file_time = 0;
   double fraction() const { return max_score > 0 ? score / max_score : 0; }
   std::size_t mistakes() const;
 };

@@ -1,0 +1,58 @@
+// The gradebook of a class: one row per roster student, in roster order, whatever was handed
+// in: graded, no submission, or rejected (and why), with 0 for what is missing. A student with
+// several submissions is counted once, by a documented choice (docs/assignments.md).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "grading/submission.h"
+
+namespace raygrade {
+
+// Which of a student's several graded submissions counts: the latest (by the submission's own
+// "submitted" time, then the file's modification time, then its name), the best score, or the
+// first.
+enum class PickPolicy { kLatest, kBest, kFirst };
+std::optional<PickPolicy> parse_pick_policy(std::string_view name);
+
+class RosterGradebook {
+ public:
+  RosterGradebook(const std::vector<StudentIdentity>& roster,
+                  const std::vector<std::string>& problem_ids, PickPolicy pick);
+
+  // Takes one graded (or rejected) submission. False when it belongs to no roster student
+  // (rejected before it could be tied to one); it then has no row.
+  bool add(const SubmissionGrade& g);
+
+  // One line per student with several submissions: how many, which one counts, and why.
+  std::vector<std::string> choices() const;
+
+  // The header and one row per roster student, in roster order.
+  std::string csv() const;
+
+ private:
+  // What a row needs of one submission.
+  struct Handed {
+    std::string file;
+    std::optional<std::int64_t> submitted;
+    std::int64_t file_time = 0;
+    bool gradable = false;
+    std::string fault;
+    double score = 0;
+    double max_score = 0;
+    std::vector<double> points;  // per problem id, 0 when unanswered
+  };
+  const Handed* chosen(const std::vector<Handed>& handed) const;
+  std::string status(std::size_t student) const;
+
+  const std::vector<StudentIdentity>& roster_;
+  std::vector<std::string> problem_ids_;
+  PickPolicy pick_;
+  std::vector<std::vector<Handed>> handed_;  // per roster student, in the order added
+};
+
+}  // namespace raygrade

@@ -1,0 +1,87 @@
+// The gradebook of a class with --roster: one row per roster student in roster order, a status
+// for each, 0 for what is missing, and one submission counted per student, checked against
+// gradebooks written by hand (tests/data/gradebook/README.md).
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "run_binary.h"
+
+namespace raygrade {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::read_text;
+using testing::run_raygrade;
+using testing::TempDir;
+using testing::write_text;
+
+const fs::path kData = fs::path(RAYGRADE_SOURCE_DIR) / "tests/data/gradebook";
+
+constexpr const char* kBank = R"({"problems": [
+  {"id": "sphere-1", "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+   "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}},
+  {"id": "plane-1", "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+   "object": {"type": "plane", "point": [2, 0, 0], "normal": [-1, 0, 0]}}]})";
+constexpr const char* kSphere = R"("sphere-1": {"hits": [{"t": 1, "point": [1, 0, 0]},
+                                                       {"t": 3, "point": [3, 0, 0]}]})";
+constexpr const char* kPlane = R"("plane-1": {"hits": [{"t": 2, "point": [2, 0, 0]}]})";
+
+std::string handed(const std::string& student, const std::string& answers,
+                   const std::string& submitted = "") {
+  return fmt::format(R"({{"student": {}, {}"answers": {{{}}}}})", student,
+                     submitted.empty() ? "" : fmt::format(R"("submitted": "{}", )", submitted),
+                     answers);
+}
+
+class Gradebook : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    write_text(dir_.path() / "bank.json", kBank);
+    write_text(dir_.path() / "hw.json", R"({"assignment": "hw", "bank": "bank.json",
+      "problems": [{"id": "sphere-1", "points": 2}, {"id": "plane-1", "points": 3}]})");
+    fs::copy(kData / "roster.csv", dir_.path() / "roster.csv");
+    fs::path subs = dir_.path() / "subs";
+    fs::create_directories(subs);
+    std::string both = fmt::format("{}, {}", kSphere, kPlane);
+    write_text(subs / "ada.json", handed(R"({"id": "s1"})", both));
+    write_text(subs / "alan-1.json", handed(R"({"id": "s2"})", both, "2026-11-20T10:00:00Z"));
+    write_text(subs / "alan-2.json", handed(R"({"id": "s2"})", kSphere, "2026-11-21T10:00:00Z"));
+    write_text(subs / "grace.json",
+               handed(R"({"email": "grace@example.edu"})",
+                      fmt::format(R"({}, "plane-1": {{"hits": [{{"t": ""}}]}})", kSphere)));
+    write_text(subs / "barbara.json", handed(R"({"id": "s5", "email": "ada@example.edu"})", both));
+    write_text(subs / "don.json", handed(R"("Donald Knuth")", both));
+  }
+  testing::RunResult grade(const std::string& extra) {
+    return run_raygrade(
+        fmt::format("grade --assignment hw.json --roster roster.csv subs --format csv {}", extra),
+        dir_.path());
+  }
+  TempDir dir_{"gradebook"};
+};
+
+TEST_F(Gradebook, OneRowPerRosterStudentWithTheLatestSubmission) {
+  auto r = grade("--now 2026-12-01T00:00:00Z");
+  EXPECT_EQ(r.exit_code, 2) << r.err;  // Barbara's file is rejected
+  EXPECT_EQ(r.out, read_text(kData / "latest.csv")) << r.err;
+  EXPECT_NE(r.err.find("student 's2': graded: latest of 2 submissions"), std::string::npos)
+      << r.err;
+}
+
+TEST_F(Gradebook, TheBestSubmissionWhenAsked) {
+  auto r = grade("--pick best --now 2026-12-01T00:00:00Z --out book");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(read_text(dir_.path() / "book" / "gradebook.csv"), read_text(kData / "best.csv"));
+}
+
+TEST_F(Gradebook, AnUnknownChoiceIsRefused) {
+  auto r = grade("--pick newest");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("unknown --pick 'newest'"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace raygrade
