@@ -77,6 +77,27 @@ TEST_F(Gradebook, TheBestSubmissionWhenAsked) {
   EXPECT_EQ(read_text(dir_.path() / "book" / "gradebook.csv"), read_text(kData / "best.csv"));
 }
 
+// Feedback pages are named by the student's id, whatever their name, and an index links each
+// with its score (Ada: both right, 5 / 5; Grace: the sphere alone, 2 / 5).
+TEST_F(Gradebook, FeedbackPagesAreNamedByIdAndIndexed) {
+  auto r = run_raygrade(
+      "grade --assignment hw.json --roster roster.csv subs --format html --out pages "
+      "--now 2026-12-01T00:00:00Z",
+      dir_.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  for (const char* page : {"s1.html", "s2.html", "s2-2.html", "s3.html", "s6.html"})
+    EXPECT_TRUE(fs::exists(dir_.path() / "pages" / page)) << page;
+  std::string index = read_text(dir_.path() / "pages" / "index.html");
+  EXPECT_NE(index.find("<a href=\"s1.html\">Ada Lovelace</a></td><td>s1</td><td>5 / 5</td>"),
+            std::string::npos)
+      << index;
+  EXPECT_NE(index.find("<a href=\"s3.html\">Grace Hopper</a></td><td>s3</td><td>2 / 5</td>"),
+            std::string::npos)
+      << index;
+  EXPECT_NE(index.find("not graded"), std::string::npos) << index;  // Barbara's file
+  EXPECT_NE(index.find("<main>"), std::string::npos);
+}
+
 TEST_F(Gradebook, AnUnknownChoiceIsRefused) {
   auto r = grade("--pick newest");
   EXPECT_EQ(r.exit_code, 2);

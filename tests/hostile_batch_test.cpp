@@ -192,8 +192,8 @@ TEST_F(HostileBatch, FilesStayInTheOutputFolderAndTextIsEscaped) {
     EXPECT_EQ(html.find("<script"), std::string::npos) << entry.path();
     EXPECT_EQ(html.find("\x1b"), std::string::npos) << entry.path();
   }
-  // One page per file, a rejection included.
-  EXPECT_EQ(pages, kExpectedFault.size() + kFindings.size() + kWrongAnswer.size() + 11);
+  // One page per file, a rejection included, and the index of them all.
+  EXPECT_EQ(pages, kExpectedFault.size() + kFindings.size() + kWrongAnswer.size() + 11 + 1);
 }
 
 // The cells of a CSV text (RFC 4180: quoted cells, "" for a quote inside one).

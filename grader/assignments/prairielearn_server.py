@@ -1,13 +1,16 @@
 # server.py of a PrairieLearn question written by `raygrade export prairielearn`.
-# generate() draws this variant's numbers with raygrade; parse() turns the inputs into a raygrade
-# answer; grade() grades it with raygrade. Every question of the export has this same file; what
-# differs (the assignment, the problem, its inputs) is in raygrade.json beside it.
+# generate() draws this variant's numbers with raygrade and keeps the reference answer as a
+# student types it; parse() turns the inputs into a raygrade answer; grade() grades it with
+# raygrade; test() makes the correct, incorrect and invalid submissions of PrairieLearn's question
+# tester. Every question of the export has this same file; what differs (the assignment, the
+# problem, its inputs) is in raygrade.json beside it.
 # raygrade itself and the assignment are in serverFilesCourse/raygrade/ (docs/assignments.md).
 #
 # Whatever a student types and whatever shape PrairieLearn's data has, parse() and grade() never
 # raise: parse() reports what it cannot read as format errors, grade() gives a score of 0 with
-# the reason in the feedback. generate() raises only when the question itself cannot run (its
-# files or raygrade missing), since a variant without a statement is no question at all.
+# the reason in the feedback; test() never raises either. generate() raises only when the
+# question itself cannot run (its files or raygrade missing), since a variant without a statement
+# is no question at all.
 # No message shown to students names a folder of the server.
 import copy
 import json
@@ -33,6 +36,12 @@ SEED_MODULUS = 2**63
 GENERAL_ERROR = "raygrade"
 # The longest error message shown, in characters (raygrade's standard error may be long).
 MAX_MESSAGE = 400
+# The key of data["correct_answers"] under which generate() keeps the option of each choice
+# until prepare() puts it under the choice's own name: pl-multiple-choice's prepare() runs in
+# between and refuses a correct answer already there. No answers-name holds a colon.
+CHOICES = "raygrade:choices"
+# The input types answered with a pl-multiple-choice.
+CHOICE_TYPES = ("choice", "yesno")
 
 
 def _dict(data, key):
@@ -146,6 +155,123 @@ def generate(data):
     params["title"] = s["title"]
     params["statement"] = s["statement"]
     params["values"] = s.get("parameters", {})
+    _set_correct_answers(data, q, s.get("answer"))
+
+
+def prepare(data):
+    """Puts each choice's reference option under the choice's name in correct_answers, as
+    pl-multiple-choice lists it (its "key" is what a student picks); None when the reference
+    picks no option, as pl-multiple-choice itself sets."""
+    correct = data.get("correct_answers")
+    if not isinstance(correct, dict) or not isinstance(correct.get(CHOICES), dict):
+        return
+    for name, index in correct.pop(CHOICES).items():
+        correct[name] = _reference_option(data, name, index)
+
+
+# The reference answer as typed into the inputs: the text a student types into each text input,
+# the option of each choice. It is in data["correct_answers"] for PrairieLearn's question tester
+# alone: info.json keeps the correct answer panel off, and grade() grades with raygrade.
+
+
+def _typed(value):
+    """A value of raygrade's answer as a student types it: a number with all its digits, text
+    as it is, a list (a vector, a set of terms) as its items separated by commas, nothing as
+    blank."""
+    if value is None:
+        return ""
+    if isinstance(value, list):
+        return ", ".join(_typed(v) for v in value)
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return repr(value)
+    return str(value)
+
+
+def _get(answer, path):
+    """The value at `path` in raygrade's answer (as _put() writes it); None when absent."""
+    at = answer
+    for step in path:
+        if isinstance(at, dict) and isinstance(step, str):
+            at = at.get(step)
+        elif isinstance(at, list) and isinstance(step, int) and 0 <= step < len(at):
+            at = at[step]
+        else:
+            return None
+    return at
+
+
+def _typed_column(q, inp, answer):
+    """A column of the hits (t, point ...) as typed: one value per hit, separated by "; ";
+    when there is no hit, the input's word for it (none, contained), else blank."""
+    hits = answer.get(q.get("hits_key"))
+    if not isinstance(hits, list):
+        return ""
+    if hits:
+        return "; ".join(_typed(h.get(inp["column"]) if isinstance(h, dict) else None)
+                         for h in hits)
+    outcome = "contained" if answer.get("contained") is True else "none"
+    words = [w for w, value in inp.get("words", {}).items() if value == outcome]
+    return words[0] if words else ""
+
+
+def _typed_input(q, inp, answer):
+    """What a student types into text input `inp` for raygrade's answer `answer`."""
+    if inp.get("list"):
+        return _typed_column(q, inp, answer)
+    value = _get(answer, inp["path"])
+    if inp["type"] == "json":
+        return "" if value is None else json.dumps(value, ensure_ascii=False)
+    return _typed(value)
+
+
+def _option_index(inp, answer):
+    """The index of the option of choice `inp` whose value the answer holds (the "none"
+    option for an absent value); None when no option has it."""
+    value = _get(answer, inp["path"])
+    for i, option in enumerate(inp["options"]):
+        if option.get("value") == value and type(option.get("value")) is type(value):
+            return i
+    return None
+
+
+def _set_correct_answers(data, q, answer):
+    """data["correct_answers"][NAME]: the text of each text input for the reference answer;
+    the option index of each choice under CHOICES, for prepare(). An input whose reference
+    cannot be typed gets none: a variant still works without it."""
+    if not isinstance(answer, dict):
+        return
+    correct = _dict(data, "correct_answers")
+    choices = {}
+    for inp in q["inputs"]:
+        try:
+            if inp["type"] in CHOICE_TYPES:
+                choices[inp["name"]] = _option_index(inp, answer)
+            else:
+                correct[inp["name"]] = _typed_input(q, inp, answer)
+        except Exception:  # a reference of a shape no input takes: that input has none
+            continue
+    if choices:
+        correct[CHOICES] = choices
+
+
+def _shown_options(data, name):
+    """PrairieLearn's list of the options of choice `name` as shown, or None."""
+    params = data.get("params")
+    shown = params.get(name) if isinstance(params, dict) else None
+    return shown if isinstance(shown, list) else None
+
+
+def _reference_option(data, name, index):
+    """Option `index` of choice `name` as pl-multiple-choice lists it in params, or as
+    {"key": a, b, c ...} when PrairieLearn lists none; None for no index."""
+    if not isinstance(index, int) or isinstance(index, bool) or index < 0:
+        return None
+    shown = _shown_options(data, name)
+    if shown is None:
+        return {"key": chr(ord("a") + index)}
+    if index < len(shown) and isinstance(shown[index], dict):
+        return dict(shown[index])
+    return None
 
 
 # Reading the inputs: every input is text (or a choice's key), read as raygrade reads answers.
@@ -264,9 +390,8 @@ def _choice(data, inp):
         return None
     if not isinstance(key, str):
         raise ValueError("not one of the options")
-    params = data.get("params")
-    shown = params.get(inp["name"]) if isinstance(params, dict) else None
-    if isinstance(shown, list):  # PrairieLearn's own list of the options as shown
+    shown = _shown_options(data, inp["name"])
+    if shown is not None:  # PrairieLearn's own list of the options as shown
         for i, option in enumerate(shown):
             if isinstance(option, dict) and option.get("key") == key:
                 key = chr(ord("a") + i)
@@ -372,41 +497,247 @@ def _grade_with_raygrade(data, q, answer):
     return next(p for p in g["problems"] if p["problem"] == q["problem"])
 
 
+def _outcome(data, q, answer):
+    """What grade() sets for the readable answer `answer`: the partial scores (one per part
+    raygrade grades), the score and the feedback. raygrade failing or timing out, or giving
+    what it never gives, is no points and the reason."""
+    try:
+        result = _grade_with_raygrade(data, q, answer)
+        partial, parts = {}, []
+        for part in result["parts"]:
+            most = part["max_points"]
+            score = part["points"] / most if most > 0 else (
+                1.0 if part["status"] == "right" else 0.0)
+            text = _without_folders(" ".join(part["feedback"]), data)
+            partial[part["name"]] = {"score": score, "feedback": text}
+            parts.append({"name": part["name"], "status": part["status"], "feedback": text})
+        most = result["max_score"]
+        score = result["score"] / most if most > 0 else 0.0
+        mistakes = ["%s: %s" % (m["id"], m["message"]) for m in result.get("mistakes", [])]
+        lines = [_without_folders(line, data) for line in mistakes + result.get("notes", [])]
+        return partial, score, {"parts": parts, "lines": lines}
+    except Exception as e:
+        return {}, 0.0, {"lines": ["The answer could not be graded: %s" % _message(e, data)]}
+
+
 def grade(data):
     try:
-        _grade(data)
+        q = _question(data)
+        answer, errors = _answer(data, q)
+        if errors:
+            # parse() has set them already when PrairieLearn called it; a grade without it
+            # still says what could not be read, and gives no points.
+            format_errors = _dict(data, "format_errors")
+            for name, message in errors.items():
+                format_errors.setdefault(name, message)
+            partial, score, feedback = {}, 0.0, None
+        else:
+            partial, score, feedback = _outcome(data, q, answer)
     except Exception as e:
-        # raygrade failed or timed out, or the data is not what PrairieLearn sends: no points,
+        # The question cannot be read, or the data is not what PrairieLearn sends: no points,
         # and the reason.
-        data["score"] = 0.0
-        _dict(data, "feedback")["raygrade"] = {
-            "lines": ["The answer could not be graded: %s" % _message(e, data)]}
-
-
-def _grade(data):
-    q = _question(data)
-    answer, errors = _answer(data, q)
-    if errors:
-        # parse() has set them already when PrairieLearn called it; a grade without it still
-        # says what could not be read, and gives no points.
-        format_errors = _dict(data, "format_errors")
-        for name, message in errors.items():
-            format_errors.setdefault(name, message)
-        data["score"] = 0.0
-        return
-    result = _grade_with_raygrade(data, q, answer)
-    # Everything is read before data changes, so that a failure leaves no half-set scores.
-    partial, parts = {}, []
-    for part in result["parts"]:
-        most = part["max_points"]
-        score = part["points"] / most if most > 0 else (1.0 if part["status"] == "right" else 0.0)
-        text = _without_folders(" ".join(part["feedback"]), data)
-        partial[part["name"]] = {"score": score, "feedback": text}
-        parts.append({"name": part["name"], "status": part["status"], "feedback": text})
-    most = result["max_score"]
-    score = result["score"] / most if most > 0 else 0.0
-    mistakes = ["%s: %s" % (m["id"], m["message"]) for m in result.get("mistakes", [])]
-    lines = [_without_folders(line, data) for line in mistakes + result.get("notes", [])]
-    _dict(data, "partial_scores").update(partial)
+        partial, score = {}, 0.0
+        feedback = {"lines": ["The answer could not be graded: %s" % _message(e, data)]}
+    # raygrade's parts alone: pl-string-input has already scored each input against
+    # correct_answers by its exact text ("2" against "2.0"), which is no grade of ours.
+    data["partial_scores"] = partial
     data["score"] = score
-    _dict(data, "feedback")["raygrade"] = {"parts": parts, "lines": lines}
+    if feedback is not None:
+        _dict(data, "feedback")["raygrade"] = feedback
+
+
+# PrairieLearn's question tester: test() gives the raw answers of a submission of
+# data["test_type"] ("correct", "incorrect" or "invalid") and what parse() and grade() must then
+# give (the format errors, the partial scores and the score); PrairieLearn submits the raw
+# answers and compares.
+
+# Text that parse() refuses, by the kind of input: a vector of two numbers, an empty value between
+# two semicolons, JSON cut short, and for any other text brackets nested deeper than MAX_DEPTH.
+UNREADABLE_VECTOR = "1, 2"
+UNREADABLE_LIST = "1;;2"
+UNREADABLE_JSON = "{"
+UNREADABLE_TEXT = "(" * (MAX_DEPTH + 1) + "1" + ")" * (MAX_DEPTH + 1)
+# A key no choice has, as pl-multiple-choice's own test() submits.
+UNREADABLE_CHOICE = "0"
+
+
+def test(data):
+    try:
+        raw, errors, partial, score = _test(data)
+    except Exception as e:
+        # No submission can be made (the question cannot be read): parse() reports the one
+        # general error, and nothing is graded.
+        raw, partial, score = {}, {}, 0.0
+        errors = {GENERAL_ERROR: "The answer could not be read: %s" % _message(e, data)}
+    data["raw_submitted_answers"] = raw
+    data["format_errors"] = errors
+    data["partial_scores"] = partial
+    data["score"] = score
+
+
+def _test(data):
+    """The raw answers of the test submission, and its format errors, partial scores and
+    score as predicted. Any test type other than incorrect and invalid is a correct one."""
+    q = _question(data)
+    correct = _correct_inputs(data, q)
+    kind = data.get("test_type")
+    if kind == "invalid":
+        made = _invalid(q, correct)
+        if made is not None:
+            raw, name = made
+            _, errors = _answer(_submitting(data, raw), q)
+            return raw, {name: errors.get(name, "Could not read this.")}, {}, 0.0
+        kind = "correct"  # no input at all: no submission is invalid
+    if kind == "incorrect":
+        found = _incorrect(data, q, correct)
+        if found is not None:
+            raw, partial, score = found
+            return raw, {}, partial, score
+    # The reference answer earns full points on every part raygrade grades (the parts and
+    # their feedback are the ones raygrade gives it).
+    partial, _ = _predicted(data, q, correct) or ({}, 0.0)
+    return correct, {}, {name: {**p, "score": 1.0} for name, p in partial.items()}, 1.0
+
+
+def _submitting(data, raw):
+    """The data as parse() sees a submission of the raw answers `raw` (every input element
+    passes the text on, its ends removed)."""
+    submitted = {name: v.strip() if isinstance(v, str) else v for name, v in raw.items()}
+    return {**data, "submitted_answers": submitted}
+
+
+def _predicted(data, q, raw):
+    """(partial scores, score) that grade() gives raw answers `raw`; None when parse() finds
+    a format error in them (PrairieLearn then grades nothing) or raygrade fails on them."""
+    answer, errors = _answer(_submitting(data, raw), q)
+    if errors:
+        return None
+    partial, score, feedback = _outcome(data, q, answer)
+    return (partial, score) if "parts" in feedback else None
+
+
+def _correct_inputs(data, q):
+    """The raw answer of every input for the reference answer: correct_answers' text, or
+    the key of the reference option; blank for an input without a correct answer."""
+    correct = data.get("correct_answers")
+    correct = correct if isinstance(correct, dict) else {}
+    held = correct.get(CHOICES) if isinstance(correct.get(CHOICES), dict) else {}
+    raw = {}
+    for inp in q["inputs"]:
+        name = inp["name"]
+        value = correct.get(name)
+        if inp["type"] in CHOICE_TYPES:
+            if name in held:  # prepare() has not run
+                value = _reference_option(data, name, held[name])
+            key = value.get("key") if isinstance(value, dict) else None
+            raw[name] = key if isinstance(key, str) else ""
+        else:
+            raw[name] = value if isinstance(value, str) else ""
+    return raw
+
+
+def _invalid(q, correct):
+    """The correct raw answers with one input made unreadable, and that input's name: a vector
+    if there is one, else a list of hits, JSON, any other text, a choice; None when there is
+    no input."""
+    def first(wanted):
+        return next((i for i in q["inputs"] if wanted(i)), None)
+    inp = (first(lambda i: i["type"] == "vector") or first(lambda i: i.get("list"))
+           or first(lambda i: i["type"] == "json")
+           or first(lambda i: i["type"] not in CHOICE_TYPES) or first(lambda i: True))
+    if inp is None:
+        return None
+    if inp["type"] == "vector":
+        text = UNREADABLE_VECTOR
+    elif inp.get("list"):
+        text = UNREADABLE_LIST
+    elif inp["type"] == "json":
+        text = UNREADABLE_JSON
+    elif inp["type"] in CHOICE_TYPES:
+        text = UNREADABLE_CHOICE
+    else:
+        text = UNREADABLE_TEXT
+    return {**correct, inp["name"]: text}, inp["name"]
+
+
+def _incorrect(data, q, correct):
+    """The first wrong answer of _wrong_answers() that raygrade grades below full points: its
+    raw answers, partial scores and score; None when every one earns them all."""
+    for raw in _wrong_answers(data, q, correct):
+        predicted = _predicted(data, q, raw)
+        if predicted is not None and predicted[1] < 1:
+            return (raw, *predicted)
+    return None
+
+
+def _wrong_answers(data, q, correct):
+    """The correct raw answers with one input's value changed as a student gets it wrong,
+    each input in turn (those whose reference is blank are left as they are)."""
+    for inp in q["inputs"]:
+        for text in _wrong_values(data, inp, correct[inp["name"]]):
+            yield {**correct, inp["name"]: text}
+
+
+def _wrong_values(data, inp, text):
+    """Wrong values of input `inp`, whose right value is `text`: another option; another
+    number; a vector turned around; a term left out; the ray tree with an item left out, or
+    empty. No value for a text input whose reference is blank."""
+    kind = inp["type"]
+    if kind in CHOICE_TYPES:
+        shown = _shown_options(data, inp["name"])
+        keys = ([o.get("key") for o in shown if isinstance(o, dict)] if shown is not None
+                else [chr(ord("a") + i) for i in range(len(inp["options"]))])
+        return [k for k in keys if isinstance(k, str) and k != text][:1]
+    if not text:
+        return []
+    if inp.get("list"):
+        items = _split(text, ";")
+        words = inp.get("words", {})
+        if len(items) == 1 and items[0].lower() in words:
+            return [w for w in words if w != items[0].lower()][:1]
+        wrong = _wrong_vector(items[0]) if kind == "vector" else _wrong_number(items[0])
+        return ["; ".join([wrong] + items[1:])]
+    if kind == "vector":
+        return [_wrong_vector(text)]
+    if kind == "set":
+        terms = _split(text, ",")
+        return [", ".join(terms[1:])] if len(terms) > 1 else []
+    if kind == "json":
+        return [json.dumps(v, ensure_ascii=False) for v in _shortened(text)] + ["{}"]
+    return [_wrong_number(text)]
+
+
+def _wrong_number(text):
+    """A number that differs from `text` by at least 1 and by at least its size; an expression
+    or a formula, plus 1."""
+    try:
+        x = float(text)
+    except ValueError:
+        x = math.nan
+    if not math.isfinite(x):
+        return "%s + 1" % text
+    return repr(x + max(1.0, abs(x)))
+
+
+def _wrong_vector(text):
+    """The vector `text` turned around (1, 1, 1 for the zero vector)."""
+    try:
+        parts = [float(p) for p in _vector(text)]
+    except ValueError:
+        return "-(%s)" % text
+    if not any(parts):
+        return "1, 1, 1"
+    return ", ".join(repr(-p) for p in parts)
+
+
+def _shortened(text):
+    """The JSON object `text` with the last item of one of its lists left out (a node of the
+    ray tree, a term), each list in turn."""
+    try:
+        value = json.loads(text)
+    except ValueError:
+        return []
+    if not isinstance(value, dict):
+        return []
+    return [{**value, key: item[:-1]} for key, item in value.items()
+            if isinstance(item, list) and item]

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -74,6 +75,11 @@ std::optional<std::string> out_among_submissions(const std::string& out,
     if (!rel.empty() && *rel.begin() != "..") return s;
   }
   return std::nullopt;
+}
+
+std::string lower_case(std::string s) {
+  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
 }
 
 int run_grade(const GradeCliOptions& o) {
@@ -200,7 +206,8 @@ int run_grade(const GradeCliOptions& o) {
       fmt::print(stderr, "raygrade grade: removed {}, left by an interrupted run\n",
                  printable(name));
   }
-  std::set<std::string> names;
+  std::set<std::string> names = {"index", "gradebook"};  // the folder's own files
+  std::vector<FeedbackPage> pages;
   // The gradebook on standard output goes a row at a time; a file is written whole at the end.
   std::ostringstream csv_file;
   // With a roster, the gradebook has one row per roster student, written at the end.
@@ -257,9 +264,17 @@ int run_grade(const GradeCliOptions& o) {
       } else if (gradebook) {
         (o.out.empty() ? std::cout : csv_file) << graded[k].text;
       } else if (!o.out.empty()) {
-        std::string base = single && format->results_file ? "results" : safe_file_name(g.student);
+        // Named by the student's id where there is one (a name can be anything, in any
+        // script), compared in lower case as macOS's and Windows's file systems compare.
+        std::string base = single && format->results_file ? "results"
+                           : !g.identity.id.empty()       ? safe_file_name(g.identity.id)
+                                                          : safe_file_name(g.student);
         std::string name = base;
-        for (int n = 2; !names.insert(name).second; ++n) name = fmt::format("{}-{}", base, n);
+        for (int n = 2; !names.insert(lower_case(name)).second; ++n)
+          name = fmt::format("{}-{}", base, n);
+        if (format->extension == ".html")
+          pages.push_back(
+              {name + ".html", g.student, g.identity.id, g.gradable, g.score, g.max_score});
         // Each file appears whole or not at all (rename); the batch reaches the disk in one
         // flush at the end instead of one per file.
         write_file_atomically(
@@ -279,6 +294,9 @@ int run_grade(const GradeCliOptions& o) {
     for (const auto& c : class_book->choices())
       fmt::print(stderr, "raygrade grade: {}\n", printable(c));
   }
+  if (!pages.empty())
+    write_file_atomically(std::filesystem::path(o.out) / "index.html", feedback_index_html(pages),
+                          false);
   if (gradebook && !o.out.empty())
     write_file_atomically(
         std::filesystem::path(o.out) / ("gradebook" + std::string(format->extension)),

@@ -23,11 +23,11 @@ std::string feedback_html(const SubmissionGrade& g) {
   std::string s = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   s += fmt::format("<title>Feedback for {}</title>\n<style>{}</style>\n</head>\n<body>\n",
                    h(g.student), kStyle);
-  s += fmt::format("<h1>Feedback for {}</h1>\n", h(g.student));
+  s += fmt::format("<main>\n<h1>Feedback for {}</h1>\n", h(g.student));
   if (!g.gradable) {
     s += fmt::format("<p class=\"fault\">This submission could not be graded: {}</p>\n",
                      h(g.fault ? format_diagnostic(*g.fault) : "unreadable"));
-    return s + "</body>\n</html>\n";
+    return s + "</main>\n</body>\n</html>\n";
   }
   s += fmt::format("<p>Score: <strong>{} / {}</strong></p>\n", format_points(g.score),
                    format_points(g.max_score));
@@ -55,7 +55,25 @@ std::string feedback_html(const SubmissionGrade& g) {
                        h(m.part), h(m.message));
     }
   }
-  return s + "</body>\n</html>\n";
+  return s + "</main>\n</body>\n</html>\n";
+}
+
+std::string feedback_index_html(const std::vector<FeedbackPage>& pages) {
+  std::string s = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+  s += fmt::format("<title>Feedback pages</title>\n<style>{}</style>\n</head>\n<body>\n<main>\n",
+                   kStyle);
+  s += fmt::format("<h1>Feedback pages</h1>\n<table>\n<caption>{} students</caption>\n",
+                   pages.size());
+  s += "<tr><th scope=\"col\">Student</th><th scope=\"col\">Id</th>"
+       "<th scope=\"col\">Score</th></tr>\n";
+  for (const auto& p : pages) {
+    std::string score =
+        p.gradable ? fmt::format("{} / {}", format_points(p.score), format_points(p.max_score))
+                   : "not graded";
+    s += fmt::format("<tr><td><a href=\"{}\">{}</a></td><td>{}</td><td>{}</td></tr>\n", h(p.file),
+                     h(p.student), h(p.id), score);
+  }
+  return s + "</table>\n</main>\n</body>\n</html>\n";
 }
 
 }  // namespace raygrade

@@ -84,6 +84,18 @@ struct GradeFormat {
   std::string (*render)(const SubmissionGrade& g, double seconds, const SubmissionGrade* worked);
 };
 
+// A student's page among the HTML feedback pages of a batch, and the index that links them
+// all with each one's score (index.html in --out).
+struct FeedbackPage {
+  std::string file;  // the page's name in the folder
+  std::string student;
+  std::string id;
+  bool gradable = true;
+  double score = 0;
+  double max_score = 0;
+};
+std::string feedback_index_html(const std::vector<FeedbackPage>& pages);
+
 // text, json, gradescope, prairielearn, csv, html.
 const std::vector<GradeFormat>& grade_formats();
 const GradeFormat* find_grade_format(std::string_view name);
