@@ -41,6 +41,7 @@ class Gradebook : public ::testing::Test {
   void SetUp() override {
     write_text(dir_.path() / "bank.json", kBank);
     write_text(dir_.path() / "hw.json", R"({"assignment": "hw", "bank": "bank.json",
+      "title": "Rays, spheres and planes",
       "problems": [{"id": "sphere-1", "points": 2}, {"id": "plane-1", "points": 3}]})");
     fs::copy(kData / "roster.csv", dir_.path() / "roster.csv");
     fs::path subs = dir_.path() / "subs";
@@ -96,6 +97,23 @@ TEST_F(Gradebook, FeedbackPagesAreNamedByIdAndIndexed) {
       << index;
   EXPECT_NE(index.find("not graded"), std::string::npos) << index;  // Barbara's file
   EXPECT_NE(index.find("<main>"), std::string::npos);
+}
+
+// The same class in each platform's import layout, each file written by hand from the table
+// of the README (the latest submission counts: Alan has 2).
+TEST_F(Gradebook, EachPlatformsImportLayout) {
+  for (const char* platform : {"canvas", "moodle", "blackboard"}) {
+    auto r = run_raygrade(fmt::format("grade --assignment hw.json --roster roster.csv subs "
+                                      "--format csv-{} --now 2026-12-01T00:00:00Z",
+                                      platform),
+                          dir_.path());
+    EXPECT_EQ(r.exit_code, 2) << platform << ": " << r.err;
+    EXPECT_EQ(r.out, read_text(kData / fmt::format("{}.csv", platform))) << platform;
+  }
+  // Without a roster there is no class to lay out.
+  auto r = run_raygrade("grade --assignment hw.json subs --format csv-canvas", dir_.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("needs --assignment and --roster"), std::string::npos) << r.err;
 }
 
 TEST_F(Gradebook, AnUnknownChoiceIsRefused) {

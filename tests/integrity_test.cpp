@@ -178,7 +178,8 @@ TEST(Integrity, ThreadsThatCannotStartCostNoSubmission) {
     write_text(dir.path() / "subs" / ("s" + std::to_string(i) + ".json"), kAnswer);
   // The user nobody may have one process: this one, and no thread besides (nor the thread
   // LeakSanitizer starts at exit under the sanitizers, so its check is off here).
-  auto r = run_shell("ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" "
+  auto r = run_shell(
+      "ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" "
       "setpriv --reuid=nobody --regid=nogroup --clear-groups prlimit --nproc=1 '" RAYGRADE_BINARY
       "' grade --problems bank.json subs --format csv -j 4",
       dir.path());

@@ -105,12 +105,58 @@ std::vector<std::string> RosterGradebook::choices() const {
   return out;
 }
 
-std::string RosterGradebook::csv() const {
+std::optional<double> RosterGradebook::max_score() const {
   // Every student's maximum is the assignment's, whichever variant they have.
-  std::optional<double> max_score;
   for (const auto& handed : handed_) {
-    if (const Handed* pick = chosen(handed)) max_score = pick->max_score;
+    if (const Handed* pick = chosen(handed)) return pick->max_score;
   }
+  return std::nullopt;
+}
+
+std::string RosterGradebook::platform_csv(std::string_view layout, const std::string& title) const {
+  std::optional<double> most = max_score();
+  std::string points = most ? format_points(*most) : "";
+  std::string s;
+  if (layout == "csv-canvas") {
+    // Canvas matches a row by its SIS User ID (the roster's id) or SIS Login ID (the email);
+    // the row under the header gives the points possible, and a new column name makes a new
+    // assignment.
+    s = "Student,ID,SIS User ID,SIS Login ID,Section," + csv_cell(title) + "\n";
+    s += "    Points Possible,,,,," + points + "\n";
+  } else if (layout == "csv-moodle") {
+    // Moodle's grade import from CSV: map "Email address" to the user's email, and the grade
+    // column to the assignment's grade item.
+    s = "ID number,Full name,Email address," + csv_cell(title) + "\n";
+  } else {
+    // Blackboard's offline grade upload: Username identifies the student (the roster's id),
+    // and a column named "NAME [Total Pts: N Score]" is made as a new score column.
+    s = "Last Name,First Name,Username,Student ID," +
+        csv_cell(fmt::format("{} [Total Pts: {} Score]", title, points)) + "\n";
+  }
+  for (std::size_t i = 0; i < roster_.size(); ++i) {
+    const StudentIdentity& who = roster_[i];
+    const Handed* pick = chosen(handed_[i]);
+    std::string score = format_points(pick ? pick->score : 0.0);
+    std::string name = who.name.empty() ? who.id : who.name;
+    if (layout == "csv-canvas") {
+      s += csv_cell(name) + ",," + csv_cell(who.id) + "," + csv_cell(who.email) + ",," + score;
+    } else if (layout == "csv-moodle") {
+      s += csv_cell(who.id) + "," + csv_cell(name) + "," + csv_cell(who.email) + "," + score;
+    } else {
+      // A name's last word is its last name, as Blackboard's columns want it.
+      std::size_t cut = name.rfind(' ');
+      std::string first = cut == std::string::npos ? "" : name.substr(0, cut);
+      std::string last = cut == std::string::npos ? name : name.substr(cut + 1);
+      s += csv_cell(last) + "," + csv_cell(first) + "," + csv_cell(who.id) + "," +
+           csv_cell(who.id) + "," + score;
+    }
+    s += "\n";
+  }
+  return s;
+}
+
+std::string RosterGradebook::csv() const {
+  std::optional<double> max_score = this->max_score();
   std::string s = gradebook_csv_header(problem_ids_);
   for (std::size_t i = 0; i < roster_.size(); ++i) {
     const StudentIdentity& who = roster_[i];

@@ -31,8 +31,14 @@ class RosterGradebook {
   // One line per student with several submissions: how many, which one counts, and why.
   std::vector<std::string> choices() const;
 
-  // The header and one row per roster student, in roster order.
+  // The header and one row per roster student, in roster order: raygrade's own columns (a
+  // column per problem, total, max, status).
   std::string csv() const;
+
+  // The same class in a platform's import layout ("csv-canvas", "csv-moodle",
+  // "csv-blackboard"): the total as one grade column named `title`, out of the assignment's
+  // points (docs/assignments.md says how each platform matches its students).
+  std::string platform_csv(std::string_view layout, const std::string& title) const;
 
  private:
   // What a row needs of one submission.
@@ -47,6 +53,7 @@ class RosterGradebook {
     std::vector<double> points;  // per problem id, 0 when unanswered
   };
   const Handed* chosen(const std::vector<Handed>& handed) const;
+  std::optional<double> max_score() const;
   std::string status(std::size_t student) const;
 
   const std::vector<StudentIdentity>& roster_;

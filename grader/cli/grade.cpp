@@ -89,7 +89,15 @@ int run_grade(const GradeCliOptions& o) {
                grade_format_names());
     return kExitBadInput;
   }
-  bool gradebook = format->layout == GradeLayout::kGradebook;
+  bool platform_book = format->layout == GradeLayout::kClassGradebook;
+  bool gradebook = format->layout == GradeLayout::kGradebook || platform_book;
+  if (platform_book && o.roster.empty()) {
+    fmt::print(stderr,
+               "raygrade grade: --format {} needs --assignment and --roster (a row per roster "
+               "student)\n",
+               o.format);
+    return kExitBadInput;
+  }
   std::optional<PickPolicy> pick = parse_pick_policy(o.pick);
   if (!pick) {
     fmt::print(stderr, "raygrade grade: unknown --pick '{}' (latest, best, first)\n", o.pick);
@@ -290,7 +298,10 @@ int run_grade(const GradeCliOptions& o) {
     }
   }
   if (class_book) {
-    (o.out.empty() ? std::cout : csv_file) << class_book->csv();
+    (o.out.empty() ? std::cout : csv_file)
+        << (platform_book ? class_book->platform_csv(format->name,
+                                                     spec->title.empty() ? spec->id : spec->title)
+                          : class_book->csv());
     for (const auto& c : class_book->choices())
       fmt::print(stderr, "raygrade grade: {}\n", printable(c));
   }

@@ -46,6 +46,12 @@ const std::vector<GradeFormat>& grade_formats() {
        GradeLayout::kDocument, true, true, false, &prairielearn_format},
       {"csv", "a gradebook: a row per student, a column per problem, then total, max and status",
        ".csv", GradeLayout::kGradebook, false, false, false, nullptr},
+      {"csv-canvas", "with --roster: Canvas's gradebook import (a Points Possible row)", ".csv",
+       GradeLayout::kClassGradebook, false, false, false, nullptr},
+      {"csv-moodle", "with --roster: Moodle's grade import from CSV, matched by email", ".csv",
+       GradeLayout::kClassGradebook, false, false, false, nullptr},
+      {"csv-blackboard", "with --roster: Blackboard's offline grade upload", ".csv",
+       GradeLayout::kClassGradebook, false, false, false, nullptr},
       {"html", "a self-contained feedback page per student", ".html", GradeLayout::kDocument, true,
        false, false, &html_format},
   };

@@ -68,6 +68,9 @@ enum class GradeLayout {
   kDocument,   // one document per submission: standard output for one, one file each in --out
   kJsonArray,  // json: {"submissions": [...]} on standard output, one file each in --out
   kGradebook,  // csv: a header, then a row per submission; in --out, one gradebook.csv
+  // csv-canvas, csv-moodle, csv-blackboard: a platform's import layout, a row per roster
+  // student (needs --roster); in --out, one gradebook.csv
+  kClassGradebook,
 };
 
 // One row of the table of grade formats (`raygrade grade --format NAME`).

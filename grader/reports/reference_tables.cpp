@@ -103,6 +103,10 @@ std::string grade_formats_table() {
         several =
             fmt::format("one row each; with `--out DIR`, the file `gradebook{}`", f.extension);
         break;
+      case GradeLayout::kClassGradebook:
+        several = fmt::format(
+            "one row per roster student; with `--out DIR`, the file `gradebook{}`", f.extension);
+        break;
     }
     out += fmt::format("| `{}` | {} | {} |\n", f.name, cell(f.summary), several);
   }
