@@ -73,5 +73,35 @@ TEST(PrairieLearnExport, ObjectNamesAreTextInQuestionHtml) {
   EXPECT_NE(html.find("{{params.statement}}"), std::string::npos);
 }
 
+// The example assignment's questions as students and instructors read them: titles in the
+// instructor's list name the parameters, not one student's numbers (the bank writes "A ray
+// meets the plane y = {h}" and "The camera ray through pixel ({x}, {y})"); inputs take the
+// line's width whatever their label, with no popover about PrairieLearn's own grader; and a
+// right part says nothing after its status.
+TEST(PrairieLearnExport, WhatStudentsAndInstructorsRead) {
+  TempDir dir("pl-read");
+  write_text(dir.path() / "raygrade", "not really a binary");
+  AssignmentSpec spec =
+      load_assignment(std::string(RAYGRADE_SOURCE_DIR) + "/assignments/homework-rays.json");
+  AssignmentBank bank = load_assignment_bank(spec);
+  ASSERT_TRUE(bank.errors.empty());
+  std::map<std::string, ZipEntry> files;
+  for (auto& e : prairielearn_course(spec, bank.problems, bank.bank, dir.path() / "raygrade"))
+    files[e.name] = e;
+  auto title = [&](const std::string& q) {
+    return nlohmann::json::parse(files["questions/homework-rays/" + q + "/info.json"].bytes)
+        .at("title")
+        .get<std::string>();
+  };
+  EXPECT_EQ(title("variant-plane"), "A ray meets the plane y = h");
+  EXPECT_EQ(title("variant-camera-ray"), "The camera ray through pixel (x, y)");
+  std::string html = files["questions/homework-rays/variant-sphere/question.html"].bytes;
+  EXPECT_NE(html.find("display=\"block\""), std::string::npos) << html;
+  EXPECT_NE(html.find("show-help-text=\"false\""), std::string::npos) << html;
+  EXPECT_EQ(html.find("size=\"40\""), std::string::npos) << html;
+  EXPECT_NE(html.find("({{status}}){{#feedback}}: {{feedback}}{{/feedback}}"), std::string::npos)
+      << html;
+}
+
 }  // namespace
 }  // namespace raygrade

@@ -41,8 +41,11 @@ struct Input {
 std::string string_input(const std::string& name, const std::string& label,
                          const std::string& placeholder, bool multiline = false) {
   return fmt::format(
+      // display="block": the input takes the line's width, however long its label. No
+      // help popover: PrairieLearn's own says what its grader reads, and raygrade reads these.
       "<pl-string-input answers-name=\"{}\" label=\"{}\" placeholder=\"{}\" allow-blank=\"true\" "
-      "remove-leading-trailing=\"true\" size=\"40\"{}></pl-string-input>",
+      "remove-leading-trailing=\"true\" display=\"block\" show-help-text=\"false\"{}>"
+      "</pl-string-input>",
       name, html_text(label), html_text(placeholder), multiline ? " multiline=\"true\"" : "");
 }
 
@@ -154,7 +157,7 @@ std::string question_uuid(const std::string& assignment, const std::string& prob
 const char* kFeedbackPanel = R"html(<pl-submission-panel>
 {{#feedback.raygrade}}
 <ul>
-{{#parts}}<li><strong>{{name}}</strong> ({{status}}): {{feedback}}</li>
+{{#parts}}<li><strong>{{name}}</strong> ({{status}}){{#feedback}}: {{feedback}}{{/feedback}}</li>
 {{/parts}}
 {{#lines}}<li>{{.}}</li>
 {{/lines}}
@@ -162,6 +165,20 @@ const char* kFeedbackPanel = R"html(<pl-submission-panel>
 {{/feedback.raygrade}}
 </pl-submission-panel>
 )html";
+
+// The title as the bank writes it, each parameter named rather than given a value ("The camera
+// ray through pixel (x, y)"): the instructor's list of questions shows no student's numbers.
+std::string general_title(const Problem& p) {
+  // A problem with parameters keeps its text as written (with "{h}") as its template.
+  if (!p.template_json || !p.template_json->is_object()) return p.title.empty() ? p.id : p.title;
+  auto it = p.template_json->find("title");
+  if (it == p.template_json->end() || !it->is_string()) return p.id;
+  std::string title;
+  for (char c : it->get<std::string>()) {
+    if (c != '{' && c != '}') title += c;
+  }
+  return title;
+}
 
 }  // namespace
 
@@ -188,7 +205,9 @@ std::vector<ZipEntry> prairielearn_course(const AssignmentSpec& spec,
     std::string folder = fmt::format("questions/{}/{}/", assignment_folder, name);
     json info = {{"uuid", question_uuid(spec.id, p.id)},
                  {"type", "v3"},
-                 {"title", p.title.empty() ? p.id : p.title},
+                 {"title", varies            ? general_title(p)
+                           : p.title.empty() ? p.id
+                                             : p.title},
                  {"topic", "Ray intersection"},
                  {"tags", json::array({"raygrade", spec.id, p.kind})},
                  {"singleVariant", !varies},
