@@ -467,12 +467,54 @@ TEST(Assignment, TheCheckDrawsSampleVariants) {
                  "problems": ["tangent"]})");
   CheckReport bad = check_assignment((dir.path() / "a.json").string());
   ASSERT_EQ(bad.problems.size(), 1u);
-  ASSERT_EQ(bad.problems[0].diagnostics.size(), 1u);
-  EXPECT_EQ(bad.problems[0].diagnostics[0].code, "no-variant");
-  EXPECT_NE(bad.problems[0].diagnostics[0].message.find("sample-001"), std::string::npos);
+  std::map<std::string, const Diagnostic*> by_code;
+  for (const auto& d : bad.problems[0].diagnostics) by_code[d.code] = &d;
+  ASSERT_TRUE(by_code.count("no-variant"));
+  EXPECT_NE(by_code["no-variant"]->message.find("sample-001"), std::string::npos);
+  // Both values of ox are rejected: the note counts the draws, the warning names ox.
+  ASSERT_TRUE(by_code.count("draws"));
+  EXPECT_NE(by_code["draws"]->message.find("200 of 200 draws"), std::string::npos)
+      << by_code["draws"]->message;
+  ASSERT_TRUE(by_code.count("collapsed-parameter"));
+  EXPECT_NE(by_code["collapsed-parameter"]->message.find("only 0 of the 2 values of ox"),
+            std::string::npos);
   CheckReport good = check_assignment(kExample);
   EXPECT_EQ(good.count(Severity::kError), 0);
+  EXPECT_EQ(good.count(Severity::kWarning), 0);
   EXPECT_EQ(good.problems.size(), 10u);
+}
+
+// A stated answer that forgets a square, t = cz ∓ sqrt(25 − ox) for a sphere of radius 5 at
+// (0, 0, cz) and a ray from (ox, 0, 0) along +z: right only where ox = ox², that is ox = 0 of
+// the choices 0, 3, 4 (ox = 3: sqrt(22) against the right 4; ox = 4: sqrt(21) against 3).
+// Every draw with ox = 3 or 4 is named, never one with ox = 0, and ox is said to collapse.
+TEST(Assignment, TheCheckFindsAStatedAnswerWrongOnSomeDraws) {
+  TempDir dir("forgot-square");
+  write_text(dir.path() / "bank.json", R"json({"id": "forgot-square",
+    "parameters": {"ox": {"choices": [0, 3, 4], "default": 0},
+                   "cz": {"integer": [7, 12], "default": 10}},
+    "ray": {"origin": ["=ox", 0, 0], "direction": [0, 0, 1]},
+    "object": {"type": "sphere", "center": [0, 0, "=cz"], "radius": 5},
+    "expected": {"hits": [{"t": "=cz - sqrt(25 - ox)"}, {"t": "=cz + sqrt(25 - ox)"}]}})json");
+  write_text(dir.path() / "a.json",
+             R"({"assignment": "a", "bank": "bank.json", "variants": {"seed": 1},
+                 "problems": ["forgot-square"]})");
+  CheckReport r = check_assignment((dir.path() / "a.json").string());
+  ASSERT_EQ(r.problems.size(), 1u);
+  int wrong = 0;
+  bool collapsed = false;
+  for (const auto& d : r.problems[0].diagnostics) {
+    if (d.code == "wrong-expected") {
+      ++wrong;
+      EXPECT_EQ(d.severity, Severity::kError);
+      EXPECT_EQ(d.message.find("ox = 0"), std::string::npos) << d.message;
+    }
+    collapsed |= d.code == "collapsed-parameter" &&
+                 d.message.find("only 1 of the 3 values of ox") != std::string::npos;
+  }
+  // cz takes 6 values and ox 2 wrong ones: 12 wrong pairs, 10 named and one count of the rest.
+  EXPECT_EQ(wrong, 11);
+  EXPECT_TRUE(collapsed);
 }
 
 TEST(Assignment, PointsAreScaledKeepingTheParts) {

@@ -65,7 +65,9 @@ TEST(ReferenceTables, AnUnknownTableOrAMissingEndIsAnErrorAtItsLine) {
 }
 
 TEST(OutputFormats, NamesAreWrittenOnceAndFoundByName) {
-  EXPECT_EQ(grade_format_names(), "text, json, gradescope, prairielearn, csv, html");
+  EXPECT_EQ(
+      grade_format_names(),
+      "text, json, gradescope, prairielearn, csv, csv-canvas, csv-moodle, csv-blackboard, html");
   ASSERT_NE(find_grade_format("csv"), nullptr);
   EXPECT_EQ(find_grade_format("csv")->layout, GradeLayout::kGradebook);
   EXPECT_EQ(find_grade_format("markdown"), nullptr);
