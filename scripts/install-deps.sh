@@ -45,12 +45,13 @@ apt_waiting() {
   while true; do
     # DPkg::Lock::Timeout makes apt itself wait for the dpkg frontend lock; the loop covers the
     # locks it does not wait for (the package lists' during an update).
-    if $sudo apt-get -o DPkg::Lock::Timeout="$wait_limit" "$@" 2>"$log"; then
+    status=0
+    $sudo apt-get -o DPkg::Lock::Timeout="$wait_limit" "$@" 2>"$log" || status=$?
+    if [ "$status" -eq 0 ]; then
       cat "$log" >&2
       rm -f "$log"
       return 0
     fi
-    status=$?
     if grep -qiE 'could not get lock|unable to acquire|another process' "$log" &&
        [ "$(date +%s)" -lt "$deadline" ]; then
       echo "install-deps: another apt-get or dpkg holds its lock; waiting (at most ${wait_limit} s in all)" >&2
