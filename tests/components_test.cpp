@@ -64,8 +64,11 @@ TEST(ComponentGrade, TermsWithoutTheShadowAreNamed) {
       p, components(R"({"I1": {"diffuse": 0.4, "specular": 0.509117, "local": 0.796985}})"));
   EXPECT_DOUBLE_EQ(r.score, 2);
   EXPECT_TRUE(r.has_mistake("diffuse-in-shadow"));
-  EXPECT_NE(part(r, "I1.specular")->feedback.front().find("I1's specular is 0.297, not 0.509"),
-            std::string::npos);
+  // Graded to 6 decimals (the problem's precision), shown to 6.
+  EXPECT_NE(
+      part(r, "I1.specular")->feedback.front().find("I1's specular is 0.296985, not 0.509117"),
+      std::string::npos)
+      << part(r, "I1.specular")->feedback.front();
 }
 
 // The wall's 0.4 given as what the mirror reflects, instead of k_r·I_R = 0.2.

@@ -112,5 +112,22 @@ TEST(Tolerance, FaultyToleranceNamesItsPath) {
   }
 }
 
+// Feedback shows a reference at the precision it is graded to: graded to 5 decimals,
+// 0.876771 shows as 0.87677 (not the four significant figures 0.8768, which cannot show why
+// 0.8768 typed is wrong); to 6 significant figures, 0.876771; never fewer digits than usual.
+TEST(Tolerance, FeedbackShowsTheDigitsItGrades) {
+  Tolerance five_decimals{ToleranceMode::kDecimals, 0, 0, 5, 0};
+  EXPECT_EQ(format_number(0.876771, shown_at(five_decimals, 0.876771, {})), "0.87677");
+  Tolerance six_figures{ToleranceMode::kSigFigs, 0, 1e-9, 6, 0};
+  EXPECT_EQ(format_number(0.876771, shown_at(six_figures, 0.876771, {})), "0.876771");
+  EXPECT_EQ(format_number(1234.5678, shown_at(six_figures, 1234.5678, {})), "1234.57");
+  // The default tolerance (1e-3 relative) needs no more than four significant figures.
+  Tolerance usual;
+  EXPECT_EQ(format_number(7.26795, shown_at(usual, 7.26795, {})), "7.268");
+  // Coarser grading than the usual display keeps the usual display.
+  Tolerance two_decimals{ToleranceMode::kDecimals, 0, 0, 2, 0};
+  EXPECT_EQ(format_number(7.26795, shown_at(two_decimals, 7.26795, {})), "7.268");
+}
+
 }  // namespace
 }  // namespace raygrade

@@ -9,7 +9,8 @@ namespace raygrade {
 
 ColourVerdict grade_colour(const std::string& name, const AnswerReader& s, const Vec3d& want,
                            const Tolerance& tol, const NumberFormat& numbers) {
-  auto number = [&](double v) { return format_number(v, numbers); };
+  // A channel at the precision it is graded to.
+  auto number = [&](double v) { return format_number(v, shown_at(tol, v, numbers)); };
   std::string right = fmt::format("[{}, {}, {}]", number(want.x), number(want.y), number(want.z));
   if (s.json().is_null()) return {0, {fmt::format("{} is {}, not none.", name, right)}, {}};
   if (s.json().is_number()) {

@@ -130,10 +130,12 @@ class FieldsGrader final : public KindGrader {
   std::string number(double v) const { return format_number(v, numbers_); }
 
   Verdict grade_scalar(const std::string& name, const AnswerReader& s, double ref) const {
-    if (s.json().is_null()) return {0, {fmt::format("{} is {}, not none.", name, number(ref))}};
+    const Tolerance& tol = context_.tolerance.for_field(name);
+    // The reference at the precision it is graded to.
+    auto shown = [&](double v) { return format_number(v, shown_at(tol, ref, numbers_)); };
+    if (s.json().is_null()) return {0, {fmt::format("{} is {}, not none.", name, shown(ref))}};
     auto n = s.number();
     if (!n.value) return {0, {fmt::format("{}: {}", name, n.fault)}};
-    const Tolerance& tol = context_.tolerance.for_field(name);
     NumberVerdict v = compare_number(*n.value, ref, ref, tol);
     if (v.match == Match::kRight) return {1, {}};
     if (v.match == Match::kInsufficientPrecision) {
@@ -144,11 +146,10 @@ class FieldsGrader final : public KindGrader {
     if (angle && compare_number(*n.value, radians, radians, tol).match == Match::kRight) {
       return {0,
               {fmt::format("{} = {} is the angle in radians; the answer is in degrees: {}°.", name,
-                           n.value->text, number(ref))}};
+                           n.value->text, shown(ref))}};
     }
     return {
-        0,
-        {fmt::format("{} is {}{}, not {}.", name, number(ref), angle ? "°" : "", n.value->text)}};
+        0, {fmt::format("{} is {}{}, not {}.", name, shown(ref), angle ? "°" : "", n.value->text)}};
   }
 
   // k_s = 0: there is no specular term; 0 (or [0, 0, 0]) for it is right, anything else not.

@@ -492,6 +492,10 @@ class RayTreeGrader final : public KindGrader {
     c.right = compare_number(*n.value, want, std::abs(want), tol).match == Match::kRight;
     return c;
   }
+  // An intensity in feedback, at the precision it is graded to.
+  std::string shown_intensity(double want) const {
+    return format_number(want, shown_at(context_.tolerance.for_field("intensity"), want, {}));
+  }
   bool same_intensity(double got, double other) const {
     const Tolerance& tol = context_.tolerance.for_field("intensity");
     return std::abs(got - other) <= allowed_error(other, std::abs(other), tol);
@@ -518,7 +522,7 @@ class RayTreeGrader final : public KindGrader {
       out.parts.push_back(
           make_part(context_, "intensity", 0,
                     {c.given ? fmt::format("The intensity along the primary ray is {}, not {}.",
-                                           format_number(want), c.text)
+                                           shown_intensity(want), c.text)
                              : "intensity: " + c.fault}));
     }
   }
@@ -590,7 +594,7 @@ class RayTreeGrader final : public KindGrader {
         out.parts.push_back(make_part(context_, ask.part(), 0, {ask.part() + ": " + c.fault}));
         continue;
       }
-      std::string specific = fmt::format("{} is {}, not {}.", what, format_number(want), c.text);
+      std::string specific = fmt::format("{} is {}, not {}.", what, shown_intensity(want), c.text);
       if (auto m = component_mistake(ask, n, *c.given, specific)) out.mistakes.push_back(*m);
       out.parts.push_back(make_part(context_, ask.part(), 0, {specific}));
     }

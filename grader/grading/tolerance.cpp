@@ -24,6 +24,29 @@ double allowed_error(double reference, double scale, const Tolerance& t, double 
   return std::max(a, widen);
 }
 
+NumberFormat shown_at(const Tolerance& t, double reference, NumberFormat base) {
+  double magnitude = std::abs(reference);
+  if (!std::isfinite(magnitude)) return base;
+  auto decimals_of_significant = [&](int figures) {
+    return magnitude == 0 ? figures - 1
+                          : figures - 1 - static_cast<int>(std::floor(std::log10(magnitude)));
+  };
+  int needed = 0;
+  switch (t.mode) {
+    case ToleranceMode::kDecimals: needed = t.digits; break;
+    case ToleranceMode::kSigFigs: needed = decimals_of_significant(t.digits); break;
+    case ToleranceMode::kRelAbs: {
+      double a = allowed_error(reference, reference, t);
+      needed = a > 0 ? static_cast<int>(std::ceil(-std::log10(a))) : 0;
+      break;
+    }
+  }
+  int shown = base.decimals >= 0 ? base.decimals : decimals_of_significant(base.significant);
+  constexpr int kMostDecimals = 12;
+  if (needed <= shown) return base;
+  return NumberFormat{base.significant, std::min(needed, kMostDecimals)};
+}
+
 namespace {
 
 std::string plural(int n, const char* one, const char* many) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "derivation/number_format.h"
 #include "grading/formula.h"
 #include "problems/problem.h"
 
@@ -75,6 +76,11 @@ DirectionVerdict compare_direction(const StudentNumber (&s)[3], const Vec3d& ref
 
 // "relative 0.1%", "3 significant figures", "2 decimal places".
 std::string describe(const Tolerance& t);
+
+// How to show `reference` in feedback on an answer compared with `t`: with at least the
+// decimals the comparison tells apart (5 decimals graded, 5 shown: "0.87677", not "0.8768"),
+// and never fewer than `base` shows.
+NumberFormat shown_at(const Tolerance& t, double reference, NumberFormat base);
 
 // A problem's tolerances: the default for every field, and overrides by field name.
 struct TolerancePolicy {
