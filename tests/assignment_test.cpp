@@ -517,6 +517,29 @@ TEST(Assignment, TheCheckFindsAStatedAnswerWrongOnSomeDraws) {
   EXPECT_TRUE(collapsed);
 }
 
+// Five faults in one file, each reported in one run: a month 13, a misspelt key, negative
+// points, a problem listed twice and an id the bank does not have.
+TEST(Assignment, TheCheckReportsEveryFaultOfTheFile) {
+  TempDir dir("typos");
+  write_text(dir.path() / "bank.json", R"({"id": "p", "ray": {"origin": [0, 0, 0],
+    "direction": [1, 0, 0]}, "object": {"type": "sphere", "center": [3, 0, 0], "radius": 1}})");
+  write_text(dir.path() / "a.json", R"({"assignment": "a", "bank": "bank.json",
+    "due": "2026-13-40", "problems": [{"id": "p", "pionts": 2}, {"id": "p", "points": -1},
+    "no-such"]})");
+  CheckReport r = check_assignment((dir.path() / "a.json").string());
+  std::multiset<std::string> found;
+  for (const auto& p : r.problems) {
+    for (const auto& d : p.diagnostics) {
+      if (d.severity == Severity::kError) found.insert(d.path + " " + d.code);
+    }
+  }
+  EXPECT_EQ(found, (std::multiset<std::string>{
+                       "/due invalid", "/problems/0/pionts unknown-key", "/problems/1/points range",
+                       "/problems/1 duplicate-id", "/problems/2 unknown-problem"}));
+  // load_assignment still stops at the first, for the commands that need a whole file.
+  EXPECT_THROW((void)load_assignment((dir.path() / "a.json").string()), Error);
+}
+
 TEST(Assignment, PointsAreScaledKeepingTheParts) {
   GradeResult r;
   r.score = 1;

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 
@@ -132,66 +133,126 @@ bool is_assignment_file(const std::string& path) {
   }
 }
 
-AssignmentSpec load_assignment(const std::string& path) {
+namespace {
+
+// Runs `read`, keeping the fault it throws in `errors` instead of stopping there.
+template <typename Read>
+void collecting(std::vector<Diagnostic>& errors, Read&& read) {
+  try {
+    read();
+  } catch (const Error& e) {
+    errors.push_back(e.diagnostic());
+  }
+}
+
+// Each key of `c` that is not allowed, as a fault of its own.
+void unknown_keys(const Cursor& c, const std::vector<std::string>& allowed,
+                  std::vector<Diagnostic>& errors) {
+  if (!c.is_object()) return;
+  for (const auto& [key, value] : c.json().items()) {
+    if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+    std::string hint = closest_match(key, allowed);
+    errors.push_back(c.at(key).diagnostic(
+        hint.empty() ? fmt::format("unknown key '{}'", key)
+                     : fmt::format("unknown key '{}' (did you mean '{}'?)", key, hint),
+        "unknown-key"));
+  }
+}
+
+AssignmentProblem read_assignment_problem(const Cursor& item, const AssignmentSpec& a,
+                                          std::vector<Diagnostic>& errors) {
+  AssignmentProblem p;
+  p.path = item.path();
+  if (item.json().is_string()) {
+    p.id = item.string();
+    return p;
+  }
+  if (!item.is_object()) item.fail("a problem is an id, or {\"id\", \"points\", ...}", "type");
+  unknown_keys(item, {"id", "points", "variants", "feedback"}, errors);
+  p.id = item.at("id").string();
+  collecting(errors, [&] {
+    if (auto pts = item.find("points")) {
+      p.points = pts->number();
+      if (*p.points < 0) pts->fail("points must not be negative", "range");
+    }
+  });
+  collecting(errors, [&] { p.variants = item.boolean_or("variants", true); });
+  collecting(errors, [&] {
+    if (auto f = item.find("feedback")) p.feedback = read_feedback(*f, a.feedback);
+  });
+  return p;
+}
+
+}  // namespace
+
+AssignmentSpec read_assignment(const std::string& path, std::vector<Diagnostic>& errors) {
   auto file = load_json_file(path);
   Cursor root(file);
   if (!root.is_object()) root.fail("an assignment is a JSON object", "type");
-  root.allow_only(
-      {"$schema", "assignment", "title", "bank", "due", "variants", "feedback", "problems"});
+  unknown_keys(
+      root, {"$schema", "assignment", "title", "bank", "due", "variants", "feedback", "problems"},
+      errors);
   AssignmentSpec a;
   a.file = path;
-  a.id = root.at("assignment").string();
-  if (a.id.empty()) root.at("assignment").fail("the assignment's id must not be empty");
-  a.title = root.string_or("title", a.id);
+  collecting(errors, [&] {
+    a.id = root.at("assignment").string();
+    if (a.id.empty()) root.at("assignment").fail("the assignment's id must not be empty");
+  });
+  collecting(errors, [&] { a.title = root.string_or("title", a.id); });
   std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  Cursor bank = root.at("bank");
-  std::vector<Cursor> banks = bank.json().is_string() ? std::vector<Cursor>{bank} : bank.items();
-  if (banks.empty()) bank.fail("no bank named");
-  for (const auto& b : banks) a.bank.push_back((folder / b.string()).lexically_normal().string());
-  if (auto due = root.find("due")) {
-    a.due_text = due->string();
-    a.due = parse_time(a.due_text);
-    if (!a.due) {
-      due->fail(
-          fmt::format("'{}' is not a date and time such as 2026-12-04T23:59:00Z (or "
-                      "2026-12-04T23:59:00+01:00, or a date alone)",
-                      a.due_text));
-    }
-  }
-  if (auto v = root.find("variants")) {
-    v->allow_only({"per_student", "seed"});
-    a.per_student = v->boolean_or("per_student", true);
-    if (auto seed = v->find("seed")) {
-      if (!seed->json().is_number_unsigned()) seed->fail("the seed is a whole number ≥ 0");
-      a.seed = seed->json().get<std::uint64_t>();
-    }
-  }
-  if (auto f = root.find("feedback")) a.feedback = read_feedback(*f, a.feedback);
-  Cursor list = root.at("problems");
-  std::map<std::string, std::string> seen;
-  for (const auto& item : list.items()) {
-    AssignmentProblem p;
-    p.path = item.path();
-    if (item.json().is_string()) {
-      p.id = item.string();
-    } else {
-      if (!item.is_object()) item.fail("a problem is an id, or {\"id\", \"points\", ...}", "type");
-      item.allow_only({"id", "points", "variants", "feedback"});
-      p.id = item.at("id").string();
-      if (auto pts = item.find("points")) {
-        p.points = pts->number();
-        if (*p.points < 0) pts->fail("points must not be negative", "range");
+  collecting(errors, [&] {
+    Cursor bank = root.at("bank");
+    std::vector<Cursor> banks = bank.json().is_string() ? std::vector<Cursor>{bank} : bank.items();
+    if (banks.empty()) bank.fail("no bank named");
+    for (const auto& b : banks) a.bank.push_back((folder / b.string()).lexically_normal().string());
+  });
+  collecting(errors, [&] {
+    if (auto due = root.find("due")) {
+      a.due_text = due->string();
+      a.due = parse_time(a.due_text);
+      if (!a.due) {
+        due->fail(
+            fmt::format("'{}' is not a date and time such as 2026-12-04T23:59:00Z (or "
+                        "2026-12-04T23:59:00+01:00, or a date alone)",
+                        a.due_text));
       }
-      p.variants = item.boolean_or("variants", true);
-      if (auto f = item.find("feedback")) p.feedback = read_feedback(*f, a.feedback);
     }
-    auto [it, fresh] = seen.emplace(p.id, p.path);
-    if (!fresh)
-      item.fail(fmt::format("problem '{}' is listed twice (first at {})", p.id, it->second),
-                "duplicate-id");
-    a.problems.push_back(std::move(p));
-  }
-  if (a.problems.empty()) list.fail("an assignment needs at least one problem");
+  });
+  collecting(errors, [&] {
+    if (auto v = root.find("variants")) {
+      unknown_keys(*v, {"per_student", "seed"}, errors);
+      a.per_student = v->boolean_or("per_student", true);
+      if (auto seed = v->find("seed")) {
+        if (!seed->json().is_number_unsigned()) seed->fail("the seed is a whole number ≥ 0");
+        a.seed = seed->json().get<std::uint64_t>();
+      }
+    }
+  });
+  collecting(errors, [&] {
+    if (auto f = root.find("feedback")) a.feedback = read_feedback(*f, a.feedback);
+  });
+  collecting(errors, [&] {
+    Cursor list = root.at("problems");
+    std::map<std::string, std::string> seen;
+    for (const auto& item : list.items()) {
+      collecting(errors, [&] {
+        AssignmentProblem p = read_assignment_problem(item, a, errors);
+        auto [it, fresh] = seen.emplace(p.id, p.path);
+        if (!fresh)
+          item.fail(fmt::format("problem '{}' is listed twice (first at {})", p.id, it->second),
+                    "duplicate-id");
+        a.problems.push_back(std::move(p));
+      });
+    }
+    if (list.items().empty()) list.fail("an assignment needs at least one problem");
+  });
+  return a;
+}
+
+AssignmentSpec load_assignment(const std::string& path) {
+  std::vector<Diagnostic> errors;
+  AssignmentSpec a = read_assignment(path, errors);
+  if (!errors.empty()) throw Error(errors.front());
   return a;
 }
 

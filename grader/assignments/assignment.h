@@ -54,6 +54,10 @@ struct AssignmentSpec {
 // Reads an assignment file; bank paths are taken relative to the file's folder. Throws Error
 // naming the file and JSON path of any fault.
 AssignmentSpec load_assignment(const std::string& path);
+// The same, reading on past each fault: every fault found is in `errors` (unknown keys, a bad
+// date, bad points, a problem listed twice ...), and the rest is read. Throws Error only when
+// the file cannot be read or is not a JSON object.
+AssignmentSpec read_assignment(const std::string& path, std::vector<Diagnostic>& errors);
 
 // Whether a JSON file is an assignment (an object with an "assignment" key) rather than a bank.
 bool is_assignment_file(const std::string& path);

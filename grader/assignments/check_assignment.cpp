@@ -103,15 +103,20 @@ CheckReport check_assignment(const std::string& path) {
   CheckReport report;
   report.files.push_back(path);
   AssignmentSpec spec;
+  std::vector<Diagnostic> faults;  // every fault of the file, not only the first
   try {
-    spec = load_assignment(path);
+    spec = read_assignment(path, faults);
   } catch (const Error& e) {
+    faults.push_back(e.diagnostic());
+    report.unreadable = e.diagnostic().code == "unreadable";
+  }
+  if (!faults.empty()) {
     ProblemResult r;
     r.name = r.file = path;
-    r.diagnostics.push_back(e.diagnostic());
+    r.diagnostics = faults;
     report.problems.push_back(r);
-    report.unreadable = e.diagnostic().code == "unreadable";
-    return report;
+    // With no bank to read, there is nothing more to check.
+    if (spec.bank.empty()) return report;
   }
   AssignmentBank bank = load_assignment_bank(spec);
   for (const auto& d : bank.errors) {
