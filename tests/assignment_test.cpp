@@ -540,6 +540,34 @@ TEST(Assignment, TheCheckReportsEveryFaultOfTheFile) {
   EXPECT_THROW((void)load_assignment((dir.path() / "a.json").string()), Error);
 }
 
+// The example's triangle a = (0, 0, z), b = (s, 0, z), c = (0, s, z) and the ray from
+// (px, py, 0) along +z: the hit is on the edge bc exactly when px + py = s (w_a = 0), which the
+// draws px = py = 2, s = 4 give (1 draw in 12). No student gets one; with allow_degenerate,
+// some do.
+TEST(Assignment, NoStudentGetsADrawOnAnEdge) {
+  AssignmentSpec spec = load_assignment(kExample);
+  AssignmentBank bank = load_assignment_bank(spec);
+  auto on_edge = [](const Problem& p) {
+    return p.values.at("px").get<int>() + p.values.at("py").get<int>() ==
+           p.values.at("s").get<int>();
+  };
+  std::size_t index = 0;
+  while (spec.problems[index].id != "variant-triangle") ++index;
+  int edges = 0;
+  for (int s = 0; s < 120; ++s) {
+    auto problems = student_problems(spec, bank.problems, fmt::format("student-{}", s));
+    edges += on_edge(problems[index]);
+  }
+  EXPECT_EQ(edges, 0);
+  spec.allow_degenerate = true;
+  edges = 0;
+  for (int s = 0; s < 120; ++s) {
+    auto problems = student_problems(spec, bank.problems, fmt::format("student-{}", s));
+    edges += on_edge(problems[index]);
+  }
+  EXPECT_GT(edges, 0);  // about 10 of 120
+}
+
 TEST(Assignment, PointsAreScaledKeepingTheParts) {
   GradeResult r;
   r.score = 1;

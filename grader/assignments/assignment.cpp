@@ -220,8 +220,9 @@ AssignmentSpec read_assignment(const std::string& path, std::vector<Diagnostic>&
   });
   collecting(errors, [&] {
     if (auto v = root.find("variants")) {
-      unknown_keys(*v, {"per_student", "seed"}, errors);
+      unknown_keys(*v, {"per_student", "seed", "allow_degenerate"}, errors);
       a.per_student = v->boolean_or("per_student", true);
+      a.allow_degenerate = v->boolean_or("allow_degenerate", false);
       if (auto seed = v->find("seed")) {
         if (!seed->json().is_number_unsigned()) seed->fail("the seed is a whole number ≥ 0");
         a.seed = seed->json().get<std::uint64_t>();

@@ -43,6 +43,7 @@ struct AssignmentSpec {
   std::optional<std::int64_t> due;  // seconds since 1970-01-01 UTC
   std::string due_text;             // as written
   bool per_student = false;         // each student their own numbers
+  bool allow_degenerate = false;    // keep draws on an edge, vertex, rim or tangent
   std::uint64_t seed = 0;
   FeedbackRule feedback;
   std::vector<AssignmentProblem> problems;

@@ -38,7 +38,7 @@ void check_draws(const AssignmentSpec& spec, const Problem& base, std::vector<Di
     for (const auto& [name, value] : values) drawn[name].insert(value.dump());
     std::vector<Diagnostic> findings;
     try {
-      findings = variant_findings(read_problem_variant(base, values));
+      findings = variant_findings(read_problem_variant(base, values), spec.allow_degenerate);
     } catch (const Error& e) {
       findings.push_back(e.diagnostic());
     }
@@ -139,7 +139,8 @@ CheckReport check_assignment(const std::string& path) {
       for (int s = 1; s <= kSampleStudents; ++s) {
         std::string student = fmt::format("sample-{:03}", s);
         try {
-          (void)draw_variant(*p, variant_seed(spec.id, spec.seed, student, p->id));
+          (void)draw_variant(*p, variant_seed(spec.id, spec.seed, student, p->id),
+                             spec.allow_degenerate);
         } catch (const Error& e) {
           Diagnostic d = e.diagnostic();
           d.message = fmt::format("{} (for {})", d.message, student);

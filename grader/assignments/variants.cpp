@@ -60,13 +60,22 @@ std::uint64_t variant_seed(const std::string& assignment, std::uint64_t seed,
   return h;
 }
 
-std::vector<Diagnostic> variant_findings(const Problem& variant) {
+std::vector<Diagnostic> variant_findings(const Problem& variant, bool allow_degenerate) {
   // The variant's own text holds its numbers as printed; its pointers are relative to it.
   NumberLiterals literals;
   for (auto& [pointer, literal] : scan_number_literals(variant.source_file->text)) {
     literals[variant.path + pointer] = literal;
   }
   std::vector<Diagnostic> out = problem_findings(variant, literals);
+  // A bank's problem may sit on a boundary on purpose (its statement says so); a drawn variant
+  // does not, unless the assignment allows it.
+  if (!allow_degenerate && probe_boundaries(variant).exact_boundary) {
+    out.push_back(problem_diagnostic(
+        variant, "/parameters", Severity::kWarning,
+        "the ray meets an edge, a vertex, a rim or a tangent exactly: one rounding turns the "
+        "answer around",
+        "degenerate"));
+  }
   if (variant.parameters && variant.parameters->nice &&
       !has_nice_numbers(variant.task->answer(), *variant.parameters->nice)) {
     out.push_back(
@@ -78,7 +87,7 @@ std::vector<Diagnostic> variant_findings(const Problem& variant) {
   return out;
 }
 
-Problem draw_variant(const Problem& base, std::uint64_t seed) {
+Problem draw_variant(const Problem& base, std::uint64_t seed, bool allow_degenerate) {
   if (!base.parameters) return reread(base);
   Prng rng(seed);
   Diagnostic last;
@@ -86,7 +95,7 @@ Problem draw_variant(const Problem& base, std::uint64_t seed) {
     ParameterValues values = base.parameters->draw(rng);
     try {
       Problem p = read_problem_variant(base, values);
-      auto findings = variant_findings(p);
+      auto findings = variant_findings(p, allow_degenerate);
       bool fails = std::any_of(findings.begin(), findings.end(),
                                [](const Diagnostic& d) { return d.severity != Severity::kNote; });
       if (!fails) return p;
@@ -114,7 +123,8 @@ std::vector<Problem> student_problems(const AssignmentSpec& spec,
     const Problem& base = *bank_problems[i];
     const AssignmentProblem& ap = spec.problems[i];
     bool vary = spec.per_student && ap.variants && !student.empty() && base.parameters;
-    out.push_back(vary ? draw_variant(base, variant_seed(spec.id, spec.seed, student, base.id))
+    out.push_back(vary ? draw_variant(base, variant_seed(spec.id, spec.seed, student, base.id),
+                                      spec.allow_degenerate)
                        : reread(base));
   }
   return out;

@@ -31,11 +31,13 @@ constexpr int kMaxVariantDraws = 100;
 // problem (stated answer, boundaries, conditioning) and the problem's nice-number rule. A
 // problem without parameters is read again as it is. Throws Error at the problem's place when
 // no draw passes.
-Problem draw_variant(const Problem& base, std::uint64_t seed);
+// Unless `allow_degenerate`, a draw whose ray meets an edge, a vertex, a rim or a tangent
+// exactly (a hit that one rounding turns into a miss: a barycentric weight of 0) is drawn again.
+Problem draw_variant(const Problem& base, std::uint64_t seed, bool allow_degenerate = false);
 
 // Why one set of values is not a usable variant: the findings of the checks, and a note when
 // the nice-number rule fails. Empty for a usable one.
-std::vector<Diagnostic> variant_findings(const Problem& variant);
+std::vector<Diagnostic> variant_findings(const Problem& variant, bool allow_degenerate = false);
 
 // The problems of an assignment for one student (an empty key: the generic set, every
 // problem with its default numbers), in the assignment's order.
