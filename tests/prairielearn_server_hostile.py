@@ -22,19 +22,17 @@ exported server.py of every question (to test a server.py without exporting it a
 The last line is `N passed, M failed`; the exit status is 1 when M > 0.
 """
 import copy
-import importlib.util
 import json
 import os
 import pathlib
-import shutil
-import subprocess
 import sys
 import tempfile
+
+from pl_course import JSON_PROBLEM, export_courses, load_server, short
 
 # The seed of the ordinary variant that hostile answers are submitted to.
 SEED = 7
 # A problem of the bank answered in one JSON input (the ray tree).
-JSON_PROBLEM = "seed001-ray-tree"
 # Stands for a key left out of the data.
 MISSING = object()
 
@@ -119,29 +117,6 @@ def check(ok, what):
     return ok
 
 
-def short(value, most=200):
-    text = repr(value) if not isinstance(value, str) else value
-    return text if len(text) <= most else text[:most] + "..."
-
-
-def export(raygrade, assignment, out):
-    proc = subprocess.run([raygrade, "export", "prairielearn", str(assignment), "--out",
-                           str(out), "--binary", raygrade], capture_output=True, text=True)
-    return check(proc.returncode == 0, f"export of {assignment} failed: {short(proc.stderr)}")
-
-
-def json_assignment(assignment, folder):
-    """An assignment of the example's bank with the one problem answered in JSON."""
-    spec = json.loads(pathlib.Path(assignment).read_text(encoding="utf-8"))
-    spec.pop("$schema", None)
-    spec["assignment"] = "hostile-json"
-    spec["bank"] = str((pathlib.Path(assignment).parent / spec["bank"]).resolve())
-    spec["problems"] = [{"id": JSON_PROBLEM, "points": 1}]
-    path = folder / "hostile-json.json"
-    path.write_text(json.dumps(spec), encoding="utf-8")
-    return path
-
-
 def fake_course(folder, mode):
     """A course folder whose raygrade is FAKE_RAYGRADE in `mode`."""
     tools = folder / f"fake-{mode}" / "serverFilesCourse" / "raygrade"
@@ -153,16 +128,6 @@ def fake_course(folder, mode):
     return tools.parent
 
 
-def load_server(qdir, index):
-    replacement = os.environ.get("RAYGRADE_PL_SERVER")
-    if replacement:
-        shutil.copyfile(replacement, qdir / "server.py")
-    spec = importlib.util.spec_from_file_location(f"pl_hostile_{index}", qdir / "server.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
 class Question:
     """One exported question: its folder, course, server.py module and inputs."""
 
@@ -172,7 +137,7 @@ class Question:
         spec = json.loads((qdir / "raygrade.json").read_text(encoding="utf-8"))
         self.inputs = {i["name"]: i["type"] for i in spec["inputs"]}
         self.text_inputs = [n for n, t in self.inputs.items() if t not in ("choice", "yesno")]
-        self.server = load_server(qdir, index)
+        self.server = load_server(qdir, f"pl_hostile_{index}")
         self.params = {}
 
     def options(self, course=None):
@@ -321,9 +286,8 @@ def main(raygrade, assignment):
     raygrade = str(pathlib.Path(raygrade).resolve())
     with tempfile.TemporaryDirectory() as folder:
         tmp = pathlib.Path(folder)
-        courses = [tmp / "course", tmp / "course-json"]
-        if export(raygrade, assignment, courses[0]) and \
-                export(raygrade, json_assignment(assignment, tmp), courses[1]):
+        courses, fault = export_courses(raygrade, assignment, tmp, "hostile-json")
+        if check(fault is None, fault):
             for mode in FAKE_MODES:
                 fake_course(tmp, mode)
             folders = [(qdir, course) for course in courses for qdir in questions_of(course)]

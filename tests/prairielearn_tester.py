@@ -31,21 +31,18 @@ The last line is `N passed, M failed`; the exit status is 1 when M > 0.
 """
 import copy
 import html.parser
-import importlib.util
 import json
 import math
-import os
 import pathlib
 import random
-import shutil
-import subprocess
 import sys
 import tempfile
+
+from pl_course import JSON_PROBLEM, export_courses, load_server
 
 SEEDS = [7, 1234567, 2**31 - 1]
 TEST_TYPES = ["correct", "incorrect", "invalid"]
 # A problem of the bank answered in one JSON input (the ray tree).
-JSON_PROBLEM = "seed001-ray-tree"
 # The key of correct_answers that holds the choices' answers between generate() and prepare().
 CHOICES = "raygrade:choices"
 
@@ -296,12 +293,7 @@ class Question:
         self.spec = json.loads((qdir / "raygrade.json").read_text(encoding="utf-8"))
         self.info = json.loads((qdir / "info.json").read_text(encoding="utf-8"))
         self.page = Page((qdir / "question.html").read_text(encoding="utf-8"))
-        replacement = os.environ.get("RAYGRADE_PL_SERVER")
-        if replacement:
-            shutil.copyfile(replacement, qdir / "server.py")
-        spec = importlib.util.spec_from_file_location(f"pl_tester_{index}", qdir / "server.py")
-        self.server = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(self.server)
+        self.server = load_server(qdir, f"pl_tester_{index}")
         self.variants = {}
 
     def options(self):
@@ -484,31 +476,12 @@ def odd_tests(q, tmp):
                   f"{label}: {short({k: repr(data.get(k)) for k in types})}")
 
 
-def export(raygrade, assignment, out):
-    proc = subprocess.run([raygrade, "export", "prairielearn", str(assignment), "--out",
-                           str(out), "--binary", raygrade], capture_output=True, text=True)
-    return check(proc.returncode == 0, f"export of {assignment} failed: {short(proc.stderr)}")
-
-
-def json_assignment(assignment, folder):
-    """An assignment of the example's bank with the one problem answered in JSON."""
-    spec = json.loads(pathlib.Path(assignment).read_text(encoding="utf-8"))
-    spec.pop("$schema", None)
-    spec["assignment"] = "tester-json"
-    spec["bank"] = str((pathlib.Path(assignment).parent / spec["bank"]).resolve())
-    spec["problems"] = [{"id": JSON_PROBLEM, "points": 1}]
-    path = folder / "tester-json.json"
-    path.write_text(json.dumps(spec), encoding="utf-8")
-    return path
-
-
 def main(raygrade, assignment):
     raygrade = str(pathlib.Path(raygrade).resolve())
     with tempfile.TemporaryDirectory() as folder:
         tmp = pathlib.Path(folder)
-        courses = [tmp / "course", tmp / "course-json"]
-        if export(raygrade, assignment, courses[0]) and \
-                export(raygrade, json_assignment(assignment, tmp), courses[1]):
+        courses, fault = export_courses(raygrade, assignment, tmp, "tester-json")
+        if check(fault is None, fault):
             folders = [q for c in courses for q in sorted(c.glob("questions/*/*"))]
             check(len(folders) > 1, f"no questions exported: {folders}")
             for index, qdir in enumerate(folders):
