@@ -94,9 +94,7 @@ std::vector<StudentIdentity> load_roster(const std::string& path) {
     fail(path, 1, 1, "the roster is empty: its first line names the columns id, name, email");
   int id_col = -1, name_col = -1, email_col = -1;
   for (std::size_t i = 0; i < rows[0].size(); ++i) {
-    std::string h = trimmed(rows[0][i]);
-    std::transform(h.begin(), h.end(), h.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::string h = ascii_lower(trimmed(rows[0][i]));
     int* col = h == "id" ? &id_col : h == "name" ? &name_col : h == "email" ? &email_col : nullptr;
     if (!col) fail(path, 1, 0, fmt::format("unknown column '{}' (known: id, name, email)", h));
     if (*col >= 0) fail(path, 1, 0, fmt::format("the column '{}' is named twice", h));
@@ -123,13 +121,6 @@ std::vector<StudentIdentity> load_roster(const std::string& path) {
     out.push_back(std::move(s));
   }
   return out;
-}
-
-std::string email_key(const std::string& email) {
-  std::string e = trimmed(email);
-  std::transform(e.begin(), e.end(), e.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return e;
 }
 
 namespace {

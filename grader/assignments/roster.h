@@ -28,7 +28,4 @@ RosterMatch match_on_roster(const std::vector<StudentIdentity>& roster, const St
 const StudentIdentity* find_on_roster(const std::vector<StudentIdentity>& roster,
                                       const StudentIdentity& who);
 
-// An email as compared: trimmed, ASCII letters in lower case.
-std::string email_key(const std::string& email);
-
 }  // namespace raygrade

@@ -7,6 +7,7 @@
 
 #include "check/literals.h"
 #include "check/problem_checks.h"
+#include "core/escape.h"
 #include "generate/prng.h"
 
 namespace raygrade {
@@ -38,14 +39,11 @@ std::string trimmed(std::string s) {
   return s.substr(begin, s.find_last_not_of(" \t") + 1 - begin);
 }
 
+std::string email_key(const std::string& email) { return ascii_lower(trimmed(email)); }
+
 std::string student_key(const StudentIdentity& s) {
   if (!trimmed(s.id).empty()) return trimmed(s.id);
-  if (!trimmed(s.email).empty()) {
-    std::string e = trimmed(s.email);
-    std::transform(e.begin(), e.end(), e.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return e;
-  }
+  if (!trimmed(s.email).empty()) return email_key(s.email);
   return trimmed(s.name);
 }
 

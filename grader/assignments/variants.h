@@ -18,6 +18,8 @@ std::string student_key(const StudentIdentity& s);
 
 // `s` without the spaces and tabs at either end: how student_key and a roster's cells read text.
 std::string trimmed(std::string s);
+// An email as compared: trimmed, ASCII letters in lower case.
+std::string email_key(const std::string& email);
 
 // The seed of one student's variant of one problem: 64-bit FNV-1a over the assignment's id,
 // its seed, the student's key and the problem's id (docs/assignments.md).

@@ -88,16 +88,10 @@ int run_handout(const HandoutOptions& o) {
   // Folder names compared in lower case: macOS's and Windows's file systems do not tell "S1"
   // from "s1" (and safe_file_name leaves no other letters). The index's own name is taken.
   std::set<std::string> folders = {"handouts.csv"};
-  auto lower = [](std::string f) {
-    for (auto& c : f) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return f;
-  };
   std::size_t written = 0;
   for (const auto& s : students) {
     std::string key = student_key(s);
-    std::string folder = safe_file_name(key);
-    for (int k = 2; !folders.insert(lower(folder)).second; ++k)
-      folder = fmt::format("{}-{}", safe_file_name(key), k);
+    std::string folder = unique_file_name(key, folders);
     try {
       write_handout(out / folder,
                     make_handout(spec, student_problems(spec, bank.problems, key), &s, assets));

@@ -214,6 +214,19 @@ std::string safe_file_name(std::string_view id) {
   return out;
 }
 
+std::string ascii_lower(std::string s) {
+  for (char& c : s)
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  return s;
+}
+
+std::string unique_file_name(std::string_view id, std::set<std::string>& taken) {
+  std::string base = safe_file_name(id), name = base;
+  for (int n = 2; !taken.insert(ascii_lower(name)).second; ++n)
+    name = fmt::format("{}-{}", base, n);
+  return name;
+}
+
 std::size_t first_invalid_utf8(std::string_view s) {
   for (std::size_t i = 0; i < s.size();) {
     std::size_t n = utf8_sequence_length(s, i);

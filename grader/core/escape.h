@@ -2,6 +2,7 @@
 // format, and safe file names.
 #pragma once
 
+#include <set>
 #include <string>
 #include <string_view>
 
@@ -28,6 +29,12 @@ std::string text_escape(std::string_view s);
 // A file name made from an id: only [A-Za-z0-9._-], never "." or "..", never empty, at most
 // 100 bytes; other bytes become '_'. It cannot name a path outside its folder.
 std::string safe_file_name(std::string_view id);
+// safe_file_name(id), with "-2", "-3", ... added until no name in `taken` is the same when
+// letters are compared without case (as macOS's and Windows's file systems compare them); the
+// chosen name, in lower case, is added to `taken`.
+std::string unique_file_name(std::string_view id, std::set<std::string>& taken);
+// ASCII letters in lower case; every other byte (UTF-8 sequences among them) unchanged.
+std::string ascii_lower(std::string s);
 
 // True when `s` is well-formed UTF-8 (no overlong forms, surrogates or code points above
 // U+10FFFF).
