@@ -122,5 +122,15 @@ TEST_F(Gradebook, AnUnknownChoiceIsRefused) {
   EXPECT_NE(r.err.find("unknown --pick 'newest'"), std::string::npos) << r.err;
 }
 
+// Without a roster there is no student's set of submissions to choose from: --pick would do
+// nothing, so it is refused rather than ignored.
+TEST_F(Gradebook, PickWithoutARosterIsRefused) {
+  auto r = run_raygrade("grade --assignment hw.json subs --format csv --pick best", dir_.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--pick chooses among a roster student's submissions: it needs --roster"),
+            std::string::npos)
+      << r.err;
+}
+
 }  // namespace
 }  // namespace raygrade

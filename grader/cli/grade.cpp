@@ -36,7 +36,7 @@ struct GradeCliOptions {
   bool answered_only = false;
   std::string assignment;  // an assignment file: each submission graded as its student's variant
   std::string roster;
-  std::string pick = "latest";      // with --roster: which of a student's submissions counts
+  std::string pick;                 // with --roster: which of a student's submissions counts
   std::string feedback;             // overrides the assignment's feedback policy
   std::string now;                  // the time the due date is compared with (default: the clock)
   std::string gradescope_metadata;  // submission_metadata.json: who uploaded the submission
@@ -77,181 +77,266 @@ std::optional<std::string> out_among_submissions(const std::string& out,
   return std::nullopt;
 }
 
-std::string lower_case(std::string s) {
-  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-int run_grade(const GradeCliOptions& o) {
-  const GradeFormat* format = find_grade_format(o.format);
-  if (!format) {
-    fmt::print(stderr, "raygrade grade: unknown format '{}' ({})\n", o.format,
-               grade_format_names());
-    return kExitBadInput;
-  }
-  bool platform_book = format->layout == GradeLayout::kClassGradebook;
-  bool gradebook = format->layout == GradeLayout::kGradebook || platform_book;
-  if (platform_book && o.roster.empty()) {
-    fmt::print(stderr,
-               "raygrade grade: --format {} needs --assignment and --roster (a row per roster "
-               "student)\n",
-               o.format);
-    return kExitBadInput;
-  }
-  std::optional<PickPolicy> pick = parse_pick_policy(o.pick);
-  if (!pick) {
-    fmt::print(stderr, "raygrade grade: unknown --pick '{}' (latest, best, first)\n", o.pick);
-    return kExitBadInput;
-  }
-  std::vector<StudentIdentity> roster;
-  // What grades one file, and the problems in gradebook order: the bank's, or an assignment's.
+// What grades one file, the problems in gradebook order, and what the setting-up found: from
+// the bank, or from an assignment (each student's own variant).
+struct GradeSetup {
   std::function<SubmissionGrade(const std::string&)> grade_one;
+  // Gradescope's full feedback after the due date, when the policy would show it then.
+  std::function<std::optional<SubmissionGrade>(const std::string&)> worked_one;
   std::vector<std::string> ids;
-  std::vector<Diagnostic> setup_errors;
+  std::vector<Diagnostic> errors;
+  std::vector<StudentIdentity> roster;
+  std::string title;         // the assignment's title (or id), for a platform's gradebook
+  bool per_student = false;  // graded as each student's variant: doubles are looked for
   Bank bank;
   std::unique_ptr<Assignment> assignment;
   std::unique_ptr<AssignmentSpec> spec;
   std::unique_ptr<AssignmentBank> spec_bank;
-  std::unique_ptr<AssignmentGrader> spec_grader;
-  std::unique_ptr<AssignmentGrader> worked_grader;  // full feedback, for Gradescope
-  if (o.assignment.empty()) {
-    if (!o.roster.empty() || !o.feedback.empty() || !o.now.empty() ||
-        !o.gradescope_metadata.empty()) {
-      fmt::print(stderr,
-                 "raygrade grade: --roster, --feedback, --now and --gradescope-metadata go with "
-                 "--assignment\n");
-      return kExitBadInput;
+  std::unique_ptr<AssignmentGrader> spec_grader, worked_grader;
+};
+
+// A usage fault: printed, and the exit code for it.
+int usage(std::string_view message) {
+  fmt::print(stderr, "raygrade grade: {}\n", message);
+  return kExitBadInput;
+}
+
+std::optional<int> setup_from_bank(const GradeCliOptions& o, GradeSetup& s) {
+  if (!o.roster.empty() || !o.feedback.empty() || !o.now.empty() || !o.gradescope_metadata.empty())
+    return usage("--roster, --feedback, --now and --gradescope-metadata go with --assignment");
+  s.bank = load_bank(o.problems);
+  s.errors = s.bank.errors;
+  s.assignment = std::make_unique<Assignment>(s.bank.problems, AssignmentOptions{o.answered_only});
+  s.errors.insert(s.errors.end(), s.assignment->errors().begin(), s.assignment->errors().end());
+  for (const auto& gr : s.assignment->graders()) s.ids.push_back(gr.problem().id);
+  s.grade_one = [a = s.assignment.get()](const std::string& f) { return a->grade_file(f); };
+  return std::nullopt;
+}
+
+std::optional<int> setup_from_assignment(const GradeCliOptions& o, const GradeFormat& format,
+                                         GradeSetup& s) {
+  AssignmentGradeOptions options;
+  std::optional<std::int64_t> submitted;  // Gradescope's time of the submission
+  try {
+    s.spec = std::make_unique<AssignmentSpec>(load_assignment(o.assignment));
+    if (!o.roster.empty()) s.roster = options.roster = load_roster(o.roster);
+    if (!o.gradescope_metadata.empty()) {
+      GradescopeMetadata m = read_gradescope_metadata(o.gradescope_metadata);
+      options.uploaders = std::move(m.users);
+      submitted = m.submitted;
+      // Gradescope's due date, with the student's extension, is the one students were given.
+      if (m.due) s.spec->due = m.due;
     }
-    bank = load_bank(o.problems);
-    setup_errors = bank.errors;
-    assignment = std::make_unique<Assignment>(bank.problems, AssignmentOptions{o.answered_only});
-    setup_errors.insert(setup_errors.end(), assignment->errors().begin(),
-                        assignment->errors().end());
-    for (const auto& gr : assignment->graders()) ids.push_back(gr.problem().id);
-    grade_one = [&](const std::string& f) { return assignment->grade_file(f); };
-  } else {
-    AssignmentGradeOptions options;
-    std::optional<std::int64_t> submitted;  // Gradescope's time of the submission
-    try {
-      spec = std::make_unique<AssignmentSpec>(load_assignment(o.assignment));
-      if (!o.roster.empty()) roster = options.roster = load_roster(o.roster);
-      if (!o.gradescope_metadata.empty()) {
-        GradescopeMetadata m = read_gradescope_metadata(o.gradescope_metadata);
-        options.uploaders = std::move(m.users);
-        submitted = m.submitted;
-        // Gradescope's due date, with the student's extension, is the one students were given.
-        if (m.due) spec->due = m.due;
-      }
-    } catch (const Error& e) {
-      fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
-      return kExitBadInput;
-    }
-    if (!o.feedback.empty()) {
-      options.feedback = parse_feedback_policy(o.feedback);
-      if (!options.feedback) {
-        fmt::print(stderr, "raygrade grade: unknown feedback policy '{}' (score, mistakes, full)\n",
-                   o.feedback);
-        return kExitBadInput;
-      }
-    }
-    // The time the feedback policy is taken at: --now, else Gradescope's time of the
-    // submission, else the clock.
-    auto now =
-        !o.now.empty() ? parse_time(o.now)
-        : submitted
-            ? submitted
-            : std::optional<std::int64_t>(std::chrono::duration_cast<std::chrono::seconds>(
-                                              std::chrono::system_clock::now().time_since_epoch())
-                                              .count());
-    if (!now) {
-      fmt::print(stderr,
-                 "raygrade grade: --now '{}' is not a date and time (2026-12-04T23:59:00Z)\n",
-                 o.now);
-      return kExitBadInput;
-    }
-    options.now = *now;
-    spec_bank = std::make_unique<AssignmentBank>(load_assignment_bank(*spec));
-    setup_errors = spec_bank->errors;
-    if (spec_bank->problems.size() != spec->problems.size()) {
-      for (const auto& e : setup_errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
-      return kExitBadInput;
-    }
-    spec_grader = std::make_unique<AssignmentGrader>(*spec, spec_bank->problems, options);
-    ids = spec_grader->problem_ids();
-    grade_one = [&](const std::string& f) { return spec_grader->grade_file(f); };
-    if (format->full_feedback_too && !options.feedback && spec->due && options.now <= *spec->due) {
-      // The feedback the policy allows after the due date too, which Gradescope shows once it
-      // has passed: never more than that policy (an override holds at all times).
-      options.now = *spec->due + 1;
-      worked_grader = std::make_unique<AssignmentGrader>(*spec, spec_bank->problems, options);
-    }
+  } catch (const Error& e) {
+    fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
+    return kExitBadInput;
   }
-  for (const auto& e : setup_errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
+  if (!o.feedback.empty()) {
+    options.feedback = parse_feedback_policy(o.feedback);
+    if (!options.feedback)
+      return usage(fmt::format("unknown feedback policy '{}' (score, mistakes, full)", o.feedback));
+  }
+  // The time the feedback policy is taken at: --now, else Gradescope's time of the
+  // submission, else the clock.
+  auto now =
+      !o.now.empty() ? parse_time(o.now)
+      : submitted
+          ? submitted
+          : std::optional<std::int64_t>(std::chrono::duration_cast<std::chrono::seconds>(
+                                            std::chrono::system_clock::now().time_since_epoch())
+                                            .count());
+  if (!now)
+    return usage(fmt::format("--now '{}' is not a date and time (2026-12-04T23:59:00Z)", o.now));
+  options.now = *now;
+  s.spec_bank = std::make_unique<AssignmentBank>(load_assignment_bank(*s.spec));
+  s.errors = s.spec_bank->errors;
+  if (s.spec_bank->problems.size() != s.spec->problems.size()) {
+    for (const auto& e : s.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
+    return kExitBadInput;
+  }
+  s.spec_grader = std::make_unique<AssignmentGrader>(*s.spec, s.spec_bank->problems, options);
+  s.ids = s.spec_grader->problem_ids();
+  s.title = s.spec->title.empty() ? s.spec->id : s.spec->title;
+  s.per_student = true;
+  s.grade_one = [g = s.spec_grader.get()](const std::string& f) { return g->grade_file(f); };
+  if (format.full_feedback_too && !options.feedback && s.spec->due && options.now <= *s.spec->due) {
+    // The feedback the policy allows after the due date too, which Gradescope shows once it
+    // has passed: never more than that policy (an override holds at all times).
+    options.now = *s.spec->due + 1;
+    s.worked_grader = std::make_unique<AssignmentGrader>(*s.spec, s.spec_bank->problems, options);
+    s.worked_one = [g = s.worked_grader.get()](const std::string& f) {
+      return std::optional<SubmissionGrade>(g->grade_file(f));
+    };
+  }
+  return std::nullopt;
+}
+
+// What a thread makes of one file; the main thread writes them out in the files' order.
+struct Graded {
+  SubmissionGrade grade;
+  std::string text;  // the gradebook row, the submission's JSON, or the file or page rendered
+};
+
+// Where graded files go, in the files' order: standard output, one file each in --out, or a
+// gradebook (a row per file, or with a roster a row per roster student, written at the end).
+class GradeOutput {
+ public:
+  GradeOutput(const GradeCliOptions& o, const GradeFormat& format, const GradeSetup& setup,
+              PickPolicy pick, bool single)
+      : o_(o), format_(format), setup_(setup), single_(single), json_out_(std::cout) {
+    platform_book_ = format.layout == GradeLayout::kClassGradebook;
+    gradebook_ = format.layout == GradeLayout::kGradebook || platform_book_;
+    json_stream_ = format.layout == GradeLayout::kJsonArray && o.out.empty();
+    if (gradebook_ && !setup.roster.empty()) class_book_.emplace(setup.roster, setup.ids, pick);
+    if (gradebook_ && !class_book_) csv() << gradebook_csv_header(setup.ids);
+  }
+
+  // The text a file's grade is written as (run on the grading threads).
+  std::string render(const SubmissionGrade& g, double seconds,
+                     const std::optional<SubmissionGrade>& worked) const {
+    if (gradebook_) return gradebook_csv_row(g, setup_.ids);
+    if (json_stream_) return json_text(submission_json(g));
+    return format_.render(g, seconds, worked ? &*worked : nullptr);
+  }
+
+  void add(const Graded& graded) {
+    const SubmissionGrade& g = graded.grade;
+    if (!g.gradable) {
+      ++rejected;
+      internal += g.fault && g.fault->code == "internal";
+      resource += g.fault && g.fault->code == "resource";
+      if (!single_ || gradebook_) fmt::print(stderr, "{}\n", format_diagnostic(*g.fault));
+    }
+    for (const auto& d : g.findings) fmt::print(stderr, "{}\n", format_diagnostic(d));
+    if (class_book_) {
+      class_book_->add(g);
+    } else if (gradebook_) {
+      csv() << graded.text;
+    } else if (!o_.out.empty()) {
+      write_one(g, graded.text);
+    } else if (json_stream_) {
+      json_out_.add(graded.text);
+    } else {
+      std::cout << graded.text;
+    }
+    if (!class_book_ && setup_.per_student && g.gradable && !g.identity.empty())
+      by_student_[student_key(g.identity)].push_back(g.file);
+  }
+
+  void finish() {
+    if (class_book_) {
+      csv() << (platform_book_ ? class_book_->platform_csv(format_.name, setup_.title)
+                               : class_book_->csv());
+      for (const auto& c : class_book_->choices())
+        fmt::print(stderr, "raygrade grade: {}\n", printable(c));
+    }
+    std::filesystem::path out(o_.out);
+    if (!pages_.empty())
+      write_file_atomically(out / "index.html", feedback_index_html(pages_), false);
+    if (gradebook_ && !o_.out.empty())
+      write_file_atomically(out / ("gradebook" + std::string(format_.extension)), csv_file_.str(),
+                            false);
+    // Two files of one student are both graded, and never silently.
+    for (const auto& [key, of] : by_student_) {
+      if (of.size() < 2) continue;
+      std::string list;
+      for (const auto& f : of) list += fmt::format("{}{}", list.empty() ? "" : ", ", printable(f));
+      fmt::print(stderr,
+                 "raygrade grade: warning: student '{}' has {} submissions, each graded: {}\n",
+                 printable(key), of.size(), list);
+    }
+    if (json_stream_) json_out_.finish();
+    std::cout.flush();
+  }
+
+  std::size_t rejected = 0, internal = 0, resource = 0;
+
+ private:
+  // The gradebook on standard output goes a row at a time; a file is written whole at the end.
+  std::ostream& csv() { return o_.out.empty() ? std::cout : csv_file_; }
+
+  void write_one(const SubmissionGrade& g, const std::string& text) {
+    // Named by the student's id where there is one (a name can be anything, in any script),
+    // compared in lower case as macOS's and Windows's file systems compare.
+    std::string name =
+        single_ && format_.results_file
+            ? "results"
+            : unique_file_name(g.identity.id.empty() ? g.student : g.identity.id, names_);
+    if (format_.extension == ".html")
+      pages_.push_back(
+          {name + ".html", g.student, g.identity.id, g.gradable, g.score, g.max_score});
+    // Each file appears whole or not at all (rename); the batch reaches the disk in one flush
+    // at the end instead of one per file.
+    write_file_atomically(std::filesystem::path(o_.out) / (name + std::string(format_.extension)),
+                          text, false);
+  }
+
+  const GradeCliOptions& o_;
+  const GradeFormat& format_;
+  const GradeSetup& setup_;
+  bool single_, platform_book_, gradebook_, json_stream_;
+  std::set<std::string> names_ = {"index", "gradebook"};  // the folder's own files
+  std::vector<FeedbackPage> pages_;
+  std::ostringstream csv_file_;
+  std::optional<RosterGradebook> class_book_;
+  JsonArrayStream json_out_;
+  // The files of each student (by the key their variant is drawn for), to find the doubles.
+  std::map<std::string, std::vector<std::string>> by_student_;
+};
+
+// The --out folder: outside the submissions, locked, and cleared of what a killed run left.
+std::optional<int> prepare_out(const GradeCliOptions& o, std::optional<FolderLock>& lock) {
+  if (o.out.empty()) return std::nullopt;
+  if (auto s = out_among_submissions(o.out, o.submissions))
+    return usage(fmt::format(
+        "--out {} is inside the submissions ({}), whose files it could overwrite; choose a "
+        "folder outside them",
+        printable(o.out), printable(*s)));
+  std::filesystem::create_directories(o.out);
+  // One grader per folder at a time; then what a killed one left half-written can go.
+  lock.emplace(o.out, "raygrade grade");
+  for (const auto& name : remove_stale_temporaries(o.out))
+    fmt::print(stderr, "raygrade grade: removed {}, left by an interrupted run\n", printable(name));
+  return std::nullopt;
+}
+
+int run_grade(const GradeCliOptions& o) {
+  const GradeFormat* format = find_grade_format(o.format);
+  if (!format)
+    return usage(fmt::format("unknown format '{}' ({})", o.format, grade_format_names()));
+  if (format->layout == GradeLayout::kClassGradebook && o.roster.empty())
+    return usage(fmt::format(
+        "--format {} needs --assignment and --roster (a row per roster student)", o.format));
+  if (!o.pick.empty() && o.roster.empty())
+    return usage("--pick chooses among a roster student's submissions: it needs --roster");
+  std::optional<PickPolicy> pick = parse_pick_policy(o.pick.empty() ? "latest" : o.pick);
+  if (!pick) return usage(fmt::format("unknown --pick '{}' (latest, best, first)", o.pick));
+  GradeSetup setup;
+  if (auto failed = o.assignment.empty() ? setup_from_bank(o, setup)
+                                         : setup_from_assignment(o, *format, setup))
+    return *failed;
+  for (const auto& e : setup.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   std::vector<Diagnostic> errors;
   std::vector<std::string> files = submission_files(o.submissions, errors);
   for (const auto& e : errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   bool single = files.size() == 1 && errors.empty();
-  if (format->needs_out && !single && o.out.empty()) {
-    fmt::print(stderr, "raygrade grade: --format {} with several submissions needs --out DIR\n",
-               o.format);
-    return kExitBadInput;
-  }
-  if (!o.out.empty()) {
-    if (auto s = out_among_submissions(o.out, o.submissions)) {
-      fmt::print(stderr,
-                 "raygrade grade: --out {} is inside the submissions ({}), whose files it could "
-                 "overwrite; choose a folder outside them\n",
-                 printable(o.out), printable(*s));
-      return kExitBadInput;
-    }
-  }
+  if (format->needs_out && !single && o.out.empty())
+    return usage(fmt::format("--format {} with several submissions needs --out DIR", o.format));
   std::optional<FolderLock> lock;
-  if (!o.out.empty()) {
-    std::filesystem::create_directories(o.out);
-    // One grader per folder at a time; then what a killed one left half-written can go.
-    lock.emplace(o.out, "raygrade grade");
-    for (const auto& name : remove_stale_temporaries(o.out))
-      fmt::print(stderr, "raygrade grade: removed {}, left by an interrupted run\n",
-                 printable(name));
-  }
-  std::set<std::string> names = {"index", "gradebook"};  // the folder's own files
-  std::vector<FeedbackPage> pages;
-  // The gradebook on standard output goes a row at a time; a file is written whole at the end.
-  std::ostringstream csv_file;
-  // With a roster, the gradebook has one row per roster student, written at the end.
-  std::optional<RosterGradebook> class_book;
-  if (gradebook && !roster.empty()) class_book.emplace(roster, ids, *pick);
-  if (gradebook && !class_book) (o.out.empty() ? std::cout : csv_file) << gradebook_csv_header(ids);
-  JsonArrayStream json_out(std::cout);
-  Progress progress(files.size());
-  std::size_t rejected = 0, internal = 0, resource = 0;
-  // The files of each student (by the key their variant is drawn for), to find the doubles.
-  std::map<std::string, std::vector<std::string>> by_student;
-  auto spec_key_of = [&](const SubmissionGrade& g) {
-    return spec && g.gradable && !g.identity.empty() ? student_key(g.identity) : std::string();
-  };
-  // What a thread makes of one file; the main thread writes them out in the files' order.
-  struct Graded {
-    SubmissionGrade grade;
-    std::string text;  // the gradebook row, the submission's JSON, or the file or page rendered
-  };
-  bool json_stream = format->layout == GradeLayout::kJsonArray && o.out.empty();
+  if (auto failed = prepare_out(o, lock)) return *failed;
+  GradeOutput output(o, *format, setup, *pick, single);
   auto grade_at = [&](std::size_t i) {
     auto start = std::chrono::steady_clock::now();
-    Graded r{grade_one(files[i]), {}};
+    Graded r{setup.grade_one(files[i]), {}};
     std::optional<SubmissionGrade> worked;
-    if (worked_grader) worked = worked_grader->grade_file(files[i]);
+    if (setup.worked_one) worked = setup.worked_one(files[i]);
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (gradebook)
-      r.text = gradebook_csv_row(r.grade, ids);
-    else if (json_stream)
-      r.text = json_text(submission_json(r.grade));
-    else
-      r.text = format->render(r.grade, seconds, worked ? &*worked : nullptr);
+    r.text = output.render(r.grade, seconds, worked);
     return r;
   };
   // A window of files at a time, so that memory stays bounded whatever the batch's size.
+  Progress progress(files.size());
   unsigned jobs = o.jobs > 0 ? o.jobs : default_jobs();
   std::size_t window = 64 * std::size_t{jobs};
   for (std::size_t begin = 0; begin < files.size(); begin += window) {
@@ -259,77 +344,21 @@ int run_grade(const GradeCliOptions& o) {
     auto graded =
         parallel_map<Graded>(count, jobs, [&](std::size_t k) { return grade_at(begin + k); });
     for (std::size_t k = 0; k < count; ++k) {
-      const SubmissionGrade& g = graded[k].grade;
-      if (!g.gradable) {
-        ++rejected;
-        internal += g.fault && g.fault->code == "internal";
-        resource += g.fault && g.fault->code == "resource";
-        if (!single || gradebook) fmt::print(stderr, "{}\n", format_diagnostic(*g.fault));
-      }
-      for (const auto& d : g.findings) fmt::print(stderr, "{}\n", format_diagnostic(d));
-      if (class_book) {
-        class_book->add(g);
-      } else if (gradebook) {
-        (o.out.empty() ? std::cout : csv_file) << graded[k].text;
-      } else if (!o.out.empty()) {
-        // Named by the student's id where there is one (a name can be anything, in any
-        // script), compared in lower case as macOS's and Windows's file systems compare.
-        std::string base = single && format->results_file ? "results"
-                           : !g.identity.id.empty()       ? safe_file_name(g.identity.id)
-                                                          : safe_file_name(g.student);
-        std::string name = base;
-        for (int n = 2; !names.insert(lower_case(name)).second; ++n)
-          name = fmt::format("{}-{}", base, n);
-        if (format->extension == ".html")
-          pages.push_back(
-              {name + ".html", g.student, g.identity.id, g.gradable, g.score, g.max_score});
-        // Each file appears whole or not at all (rename); the batch reaches the disk in one
-        // flush at the end instead of one per file.
-        write_file_atomically(
-            std::filesystem::path(o.out) / (name + std::string(format->extension)), graded[k].text,
-            false);
-      } else if (json_stream) {
-        json_out.add(graded[k].text);
-      } else {
-        std::cout << graded[k].text;
-      }
-      if (!class_book && !spec_key_of(g).empty()) by_student[spec_key_of(g)].push_back(g.file);
+      output.add(graded[k]);
       progress.step(begin + k + 1);
     }
   }
-  if (class_book) {
-    (o.out.empty() ? std::cout : csv_file)
-        << (platform_book ? class_book->platform_csv(format->name,
-                                                     spec->title.empty() ? spec->id : spec->title)
-                          : class_book->csv());
-    for (const auto& c : class_book->choices())
-      fmt::print(stderr, "raygrade grade: {}\n", printable(c));
-  }
-  if (!pages.empty())
-    write_file_atomically(std::filesystem::path(o.out) / "index.html", feedback_index_html(pages),
-                          false);
-  if (gradebook && !o.out.empty())
-    write_file_atomically(
-        std::filesystem::path(o.out) / ("gradebook" + std::string(format->extension)),
-        csv_file.str(), false);
-  // Two files of one student are both graded, and never silently.
-  for (const auto& [key, of] : by_student) {
-    if (of.size() < 2) continue;
-    std::string list;
-    for (const auto& f : of) list += fmt::format("{}{}", list.empty() ? "" : ", ", printable(f));
-    fmt::print(stderr,
-               "raygrade grade: warning: student '{}' has {} submissions, each graded: {}\n",
-               printable(key), of.size(), list);
-  }
-  if (json_stream) json_out.finish();
-  std::cout.flush();
+  output.finish();
   if (!o.out.empty()) {
     flush_folder(o.out);
-    fmt::print(stderr, "Graded {} submissions into {}{}.\n", files.size() - rejected, o.out,
-               rejected ? fmt::format(" ({} rejected)", rejected) : "");
+    fmt::print(stderr, "Graded {} submissions into {}{}.\n", files.size() - output.rejected, o.out,
+               output.rejected ? fmt::format(" ({} rejected)", output.rejected) : "");
   }
-  bool bad = rejected || !errors.empty() || !setup_errors.empty();
-  return internal ? kExitInternal : resource ? kExitResource : bad ? kExitBadInput : kExitOk;
+  bool bad = output.rejected || !errors.empty() || !setup.errors.empty();
+  return output.internal   ? kExitInternal
+         : output.resource ? kExitResource
+         : bad             ? kExitBadInput
+                           : kExitOk;
 }
 
 }  // namespace
@@ -379,8 +408,8 @@ Runner setup_grade(CLI::App& sub) {
                  "with --assignment: a roster CSV (id, name, email); every student must be on it");
   sub.add_option("--pick", o->pick,
                  "with --roster, for the gradebook: which of a student's several submissions "
-                 "counts: latest (by its \"submitted\" time, then the file's), best or first")
-      ->capture_default_str();
+                 "counts: latest (the default: by its \"submitted\" time, then the file's), best "
+                 "or first");
   sub.add_option("--feedback", o->feedback,
                  "with --assignment: score, mistakes or full, whatever the assignment says");
   sub.add_option("--gradescope-metadata", o->gradescope_metadata,
