@@ -10,6 +10,7 @@
 #include "assignments/feedback.h"
 #include "assignments/roster.h"
 #include "assignments/variants.h"
+#include "core/internal_error.h"
 
 namespace raygrade {
 
@@ -126,6 +127,8 @@ StudentIdentity AssignmentGrader::identify_uploader(
       if (!claimed || claimed->email.empty() || email_key(u.email) == email_key(claimed->email))
         return StudentIdentity{u.name, "", u.email};
     }
+    // uploaded_by(claimed->email) held above, so one of the accounts matched.
+    throw InternalError("identify_uploader: no uploading account matched the one it named");
   }
   // The roster entries of the accounts that uploaded the submission: who it is from.
   std::vector<const StudentIdentity*> own;
