@@ -9,6 +9,7 @@ import os
 import pathlib
 import shutil
 import subprocess
+import tempfile
 
 # The problem of the example's bank whose answer is typed as JSON (a ray tree).
 JSON_PROBLEM = "seed001-ray-tree"
@@ -57,3 +58,37 @@ def load_server(qdir, module_name):
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
+
+
+class Tally:
+    """Checks passed and failed, and the run's report: `N passed, M failed`."""
+
+    def __init__(self):
+        self.passed = 0
+        self.failures = []
+
+    def check(self, ok, what):
+        if ok:
+            self.passed += 1
+        else:
+            self.failures.append(what)
+        return ok
+
+    def report(self):
+        """Prints every failure and the count; the exit status (1 when any failed)."""
+        for f in self.failures:
+            print("FAIL:", f)
+        print(f"{self.passed} passed, {len(self.failures)} failed")
+        return 1 if self.failures else 0
+
+
+def run_on_courses(raygrade, assignment, name, tally, body):
+    """Exports both courses into a temporary folder and calls body(raygrade, courses, tmp) when
+    the exports went through (a failed export is a failure); the exit status."""
+    raygrade = str(pathlib.Path(raygrade).resolve())
+    with tempfile.TemporaryDirectory() as folder:
+        tmp = pathlib.Path(folder)
+        courses, fault = export_courses(raygrade, assignment, tmp, name)
+        if tally.check(fault is None, fault):
+            body(raygrade, courses, tmp)
+    return tally.report()

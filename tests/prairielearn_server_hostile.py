@@ -23,12 +23,10 @@ The last line is `N passed, M failed`; the exit status is 1 when M > 0.
 """
 import copy
 import json
-import os
-import pathlib
 import sys
 import tempfile
 
-from pl_course import JSON_PROBLEM, export_courses, load_server, short
+from pl_course import Tally, load_server, run_on_courses, short
 
 # The seed of the ordinary variant that hostile answers are submitted to.
 SEED = 7
@@ -104,17 +102,8 @@ print(out if isinstance(out, str) else json.dumps(out))
 '''
 FAKE_MODES = ["crash", "not-json", "no-submissions", "odd-parts", "null-score", "path-fault"]
 
-passed = 0
-failures = []
-
-
-def check(ok, what):
-    global passed
-    if ok:
-        passed += 1
-    else:
-        failures.append(what)
-    return ok
+TALLY = Tally()
+check = TALLY.check
 
 
 def fake_course(folder, mode):
@@ -282,28 +271,23 @@ def questions_of(course):
     return sorted(p for p in (course / "questions").glob("*/*") if (p / "server.py").is_file())
 
 
+def on_courses(raygrade, courses, tmp):
+    for mode in FAKE_MODES:
+        fake_course(tmp, mode)
+    folders = [(qdir, course) for course in courses for qdir in questions_of(course)]
+    questions = [Question(qdir, course, i) for i, (qdir, course) in enumerate(folders)]
+    check(any("json" in q.inputs.values() for q in questions),
+          "no question has a JSON input")
+    for q in questions:
+        q.params = draw(q, f"seed {SEED}") or {}
+        hostile_inputs(q)
+        hostile_seeds(q)
+        hostile_data(q)
+        hostile_options(q, tmp)
+
+
 def main(raygrade, assignment):
-    raygrade = str(pathlib.Path(raygrade).resolve())
-    with tempfile.TemporaryDirectory() as folder:
-        tmp = pathlib.Path(folder)
-        courses, fault = export_courses(raygrade, assignment, tmp, "hostile-json")
-        if check(fault is None, fault):
-            for mode in FAKE_MODES:
-                fake_course(tmp, mode)
-            folders = [(qdir, course) for course in courses for qdir in questions_of(course)]
-            questions = [Question(qdir, course, i) for i, (qdir, course) in enumerate(folders)]
-            check(any("json" in q.inputs.values() for q in questions),
-                  "no question has a JSON input")
-            for q in questions:
-                q.params = draw(q, f"seed {SEED}") or {}
-                hostile_inputs(q)
-                hostile_seeds(q)
-                hostile_data(q)
-                hostile_options(q, tmp)
-    for f in failures:
-        print("FAIL:", f)
-    print(f"{passed} passed, {len(failures)} failed")
-    return 1 if failures else 0
+    return run_on_courses(raygrade, assignment, "hostile-json", TALLY, on_courses)
 
 
 if __name__ == "__main__":

@@ -33,12 +33,10 @@ import copy
 import html.parser
 import json
 import math
-import pathlib
 import random
 import sys
-import tempfile
 
-from pl_course import JSON_PROBLEM, export_courses, load_server
+from pl_course import Tally, load_server, run_on_courses
 
 SEEDS = [7, 1234567, 2**31 - 1]
 TEST_TYPES = ["correct", "incorrect", "invalid"]
@@ -66,17 +64,8 @@ PROPS = {
     "answers_names": (dict, {"prepare"}, {"prepare"}),
 }
 
-passed = 0
-failures = []
-
-
-def check(ok, what):
-    global passed
-    if ok:
-        passed += 1
-    else:
-        failures.append(what)
-    return ok
+TALLY = Tally()
+check = TALLY.check
 
 
 def short(value, most=300):
@@ -476,22 +465,17 @@ def odd_tests(q, tmp):
                   f"{label}: {short({k: repr(data.get(k)) for k in types})}")
 
 
+def on_courses(raygrade, courses, tmp):
+    folders = [q for c in courses for q in sorted(c.glob("questions/*/*"))]
+    check(len(folders) > 1, f"no questions exported: {folders}")
+    for index, qdir in enumerate(folders):
+        q = Question(qdir, qdir.parent.parent.parent, index)
+        run_tests(q)
+        odd_tests(q, tmp)
+
+
 def main(raygrade, assignment):
-    raygrade = str(pathlib.Path(raygrade).resolve())
-    with tempfile.TemporaryDirectory() as folder:
-        tmp = pathlib.Path(folder)
-        courses, fault = export_courses(raygrade, assignment, tmp, "tester-json")
-        if check(fault is None, fault):
-            folders = [q for c in courses for q in sorted(c.glob("questions/*/*"))]
-            check(len(folders) > 1, f"no questions exported: {folders}")
-            for index, qdir in enumerate(folders):
-                q = Question(qdir, qdir.parent.parent.parent, index)
-                run_tests(q)
-                odd_tests(q, tmp)
-    for f in failures:
-        print("FAIL:", f)
-    print(f"{passed} passed, {len(failures)} failed")
-    return 1 if failures else 0
+    return run_on_courses(raygrade, assignment, "tester-json", TALLY, on_courses)
 
 
 if __name__ == "__main__":
