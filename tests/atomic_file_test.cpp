@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "test_util.h"
 
 namespace raygrade {
 namespace {
@@ -39,12 +40,7 @@ class ScratchFolder {
   fs::path path_;
 };
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::read_all;
 
 TEST(AtomicFile, WritesTheBytes) {
   ScratchFolder dir;

@@ -18,7 +18,7 @@
 namespace raygrade {
 namespace {
 
-const std::string kSource = RAYGRADE_SOURCE_DIR;
+using testing::kSource;
 const std::string kBroken = kSource + "/tests/fixtures/broken-bank";
 const std::string kBrokenSolutions = kSource + "/tests/fixtures/broken-bank-solutions";
 

@@ -24,7 +24,7 @@ Cone capped_cone() { return Cone({0, 0, 0}, {0, 0, 1}, 1, 2, true); }
 
 const double kR5 = 1 / std::sqrt(5.0);
 
-void expect_hit(const Hit& h, double t, Vec3d point, Vec3d normal) {
+void expect_cone_hit(const Hit& h, double t, Vec3d point, Vec3d normal) {
   EXPECT_EQ(h.t, t);
   EXPECT_EQ(h.point, point);
   EXPECT_NEAR(h.normal.x, normal.x, 1e-15);
@@ -37,8 +37,8 @@ void expect_hit(const Hit& h, double t, Vec3d point, Vec3d normal) {
 TEST(Cone, RayAcrossTheSide) {
   auto x = open_cone().intersect(ray({-5, 0, 1}, {1, 0, 0}));
   ASSERT_EQ(x.hits.size(), 2u);
-  expect_hit(x.hits[0], 4.5, {-0.5, 0, 1}, {-2 * kR5, 0, kR5});
-  expect_hit(x.hits[1], 5.5, {0.5, 0, 1}, {2 * kR5, 0, kR5});
+  expect_cone_hit(x.hits[0], 4.5, {-0.5, 0, 1}, {-2 * kR5, 0, kR5});
+  expect_cone_hit(x.hits[1], 5.5, {0.5, 0, 1}, {2 * kR5, 0, kR5});
 }
 
 // Above the apex, at height 3: the same quadratic's roots lie on the other nappe (s = 3 > h):
@@ -51,7 +51,7 @@ TEST(Cone, OtherNappeIsNotTheCone) {
 TEST(Cone, TangentRayHitsOnce) {
   auto x = open_cone().intersect(ray({0.5, -5, 1}, {0, 1, 0}));
   ASSERT_EQ(x.hits.size(), 1u);
-  expect_hit(x.hits[0], 5, {0.5, 0, 1}, {2 * kR5, 0, kR5});
+  expect_cone_hit(x.hits[0], 5, {0.5, 0, 1}, {2 * kR5, 0, kR5});
 }
 
 // Through the apex across the axis, from (−2, 0, 2): a = 4, b = −16, c = 16, Δ = 0: t = 2 at
@@ -59,7 +59,7 @@ TEST(Cone, TangentRayHitsOnce) {
 TEST(Cone, ApexHasTheAxisAsNormal) {
   auto x = open_cone().intersect(ray({-2, 0, 2}, {1, 0, 0}));
   ASSERT_EQ(x.hits.size(), 1u);
-  expect_hit(x.hits[0], 2, {0, 0, 2}, {0, 0, 1});
+  expect_cone_hit(x.hits[0], 2, {0, 0, 2}, {0, 0, 1});
 }
 
 // Along the axis from (0, 0, −5): D⊥ = 0, a = −1, b = 14, c = −49, Δ = 0: the apex at t = 7.
@@ -67,11 +67,11 @@ TEST(Cone, ApexHasTheAxisAsNormal) {
 TEST(Cone, RayAlongTheAxisMeetsCapAndApex) {
   auto open = open_cone().intersect(ray({0, 0, -5}, {0, 0, 1}));
   ASSERT_EQ(open.hits.size(), 1u);
-  expect_hit(open.hits[0], 7, {0, 0, 2}, {0, 0, 1});
+  expect_cone_hit(open.hits[0], 7, {0, 0, 2}, {0, 0, 1});
   auto capped = capped_cone().intersect(ray({0, 0, -5}, {0, 0, 1}));
   ASSERT_EQ(capped.hits.size(), 2u);
-  expect_hit(capped.hits[0], 5, {0, 0, 0}, {0, 0, -1});
-  expect_hit(capped.hits[1], 7, {0, 0, 2}, {0, 0, 1});
+  expect_cone_hit(capped.hits[0], 5, {0, 0, 0}, {0, 0, -1});
+  expect_cone_hit(capped.hits[1], 7, {0, 0, 2}, {0, 0, 1});
 }
 
 // Parallel to the axis 0.5 from it: a = −1, b = 14, c = −48, Δ = 4: t = 6 (s = 1, kept) and
@@ -79,10 +79,10 @@ TEST(Cone, RayAlongTheAxisMeetsCapAndApex) {
 TEST(Cone, RayParallelToTheAxis) {
   auto open = open_cone().intersect(ray({0.5, 0, -5}, {0, 0, 1}));
   ASSERT_EQ(open.hits.size(), 1u);
-  expect_hit(open.hits[0], 6, {0.5, 0, 1}, {2 * kR5, 0, kR5});
+  expect_cone_hit(open.hits[0], 6, {0.5, 0, 1}, {2 * kR5, 0, kR5});
   auto capped = capped_cone().intersect(ray({0.5, 0, -5}, {0, 0, 1}));
   ASSERT_EQ(capped.hits.size(), 2u);
-  expect_hit(capped.hits[0], 5, {0.5, 0, 0}, {0, 0, -1});
+  expect_cone_hit(capped.hits[0], 5, {0.5, 0, 0}, {0, 0, -1});
 }
 
 // Through the rim from (−2, 0, −1) along (1, 0, 1): the side and the cap both meet (−1, 0, 0)
@@ -91,7 +91,7 @@ TEST(Cone, RayParallelToTheAxis) {
 TEST(Cone, RimBetweenSideAndCapIsListedOnce) {
   auto x = capped_cone().intersect(ray({-2, 0, -1}, {1, 0, 1}));
   ASSERT_EQ(x.hits.size(), 2u);
-  expect_hit(x.hits[0], 1, {-1, 0, 0}, {-2 * kR5, 0, kR5});
+  expect_cone_hit(x.hits[0], 1, {-1, 0, 0}, {-2 * kR5, 0, kR5});
   EXPECT_NEAR(x.hits[1].t, 7.0 / 3, 1e-15);
 }
 
@@ -99,7 +99,7 @@ TEST(Cone, RimBetweenSideAndCapIsListedOnce) {
 TEST(Cone, RayFromInsideLeavesOnce) {
   auto x = open_cone().intersect(ray({0, 0, 1}, {1, 0, 0}));
   ASSERT_EQ(x.hits.size(), 1u);
-  expect_hit(x.hits[0], 0.5, {0.5, 0, 1}, {2 * kR5, 0, kR5});
+  expect_cone_hit(x.hits[0], 0.5, {0.5, 0, 1}, {2 * kR5, 0, kR5});
 }
 
 // From (5, 0, 1) along +x the cone lies behind: roots t = −5.5 and −4.5.
@@ -125,8 +125,8 @@ TEST(Cone, FarRayNearTheApexTakesTheSide) {
   const double delta = 0x1p-28, x = 3 * 0x1p-30;
   Intersection hits = cone.intersect(ray({-1e6, 0, 4 - delta}, {1, 0, 0}));
   ASSERT_EQ(hits.hits.size(), 2u);
-  expect_hit(hits.hits[0], 1e6 - x, {-x, 0, 4 - delta}, {-0.8, 0, 0.6});
-  expect_hit(hits.hits[1], 1e6 + x, {x, 0, 4 - delta}, {0.8, 0, 0.6});
+  expect_cone_hit(hits.hits[0], 1e6 - x, {-x, 0, 4 - delta}, {-0.8, 0, 0.6});
+  expect_cone_hit(hits.hits[1], 1e6 + x, {x, 0, 4 - delta}, {0.8, 0, 0.6});
 }
 
 // A far ray along +z just beside the rim of the capped cone B = (0, 0, 0), r = 3, h = 4, from
@@ -141,7 +141,7 @@ TEST(Cone, FarRayBesideTheRimTakesTheRightParts) {
   EXPECT_TRUE(cone.intersect(ray({3 + delta, 0, -1e6}, {0, 0, 1})).hits.empty());
   Intersection in = cone.intersect(ray({3 - delta, 0, -1e6}, {0, 0, 1}));
   ASSERT_EQ(in.hits.size(), 2u);
-  expect_hit(in.hits[0], 1e6, {3 - delta, 0, 0}, {0, 0, -1});
+  expect_cone_hit(in.hits[0], 1e6, {3 - delta, 0, 0}, {0, 0, -1});
   EXPECT_NEAR(in.hits[1].t, 1e6 + 4 * delta / 3, 2e-10);
   EXPECT_NEAR(in.hits[1].normal.x, 0.8, 1e-15);
   EXPECT_NEAR(in.hits[1].normal.z, 0.6, 1e-15);

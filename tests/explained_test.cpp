@@ -16,7 +16,7 @@ namespace {
 
 using nlohmann::json;
 
-const std::string kSource = RAYGRADE_SOURCE_DIR;
+using testing::kSource;
 
 // Every answer one change away from `answer`: each number moved (x·1.1 + 0.3), each key of an
 // object left out, each array element left out.

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "fuzz_entry_points.h"
+#include "test_util.h"
 
 namespace raygrade {
 namespace {
@@ -25,12 +26,7 @@ std::vector<fs::path> inputs_in(const fs::path& folder) {
   return out;
 }
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::read_all;
 
 TEST(FuzzRegression, EveryTargetHasSeeds) {
   for (const auto& t : fuzz::targets()) {

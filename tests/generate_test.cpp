@@ -97,12 +97,7 @@ int run_command(const std::string& args) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-std::string read_all(const std::filesystem::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+using testing::read_all;
 
 // The acceptance run: `generate --seed 42 -n 200` twice gives the same bytes, and the bank it
 // writes passes `check` with its solutions.

@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "grading/submission.h"
 #include "run_binary.h"
+#include "test_util.h"
 
 namespace raygrade {
 namespace {
@@ -24,11 +25,11 @@ using testing::run_shell;
 using testing::TempDir;
 using testing::write_text;
 
-const std::string kSource = RAYGRADE_SOURCE_DIR;
+using testing::kSource;
 const std::string kExample = kSource + "/assignments/homework-rays.json";
 
 // A sphere answered right (the ray along +x meets the unit sphere at (2, 0, 0) at t = 1 and 3).
-constexpr const char* kBank = R"({"problems": [{"id": "sphere-1", "kind": "intersect",
+constexpr const char* kIntegrityBank = R"({"problems": [{"id": "sphere-1", "kind": "intersect",
     "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
     "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}}]})";
 constexpr const char* kAnswer =
@@ -36,7 +37,7 @@ constexpr const char* kAnswer =
 
 TEST(Integrity, AnOutputFolderAmongTheSubmissionsIsRefused) {
   TempDir dir("out-inside");
-  write_text(dir.path() / "bank.json", kBank);
+  write_text(dir.path() / "bank.json", kIntegrityBank);
   fs::create_directories(dir.path() / "subs");
   write_text(dir.path() / "subs" / "Ada.json", kAnswer);
   for (const std::string out : {"subs", "subs/pages", "subs/."}) {
@@ -62,7 +63,7 @@ TEST(Integrity, AnOutputFolderAmongTheSubmissionsIsRefused) {
 
 TEST(Integrity, ALinkSwappedInAfterTheWalkIsNotRead) {
   TempDir dir("swap");
-  write_text(dir.path() / "bank.json", kBank);
+  write_text(dir.path() / "bank.json", kIntegrityBank);
   fs::create_directories(dir.path() / "subs");
   write_text(dir.path() / "subs" / "Ada.json", kAnswer);
   // Another student's file outside the submissions, which a swap would make read as Ada's.
@@ -156,7 +157,7 @@ TEST(Integrity, TwoFilesOfOneStudentAreBothGradedAndNamed) {
 
 TEST(Integrity, AFullDiskIsAResourceFailureNotBadInput) {
   TempDir dir("full");
-  write_text(dir.path() / "bank.json", kBank);
+  write_text(dir.path() / "bank.json", kIntegrityBank);
   fs::create_directories(dir.path() / "subs");
   write_text(dir.path() / "subs" / "Ada.json", kAnswer);
   // Files may not grow past 200 bytes (a page is larger): each write fails as on a full disk
@@ -182,7 +183,7 @@ TEST(Integrity, ThreadsThatCannotStartCostNoSubmission) {
   if (!can_run_as_nobody()) GTEST_SKIP() << "setpriv cannot switch to the user nobody";
   TempDir dir("threads");
   fs::permissions(dir.path(), fs::perms::all);
-  write_text(dir.path() / "bank.json", kBank);
+  write_text(dir.path() / "bank.json", kIntegrityBank);
   fs::create_directories(dir.path() / "subs");
   for (int i = 0; i < 8; ++i)
     write_text(dir.path() / "subs" / ("s" + std::to_string(i) + ".json"), kAnswer);

@@ -30,7 +30,7 @@ std::vector<std::string> ids(const GradeResult& r) {
   return out;
 }
 
-const char* kSphere1 = R"({"id": "s1", "method": "algebraic",
+const char* kMistakesSphere = R"({"id": "s1", "method": "algebraic",
   "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
   "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}})";
 const char* kSphere2 = R"({"id": "s2",
@@ -54,7 +54,7 @@ std::string camera(const char* convention) {
 
 // b² + 4ac with a = 1, b = −4, c = 3: Δ = 28, t = 2 ± √7.
 TEST(Mistakes, DiscriminantSign) {
-  auto r = grade(kSphere1, R"j({"hits": [{"t": "2 + sqrt(7)"}]})j");
+  auto r = grade(kMistakesSphere, R"j({"hits": [{"t": "2 + sqrt(7)"}]})j");
   EXPECT_EQ(ids(r), std::vector<std::string>{"discriminant-sign"});
 }
 

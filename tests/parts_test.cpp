@@ -161,12 +161,12 @@ TEST(Parts, BarycentricWeightsAreGraded) {
 
 // Seed 000's sphere 1: O = 0, D = x, C = (2, 0, 0), r = 1: a = 1, b = 2D·(O − C) = −4, c = 3,
 // t = 1 and 3.
-const char* kSphere1 = R"({"id": "s1",
+const char* kPartsSphere = R"({"id": "s1",
   "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
   "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}})";
 
 TEST(Parts, ClaimedMissIsAnAnswer) {
-  GradeResult r = grade(kSphere1, R"({"hits": []})");
+  GradeResult r = grade(kPartsSphere, R"({"hits": []})");
   EXPECT_EQ(part(r, "t")->status, PartStatus::kWrong);
   EXPECT_TRUE(says(part(r, "t")->feedback, "You say the ray misses; it hits at t = 1 and 3."));
 }
@@ -174,7 +174,7 @@ TEST(Parts, ClaimedMissIsAnAnswer) {
 // b = +4 (the sign slip): Δ = 16 − 12 = 4, t = (−4 ∓ 2)/2 = −3 and −1, both behind the origin:
 // no hit follows from the student's own steps.
 TEST(Parts, ClaimedMissCarriesTheErrorForward) {
-  GradeResult r = grade(kSphere1, R"({"steps": {"a": 1, "b": 4, "c": 3}, "hits": []})");
+  GradeResult r = grade(kPartsSphere, R"({"steps": {"a": 1, "b": 4, "c": 3}, "hits": []})");
   EXPECT_DOUBLE_EQ(part(r, "t")->points, 1);  // half of 2
   EXPECT_TRUE(says(part(r, "t")->feedback, "error carried forward"));
   EXPECT_TRUE(r.carried_forward);
@@ -185,7 +185,7 @@ TEST(Parts, ClaimedMissCarriesTheErrorForward) {
 // them, the first method of a sphere), not an
 // internal error; when they carry none, they are left out as any part not asked.
 TEST(Parts, EmptyStepsAreMissing) {
-  std::string graded_steps = kSphere1;
+  std::string graded_steps = kPartsSphere;
   graded_steps.insert(graded_steps.size() - 1, R"(, "points": {"steps": 2})");
   GradeResult r = grade(graded_steps, R"({"steps": {}, "hits": []})");
   ASSERT_NE(part(r, "steps"), nullptr);
@@ -194,7 +194,7 @@ TEST(Parts, EmptyStepsAreMissing) {
   EXPECT_TRUE(says(part(r, "steps")->feedback, "the steps object is empty"));
   EXPECT_TRUE(says(part(r, "steps")->feedback, "t_ca"));
   EXPECT_TRUE(says(part(r, "steps")->feedback, "t_hc"));
-  EXPECT_EQ(part(grade(kSphere1, R"({"steps": {}, "hits": []})"), "steps"), nullptr);
+  EXPECT_EQ(part(grade(kPartsSphere, R"({"steps": {}, "hits": []})"), "steps"), nullptr);
 }
 
 // The plane x = 2 meets the ray along +x once, at t = 2. A second hit listed with a point and
@@ -333,7 +333,7 @@ TEST(Parts, UnaskedPartsAreNotMissingButNotedWhenGiven) {
   GradeResult r = grade(p, R"({"hits": [{"point": [1, 0, 0]}, {"point": [3, 0, 0]}]})");
   EXPECT_EQ(part(r, "t"), nullptr);
   EXPECT_DOUBLE_EQ(r.score, 1);
-  GradeResult normal = grade(kSphere1, R"({"hits": [{"t": 1, "normal": [-1, 0, 0]},
+  GradeResult normal = grade(kPartsSphere, R"({"hits": [{"t": 1, "normal": [-1, 0, 0]},
     {"t": 3, "normal": [1, 0, 0]}]})");
   EXPECT_TRUE(says(normal.notes, "normal is not asked"));
 }
@@ -349,7 +349,7 @@ TEST(Parts, EveryKindDeclaresItsParts) {
 
 // One mistyped id: the other answers are graded, and the unknown id is a finding.
 TEST(Parts, MistypedProblemIdIsAFinding) {
-  Problem p = testing::problem(kSphere1);
+  Problem p = testing::problem(kPartsSphere);
   std::vector<Problem> problems;
   problems.push_back(std::move(p));
   Assignment a(problems);

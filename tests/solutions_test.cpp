@@ -16,7 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kSource = RAYGRADE_SOURCE_DIR;
+using testing::kSource;
 
 const Problem& find(const Bank& bank, const std::string& id) {
   for (const auto& p : bank.problems) {

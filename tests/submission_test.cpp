@@ -14,7 +14,7 @@
 namespace raygrade {
 namespace {
 
-const std::string kSource = RAYGRADE_SOURCE_DIR;
+using testing::kSource;
 
 struct Samples {
   Bank bank = load_bank({kSource + "/problems"});

@@ -1,6 +1,9 @@
 // Helpers shared by the tests: building problems from JSON text.
 #pragma once
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "json/cursor.h"
@@ -8,6 +11,17 @@
 #include "shapes/shape.h"
 
 namespace raygrade::testing {
+
+// The source tree (the test data, the bank and the docs are read from it).
+inline const std::string kSource = RAYGRADE_SOURCE_DIR;
+
+// A file's bytes; empty when it cannot be read.
+inline std::string read_all(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
 
 inline std::shared_ptr<const SourceFile> json_file(const std::string& text) {
   return parse_json_text("test.json", text);

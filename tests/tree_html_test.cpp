@@ -37,8 +37,8 @@ TEST(RayTreeSolution, HtmlEmbedsTheTreeAsSvg) {
 }
 
 TEST(RayTreeSolution, JsonCarriesTheDot) {
-  std::string json = render(Format::kJson);
-  EXPECT_NE(json.find("digraph ray_tree"), std::string::npos);
+  std::string text = render(Format::kJson);
+  EXPECT_NE(text.find("digraph ray_tree"), std::string::npos);
 }
 
 TEST(RayTreeSolution, TextDrawsTheTree) {

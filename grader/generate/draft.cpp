@@ -7,7 +7,7 @@ Outcome choose_outcome(Prng& rng, std::optional<Outcome> asked, const std::vecto
   return asked ? *asked : rng.pick(can);
 }
 
-nlohmann::ordered_json hit_json(const KnownHit& h) {
+nlohmann::ordered_json known_hit_json(const KnownHit& h) {
   nlohmann::ordered_json j;
   j["t"] = number_json(h.t);
   j["point"] = vector_json(h.point);
@@ -30,7 +30,7 @@ Draft intersect_draft(const Vec3d& origin, const Vec3d& direction, nlohmann::ord
   d.fields["ray"] = {{"origin", vector_json(origin)}, {"direction", vector_json(direction)}};
   d.fields["object"] = std::move(object);
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (const auto& h : hits) list.push_back(hit_json(h));
+  for (const auto& h : hits) list.push_back(known_hit_json(h));
   d.fields["expected"]["hits"] = list;
   if (contained) d.fields["expected"]["contained"] = true;
   return d;

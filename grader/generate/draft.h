@@ -25,7 +25,7 @@ Draft intersect_draft(const Vec3d& origin, const Vec3d& direction, nlohmann::ord
                       const std::string& object_text, const std::vector<KnownHit>& hits,
                       bool contained = false);
 
-nlohmann::ordered_json hit_json(const KnownHit& h);
+nlohmann::ordered_json known_hit_json(const KnownHit& h);
 
 // "p(t) = (0, 0, 0) + t<1, 0, 0>".
 std::string ray_text(const Vec3d& origin, const Vec3d& direction);

@@ -54,7 +54,7 @@ Draft make_first_hit(Prng& rng, std::optional<Outcome> asked) {
   if (first >= 0) {
     double t = entries[first];
     draft.fields["expected"]["object"] = objects[first]["name"];
-    draft.fields["expected"]["hits"] = {hit_json({t, origin + t * d})};
+    draft.fields["expected"]["hits"] = {known_hit_json({t, origin + t * d})};
   } else {
     draft.fields["expected"]["object"] = nullptr;
     draft.fields["expected"]["hits"] = nlohmann::ordered_json::array();

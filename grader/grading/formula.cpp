@@ -14,6 +14,8 @@
 
 namespace raygrade {
 
+using FOp = Formula::Op;
+
 void SymbolTable::add(const std::string& name, const std::vector<std::string>& aliases) {
   int slot = static_cast<int>(names_.size());
   names_.push_back(name);
@@ -38,44 +40,44 @@ double Formula::evaluate(const std::vector<double>& values) const {
   int top = 0;  // number of values on the stack
   for (const auto& in : program) {
     switch (in.op) {
-      case Op::kNumber: s[top++] = in.number; break;
-      case Op::kSymbol:
+      case FOp::kNumber: s[top++] = in.number; break;
+      case FOp::kSymbol:
         s[top++] = in.slot < static_cast<int>(values.size())
                        ? values[static_cast<std::size_t>(in.slot)]
                        : std::numeric_limits<double>::quiet_NaN();
         break;
-      case Op::kAdd:
+      case FOp::kAdd:
         --top;
         s[top - 1] += s[top];
         break;
-      case Op::kSub:
+      case FOp::kSub:
         --top;
         s[top - 1] -= s[top];
         break;
-      case Op::kMul:
+      case FOp::kMul:
         --top;
         s[top - 1] *= s[top];
         break;
-      case Op::kDiv:
+      case FOp::kDiv:
         --top;
         s[top - 1] /= s[top];
         break;
-      case Op::kPow:
+      case FOp::kPow:
         --top;
         s[top - 1] = std::pow(s[top - 1], s[top]);
         break;
-      case Op::kNeg: s[top - 1] = -s[top - 1]; break;
-      case Op::kSqrt: s[top - 1] = std::sqrt(s[top - 1]); break;
-      case Op::kAbs: s[top - 1] = std::abs(s[top - 1]); break;
-      case Op::kSin: s[top - 1] = std::sin(s[top - 1]); break;
-      case Op::kCos: s[top - 1] = std::cos(s[top - 1]); break;
-      case Op::kTan: s[top - 1] = std::tan(s[top - 1]); break;
-      case Op::kExp: s[top - 1] = std::exp(s[top - 1]); break;
-      case Op::kLog: s[top - 1] = std::log(s[top - 1]); break;
-      case Op::kAsin: s[top - 1] = std::asin(s[top - 1]); break;
-      case Op::kAcos: s[top - 1] = std::acos(s[top - 1]); break;
-      case Op::kAtan: s[top - 1] = std::atan(s[top - 1]); break;
-      case Op::kAtan2:
+      case FOp::kNeg: s[top - 1] = -s[top - 1]; break;
+      case FOp::kSqrt: s[top - 1] = std::sqrt(s[top - 1]); break;
+      case FOp::kAbs: s[top - 1] = std::abs(s[top - 1]); break;
+      case FOp::kSin: s[top - 1] = std::sin(s[top - 1]); break;
+      case FOp::kCos: s[top - 1] = std::cos(s[top - 1]); break;
+      case FOp::kTan: s[top - 1] = std::tan(s[top - 1]); break;
+      case FOp::kExp: s[top - 1] = std::exp(s[top - 1]); break;
+      case FOp::kLog: s[top - 1] = std::log(s[top - 1]); break;
+      case FOp::kAsin: s[top - 1] = std::asin(s[top - 1]); break;
+      case FOp::kAcos: s[top - 1] = std::acos(s[top - 1]); break;
+      case FOp::kAtan: s[top - 1] = std::atan(s[top - 1]); break;
+      case FOp::kAtan2:
         --top;
         s[top - 1] = std::atan2(s[top - 1], s[top]);
         break;
@@ -98,8 +100,6 @@ bool read_double(std::string_view text, double& v) {
   return !(errno == ERANGE && (std::isinf(v) || v == 0));
 }
 
-using Op = Formula::Op;
-
 // Characters beyond ASCII that students paste from worked solutions and slides.
 struct Glyph {
   std::string_view utf8;
@@ -111,12 +111,12 @@ constexpr Glyph kGlyphs[] = {{"\u2212", '-'}, {"\u00b7", '*'}, {"\u22c5", '*'},
 
 struct Function {
   std::string_view name;
-  Op op;
+  FOp op;
 };
-constexpr Function kFunctions[] = {{"sqrt", Op::kSqrt}, {"abs", Op::kAbs},   {"sin", Op::kSin},
-                                   {"cos", Op::kCos},   {"tan", Op::kTan},   {"exp", Op::kExp},
-                                   {"ln", Op::kLog},    {"log", Op::kLog},   {"asin", Op::kAsin},
-                                   {"acos", Op::kAcos}, {"atan", Op::kAtan}, {"atan2", Op::kAtan2}};
+constexpr Function kFunctions[] = {
+    {"sqrt", FOp::kSqrt}, {"abs", FOp::kAbs},   {"sin", FOp::kSin},   {"cos", FOp::kCos},
+    {"tan", FOp::kTan},   {"exp", FOp::kExp},   {"ln", FOp::kLog},    {"log", FOp::kLog},
+    {"asin", FOp::kAsin}, {"acos", FOp::kAcos}, {"atan", FOp::kAtan}, {"atan2", FOp::kAtan2}};
 
 // Degrees: "30deg", "30 deg" or "30°" is 30·π/180 (the trigonometric functions take radians).
 constexpr std::string_view kDegreeSign = "\u00b0";
@@ -210,12 +210,12 @@ class Parser {
   }
 
   // --- emitting
-  void emit(Op op, double number = 0, int slot = 0) {
+  void emit(FOp op, double number = 0, int slot = 0) {
     f_.program.push_back({op, slot, number});
-    if (op == Op::kNumber || op == Op::kSymbol) {
+    if (op == FOp::kNumber || op == FOp::kSymbol) {
       f_.stack_size = std::max(f_.stack_size, ++depth_of_stack_);
-    } else if (op == Op::kAdd || op == Op::kSub || op == Op::kMul || op == Op::kDiv ||
-               op == Op::kPow || op == Op::kAtan2) {
+    } else if (op == FOp::kAdd || op == FOp::kSub || op == FOp::kMul || op == FOp::kDiv ||
+               op == FOp::kPow || op == FOp::kAtan2) {
       --depth_of_stack_;
     }
   }
@@ -240,7 +240,7 @@ class Parser {
       if (failed_ || (c != '+' && c != '-')) return;
       advance();
       term(depth);
-      emit(c == '+' ? Op::kAdd : Op::kSub);
+      emit(c == '+' ? FOp::kAdd : FOp::kSub);
     }
   }
 
@@ -258,10 +258,10 @@ class Parser {
       if (c == '*' || c == '/') {
         advance();
         unary(depth);
-        emit(c == '*' ? Op::kMul : Op::kDiv);
+        emit(c == '*' ? FOp::kMul : FOp::kDiv);
       } else if (starts_primary(c)) {  // implicit product: 2sqrt(3), 2(px + 1), 2 px
         unary(depth);
-        emit(Op::kMul);
+        emit(FOp::kMul);
       } else {
         return;
       }
@@ -275,7 +275,7 @@ class Parser {
     if (c == '-' || c == '+') {
       advance();
       unary(depth + 1);
-      if (c == '-') emit(Op::kNeg);
+      if (c == '-') emit(FOp::kNeg);
       return;
     }
     power(depth + 1);
@@ -289,7 +289,7 @@ class Parser {
     if (caret || stars) {
       pos_ += caret ? 1 : 2;
       unary(depth + 1);  // right-associative; 2^-1 is allowed
-      emit(Op::kPow);
+      emit(FOp::kPow);
     }
   }
 
@@ -308,8 +308,8 @@ class Parser {
     }
     if (width == 0) return false;
     pos_ = at + width;
-    emit(Op::kNumber, kRadiansPerDegree);
-    emit(Op::kMul);
+    emit(FOp::kNumber, kRadiansPerDegree);
+    emit(FOp::kMul);
     return true;
   }
 
@@ -320,8 +320,8 @@ class Parser {
       char c = peek();
       if (failed_ || (c != '\x02' && c != '\x03')) return;
       advance();
-      emit(Op::kNumber, c == '\x02' ? 2 : 3);
-      emit(Op::kPow);
+      emit(FOp::kNumber, c == '\x02' ? 2 : 3);
+      emit(FOp::kPow);
     }
   }
 
@@ -340,10 +340,10 @@ class Parser {
     } else if (c == '\x01') {  // √x or √(x)
       advance();
       postfix(depth + 1);
-      emit(Op::kSqrt);
+      emit(FOp::kSqrt);
     } else if (c == '\x04') {
       advance();
-      emit(Op::kNumber, std::numbers::pi);
+      emit(FOp::kNumber, std::numbers::pi);
     } else if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
       number();
     } else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
@@ -381,11 +381,11 @@ class Parser {
       fail(pos_, "a second decimal point");
       return;
     }
-    emit(Op::kNumber, v);
+    emit(FOp::kNumber, v);
   }
 
   // f(a, b): the two operands, then the operation.
-  void two_arguments(int depth, Op op) {
+  void two_arguments(int depth, FOp op) {
     advance();  // '('
     expression(depth + 1);
     skip_space();
@@ -422,19 +422,19 @@ class Parser {
         fail(pos_, fmt::format("expected '(' after {}", name));
         return;
       }
-      if (fn.op == Op::kAtan2) return two_arguments(depth + 1, fn.op);
+      if (fn.op == FOp::kAtan2) return two_arguments(depth + 1, fn.op);
       primary(depth + 1);
       emit(fn.op);
       return;
     }
     if (name == "pi") {
-      emit(Op::kNumber, std::numbers::pi);
+      emit(FOp::kNumber, std::numbers::pi);
       return;
     }
     int slot = symbols_ ? symbols_->find(name) : -1;
     if (slot >= 0) {
       f_.uses_symbols = true;
-      emit(Op::kSymbol, 0, slot);
+      emit(FOp::kSymbol, 0, slot);
       return;
     }
     std::vector<std::string> known;

@@ -9,12 +9,6 @@
 #include "scenes/optics.h"
 
 namespace raygrade {
-namespace {
-
-double degrees(double radians) { return radians * 180 / std::numbers::pi; }
-
-}  // namespace
-
 std::unique_ptr<Task> FresnelTask::read(const Cursor& problem) {
   std::string model = problem.string_or("model", "exact");
   FresnelModel m = model == "schlick" ? FresnelModel::kSchlick : FresnelModel::kExact;

@@ -9,12 +9,6 @@
 #include "scenes/optics.h"
 
 namespace raygrade {
-namespace {
-
-double degrees(double radians) { return radians * 180 / std::numbers::pi; }
-
-}  // namespace
-
 std::unique_ptr<Task> RefractTask::read(const Cursor& problem) {
   Vec3d d = problem.at("direction").nonzero_vec3();
   Vec3d n = problem.at("normal").nonzero_vec3();

@@ -101,7 +101,7 @@ std::vector<std::string> terms(const std::string& row) {
 // a sum, each its own <math>, so that a chain too long for the page breaks before an "=", a
 // "+" or a "−" (the browser wraps the links like words; MathML Core, as browsers implement
 // it, never breaks a formula by itself).
-std::string step_math(const StepView& v, const NumberFormat& numbers) {
+std::string html_step_math(const StepView& v, const NumberFormat& numbers) {
   const Step& s = *v.step;
   RenderOptions plain{nullptr, numbers, false};
   RenderOptions subst{&v.before, numbers, false};
@@ -125,8 +125,8 @@ std::string step_math(const StepView& v, const NumberFormat& numbers) {
   return out + "</div>";
 }
 
-void render_part(std::string& out, const SolutionPart& part, const NumberFormat& numbers,
-                 const char* tag) {
+void html_part(std::string& out, const SolutionPart& part, const NumberFormat& numbers,
+               const char* tag) {
   out += fmt::format("<{0}>{1}</{0}>\n", tag, text_html(part_title(part)));
   for (const auto& f : part.figures) {
     // The kind drew it, with its text escaped (Figure::svg's contract).
@@ -158,7 +158,7 @@ void render_part(std::string& out, const SolutionPart& part, const NumberFormat&
              "</code>";
       if (!v.step->note.empty())
         out += " <span class=\"note\">" + text_html(v.step->note) + "</span>";
-      out += "</p>\n" + step_math(v, numbers) + "</li>\n";
+      out += "</p>\n" + html_step_math(v, numbers) + "</li>\n";
     }
   }
   if (in_steps) out += "</ol>\n";
@@ -190,8 +190,7 @@ void render_article(std::string& out, const Solution& solution) {
     bool heading = several || m.parts.size() > 1;
     out += "<section class=\"method\">\n";
     if (heading) out += "<h2>Method: " + html_escape(m.method) + "</h2>\n";
-    for (const auto& part : m.parts)
-      render_part(out, part, solution.numbers, heading ? "h3" : "h2");
+    for (const auto& part : m.parts) html_part(out, part, solution.numbers, heading ? "h3" : "h2");
     out += "</section>\n";
   }
   out += "</article>\n";

@@ -28,7 +28,7 @@ std::string fence_safe(std::string s) {
   return out;
 }
 
-std::string step_math(const StepView& v, const NumberFormat& numbers) {
+std::string markdown_step_math(const StepView& v, const NumberFormat& numbers) {
   const Step& s = *v.step;
   RenderOptions plain{nullptr, numbers, false};
   RenderOptions subst{&v.before, numbers, false};
@@ -39,8 +39,8 @@ std::string step_math(const StepView& v, const NumberFormat& numbers) {
   return m + value_latex(s.value, result);
 }
 
-void render_part(std::string& out, const SolutionPart& part, const NumberFormat& numbers,
-                 const char* level) {
+void markdown_part(std::string& out, const SolutionPart& part, const NumberFormat& numbers,
+                   const char* level) {
   out += fmt::format("\n{} {}\n", level, markdown_escape(one_line(part_title(part))));
   for (const auto& f : part.figures) {
     if (!f.caption.empty()) out += "\n*" + markdown_escape(one_line(f.caption)) + "*\n";
@@ -71,7 +71,7 @@ void render_part(std::string& out, const SolutionPart& part, const NumberFormat&
     for (const auto& v : group.steps) {
       out += "\n**`" + v.step->name + "`**";
       if (!v.step->note.empty()) out += " — " + markdown_escape(one_line(v.step->note));
-      out += "\n\n$$" + step_math(v, numbers) + "$$\n";
+      out += "\n\n$$" + markdown_step_math(v, numbers) + "$$\n";
     }
   }
   if (!part.derivation.sentences.empty()) {
@@ -101,7 +101,7 @@ std::string render_markdown(const Solution& solution, const DocumentOptions& opt
     bool heading = several || m.parts.size() > 1;
     if (heading) out += "\n## Method: " + markdown_escape(m.method) + "\n";
     for (const auto& part : m.parts)
-      render_part(out, part, solution.numbers, heading ? "###" : "##");
+      markdown_part(out, part, solution.numbers, heading ? "###" : "##");
   }
   return out;
 }

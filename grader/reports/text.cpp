@@ -22,7 +22,7 @@ std::string step_line(const StepView& v, const NumberFormat& numbers) {
   return line + value_text(s.value, result);
 }
 
-void render_part(std::string& out, const SolutionPart& part, const NumberFormat& numbers) {
+void text_part(std::string& out, const SolutionPart& part, const NumberFormat& numbers) {
   const Derivation& d = part.derivation;
   out += "\n" + text_escape(part_title(part)) + "\n";
   for (const auto& f : part.figures) {
@@ -80,7 +80,7 @@ std::string render_text(const Solution& solution) {
   bool several = solution.methods.size() > 1;
   for (const auto& m : solution.methods) {
     if (several) out += "\n== Method: " + m.method + " ==\n";
-    for (const auto& part : m.parts) render_part(out, part, solution.numbers);
+    for (const auto& part : m.parts) text_part(out, part, solution.numbers);
   }
   return out;
 }
@@ -88,7 +88,7 @@ std::string render_text(const Solution& solution) {
 std::string render_text(const Problem& problem, const std::vector<SolutionPart>& parts,
                         const NumberFormat& numbers) {
   std::string out = header(problem);
-  for (const auto& part : parts) render_part(out, part, numbers);
+  for (const auto& part : parts) text_part(out, part, numbers);
   return out;
 }
 

@@ -2,6 +2,7 @@
 // reflection, and the Phong terms of one light.
 #pragma once
 
+#include <numbers>
 #include <optional>
 
 #include "math/vec3.h"
@@ -41,5 +42,8 @@ struct PhongLight {
 };
 PhongLight phong_light(const Vec3d& n, const Vec3d& l, const Vec3d& v, double intensity, double k_d,
                        double k_s, double shininess);
+
+// An angle in radians, in degrees.
+inline double degrees(double radians) { return radians * 180 / std::numbers::pi; }
 
 }  // namespace raygrade
