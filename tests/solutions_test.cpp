@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 
 #include "reports/json_report.h"
 #include "reports/render.h"
@@ -247,6 +248,31 @@ TEST_F(SolutionsFolder, WritesChecksAndRemovesOnlyGeneratedFiles) {
   EXPECT_FALSE(fs::exists(dir_ / "old.md"));
   EXPECT_TRUE(fs::exists(dir_ / "notes.md"));
   EXPECT_TRUE(check_solution_folder(dir_.string(), files).written.empty());
+}
+
+// A hit on the edge between the first two vertices: the ray from (1, 0, −5) along +z meets
+// the triangle (0,0,0), (2,0,0), (0,2,0) at (1, 0, 0), t = 5, halfway along that edge, so the
+// weights are (½, ½, 0). The third comes out of the arithmetic as −0, which is never written.
+TEST(SolveJson, NoNegativeZero) {
+  testing::TempDir dir("solve-negative-zero");
+  testing::write_text(dir.path() / "edge.json", R"({"problems": [{"id": "edge",
+      "kind": "intersect",
+      "object": {"type": "triangle", "vertices": [[0, 0, 0], [2, 0, 0], [0, 2, 0]]},
+      "ray": {"origin": [1, 0, -5], "direction": [0, 0, 1]}}]})");
+  for (const char* format : {"json", "txt", "md", "html"}) {
+    auto r = testing::run_raygrade(fmt::format("solve edge.json --format {}", format), dir.path());
+    ASSERT_EQ(r.exit_code, 0) << format << ": " << r.err;
+    // A zero with a minus sign: -0, −0, -0.0, −0.000 (not −0.447).
+    static const std::regex negative_zero(R"((^|[^\d.])(-|−)0(\.0+)?($|[^\d.]))");
+    std::smatch m;
+    EXPECT_FALSE(std::regex_search(r.out, m, negative_zero)) << format << ": " << m.str();
+    if (std::string(format) == "json") {
+      auto hit = nlohmann::json::parse(r.out)["solutions"][0]["answer"]["hits"][0];
+      EXPECT_EQ(hit["t"], 5.0);
+      EXPECT_EQ(hit["barycentric"], nlohmann::json::array({0.5, 0.5, 0.0}));
+      EXPECT_FALSE(std::signbit(hit["barycentric"][2].get<double>()));
+    }
+  }
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "assignments/variants.h"
 #include "core/escape.h"
 #include "grading/formula.h"
+#include "json/numbers.h"
 #include "json/source.h"
 #include "reports/svg_figure.h"
 
@@ -21,7 +22,7 @@ using json = nlohmann::json;
 
 // JSON inside a <script> element: no "<", ">" or "&" that could end it or start markup.
 std::string script_json(const json& j) {
-  std::string text = j.dump(-1, ' ', false, json::error_handler_t::replace);
+  std::string text = without_negative_zeros(j).dump(-1, ' ', false, json::error_handler_t::replace);
   std::string out;
   out.reserve(text.size());
   for (char c : text) {

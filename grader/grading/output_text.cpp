@@ -5,6 +5,7 @@
 
 #include "core/escape.h"
 #include "grading/outputs.h"
+#include "json/numbers.h"
 
 namespace raygrade {
 
@@ -52,7 +53,8 @@ std::string text_report(const SubmissionGrade& g) {
 }
 
 std::string json_text(const nlohmann::json& j, int indent) {
-  std::string dumped = j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+  std::string dumped =
+      without_negative_zeros(j).dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
   // nlohmann writes C0 controls as \u00XX already; C1 controls (U+0080 to U+009F, bytes C2 80
   // to C2 9F) and DEL it writes raw. Outside strings the text is ASCII, so every such byte is
   // inside a string, where an escape means the same character.

@@ -5,6 +5,7 @@
 
 #include "core/escape.h"
 #include "core/internal_error.h"
+#include "json/numbers.h"
 #include "reports/html.h"
 #include "reports/json_report.h"
 #include "reports/text.h"
@@ -46,6 +47,7 @@ std::string json_document(const std::vector<const Solution*>& solutions,
     body = {{"solutions", nlohmann::json::array()}};
     for (const Solution* s : solutions) body["solutions"].push_back(solution_json(*s));
   }
+  drop_negative_zeros(body);
   std::string dumped = body.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
   if (options.generated.empty()) return dumped + "\n";
   // The note goes first, on the first line, like the other formats' notes.

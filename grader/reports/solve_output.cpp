@@ -1,6 +1,7 @@
 // The output of raygrade solve.
 #include "reports/solve_output.h"
 
+#include "json/numbers.h"
 #include "reports/json_report.h"
 #include "reports/render.h"
 
@@ -49,7 +50,7 @@ std::string solve_output(Bank& bank, const SolveOutputOptions& o,
       for (const auto& e : bank.errors) errors.push_back(diagnostic_json(e));
       out["errors"] = errors;
     }
-    return out.dump(2) + "\n";
+    return without_negative_zeros(std::move(out)).dump(2) + "\n";
   }
   std::vector<const Solution*> list;
   for (const auto& w : worked) list.push_back(&w);
