@@ -22,7 +22,7 @@ constexpr double kMaxAmplification = 100;
 // unit in its last digit is the uncertainty it carries.
 constexpr int kMinRoundedDigits = 3;
 
-struct Input {
+struct ConditioningInput {
   std::string relative;  // its JSON pointer inside the problem
   std::string literal;   // as printed
   double x = 0;
@@ -44,21 +44,21 @@ class Conditioning {
         scale_(std::max(1.0, answer_magnitude(reference))),
         exact_boundary_(exact_boundary) {}
 
-  std::vector<Input> inputs;
+  std::vector<ConditioningInput> inputs;
 
   // The problem solved with the inputs `members` moved by half a unit each, in direction
   // `sign` (alternating within a group, so that moving the ray and the object together does
   // not cancel out).
   Finding moved(const std::vector<std::size_t>& members, double sign) const {
     Finding f;
-    const Input& first = inputs[members.front()];
+    const ConditioningInput& first = inputs[members.front()];
     f.relative = first.relative;
     auto file = std::make_shared<SourceFile>();
     file->name = p_.file;
     file->root = p_.source;
     double relative_move = 0;
     for (std::size_t k = 0; k < members.size(); ++k) {
-      const Input& in = inputs[members[k]];
+      const ConditioningInput& in = inputs[members[k]];
       double s = k % 2 == 0 ? sign : -sign;
       file->root[nlohmann::json::json_pointer(in.relative)] = in.x + s * in.h;
       relative_move = std::max(relative_move, in.h / std::max(1.0, std::abs(in.x)));
@@ -141,7 +141,7 @@ std::vector<Diagnostic> check_conditioning(const Problem& p, const nlohmann::jso
       if (it->first.compare(0, prefix.size(), prefix) != 0) break;
       if (it->first.size() > prefix.size() && it->first[prefix.size()] != '/') continue;
       if (significant_digits(it->second) < kMinRoundedDigits) continue;
-      Input in;
+      ConditioningInput in;
       in.relative = it->first.substr(p.path.size());
       in.literal = it->second;
       in.x = p.source[nlohmann::json::json_pointer(in.relative)].get<double>();

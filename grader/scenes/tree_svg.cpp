@@ -18,7 +18,7 @@ constexpr double kCharWidth = 7;
 constexpr double kLine = 20;
 constexpr double kRow = 110;    // px per generation
 constexpr double kRadius = 18;  // of a hit node's circle
-constexpr double kMargin = 20;
+constexpr double kTreeMargin = 20;
 
 struct Placed {
   double x = 0, y = 0;
@@ -41,8 +41,8 @@ class Layout {
   }
 
  private:
-  double x_of(double leaf) const { return kMargin + (leaf + 0.5) * column_; }
-  static double y_of(int depth) { return kMargin + 30 + depth * kRow; }
+  double x_of(double leaf) const { return kTreeMargin + (leaf + 0.5) * column_; }
+  static double y_of(int depth) { return kTreeMargin + 30 + depth * kRow; }
 
   // Leaves left to right: the node's shadow rays, then its children; the node sits centred
   // above them.
@@ -101,15 +101,15 @@ std::string line(const Placed& a, const Placed& b, const char* style) {
 std::string tree_svg(const RayTree& tree, const Scene& scene, const std::vector<Vec3d>* colours) {
   double column = column_width(tree, scene);
   Layout layout(tree, column);
-  double width = 2 * kMargin + layout.leaves() * column;
+  double width = 2 * kTreeMargin + layout.leaves() * column;
   // Room below the deepest row for its two lines of text (kRadius + 2·kLine and descenders).
-  double height = 2 * kMargin + 80 + layout.depth() * kRow;
+  double height = 2 * kTreeMargin + 80 + layout.depth() * kRow;
   std::string out = fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"ray-tree\" width=\"{0:.0f}\" "
       "height=\"{1:.0f}\" viewBox=\"0 0 {0:.0f} {1:.0f}\" font-family=\"sans-serif\" "
       "font-size=\"12\" role=\"img\">\n<title>Ray tree</title>\n",
       width, height);
-  Placed eye{layout.node(0).x, kMargin + 10};
+  Placed eye{layout.node(0).x, kTreeMargin + 10};
   out += fmt::format(
       "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"40\" height=\"20\" fill=\"#eee\" "
       "stroke=\"#333\"/>\n",

@@ -342,7 +342,7 @@ AccuracyCase cylinder_case(std::string id, std::string group, Vec3d o, Vec3d d, 
                    r);
 }
 
-void grazing(std::vector<AccuracyCase>& out, SplitMix& rng) {
+void cylinder_grazing(std::vector<AccuracyCase>& out, SplitMix& rng) {
   for (int i = 0; i < 60; ++i) {
     Vec3d base{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
     Vec3d axis = i % 3 == 0 ? Vec3d{0, 0, 1} : rng.unit_vector();
@@ -391,7 +391,7 @@ void small_far(std::vector<AccuracyCase>& out, SplitMix& rng) {
 
 void Cylinder::Ladder::hard_cases(int round, SplitMix& rng, std::vector<AccuracyCase>& out) {
   switch (round) {
-    case 0: grazing(out, rng); break;
+    case 0: cylinder_grazing(out, rng); break;
     case 1:
       // Exact tangents: integer data, the discriminant is exactly zero.
       out.push_back(

@@ -246,7 +246,7 @@ void huge_spheres(std::vector<AccuracyCase>& out, SplitMix& rng) {
   }
 }
 
-void grazing(std::vector<AccuracyCase>& out, SplitMix& rng) {
+void sphere_grazing(std::vector<AccuracyCase>& out, SplitMix& rng) {
   for (int i = 0; i < 80; ++i) {
     Vec3d c{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
     double r = rng.uniform(0.5, 2);
@@ -329,7 +329,7 @@ void Sphere::Ladder::hard_cases(int round, SplitMix& rng, std::vector<AccuracyCa
     case 0:
       far_spheres(out, rng);
       huge_spheres(out, rng);
-      grazing(out, rng);
+      sphere_grazing(out, rng);
       break;
     case 1:
     case 2: exact_cases(round, out); break;
