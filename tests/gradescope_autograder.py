@@ -67,8 +67,15 @@ def metadata(email, name, due="2026-12-04T23:59:00.000000+00:00", extension=None
     }
 
 
-def run_upload(root, files, meta):
-    """One run of run_autograder in a fresh submission/ and results/; returns results.json."""
+# When the uploads are graded: after the submission (2026-11-30, 14:22 in California), before
+# the due date (2026-12-04) unless a test says otherwise.
+GRADED_AT = "2026-11-30T22:30:00Z"
+AFTER_DUE = "2026-12-05T12:00:00Z"
+
+
+def run_upload(root, files, meta, now=GRADED_AT):
+    """One run of run_autograder in a fresh submission/ and results/, graded at the time `now`
+    (RAYGRADE_NOW); returns results.json."""
     for d in ("submission", "results"):
         shutil.rmtree(root / d, ignore_errors=True)
         (root / d).mkdir()
@@ -77,29 +84,41 @@ def run_upload(root, files, meta):
         (root / "submission" / name).write_text(text, encoding="utf-8")
     (root / "submission_metadata.json").write_text(json.dumps(meta), encoding="utf-8")
     proc = subprocess.run([str(root / "run_autograder")], cwd=root, capture_output=True,
-                          text=True, env={"AUTOGRADER_ROOT": str(root), "PATH": "/usr/bin:/bin"},
+                          text=True, env={"AUTOGRADER_ROOT": str(root), "PATH": "/usr/bin:/bin",
+                                         "RAYGRADE_NOW": now},
                           timeout=120)
     check(proc.returncode == 0, f"run_autograder exited with {proc.returncode}: {proc.stderr}")
     return json.loads((root / "results" / "results.json").read_text(encoding="utf-8"))
+
+
+def total_shown(r):
+    """Whether a student sees their total score in `r`, as Gradescope's specification says
+    (docs/specs.md, "Controlling Test Case Visibility"): not while any test waits for a later
+    time (after_due_date, after_published); hidden tests, which carry no points, do not count;
+    nor when the whole result waits."""
+    if r.get("visibility", "visible") != "visible":
+        return False
+    return not [t for t in r.get("tests", [])
+                if t.get("visibility", r.get("visibility", "visible")) in
+                ("after_due_date", "after_published")]
 
 
 def check_results(r, what):
     check(set(r) <= TOP_KEYS, f"{what}: undocumented keys {set(r) - TOP_KEYS}")
     check(r.get("output_format") == "text", f"{what}: output_format is not text")
     check(r.get("visibility") in VISIBILITY, f"{what}: visibility {r.get('visibility')}")
+    check(total_shown(r), f"{what}: the student cannot see their total score")
     total = 0.0
     for t in r.get("tests", []):
         check(set(t) <= TEST_KEYS, f"{what}: test with undocumented keys {set(t) - TEST_KEYS}")
         check(t.get("output_format") == "text", f"{what}: test {t.get('name')} not text")
         check(t.get("visibility") in VISIBILITY, f"{what}: test visibility {t.get('visibility')}")
+        check("score" in t and "max_score" in t, f"{what}: {t.get('name')} has no points")
         if "score" in t:
             check(0 <= t["score"] <= t["max_score"], f"{what}: {t['name']} score out of range")
             check(t["status"] == ("passed" if t["score"] >= t["max_score"] else "failed"),
                   f"{what}: {t['name']} status {t['status']}")
             total += t["score"]
-        else:
-            # A test without points is the worked feedback, shown after the due date.
-            check(t.get("visibility") == "after_due_date", f"{what}: {t['name']} unscored")
     check(abs(total - r["score"]) < 1e-9, f"{what}: tests add up to {total}, score {r['score']}")
 
 
@@ -215,17 +234,19 @@ def main(raygrade, assignment, static=None):
         check(tests["variant-reflect"]["score"] < 1, "wrong: the wrong reflection got full marks")
         for pid in set(POINTS) - {"variant-plane", "variant-reflect"}:
             check(tests[pid]["score"] == POINTS[pid], f"wrong: {pid}, answered right, lost points")
-        # Before the due date the reflection's full feedback waits for it; a right problem
-        # has none to wait for.
-        worked = {t["name"].split(":")[0] for t in wrong["tests"] if "score" not in t}
-        check(worked <= {"variant-plane", "variant-reflect"}, f"wrong: worked tests {worked}")
-
-        # The full feedback after the due date shows the reference values: the check of the
-        # policies below can see them.
+        # Before the due date the policy (mistakes) shows no reference value; the same upload
+        # graded again after it (Regrade All Submissions) gets the after_due policy (full),
+        # which does: the check of the policies below can see them.
         wrong_values = set()
         for pid in ("variant-plane", "variant-reflect"):
             wrong_values |= numbers(answers[pid])
-        check(leaked(wrong, wrong_values), "wrong: the after-due feedback shows no value")
+        check(not leaked(wrong, wrong_values),
+              f"wrong: before the due date, results.json shows {sorted(leaked(wrong, wrong_values))}")
+        regraded = run_upload(root, {"my answers.JSON": json.dumps(
+            {"student": STUDENT, "answers": wrong_answers})}, meta, now=AFTER_DUE)
+        check_results(regraded, "regraded")
+        check(regraded["score"] == wrong["score"], "regraded: the score changed")
+        check(leaked(regraded, wrong_values), "regraded: the after-due feedback shows no value")
 
         # A Mac's archive metadata is not an answers file.
         mac = run_upload(root, {"answers.json": json.dumps({"student": STUDENT,
@@ -272,8 +293,8 @@ def main(raygrade, assignment, static=None):
         r = run_upload(root, {"answers.json": json.dumps({"answers": answers})}, meta)
         check(r["score"] == sum(POINTS.values()), f"no student named: score {r['score']}")
 
-        # Gradescope's due date, and a student's extension, decide which policy is in force at
-        # the submission's own time (2026-11-30), whatever the assignment file says.
+        # Gradescope's due date, and a student's extension, decide which policy is in force
+        # when the upload is graded (2026-11-30), whatever the assignment file says.
         late = run_upload(root, {"answers.json": json.dumps(
             {"student": STUDENT, "answers": wrong_answers})},
             metadata(STUDENT["email"], STUDENT["name"], due="2026-11-29T23:59:00.000000-08:00"))

@@ -29,7 +29,9 @@ chmod 755 raygrade run_autograder
 constexpr const char* kRunAutograder = R"sh(#!/usr/bin/env bash
 # Grades one upload with raygrade: the one .json file in submission/, as the variant of the
 # account that uploaded it (submission_metadata.json), found on the roster by its email.
-# AUTOGRADER_ROOT (default /autograder) is where Gradescope's folders are.
+# AUTOGRADER_ROOT (default /autograder) is where Gradescope's folders are. The feedback policy
+# is the one in force when the upload is graded (a regrade after the due date gives the
+# after_due policy); RAYGRADE_NOW, for trying the autograder out, sets that time instead.
 set -u
 root="${AUTOGRADER_ROOT:-/autograder}"
 source="$root/source"
@@ -62,10 +64,12 @@ fi
 
 roster=()
 [ -f "$source/roster.csv" ] && roster=(--roster "$source/roster.csv")
+now=()
+[ -n "${RAYGRADE_NOW:-}" ] && now=(--now "$RAYGRADE_NOW")
 # raygrade's exit status 2 (the file was rejected) still leaves results.json with the reason.
 (cd "$root/submission" && "$source/raygrade" grade --assignment "$source/assignment.json" \
   --format gradescope --gradescope-metadata "$root/submission_metadata.json" "${roster[@]}" \
-  --out "$results" "${files[0]}")
+  "${now[@]}" --out "$results" "${files[0]}")
 status=$?
 if [ ! -s "$results/results.json" ]; then
   reject "The autograder could not grade this upload (raygrade exited with status $status). Please tell your instructor."
@@ -104,7 +108,6 @@ GradescopeMetadata read_gradescope_metadata(const std::string& path) {
   Cursor root(load_json_file(path));
   if (!root.is_object()) root.fail("submission_metadata.json is a JSON object", "type");
   GradescopeMetadata m;
-  m.submitted = metadata_time(root, "created_at");
   if (auto a = root.find("assignment"); a && a->is_object()) m.due = metadata_time(*a, "due_date");
   std::optional<std::int64_t> extended;
   for (const auto& u : root.at("users").items()) {

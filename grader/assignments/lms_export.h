@@ -16,15 +16,13 @@ namespace raygrade {
 
 // What raygrade reads of Gradescope's submission_metadata.json: the accounts that uploaded the
 // submission ("users", each with "email" and "name"; Gradescope's numeric "id" is not the
-// student's id and is not read), when it was submitted ("created_at"), and its due date: a
-// user's own "assignment": {"due_date"} (an extension) when present, else the assignment's
-// "assignment": {"due_date"}. The other keys are Gradescope's and are not read. Throws Error
-// naming the file and JSON path when "users" is missing, empty or malformed, or a date given
-// is not one.
+// student's id and is not read) and its due date: a user's own "assignment": {"due_date"} (an
+// extension) when present, else the assignment's "assignment": {"due_date"}. The other keys are
+// Gradescope's and are not read. Throws Error naming the file and JSON path when "users" is
+// missing, empty or malformed, or a date given is not one.
 struct GradescopeMetadata {
   std::vector<StudentIdentity> users;
-  std::optional<std::int64_t> submitted;  // seconds since 1970 UTC
-  std::optional<std::int64_t> due;
+  std::optional<std::int64_t> due;  // seconds since 1970 UTC
 };
 GradescopeMetadata read_gradescope_metadata(const std::string& path);
 

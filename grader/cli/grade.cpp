@@ -81,8 +81,6 @@ std::optional<std::string> out_among_submissions(const std::string& out,
 // the bank, or from an assignment (each student's own variant).
 struct GradeSetup {
   std::function<SubmissionGrade(const std::string&)> grade_one;
-  // Gradescope's full feedback after the due date, when the policy would show it then.
-  std::function<std::optional<SubmissionGrade>(const std::string&)> worked_one;
   std::vector<std::string> ids;
   std::vector<Diagnostic> errors;
   std::vector<StudentIdentity> roster;
@@ -92,7 +90,7 @@ struct GradeSetup {
   std::unique_ptr<Assignment> assignment;
   std::unique_ptr<AssignmentSpec> spec;
   std::unique_ptr<AssignmentBank> spec_bank;
-  std::unique_ptr<AssignmentGrader> spec_grader, worked_grader;
+  std::unique_ptr<AssignmentGrader> spec_grader;
 };
 
 // A usage fault: printed, and the exit code for it.
@@ -113,17 +111,14 @@ std::optional<int> setup_from_bank(const GradeCliOptions& o, GradeSetup& s) {
   return std::nullopt;
 }
 
-std::optional<int> setup_from_assignment(const GradeCliOptions& o, const GradeFormat& format,
-                                         GradeSetup& s) {
+std::optional<int> setup_from_assignment(const GradeCliOptions& o, GradeSetup& s) {
   AssignmentGradeOptions options;
-  std::optional<std::int64_t> submitted;  // Gradescope's time of the submission
   try {
     s.spec = std::make_unique<AssignmentSpec>(load_assignment(o.assignment));
     if (!o.roster.empty()) s.roster = options.roster = load_roster(o.roster);
     if (!o.gradescope_metadata.empty()) {
       GradescopeMetadata m = read_gradescope_metadata(o.gradescope_metadata);
       options.uploaders = std::move(m.users);
-      submitted = m.submitted;
       // Gradescope's due date, with the student's extension, is the one students were given.
       if (m.due) s.spec->due = m.due;
     }
@@ -136,12 +131,11 @@ std::optional<int> setup_from_assignment(const GradeCliOptions& o, const GradeFo
     if (!options.feedback)
       return usage(fmt::format("unknown feedback policy '{}' (score, mistakes, full)", o.feedback));
   }
-  // The time the feedback policy is taken at: --now, else Gradescope's time of the
-  // submission, else the clock.
+  // The time the feedback policy is taken at: --now, else the clock. On Gradescope that is
+  // when the upload is graded, so grading again after the due date gives the after_due policy.
   auto now =
-      !o.now.empty() ? parse_time(o.now)
-      : submitted
-          ? submitted
+      !o.now.empty()
+          ? parse_time(o.now)
           : std::optional<std::int64_t>(std::chrono::duration_cast<std::chrono::seconds>(
                                             std::chrono::system_clock::now().time_since_epoch())
                                             .count());
@@ -159,15 +153,6 @@ std::optional<int> setup_from_assignment(const GradeCliOptions& o, const GradeFo
   s.title = s.spec->title.empty() ? s.spec->id : s.spec->title;
   s.per_student = true;
   s.grade_one = [g = s.spec_grader.get()](const std::string& f) { return g->grade_file(f); };
-  if (format.full_feedback_too && !options.feedback && s.spec->due && options.now <= *s.spec->due) {
-    // The feedback the policy allows after the due date too, which Gradescope shows once it
-    // has passed: never more than that policy (an override holds at all times).
-    options.now = *s.spec->due + 1;
-    s.worked_grader = std::make_unique<AssignmentGrader>(*s.spec, s.spec_bank->problems, options);
-    s.worked_one = [g = s.worked_grader.get()](const std::string& f) {
-      return std::optional<SubmissionGrade>(g->grade_file(f));
-    };
-  }
   return std::nullopt;
 }
 
@@ -192,11 +177,10 @@ class GradeOutput {
   }
 
   // The text a file's grade is written as (run on the grading threads).
-  std::string render(const SubmissionGrade& g, double seconds,
-                     const std::optional<SubmissionGrade>& worked) const {
+  std::string render(const SubmissionGrade& g, double seconds) const {
     if (gradebook_) return gradebook_csv_row(g, setup_.ids);
     if (json_stream_) return json_text(submission_json(g));
-    return format_.render(g, seconds, worked ? &*worked : nullptr);
+    return format_.render(g, seconds);
   }
 
   void add(const Graded& graded) {
@@ -312,8 +296,8 @@ int run_grade(const GradeCliOptions& o) {
   std::optional<PickPolicy> pick = parse_pick_policy(o.pick.empty() ? "latest" : o.pick);
   if (!pick) return usage(fmt::format("unknown --pick '{}' (latest, best, first)", o.pick));
   GradeSetup setup;
-  if (auto failed = o.assignment.empty() ? setup_from_bank(o, setup)
-                                         : setup_from_assignment(o, *format, setup))
+  if (auto failed =
+          o.assignment.empty() ? setup_from_bank(o, setup) : setup_from_assignment(o, setup))
     return *failed;
   for (const auto& e : setup.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   std::vector<Diagnostic> errors;
@@ -328,11 +312,9 @@ int run_grade(const GradeCliOptions& o) {
   auto grade_at = [&](std::size_t i) {
     auto start = std::chrono::steady_clock::now();
     Graded r{setup.grade_one(files[i]), {}};
-    std::optional<SubmissionGrade> worked;
-    if (setup.worked_one) worked = setup.worked_one(files[i]);
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    r.text = output.render(r.grade, seconds, worked);
+    r.text = output.render(r.grade, seconds);
     return r;
   };
   // A window of files at a time, so that memory stays bounded whatever the batch's size.

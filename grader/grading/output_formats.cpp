@@ -7,53 +7,44 @@
 namespace raygrade {
 namespace {
 
-std::string text_format(const SubmissionGrade& g, double /*seconds*/,
-                        const SubmissionGrade* /*worked*/) {
-  return text_report(g);
-}
+std::string text_format(const SubmissionGrade& g, double /*seconds*/) { return text_report(g); }
 
-std::string json_format(const SubmissionGrade& g, double /*seconds*/,
-                        const SubmissionGrade* /*worked*/) {
+std::string json_format(const SubmissionGrade& g, double /*seconds*/) {
   return json_text(submission_json(g)) + "\n";
 }
 
-std::string gradescope_format(const SubmissionGrade& g, double seconds,
-                              const SubmissionGrade* worked) {
-  return json_text(gradescope_json(g, seconds, worked)) + "\n";
+std::string gradescope_format(const SubmissionGrade& g, double seconds) {
+  return json_text(gradescope_json(g, seconds)) + "\n";
 }
 
-std::string prairielearn_format(const SubmissionGrade& g, double /*seconds*/,
-                                const SubmissionGrade* /*worked*/) {
+std::string prairielearn_format(const SubmissionGrade& g, double /*seconds*/) {
   return json_text(prairielearn_json(g)) + "\n";
 }
 
-std::string html_format(const SubmissionGrade& g, double /*seconds*/,
-                        const SubmissionGrade* /*worked*/) {
-  return feedback_html(g);
-}
+std::string html_format(const SubmissionGrade& g, double /*seconds*/) { return feedback_html(g); }
 
 }  // namespace
 
 const std::vector<GradeFormat>& grade_formats() {
   static const std::vector<GradeFormat> table = {
       {"text", "for a terminal: each problem's score, parts and feedback", ".txt",
-       GradeLayout::kDocument, false, false, false, &text_format},
+       GradeLayout::kDocument, false, false, &text_format},
       {"json", "raygrade's own: every part, mistake and note as data", ".json",
-       GradeLayout::kJsonArray, false, false, false, &json_format},
+       GradeLayout::kJsonArray, false, false, &json_format},
       {"gradescope", "Gradescope's autograder results.json", ".json", GradeLayout::kDocument, true,
-       true, true, &gradescope_format},
+       true, &gradescope_format},
       {"prairielearn", "PrairieLearn's external grader results.json", ".json",
-       GradeLayout::kDocument, true, true, false, &prairielearn_format},
+       GradeLayout::kDocument, true, true, &prairielearn_format},
       {"csv", "a gradebook: a row per student, a column per problem, then total, max and status",
-       ".csv", GradeLayout::kGradebook, false, false, false, nullptr},
+       ".csv", GradeLayout::kGradebook, false, false, nullptr},
       {"csv-canvas", "with --roster: Canvas's gradebook import (a Points Possible row)", ".csv",
-       GradeLayout::kClassGradebook, false, false, false, nullptr},
+       GradeLayout::kClassGradebook, false, false, nullptr},
       {"csv-moodle", "with --roster: Moodle's grade import from CSV, matched by email", ".csv",
-       GradeLayout::kClassGradebook, false, false, false, nullptr},
+       GradeLayout::kClassGradebook, false, false, nullptr},
       {"csv-blackboard", "with --roster: Blackboard's offline grade upload", ".csv",
-       GradeLayout::kClassGradebook, false, false, false, nullptr},
+       GradeLayout::kClassGradebook, false, false, nullptr},
       {"html", "a self-contained feedback page per student", ".html", GradeLayout::kDocument, true,
-       false, false, &html_format},
+       false, &html_format},
   };
   return table;
 }

@@ -30,11 +30,9 @@ std::string summary(const SubmissionGrade& g) {
 
 }  // namespace
 
-nlohmann::json gradescope_json(const SubmissionGrade& g, double execution_seconds,
-                               const SubmissionGrade* worked) {
+nlohmann::json gradescope_json(const SubmissionGrade& g, double execution_seconds) {
   nlohmann::json tests = nlohmann::json::array();
-  for (std::size_t i = 0; i < g.results.size(); ++i) {
-    const GradeResult& r = g.results[i];
+  for (const GradeResult& r : g.results) {
     std::string output = joined(feedback_lines(r));
     tests.push_back({{"name", test_name(r)},
                      {"score", r.score},
@@ -43,13 +41,6 @@ nlohmann::json gradescope_json(const SubmissionGrade& g, double execution_second
                      {"output", output},
                      {"output_format", "text"},
                      {"visibility", "visible"}});
-    if (!worked || i >= worked->results.size() || r.score >= r.max_score) continue;
-    std::string full = joined(feedback_lines(worked->results[i]));
-    if (full == output) continue;
-    tests.push_back({{"name", test_name(r) + " (worked feedback, after the due date)"},
-                     {"output", full},
-                     {"output_format", "text"},
-                     {"visibility", "after_due_date"}});
   }
   return {{"score", g.gradable ? g.score : 0.0},
           {"execution_time", execution_seconds},

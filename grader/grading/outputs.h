@@ -41,11 +41,10 @@ class JsonArrayStream {
 // Gradescope's autograder results.json: score, execution_time, output, output_format,
 // visibility and one test per problem (name, score, max_score, status, output, output_format,
 // visibility). Every output is plain text ("output_format": "text"), never read as HTML or
-// Markdown. `worked`, when given, is the same submission graded with full feedback: each
-// problem not fully right whose feedback it changes gets a second test, without points, that
-// shows the full feedback after the due date ("visibility": "after_due_date").
-nlohmann::json gradescope_json(const SubmissionGrade& g, double execution_seconds,
-                               const SubmissionGrade* worked = nullptr);
+// Markdown. Every test is "visible": Gradescope hides a student's total score while any test
+// waits for a later time (after_due_date, after_published), so the feedback a policy allows
+// later comes from grading again then (docs/assignments.md).
+nlohmann::json gradescope_json(const SubmissionGrade& g, double execution_seconds);
 
 // PrairieLearn's external grader results.json: gradable, score in [0, 1], message, output
 // and one test per problem (name, description, points, max_points, message, output).
@@ -79,12 +78,10 @@ struct GradeFormat {
   std::string_view summary;    // for --help and the docs
   std::string_view extension;  // of the files written in --out: ".txt", ".json", ".html"
   GradeLayout layout;
-  bool needs_out;          // several submissions need --out (one file each), not standard output
-  bool results_file;       // an LMS's: one submission in --out is written as results.json
-  bool full_feedback_too;  // with --assignment, graded with full feedback too (for `worked`)
-  // A submission's document; `seconds` is the time it took to grade, `worked` the same graded
-  // with full feedback (when full_feedback_too), else null. A gradebook's row.
-  std::string (*render)(const SubmissionGrade& g, double seconds, const SubmissionGrade* worked);
+  bool needs_out;     // several submissions need --out (one file each), not standard output
+  bool results_file;  // an LMS's: one submission in --out is written as results.json
+  // A submission's document; `seconds` is the time it took to grade. Null for a gradebook.
+  std::string (*render)(const SubmissionGrade& g, double seconds);
 };
 
 // A student's page among the HTML feedback pages of a batch, and the index that links them
