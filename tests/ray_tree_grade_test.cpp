@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "grading/grade.h"
+#include "json/cursor.h"
+#include "json/source.h"
 #include "problems/problem.h"
 
 namespace raygrade {
@@ -165,6 +167,78 @@ TEST(RayTreeGrade, AWrongIntensityIsQuotedAsTyped) {
     EXPECT_EQ(i->feedback.at(0),
               fmt::format("The intensity along the primary ray is 0.2, not {}.", typed));
   }
+}
+
+// A ball A of radius 1 at the origin, seen from below: the ray from (0, −5, 0) up (0, 1, 0)
+// meets it at P = (0, −1, 0), t = 4, N = (0, −1, 0). The lamp at (0, 10, 0) gives L = (0, 1, 0),
+// N·L = −1: P faces away from it. A shadow ray cast anyway goes up through A itself and on to
+// ball B (radius 1 at (0, 5, 0)), which blocks it: "in shadow" holds as well as "faces away".
+// Without B, only "faces away" holds.
+Problem facing_away_scene(bool with_blocker) {
+  std::string objects = R"({"name": "A", "type": "sphere", "center": [0, 0, 0], "radius": 1})";
+  if (with_blocker)
+    objects += R"(, {"name": "B", "type": "sphere", "center": [0, 5, 0], "radius": 1})";
+  auto f = parse_json_text("away.json", fmt::format(R"({{"id": "away", "kind": "ray-tree",
+    "ray": {{"origin": [0, -5, 0], "direction": [0, 1, 0]}},
+    "scene": {{"objects": [{}], "lights": [{{"name": "lamp", "position": [0, 10, 0]}}],
+               "ambient_light": 1}}}})",
+                                                    objects));
+  return read_problem(Cursor(f));
+}
+
+nlohmann::json said_shadow(bool in_shadow, const char* by = nullptr) {
+  nlohmann::json node = {{"label", "P"},
+                         {"parent", nullptr},
+                         {"ray", "primary"},
+                         {"object", "A"},
+                         {"in_shadow", in_shadow}};
+  if (by) node["shadowed_by"] = {by};
+  return {{"nodes", {node}}, {"ambient_only", {"P"}}, {"all_terms", nlohmann::json::array()}};
+}
+
+TEST(RayTreeGrade, FacingAwayAndBlockedAcceptsBothReadings) {
+  Problem p = facing_away_scene(true);
+  for (bool shadow : {false, true}) {
+    GradeResult r = grade_answer(p, said_shadow(shadow));
+    EXPECT_DOUBLE_EQ(r.score, r.max_score) << "in_shadow " << shadow;
+  }
+  GradeResult named = grade_answer(p, said_shadow(true, "B"));
+  EXPECT_DOUBLE_EQ(named.score, named.max_score);
+  // The wrong blocker is named, and both reasons are given.
+  GradeResult wrong = grade_answer(p, said_shadow(true, "A"));
+  const PartResult* shadows = part(wrong, "shadows");
+  ASSERT_NE(shadows, nullptr);
+  EXPECT_NE(shadows->status, PartStatus::kRight);
+  EXPECT_NE(all_feedback(*shadows).find("blocked by B, not A"), std::string::npos)
+      << all_feedback(*shadows);
+}
+
+TEST(RayTreeGrade, FacingAwayAloneIsNotAShadow) {
+  Problem p = facing_away_scene(false);
+  EXPECT_DOUBLE_EQ(grade_answer(p, said_shadow(false)).score,
+                   grade_answer(p, said_shadow(false)).max_score);
+  GradeResult r = grade_answer(p, said_shadow(true));
+  const PartResult* shadows = part(r, "shadows");
+  ASSERT_NE(shadows, nullptr);
+  EXPECT_EQ(shadows->status, PartStatus::kWrong);
+  EXPECT_NE(all_feedback(*shadows).find("P is not in shadow: it faces away from lamp"),
+            std::string::npos)
+      << all_feedback(*shadows);
+}
+
+// Where the answer is wrong (the point given the diffuse term), the feedback gives both
+// reasons the lamp does not light P.
+TEST(RayTreeGrade, FacingAwayAndBlockedGivesBothReasons) {
+  Problem p = facing_away_scene(true);
+  nlohmann::json a = said_shadow(false);
+  a["all_terms"] = {"P"};
+  a["ambient_only"] = nlohmann::json::array();
+  std::string fb;
+  for (const auto& part : grade_answer(p, a).parts) fb += all_feedback(part);
+  EXPECT_NE(fb.find("it faces away from lamp, and its shadow ray toward lamp would also be "
+                    "blocked by B"),
+            std::string::npos)
+      << fb;
 }
 
 }  // namespace

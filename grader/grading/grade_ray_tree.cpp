@@ -382,9 +382,17 @@ class RayTreeGrader final : public KindGrader {
           parts.push_back(fmt::format("its shadow ray toward {} is blocked by {}", s.light_name,
                                       fmt::join(by, ", ")));
           break;
-        case LightStatus::kBehind:
-          parts.push_back(fmt::format("it faces away from {}", s.light_name));
+        case LightStatus::kBehind: {
+          std::vector<std::string> would;
+          for (int b : s.behind_blockers) would.push_back(object_name(b));
+          parts.push_back(
+              would.empty()
+                  ? fmt::format("it faces away from {}", s.light_name)
+                  : fmt::format("it faces away from {}, and its shadow ray toward {} would also "
+                                "be blocked by {}",
+                                s.light_name, s.light_name, fmt::join(would, ", ")));
           break;
+        }
       }
     }
     if (parts.empty()) return "the scene has no lights";
@@ -395,6 +403,15 @@ class RayTreeGrader final : public KindGrader {
   std::string blocker_fault(const TreeNode& n, const std::set<std::string>& said) const {
     std::vector<std::string> by = shadow_blockers(tree(), scene(), n);
     if (std::set<std::string>(by.begin(), by.end()) == said) return "";
+    return fmt::format("blocked by {}, not {}", fmt::join(by, ", "), fmt::join(said, ", "));
+  }
+
+  // The same for a point that faces away, against what its shadow rays would meet.
+  std::string behind_blocker_fault(const TreeNode& n, const std::set<std::string>& said) const {
+    std::set<std::string> by;
+    for (const auto& l : n.lights)
+      for (int b : l.behind_blockers) by.insert(object_name(b));
+    if (by == said) return "";
     return fmt::format("blocked by {}, not {}", fmt::join(by, ", "), fmt::join(said, ", "));
   }
 
@@ -420,6 +437,8 @@ class RayTreeGrader final : public KindGrader {
       int shadow = s && s->in_shadow ? int(*s->in_shadow) : -1;
       std::set<std::string> want = term_set(node_terms(n));
       bool want_shadow = in_shadow(n);
+      // Facing away and blocked as well: "in shadow" and "not in shadow" both hold.
+      bool either = shadow_either(n);
       // Terms without in_shadow say only whether some light reaches the point: ambient alone
       // is right at a point in shadow and at one that faces away from every light alike.
       if (shadow < 0 && terms && !scene().lights.empty()) {
@@ -428,10 +447,11 @@ class RayTreeGrader final : public KindGrader {
       std::string reason = light_reason(n);
       if (shadow >= 0) {
         any_shadow = true;
-        std::string wrong_blocker = s && s->shadowed_by && shadow == 1 && want_shadow
-                                        ? blocker_fault(n, *s->shadowed_by)
-                                        : "";
-        if ((shadow == 1) == want_shadow && wrong_blocker.empty()) {
+        std::string wrong_blocker = !s || !s->shadowed_by || shadow != 1 ? ""
+                                    : want_shadow ? blocker_fault(n, *s->shadowed_by)
+                                    : either      ? behind_blocker_fault(n, *s->shadowed_by)
+                                                  : "";
+        if (((shadow == 1) == want_shadow || either) && wrong_blocker.empty()) {
           ++shadows_right;
         } else if (!wrong_blocker.empty()) {
           shadow_fb.push_back(fmt::format("{} is in shadow, {}.", label, wrong_blocker));

@@ -130,6 +130,11 @@ class Tracer {
       s.normal = lit_normal(node, m, s.l);
       if (dot(s.normal, s.l) <= 0) {
         s.status = LightStatus::kBehind;
+        Vec3d from = offset_ray_origin(node.point, node.point_error, s.normal, s.l);
+        Ray would = light.type == LightType::kPoint ? Ray{from, light.position - from, 0, 1}
+                                                    : Ray{from, s.l, 0, kInfinity};
+        for (const auto& b : all_hits(scene_, would))
+          if (b.object != node.object) s.behind_blockers.push_back(b.object);
         node.lights.push_back(s);
         continue;
       }

@@ -50,8 +50,11 @@ struct ShadowCheck {
   Ray ray;         // the shadow ray as cast (offset origin; a point light sits at t = 1)
   bool cast = false;
   std::vector<int> blockers;  // objects between the point and the light, nearest first
-  double transmission = 1;    // the fraction of the light's intensity that arrives
-  PhongLight phong;           // filled when the intensity is asked and the light arrives
+  // When the surface faces away (kBehind) no shadow ray is needed, but a student may cast one:
+  // the other objects it would meet, nearest first (the point's own object left out).
+  std::vector<int> behind_blockers;
+  double transmission = 1;  // the fraction of the light's intensity that arrives
+  PhongLight phong;         // filled when the intensity is asked and the light arrives
 
   bool reaches() const {
     return status == LightStatus::kVisible || status == LightStatus::kTransmitted;

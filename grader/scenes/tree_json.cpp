@@ -34,6 +34,13 @@ bool in_shadow(const TreeNode& node) { return unlit(node) && any_blocked(node); 
 
 bool faces_away(const TreeNode& node) { return unlit(node) && !any_blocked(node); }
 
+bool shadow_either(const TreeNode& node) {
+  return faces_away(node) &&
+         std::any_of(node.lights.begin(), node.lights.end(), [](const ShadowCheck& s) {
+           return s.status == LightStatus::kBehind && !s.behind_blockers.empty();
+         });
+}
+
 std::vector<std::string> shadow_blockers(const RayTree& /*tree*/, const Scene& scene,
                                          const TreeNode& node) {
   std::vector<std::string> out;

@@ -19,6 +19,10 @@ std::vector<std::string> node_terms(const TreeNode& node);
 // shadow, it faces away (self-shadowed, the "attached shadow" of some texts).
 bool in_shadow(const TreeNode& node);
 bool faces_away(const TreeNode& node);
+// A point that faces away from every light that could reach it, where a shadow ray cast anyway
+// toward one of them would meet another object: both readings hold, "faces away" and "in
+// shadow" (some courses cast the ray first), and grading accepts either.
+bool shadow_either(const TreeNode& node);
 
 // The objects that block a node's lights, by name, nearest first for each light.
 std::vector<std::string> shadow_blockers(const RayTree& tree, const Scene& scene,
