@@ -34,14 +34,14 @@ constexpr double kExactBoundaryFraction = 1e-7;
 constexpr double kDepartureBand = 10;
 
 // What a grader must tell apart: how many hits, and which object is hit first.
-struct Outcome {
+struct ProbeOutcome {
   int object = -1;
   std::size_t hits = 0;
   bool contained = false;
-  bool operator==(const Outcome&) const = default;
+  bool operator==(const ProbeOutcome&) const = default;
 };
 
-std::string describe(const Outcome& o, const FirstHitTask* first) {
+std::string describe(const ProbeOutcome& o, const FirstHitTask* first) {
   if (first) {
     return o.object < 0 ? "no object hit" : "a hit on " + first->objects()[o.object].name;
   }
@@ -74,9 +74,9 @@ std::vector<bool> start_surfaces(const Problem& p, const Ray& ray, double reach)
 }
 
 // The outcome of `ray`; hits on a starting surface nearer than `skip` (in t) are left out.
-Outcome outcome_of(const Problem& p, const Ray& ray, const std::vector<bool>& starts = {},
-                   double skip = 0) {
-  Outcome o;
+ProbeOutcome outcome_of(const Problem& p, const Ray& ray, const std::vector<bool>& starts = {},
+                        double skip = 0) {
+  ProbeOutcome o;
   std::vector<const Shape*> shapes = shapes_of(p);
   auto ray_for = [&](std::size_t i) {
     Ray r = ray;
@@ -117,17 +117,17 @@ std::pair<Vec3d, Vec3d> sideways(const Vec3d& d) {
 }
 
 // The first outcome, among rays shifted sideways by `distance`, that differs from the ray's.
-std::optional<Outcome> shifted_outcome(const Problem& p, const Ray& ray, double distance) {
+std::optional<ProbeOutcome> shifted_outcome(const Problem& p, const Ray& ray, double distance) {
   double reach = kDepartureBand * distance / length(ray.direction);
   std::vector<bool> starts = start_surfaces(p, ray, reach);
   // With a starting surface, the hits on it near the start are left out here too.
-  Outcome start = outcome_of(p, ray, starts, reach);
+  ProbeOutcome start = outcome_of(p, ray, starts, reach);
   auto [u, v] = sideways(ray.direction);
   for (int k = 0; k < kProbeAngles; ++k) {
     double angle = 2 * std::numbers::pi * k / kProbeAngles;
     Ray shifted = ray;
     shifted.origin = ray.origin + distance * (std::cos(angle) * u + std::sin(angle) * v);
-    Outcome o = outcome_of(p, shifted, starts, reach);
+    ProbeOutcome o = outcome_of(p, shifted, starts, reach);
     if (!(o == start)) return o;
   }
   return std::nullopt;
@@ -220,7 +220,7 @@ BoundaryProbe probe_boundaries(const Problem& p) {
     for (const auto& o : first->objects()) size = std::min(size, o.shape->extent());
   }
   double distance = std::min(tol * length(ray.direction), kMaxProbeFraction * size);
-  Outcome base = outcome_of(p, ray);
+  ProbeOutcome base = outcome_of(p, ray);
   out.exact_boundary = shifted_outcome(p, ray, distance * kExactBoundaryFraction).has_value();
   if (first) check_near_tie(p, *first, tol, out);
   // A near tie is itself a boundary between two outcomes: reported once, as a near tie.
