@@ -399,19 +399,20 @@ class RayTreeGrader final : public KindGrader {
     return fmt::format("{}", fmt::join(parts, "; "));
   }
 
-  // "" when the student's blockers are the point's; else what blocks it instead.
-  std::string blocker_fault(const TreeNode& n, const std::set<std::string>& said) const {
-    std::vector<std::string> by = shadow_blockers(tree(), scene(), n);
+  // "" when the student's blockers are the point's (at a point that faces away, `behind`:
+  // those its shadow rays would meet); else what blocks it instead.
+  std::string blocker_fault(const TreeNode& n, const std::set<std::string>& said,
+                            bool behind) const {
+    std::vector<std::string> by;
+    if (!behind) {
+      by = shadow_blockers(tree(), scene(), n);
+    } else {
+      for (const auto& l : n.lights)
+        for (int b : l.behind_blockers)
+          if (std::find(by.begin(), by.end(), object_name(b)) == by.end())
+            by.push_back(object_name(b));
+    }
     if (std::set<std::string>(by.begin(), by.end()) == said) return "";
-    return fmt::format("blocked by {}, not {}", fmt::join(by, ", "), fmt::join(said, ", "));
-  }
-
-  // The same for a point that faces away, against what its shadow rays would meet.
-  std::string behind_blocker_fault(const TreeNode& n, const std::set<std::string>& said) const {
-    std::set<std::string> by;
-    for (const auto& l : n.lights)
-      for (int b : l.behind_blockers) by.insert(object_name(b));
-    if (by == said) return "";
     return fmt::format("blocked by {}, not {}", fmt::join(by, ", "), fmt::join(said, ", "));
   }
 
@@ -448,9 +449,9 @@ class RayTreeGrader final : public KindGrader {
       if (shadow >= 0) {
         any_shadow = true;
         std::string wrong_blocker = !s || !s->shadowed_by || shadow != 1 ? ""
-                                    : want_shadow ? blocker_fault(n, *s->shadowed_by)
-                                    : either      ? behind_blocker_fault(n, *s->shadowed_by)
-                                                  : "";
+                                    : want_shadow || either
+                                        ? blocker_fault(n, *s->shadowed_by, !want_shadow)
+                                        : "";
         if (((shadow == 1) == want_shadow || either) && wrong_blocker.empty()) {
           ++shadows_right;
         } else if (!wrong_blocker.empty()) {
