@@ -124,6 +124,47 @@ TEST(Grade, TangentToleranceFollowsConditioning) {
   EXPECT_DOUBLE_EQ(part(grade(kSphere1, R"({"hits": [{"t": 1.07}, {"t": 3}]})"), "t")->points, 1);
 }
 
+// A ray that nearly grazes the unit ball at (0, 10, 10): O = 0, D = (0, 10.6, 9.2) gives
+// a = 197, b = 2 D·(O − C) = −396, c = 199, Δ = 396² − 4·197·199 = 4, so t = 394/394 = 1
+// (entering at (0, 10.6, 9.2)) and t = 398/394 = 1.01015 (leaving at (0, 10.7076, 9.2934)).
+// At one decimal the exit point is (0, 10.7, 9.3): never the entry, however the tolerance
+// of a badly conditioned root is widened.
+const char* kGrazeFirstHit = R"({"id": "g1", "kind": "first-hit",
+  "ray": {"origin": [0, 0, 0], "direction": [0, 10.6, 9.2]},
+  "objects": [{"name": "A", "type": "sphere", "center": [0, 10, 10], "radius": 1}],
+  "tolerance": {"decimals": 1}})";
+const char* kGrazeIntersect = R"({"id": "g2",
+  "ray": {"origin": [0, 0, 0], "direction": [0, 10.6, 9.2]},
+  "object": {"type": "sphere", "center": [0, 10, 10], "radius": 1},
+  "tolerance": {"decimals": 1}})";
+
+TEST(Grade, AWidenedToleranceNeverReachesTheOtherRoot) {
+  auto exit = grade(kGrazeFirstHit, R"({"object": "A", "hits": [{"t": 1.0,
+    "point": [0, 10.7, 9.3]}]})");
+  EXPECT_EQ(part(exit, "point")->points, 0);
+  EXPECT_NE(part(exit, "point")->feedback.front().find("at t = 1.01"), std::string::npos);
+  auto entry = grade(kGrazeFirstHit, R"({"object": "A", "hits": [{"t": 1.0,
+    "point": [0, 10.6, 9.2]}]})");
+  EXPECT_EQ(entry.fraction(), 1);
+  // t = 1.01 is nearer the exit (1.01015) than the entry (1): the far root, not the hit.
+  auto far = grade(kGrazeFirstHit, R"({"object": "A", "hits": [{"t": 1.01}]})");
+  EXPECT_EQ(part(far, "t")->points, 0);
+  ASSERT_FALSE(far.mistakes.empty());
+  EXPECT_EQ(far.mistakes.front().id, "far-root");
+}
+
+TEST(Grade, OnePointGivenTwiceIsOneHit) {
+  auto twice = grade(kGrazeIntersect, R"({"hits": [{"point": [0, 10.6, 9.2]},
+    {"point": [0, 10.6, 9.2]}]})");
+  EXPECT_DOUBLE_EQ(part(twice, "point")->points, 0.5);
+  auto both = grade(kGrazeIntersect, R"({"hits": [{"point": [0, 10.7, 9.3]},
+    {"point": [0, 10.6, 9.2]}]})");
+  EXPECT_DOUBLE_EQ(part(both, "point")->points, 1);
+  // Both roots are 1.0 to one decimal: at the precision asked, 1.0 twice is right.
+  auto ts = grade(kGrazeIntersect, R"({"hits": [{"t": 1.0}, {"t": 1.0}]})");
+  EXPECT_DOUBLE_EQ(part(ts, "t")->points, 2);
+}
+
 // d² given as 0.75 instead of 0: t_hc = √(1 − 0.75) = 0.5 follows from it, and so do
 // t = 2 ∓ 0.5 = 1.5 and 2.5 and the points (1.5, 0, 0) and (2.5, 0, 0).
 TEST(Grade, ErrorCarriedForward) {

@@ -46,6 +46,8 @@ constexpr double kDoubleRootDiscriminant = 1e-12;
 // candidate (another root, another object's hit): half, so that no value is nearer to the
 // accepted root than to the other.
 constexpr double kWideningReach = 0.5;
+// Roots this close (relative to 1 + |t|) are one root computed by two methods.
+constexpr double kSameRoot = 1e-9;
 // Feedback shows numbers with the significant figures of worked solutions (NumberFormat's
 // default), as a fixed number of decimals shared by every number of the problem.
 constexpr int kDisplayFigures = 4;
@@ -80,7 +82,14 @@ class HitsGrader final : public KindGrader {
   void grade_contained(bool says_line, bool no_hits, GradeResult& out) const;
   void grade_barycentric(const std::vector<StudentHit>& hits, const std::vector<int>& match,
                          GradeResult& out) const;
-  double widen_point(std::size_t j) const { return widen_[j] * length(ray_.direction); }
+  // A widening of t moves each coordinate of the point by at most |D|'s largest component.
+  double widen_point(std::size_t j) const {
+    const Vec3d& d = ray_.direction;
+    return widen_[j] * std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+  }
+  bool nearer_another_t(double t, std::size_t j) const;
+  bool nearer_another_point(const Vec3d& p, std::size_t j) const;
+  std::optional<double> other_root_at(const StudentNumber (&p)[3], const Tolerance& tp) const;
   std::string fmt_t(double t) const { return format_number(t, numbers_); }
 
   const Task* task_;
@@ -96,6 +105,7 @@ class HitsGrader final : public KindGrader {
   Conventions conventions_;
   std::vector<double> behind_;  // roots with t < t_min: behind the origin
   std::vector<double> far_;     // roots past the first hit of the same object
+  std::vector<double> others_;  // every candidate root that is none of the reference hits
   std::vector<MethodDerivation> methods_;
   std::vector<MistakenSolution> mistaken_;
   NumberFormat numbers_;
@@ -157,6 +167,7 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()), conventions_(p.c
   }
   // The conditioning of the roots: a quadratic's a, b, c and discriminant, when it has one.
   widen_.assign(ref_.size(), 0);
+  double spread = 0;  // how far apart a double root's two computed roots may lie
   if (shape_) {
     std::optional<Shape::QuadraticSteps> q = shape_->quadratic();
     Derivation d;
@@ -172,19 +183,28 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()), conventions_(p.c
       double delta = kTangentInputError * (B * B + 4 * std::abs(A * C));
       double w = (std::sqrt(disc + delta) - std::sqrt(disc)) / (2 * std::abs(A));
       widen_.assign(ref_.size(), w);
-      double_root_ =
-          ref_.size() == 1 &&
-          std::abs(B * B - 4 * A * C) <= kDoubleRootDiscriminant * (B * B + 4 * std::abs(A * C));
+      double spread_limit = kDoubleRootDiscriminant * (B * B + 4 * std::abs(A * C));
+      double_root_ = ref_.size() == 1 && std::abs(B * B - 4 * A * C) <= spread_limit;
+      if (double_root_) spread = std::sqrt(spread_limit) / std::abs(A);
     }
   }
   // A widened tolerance never reaches another candidate: at most half way to the nearest
-  // one that the usual tolerance tells apart from the hit.
-  const Tolerance& tt = context_.tolerance.for_field("t");
+  // one, however near (when the problem's own tolerance already spans both, that tolerance
+  // stands, and nothing is added to it). A candidate within `same` of a hit is that hit,
+  // computed by another method (or a tangent's double root).
+  auto same = [&](double a, double b) {
+    return std::abs(a - b) <= std::max(spread, kSameRoot * (1 + std::abs(b)));
+  };
   for (std::size_t j = 0; j < ref_.size(); ++j) {
-    double t = ref_[j].t, usual = allowed_error(t, t, tt);
     for (double c : candidates) {
-      double gap = std::abs(c - t);
-      if (gap > usual) widen_[j] = std::min(widen_[j], kWideningReach * gap);
+      if (!same(c, ref_[j].t)) {
+        widen_[j] = std::min(widen_[j], kWideningReach * std::abs(c - ref_[j].t));
+      }
+    }
+  }
+  for (double c : candidates) {
+    if (std::none_of(ref_.begin(), ref_.end(), [&](const Hit& h) { return same(c, h.t); })) {
+      others_.push_back(c);
     }
   }
   // One display precision for every number of a message: without the problem's own, the
@@ -203,6 +223,28 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()), conventions_(p.c
   }
   if (!first_hit_) methods_ = solutions_by_method(*task_);
   mistaken_ = mistaken_solutions(*task_);
+}
+
+// A value nearer to another candidate (the far root, a root behind the origin, another
+// object's hit) than to reference hit j is never that hit, whatever the tolerance.
+bool HitsGrader::nearer_another_t(double t, std::size_t j) const {
+  double d = std::abs(t - ref_[j].t);
+  return std::any_of(others_.begin(), others_.end(), [&](double c) { return std::abs(t - c) < d; });
+}
+
+bool HitsGrader::nearer_another_point(const Vec3d& p, std::size_t j) const {
+  double d = length(p - ref_[j].point);
+  return std::any_of(others_.begin(), others_.end(),
+                     [&](double c) { return length(p - ray_.at(c)) < d; });
+}
+
+// The other candidate whose point the student's point is (within the tolerance), if any.
+std::optional<double> HitsGrader::other_root_at(const StudentNumber (&p)[3],
+                                                const Tolerance& tp) const {
+  for (double c : others_) {
+    if (compare_vector(p, ray_.at(c), tp).match != Match::kWrong) return c;
+  }
+  return std::nullopt;
 }
 
 void HitsGrader::grade(const AnswerReader& a, GradeResult& out) const {
@@ -367,19 +409,29 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
   };
   // Match t values to reference hits regardless of order: right matches first, then those
   // right to the digits given.
+  // Each value goes to the nearest free hit it fits.
   for (Match wanted : {Match::kRight, Match::kInsufficientPrecision}) {
     for (std::size_t i = 0; i < n_stu; ++i) {
       if (!hits[i].t || match[i] >= 0) continue;
+      double value = hits[i].t->value;
+      int best = -1;
+      NumberVerdict best_verdict;
       for (std::size_t j = 0; j < n_ref; ++j) {
-        if (used[j]) continue;
+        if (used[j] || nearer_another_t(value, j)) continue;
         NumberVerdict v = compare_number(*hits[i].t, ref_[j].t, ref_[j].t, tt, widen_[j]);
         if (v.match != wanted) continue;
-        match[i] = static_cast<int>(j);
-        used[j] = true;
-        verdict[i] = v.match;
-        if (v.match == Match::kInsufficientPrecision) t_feedback.push_back("t: " + v.message);
-        break;
+        if (best >= 0 &&
+            std::abs(value - ref_[j].t) >= std::abs(value - ref_[static_cast<std::size_t>(best)].t))
+          continue;
+        best = static_cast<int>(j);
+        best_verdict = v;
       }
+      if (best < 0) continue;
+      match[i] = best;
+      used[static_cast<std::size_t>(best)] = true;
+      verdict[i] = best_verdict.match;
+      if (best_verdict.match == Match::kInsufficientPrecision)
+        t_feedback.push_back("t: " + best_verdict.message);
     }
   }
   // A tangent's double root listed twice (t = 5, 5), as many textbooks list it: one hit.
@@ -505,15 +557,21 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
   if (!any_t) {
     for (std::size_t i = 0; i < n_stu; ++i) {
       if (!hits[i].point || !hits[i].point->ok) continue;
+      const Vec3d& p = hits[i].point->value();
+      int best = -1;
       for (std::size_t j = 0; j < n_ref; ++j) {
-        if (used[j]) continue;
+        if (used[j] || nearer_another_point(p, j)) continue;
         if (compare_vector(hits[i].point->c, ref_[j].point, tp, widen_point(j)).match ==
             Match::kWrong)
           continue;
-        match[i] = static_cast<int>(j);
-        used[j] = true;
-        break;
+        if (best >= 0 &&
+            length(p - ref_[j].point) >= length(p - ref_[static_cast<std::size_t>(best)].point))
+          continue;
+        best = static_cast<int>(j);
       }
+      if (best < 0) continue;
+      match[i] = best;
+      used[static_cast<std::size_t>(best)] = true;
     }
   }
   double p_credit = 0, n_credit = 0;
@@ -528,11 +586,19 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
       } else if (match[i] >= 0) {
         auto j = static_cast<std::size_t>(match[i]);
         NumberVerdict v = compare_vector(h.point->c, ref_[j].point, tp, widen_point(j));
+        if (v.match != Match::kWrong && nearer_another_point(h.point->value(), j)) {
+          v.match = Match::kWrong;
+        }
         if (v.match == Match::kRight) {
           p_credit += 1;
         } else if (v.match == Match::kInsufficientPrecision) {
           p_credit += tp.precision_credit;
           p_feedback.push_back("point: " + v.message);
+        } else if (std::optional<double> c = other_root_at(h.point->c, tp)) {
+          p_feedback.push_back(
+              fmt::format("The point {} is where the ray is at t = {}; the hit at t = {} is {}.",
+                          format_vector(h.point->value(), numbers_), fmt_t(*c), fmt_t(ref_[j].t),
+                          format_vector(ref_[j].point, numbers_)));
         } else {
           p_feedback.push_back(fmt::format("The point at t = {} is {}.", fmt_t(ref_[j].t),
                                            format_vector(ref_[j].point, numbers_)));
@@ -549,6 +615,14 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
           p_feedback.push_back(fmt::format("The point {} is not O + tD for your t = {}.",
                                            format_vector(h.point->value(), numbers_), h.t->text));
         }
+      } else if (std::any_of(match.begin(), match.end(), [&](int j) {
+                   return j >= 0 &&
+                          compare_vector(h.point->c, ref_[static_cast<std::size_t>(j)].point, tp,
+                                         widen_point(static_cast<std::size_t>(j)))
+                                  .match != Match::kWrong;
+                 })) {
+        p_feedback.push_back(fmt::format("The point {} is listed twice; it is one hit.",
+                                         format_vector(h.point->value(), numbers_)));
       } else {
         p_feedback.push_back(fmt::format("The point {} is not a hit of this ray.",
                                          format_vector(h.point->value(), numbers_)));
