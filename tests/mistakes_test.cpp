@@ -1,6 +1,8 @@
 // Named mistakes: each is found when made, and never on a right answer.
 #include "grading/mistakes.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -131,6 +133,67 @@ TEST(Mistakes, RadiusNotSquared) {
     "object": {"type": "sphere", "center": [4, 0, 0], "radius": 2}})",
                  R"j({"hits": [{"t": "4 - sqrt(2)"}, {"t": "4 + sqrt(2)"}]})j");
   EXPECT_EQ(ids(r), std::vector<std::string>{"r-not-squared"});
+}
+
+// Ball A (r = 1 at (10, 0, 0)) lies behind ball B (r = 2 at (5, 0, 0)) on the +x axis: B is
+// hit first at t = 3, A at t = 9. r for r² leaves A's roots as they are (1 = 1²), so t = 9 is
+// no sign of that slip: it is A's own hit.
+TEST(Mistakes, NeverNamedWhereTheRewriteChangesNothing) {
+  auto r = grade(R"({"id": "a", "kind": "first-hit",
+    "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+    "objects": [{"name": "A", "type": "sphere", "center": [10, 0, 0], "radius": 1},
+                {"name": "B", "type": "sphere", "center": [5, 0, 0], "radius": 2}]})",
+                 R"({"object": "A", "hits": [{"t": 9}]})");
+  EXPECT_TRUE(ids(r).empty()) << ids(r).front();
+  const PartResult* t = nullptr;
+  for (const auto& p : r.parts) t = p.name == "t" ? &p : t;
+  ASSERT_NE(t, nullptr);
+  EXPECT_NE(t->feedback.front().find("where the ray meets A"), std::string::npos)
+      << t->feedback.front();
+}
+
+// D = (2, 0, 0) towards the unit ball at (3, 0, 0): a = 4, b = −12, c = 8, Δ = 16, t = 1 and
+// 2. t = 2 is the far root, and also the distance to the entry (2) along D/|D|: two readings
+// fit, so neither is named, and the feedback gives both.
+TEST(Mistakes, TwoReadingsThatFitNameNeither) {
+  auto r = grade(R"({"id": "u", "kind": "first-hit",
+    "ray": {"origin": [0, 0, 0], "direction": [2, 0, 0]},
+    "objects": [{"name": "A", "type": "sphere", "center": [3, 0, 0], "radius": 1}]})",
+                 R"({"object": "A", "hits": [{"t": 2}]})");
+  EXPECT_TRUE(ids(r).empty()) << ids(r).front();
+  std::string said;
+  for (const auto& p : r.parts) {
+    if (p.name == "t") said = fmt::format("{}", fmt::join(p.feedback, " "));
+  }
+  EXPECT_NE(said.find("Far root"), std::string::npos) << said;
+  EXPECT_NE(said.find("D/|D|"), std::string::npos) << said;
+  // Either alone is named: t = 2 along D = (1, 0, 0) to the ball at (1.5, 0, 0), r = 0.5, is
+  // the far root only (t = 1 and 2).
+  auto far = grade(R"({"id": "f", "kind": "first-hit",
+    "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+    "objects": [{"name": "A", "type": "sphere", "center": [1.5, 0, 0], "radius": 0.5}]})",
+                   R"({"object": "A", "hits": [{"t": 2}]})");
+  EXPECT_EQ(ids(far), std::vector<std::string>{"far-root"});
+}
+
+// Ball r = 4 at (3, 1, 0), ray from the origin along +x: f = (−3, −1, 0), f·f = 10, b = −6,
+// c = 10 − 16 = −6, Δ = 36 + 24 = 60. A discriminant of 12 comes from b² + 4ac = 36 − 24
+// and equally from r for r² (c = 10 − 4 = 6, Δ = 36 − 24): neither slip is named.
+TEST(Mistakes, AStepTwoSlipsExplainNamesNeither) {
+  const char* ball = R"({"id": "b", "method": "algebraic",
+    "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+    "object": {"type": "sphere", "center": [3, 1, 0], "radius": 4}})";
+  auto r = grade(ball, R"({"steps": {"discriminant": 12}})");
+  EXPECT_TRUE(ids(r).empty()) << ids(r).front();
+  std::string said;
+  for (const auto& p : r.parts) {
+    if (p.name == "steps") said = fmt::format("{}", fmt::join(p.feedback, " "));
+  }
+  EXPECT_NE(said.find("More than one slip"), std::string::npos) << said;
+  EXPECT_NE(said.find("Sign slip in the discriminant"), std::string::npos) << said;
+  EXPECT_NE(said.find("r where r² belongs"), std::string::npos) << said;
+  // c = 6 alone is r for r² only.
+  EXPECT_EQ(ids(grade(ball, R"({"steps": {"c": 6}})")), std::vector<std::string>{"r-not-squared"});
 }
 
 TEST(Mistakes, PlaneDSign) {

@@ -53,6 +53,12 @@ constexpr double kSameRoot = 1e-9;
 constexpr int kDisplayFigures = 4;
 constexpr int kMaxDisplayDecimals = 6;
 
+// One way a wrong value comes about: a named mistake (`id`), or none (another object's hit).
+struct Reading {
+  std::string id;
+  std::string message;
+};
+
 struct StudentHit {
   std::optional<StudentNumber> t;
   std::string t_fault;
@@ -88,6 +94,10 @@ class HitsGrader final : public KindGrader {
     return widen_[j] * std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
   }
   bool nearer_another_t(double t, std::size_t j) const;
+  bool is_candidate(double t) const {
+    return std::any_of(candidates_.begin(), candidates_.end(),
+                       [&](double c) { return std::abs(c - t) <= kSameRoot * (1 + std::abs(t)); });
+  }
   bool nearer_another_point(const Vec3d& p, std::size_t j) const;
   std::optional<double> other_root_at(const StudentNumber (&p)[3], const Tolerance& tp) const;
   std::string fmt_t(double t) const { return format_number(t, numbers_); }
@@ -103,9 +113,11 @@ class HitsGrader final : public KindGrader {
   std::vector<double> widen_;
   bool double_root_ = false;  // one hit, where the ray touches the surface (a tangent)
   Conventions conventions_;
-  std::vector<double> behind_;  // roots with t < t_min: behind the origin
-  std::vector<double> far_;     // roots past the first hit of the same object
-  std::vector<double> others_;  // every candidate root that is none of the reference hits
+  std::vector<double> behind_;      // roots with t < t_min: behind the origin
+  std::vector<double> far_;         // roots past the first hit of the same object
+  std::vector<double> others_;      // every candidate root that is none of the reference hits
+  std::vector<double> candidates_;  // every root of every right derivation, every hit
+  std::vector<std::pair<std::string, double>> other_objects_;  // the hits of objects hit later
   std::vector<MethodDerivation> methods_;
   std::vector<MistakenSolution> mistaken_;
   NumberFormat numbers_;
@@ -202,6 +214,12 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()), conventions_(p.c
       }
     }
   }
+  for (std::size_t k = 0; k < shapes.size() && first_hit_; ++k) {
+    if (static_cast<int>(k) == ref_object_) continue;
+    for (const auto& h : shapes[k]->intersect(ray_).hits)
+      other_objects_.emplace_back(names_[k], h.t);
+  }
+  candidates_ = candidates;
   for (double c : candidates) {
     if (std::none_of(ref_.begin(), ref_.end(), [&](const Hit& h) { return same(c, h.t); })) {
       others_.push_back(c);
@@ -475,59 +493,85 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
     auto near = [&](double r) {
       return compare_number(*hits[i].t, r, r, tt).match == Match::kRight;
     };
-    bool explained = false;
-    for (double r : carried_roots) {
-      if (!near(r)) continue;
+    if (std::any_of(carried_roots.begin(), carried_roots.end(), near)) {
       t_credit += context_.points.carried_forward;
       out.carried_forward = true;
       t_feedback.push_back(fmt::format(
           "t = {} follows correctly from your own earlier steps (error carried forward).", typed));
-      explained = true;
+      continue;
+    }
+    // Every reading that explains the value; a named mistake is asserted only when it is the
+    // one reading that fits.
+    std::vector<Reading> readings;
+    for (double r : behind_) {
+      if (!near(r)) continue;
+      readings.push_back(
+          {"negative-t",
+           fmt::format("t = {} solves the equation, but t < {} puts it behind the ray's origin.",
+                       typed, fmt_t(ray_.t_min))});
       break;
     }
-    for (double r : behind_) {
-      if (explained || !near(r)) continue;
-      t_mistake(make_mistake(
-          "negative-t", "t",
-          fmt::format("t = {} solves the equation, but t < {} puts it behind the ray's origin.",
-                      typed, fmt_t(ray_.t_min))));
-      explained = true;
-    }
     for (double r : far_) {
-      if (explained || !near(r)) continue;
-      t_mistake(make_mistake(
-          "far-root", "t",
-          fmt::format("t = {} is where the ray leaves the object; it enters at t = {}.", typed,
-                      ref_.empty() ? "?" : fmt_t(ref_.front().t))));
-      explained = true;
+      if (!near(r)) continue;
+      readings.push_back(
+          {"far-root",
+           fmt::format("t = {} is where the ray leaves the object; it enters at t = {}.", typed,
+                       ref_.empty() ? "?" : fmt_t(ref_.front().t))});
+      break;
     }
-    if (!explained && std::abs(dlen - 1) > 1e-9) {
+    if (std::abs(dlen - 1) > 1e-9) {
       for (const auto& h : ref_) {
         if (!near(h.t * dlen)) continue;
-        t_mistake(make_mistake(
-            "unit-direction-t", "t",
-            fmt::format("t = {} is the distance along D/|D|; with |D| = {} the ray's t is {}.",
-                        typed, format_number(dlen, numbers_), fmt_t(h.t))));
-        explained = true;
+        readings.push_back(
+            {"unit-direction-t",
+             fmt::format("t = {} is the distance along D/|D|; with |D| = {} the ray's t is {}.",
+                         typed, format_number(dlen, numbers_), fmt_t(h.t))});
         break;
       }
     }
     for (const auto& ms : mistaken_) {
-      if (explained) break;
+      bool fits = false;
       for (const auto& part : ms.parts) {
         for (double r : derivation_roots(part.derivation)) {
-          if (explained || !near(r)) continue;
-          t_mistake(make_mistake(ms.id, "t", fmt::format("your t = {} is what it gives.", typed)));
-          explained = true;
+          // A root the mistake leaves as it was (a ball of radius 1 has r = r²) is no sign of it.
+          fits = fits || (near(r) && !is_candidate(r));
         }
       }
+      bool again = std::any_of(readings.begin(), readings.end(),
+                               [&](const Reading& x) { return x.id == ms.id; });
+      if (fits && !again) {
+        readings.push_back({ms.id, fmt::format("your t = {} is what it gives.", typed)});
+      }
     }
-    for (std::size_t k = 0; k < n_stu && !explained; ++k) {
+    for (const auto& [object, t] : other_objects_) {
+      if (!near(t)) continue;
+      readings.push_back(
+          {"", fmt::format("t = {} is where the ray meets {}, which is not the first "
+                           "object it hits.",
+                           typed, object)});
+      break;
+    }
+    for (std::size_t k = 0; k < n_stu; ++k) {
       if (k == i || match[k] < 0 || !near(ref_[static_cast<std::size_t>(match[k])].t)) continue;
-      t_feedback.push_back(fmt::format("t = {} is listed twice; it is one hit.", typed));
-      explained = true;
+      readings.push_back({"", fmt::format("t = {} is listed twice; it is one hit.", typed)});
+      break;
     }
-    if (!explained) t_feedback.push_back(fmt::format("t = {} is not a hit of this ray.", typed));
+    if (readings.empty()) {
+      t_feedback.push_back(fmt::format("t = {} is not a hit of this ray.", typed));
+    } else if (readings.size() == 1 && !readings.front().id.empty()) {
+      t_mistake(make_mistake(readings.front().id, "t", readings.front().message));
+    } else if (readings.size() == 1) {
+      t_feedback.push_back(readings.front().message);
+    } else {
+      std::vector<std::string> fit;
+      for (const auto& x : readings) {
+        fit.push_back(x.id.empty() ? x.message
+                                   : fmt::format("{} ({})", mistake_info(x.id).title, x.message));
+      }
+      t_feedback.push_back(fmt::format(
+          "t = {} is not a hit. More than one reading explains it, so none is named: {}", typed,
+          fmt::join(fit, "; or ")));
+    }
   }
   // Beside hits that give their t, one that gives none counts as a hit with a wrong t.
   if (any_t) {

@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+
 #include "derivation/number_format.h"
 #include "json/cursor.h"
 
@@ -164,20 +166,29 @@ StepsGrade grade_steps(const GradingContext& c, const Task& task,
       }
     }
     if (!carried) {
-      bool named = false;
+      // A mistake is named only when it is the one that gives this value.
+      std::vector<std::string_view> fit;
       for (const auto& ms : mistaken) {
         if (ms.method != best->method || ms.parts.empty()) continue;
         const Step* wrong = ms.parts.front().derivation.find(step.name);
         if (!wrong || match_value(s, wrong->value, tol) != Match::kRight) continue;
+        if (std::find(fit.begin(), fit.end(), ms.id) == fit.end()) fit.push_back(ms.id);
+      }
+      if (fit.size() == 1) {
         out.mistakes.push_back(make_mistake(
-            ms.id, "steps/" + step.name,
+            fit.front(), "steps/" + step.name,
             fmt::format("you have {} = {}; the right value is {}.", step.name,
                         format_value(*mine, fmt_numbers), format_value(step.value, fmt_numbers))));
-        named = true;
         feedback.push_back(fmt::format("{} is wrong: see the named mistake.", step.name));
-        break;
-      }
-      if (!named) {
+      } else if (fit.size() > 1) {
+        std::vector<std::string> titles;
+        for (std::string_view id : fit) titles.emplace_back(mistake_info(id).title);
+        feedback.push_back(fmt::format(
+            "{} = {} is not right: it is {}. More than one slip gives your value, so none is "
+            "named: {}.",
+            step.name, format_value(*mine, fmt_numbers), format_value(step.value, fmt_numbers),
+            fmt::join(titles, "; or ")));
+      } else {
         feedback.push_back(fmt::format("{} = {} is not right: it is {}.", step.name,
                                        format_value(*mine, fmt_numbers),
                                        format_value(step.value, fmt_numbers)));
