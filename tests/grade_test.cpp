@@ -2,6 +2,8 @@
 // error carried forward, by values derived by hand.
 #include "grading/grade.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <gtest/gtest.h>
 
 #include "test_util.h"
@@ -184,6 +186,27 @@ TEST(Grade, ErrorCarriedForward) {
   auto bare = grade(kSphere1, R"({"hits": [{"t": 1.5}, {"t": 2.5}]})");
   EXPECT_DOUBLE_EQ(part(bare, "t")->points, 0);
   EXPECT_FALSE(bare.carried_forward);
+}
+
+// Nothing is carried forward from a trivial value. Seed 000's sphere case 1 (C = (2, 0, 0),
+// r = 1, D = +x): L = C − O = (2, 0, 0) and t_ca = L·D = 2. L given as the zero vector makes
+// t_ca = 0 "follow" from it for free; L = (3, 0, 0), a real slip, still carries t_ca = 3.
+// t = 0 puts P = O + 0·D at the ray's origin (0, 0, 0): no carried credit for that point.
+TEST(Grade, NoCreditCarriedFromATrivialValue) {
+  auto zero = grade(kSphere1, R"({"steps": {"L": [0, 0, 0], "t_ca": 0}})");
+  EXPECT_EQ(part(zero, "steps")->status, PartStatus::kWrong);
+  EXPECT_FALSE(zero.carried_forward);
+  std::string said = fmt::format("{}", fmt::join(part(zero, "steps")->feedback, " "));
+  EXPECT_NE(said.find("nothing later is carried forward"), std::string::npos) << said;
+  auto slip = grade(kSphere1, R"({"steps": {"L": [3, 0, 0], "t_ca": 3}})");
+  EXPECT_EQ(part(slip, "steps")->status, PartStatus::kPartial);
+  auto origin = grade(kSphere1, R"({"hits": [{"t": 0, "point": [0, 0, 0]}]})");
+  EXPECT_DOUBLE_EQ(part(origin, "point")->points, 0);
+  EXPECT_FALSE(origin.carried_forward);
+  // A wrong t that is not 0 still carries its point: t = 1.5 gives (1.5, 0, 0), half the
+  // credit of one of the two hits' points.
+  auto own = grade(kSphere1, R"({"hits": [{"t": 1.5, "point": [1.5, 0, 0]}]})");
+  EXPECT_DOUBLE_EQ(part(own, "point")->points, 0.25);
 }
 
 // Steps of the wrong shape or a yes/no are feedback, never an error or a crash.

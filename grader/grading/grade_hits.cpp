@@ -648,9 +648,14 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
                                            format_vector(ref_[j].point, numbers_)));
         }
       } else if (h.t) {
-        // Consistent with the student's own t: P = O + tD.
+        // Consistent with the student's own t: P = O + tD. Nothing is carried from t = 0,
+        // whose point is the ray's own origin.
         Vec3d own = ray_.at(h.t->value);
-        if (compare_vector(h.point->c, own, tp).match == Match::kRight) {
+        if (h.t->value == 0) {
+          p_feedback.push_back(
+              "Your t = 0 puts the point at the ray's own origin: nothing is carried forward "
+              "from it.");
+        } else if (compare_vector(h.point->c, own, tp).match == Match::kRight) {
           p_credit += context_.points.carried_forward;
           out.carried_forward = true;
           p_feedback.push_back(fmt::format(

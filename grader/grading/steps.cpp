@@ -74,6 +74,19 @@ Match match_value(const AnswerReader& student, const Value& reference, const Tol
   return r.match;
 }
 
+namespace {
+
+// A wrong value that is zero (0, or the zero vector) is trivial: what follows from it
+// follows for free (f = 0 makes b = 2 D·f = 0), so nothing is carried forward from it. A
+// value equal to a given is not trivial: f = C − O = C when O is the origin is a sign slip.
+std::optional<std::string> trivial_value(const Value& v) {
+  if (v.is_scalar() && v.scalar == 0) return "zero";
+  if (v.is_vector() && v.vector == Vec3d{}) return "the zero vector";
+  return std::nullopt;
+}
+
+}  // namespace
+
 StepsGrade grade_steps(const GradingContext& c, const Task& task,
                        const std::vector<MethodDerivation>& reference,
                        const std::vector<MistakenSolution>& mistaken, const AnswerReader& steps) {
@@ -195,6 +208,13 @@ StepsGrade grade_steps(const GradingContext& c, const Task& task,
       }
     }
     out.wrong.push_back(step.name);
+    if (std::optional<std::string> trivial = trivial_value(*mine)) {
+      // Nothing is carried forward from a trivial value: later steps would follow from it
+      // for free (f = 0 makes b = 0 "right").
+      feedback.push_back(fmt::format("{} = {} is {}: nothing later is carried forward from it.",
+                                     step.name, format_value(*mine, fmt_numbers), *trivial));
+      continue;
+    }
     own.values[step.name] = *mine;
   }
   if (!out.wrong.empty()) {
