@@ -86,6 +86,25 @@ TEST(Mistakes, TForNormalizedDirection) {
   EXPECT_EQ(ids(r), std::vector<std::string>{"unit-direction-t"});
 }
 
+// The unit sphere scaled by 2, seen from (0, 0, −5) along +z: in object space O' = (0, 0, −2.5)
+// and D' = (0, 0, 0.5), so −2.5 + 0.5t = ∓1 gives t = 3 and 7. Along D'/|D'| = (0, 0, 1) the
+// distances are 1.5 and 3.5 (the values a reader published for 3 and 7).
+TEST(Mistakes, TAlongTheUnitObjectSpaceDirection) {
+  const char* scaled = R"({"id": "o", "ray": {"origin": [0, 0, -5], "direction": [0, 0, 1]},
+    "object": {"type": "sphere", "center": [0, 0, 0], "radius": 1,
+               "transform": [{"scale": 2}]}})";
+  auto r = grade(scaled, R"({"hits": [{"t": 1.5}, {"t": 3.5}]})");
+  EXPECT_EQ(ids(r), std::vector<std::string>{"object-space-unit-t"});
+  EXPECT_NE(r.mistakes.front().message.find("|A⁻¹D| = 0.5"), std::string::npos)
+      << r.mistakes.front().message;
+  // A rotation keeps lengths: |A⁻¹D| = 1, so there is no such slip to make.
+  auto turned = grade(R"({"id": "q", "ray": {"origin": [0, 0, -5], "direction": [0, 0, 1]},
+    "object": {"type": "sphere", "center": [0, 0, 0], "radius": 2,
+               "transform": [{"rotate": {"axis": [0, 1, 0], "degrees": 90}}]}})",
+                      R"({"hits": [{"t": 1.5}, {"t": 3.5}]})");
+  EXPECT_TRUE(ids(turned).empty()) << ids(turned).front();
+}
+
 // Seed 001: n = ac × ab = (0, 0, −16) for a = 0, b = (4,0,0), c = (0,4,0).
 TEST(Mistakes, CrossProductOrderFlipsTheNormal) {
   auto r = grade(R"({"id": "tri", "points": {"normal": 1},
@@ -216,9 +235,10 @@ TEST(Mistakes, NeverReportedOnTheReferenceAnswer) {
 }
 
 TEST(Mistakes, CatalogueIsComplete) {
-  for (const char* id : {"discriminant-sign", "b-sign", "plane-d-sign", "far-root", "negative-t",
-                         "unit-direction-t", "cross-order", "inward-normal", "pixel-corner",
-                         "pixel-centre", "cylinder-b-no-origin", "r-not-squared"}) {
+  for (const char* id :
+       {"discriminant-sign", "b-sign", "plane-d-sign", "far-root", "negative-t", "unit-direction-t",
+        "cross-order", "inward-normal", "pixel-corner", "pixel-centre", "cylinder-b-no-origin",
+        "r-not-squared", "object-space-unit-t"}) {
     EXPECT_FALSE(mistake_info(id).explanation.empty()) << id;
   }
 }

@@ -111,6 +111,9 @@ class HitsGrader final : public KindGrader {
   int ref_object_ = -1;
   const Shape* shape_ = nullptr;  // the object whose hits are asked for
   std::vector<double> widen_;
+  // |A⁻¹D| of a transformed object's ray in object space, where it is neither 1 nor |D|
+  // (t along its unit direction is then a mistake of its own); else 0.
+  double object_space_scale_ = 0;
   bool double_root_ = false;  // one hit, where the ray touches the surface (a tangent)
   Conventions conventions_;
   std::vector<double> behind_;      // roots with t < t_min: behind the origin
@@ -220,6 +223,13 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()), conventions_(p.c
       other_objects_.emplace_back(names_[k], h.t);
   }
   candidates_ = candidates;
+  if (const auto* moved = dynamic_cast<const TransformedShape*>(shape_)) {
+    double k = length(moved->transform().ray_to_object(ray_).direction);
+    double dlen = length(ray_.direction);
+    if (std::abs(k - 1) > kSameRoot && std::abs(k - dlen) > kSameRoot * (1 + dlen)) {
+      object_space_scale_ = k;
+    }
+  }
   for (double c : candidates) {
     if (std::none_of(ref_.begin(), ref_.end(), [&](const Hit& h) { return same(c, h.t); })) {
       others_.push_back(c);
@@ -526,6 +536,17 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
             {"unit-direction-t",
              fmt::format("t = {} is the distance along D/|D|; with |D| = {} the ray's t is {}.",
                          typed, format_number(dlen, numbers_), fmt_t(h.t))});
+        break;
+      }
+    }
+    if (object_space_scale_ > 0) {
+      for (const auto& h : ref_) {
+        if (!near(h.t * object_space_scale_)) continue;
+        readings.push_back(
+            {"object-space-unit-t",
+             fmt::format("t = {} is the distance along A⁻¹D/|A⁻¹D| in the object's own space; "
+                         "with |A⁻¹D| = {} the ray's t is {}.",
+                         typed, format_number(object_space_scale_, numbers_), fmt_t(h.t))});
         break;
       }
     }

@@ -53,6 +53,12 @@ const std::vector<MistakeInfo>& mistake_catalogue() {
          "t counts lengths of the direction as given. The direction here is not a unit vector, "
          "so a distance along D/|D| must be divided by |D| to give t.",
          0},
+        {"object-space-unit-t", "convention", "t measured along a unit object-space direction",
+         "A transformed object is met in its own space by the ray M⁻¹O + t·A⁻¹D, with A⁻¹D "
+         "kept as it is, not normalized, so that t is the same in both spaces. Normalized, t "
+         "counts lengths in object space, which the transform's scale changes: divide that "
+         "distance by |A⁻¹D| to get the world t.",
+         0},
         {"cross-order", "orientation", "Cross product in the wrong order",
          "a × b = −(b × a): swapping the factors flips the vector. With vertices a, b, c in "
          "order the normal is (b − a) × (c − a); a camera's right vector is d × u.",
