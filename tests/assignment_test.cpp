@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <regex>
 #include <set>
 
@@ -16,9 +17,11 @@
 #include "assignments/roster.h"
 #include "assignments/variants.h"
 #include "core/escape.h"
+#include "grading/grade.h"
 #include "grading/mistakes.h"
 #include "grading/outputs.h"
 #include "run_binary.h"
+#include "test_util.h"
 
 namespace raygrade {
 namespace {
@@ -607,6 +610,85 @@ TEST(Assignment, TheHandoutShowsTheStudentsNumbersAndNoAnswer) {
   // The form is the same for a hit and a miss: it does not depend on the answer.
   EXPECT_EQ(answer_form(problems[0]).dump(),
             answer_form(student_problems(spec, bank.problems, "s002")[0]).dump());
+}
+
+// The inputs of a form, each as the part it answers ("ray/origin" answers "ray"; a column of the
+// hits table its own part); the JSON catch-all is "".
+std::vector<std::string> asked_inputs(const nlohmann::json& form) {
+  std::vector<std::string> out;
+  for (const auto& f : form["fields"]) {
+    if (f["type"] == "hits") {
+      for (const auto& c : f["columns"]) out.push_back(c["key"]);
+      continue;
+    }
+    std::string key = f["key"];
+    out.push_back(key.substr(0, key.find('/')));
+  }
+  return out;
+}
+
+// A part worth 0 points is not asked: no input on the handout, in the answer template or in
+// PrairieLearn (all three come from the form). Every problem of the bank and of each student of
+// the example assignment.
+TEST(Assignment, NoInputForAPartWorthNoPoints) {
+  Bank bundled = load_bank({std::string(RAYGRADE_SOURCE_DIR) + "/problems"});
+  std::vector<const Problem*> all;
+  for (const auto& p : bundled.problems) all.push_back(&p);
+  AssignmentSpec spec = load_assignment(kExample);
+  AssignmentBank bank = load_assignment_bank(spec);
+  std::vector<Problem> drawn;
+  for (const char* s : {"s001", "s002", "s003"}) {
+    for (auto& p : student_problems(spec, bank.problems, s)) drawn.push_back(std::move(p));
+  }
+  for (const auto& p : drawn) all.push_back(&p);
+  // Inputs that answer another part too.
+  const std::map<std::string, std::string> also = {
+      {"total_internal_reflection", "direction"}, {"object", "hit"}, {"t", "hit"}};
+  for (const Problem* p : all) {
+    Grader g(*p);
+    nlohmann::json form = answer_form(*p);
+    for (const auto& part : asked_inputs(form)) {
+      if (part.empty()) continue;  // the ray tree typed as JSON
+      auto other = also.find(part);
+      bool scored =
+          g.part_points(part) > 0 || (other != also.end() && g.part_points(other->second) > 0);
+      EXPECT_TRUE(scored) << p->id << ": an input for " << part << ", worth no points";
+    }
+    // The answer template: each key of its answer (and of each row of its hits).
+    nlohmann::json blank = blank_answer(form);
+    std::vector<std::string> keys;
+    for (const auto& [key, value] : blank.items()) {
+      if (key != "hits") keys.push_back(key);
+      if (key == "hits") {
+        for (const auto& [column, v] : value[0].items()) keys.push_back(column);
+      }
+    }
+    for (const auto& key : keys) {
+      auto other = also.find(key);
+      EXPECT_TRUE(g.part_points(key) > 0 ||
+                  (other != also.end() && g.part_points(other->second) > 0))
+          << p->id << ": the template has " << key << ", worth no points";
+    }
+  }
+  // By the documented defaults: a sphere asks t (2 points) and the point (1), not the normal
+  // (0); a triangle with "points": {"normal": 1} asks the normal too, never the weights; a
+  // refraction asks the direction (and "total internal reflection?", which answers it); a
+  // Phong problem the intensity alone.
+  auto inputs = [](const char* source) {
+    return asked_inputs(answer_form(testing::problem(source)));
+  };
+  using V = std::vector<std::string>;
+  EXPECT_EQ(inputs(R"({"id": "s", "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+    "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}})"),
+            (V{"t", "point"}));
+  EXPECT_EQ(inputs(R"({"id": "tri", "points": {"normal": 1},
+    "ray": {"origin": [0.2, 0.2, 1], "direction": [0, 0, -1]},
+    "object": {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}})"),
+            (V{"t", "point", "normal"}));
+  EXPECT_EQ(inputs(R"({"id": "w", "kind": "refract", "direction": [0.8660254037844386, -0.5, 0],
+    "normal": [0, 1, 0], "n1": 1, "n2": 1.333})"),
+            (V{"total_internal_reflection", "direction"}));
+  EXPECT_EQ(inputs(testing::kTwoLightShade), (V{"intensity"}));
 }
 
 // The example's bank is "../problems": the page names the assignment one folder deep (d1/) and

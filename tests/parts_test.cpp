@@ -11,6 +11,7 @@
 
 #include "check/problem_checks.h"
 #include "grading/grade.h"
+#include "grading/outputs.h"
 #include "grading/submission.h"
 #include "json/source.h"
 #include "test_util.h"
@@ -92,7 +93,7 @@ TEST(Parts, PointsSelectAnyField) {
   GradeResult lights = grade(testing::kTwoLightShade,
                              R"({"intensity": 0.9, "lights": [{"light": "B", "reaches": true}]})");
   EXPECT_TRUE(says(part(lights, "lights")->feedback, "shadow ray is blocked"));
-  EXPECT_TRUE(says(lights.notes, "lights is not asked"));
+  EXPECT_TRUE(says(lights.notes, "Not asked in this problem (no points): lights."));
 }
 
 // Into water at 60°: η = 3/4, cos θi = 1/2, k = 1 − (9/16)(3/4) = 37/64, √k = 0.76035;
@@ -335,7 +336,13 @@ TEST(Parts, UnaskedPartsAreNotMissingButNotedWhenGiven) {
   EXPECT_DOUBLE_EQ(r.score, 1);
   GradeResult normal = grade(kPartsSphere, R"({"hits": [{"t": 1, "normal": [-1, 0, 0]},
     {"t": 3, "normal": [1, 0, 0]}]})");
-  EXPECT_TRUE(says(normal.notes, "normal is not asked"));
+  EXPECT_TRUE(says(normal.notes, "Not asked in this problem (no points): normal."));
+  ASSERT_EQ(normal.notes.size(), 1u);  // noted once, for both hits' normals
+  // No verdict beside a score: "normal (not counted)", never "normal (0/0, partial)".
+  auto lines = feedback_lines(normal);
+  EXPECT_TRUE(says(lines, "normal (not counted)"));
+  EXPECT_FALSE(says(lines, "normal (0/0"));
+  EXPECT_DOUBLE_EQ(normal.score, 2);  // t's 2 points: the normals change nothing
 }
 
 TEST(Parts, EveryKindDeclaresItsParts) {

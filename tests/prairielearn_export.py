@@ -189,21 +189,21 @@ def flipped(vectors):
     return "; ".join(typed([-x for x in v]) for v in vectors)
 
 
+# Inputs that also answer another part: "yes" to total internal reflection says there is no
+# refracted direction; a ray tree's first hit is one part, its object and t.
+ALSO_ANSWERS = {"total_internal_reflection": "direction", "object": "hit", "t": "hit"}
+
+
 def wrong_answer(pid, inputs, answer, statement):
     """A wrong answer to each problem, made as students make them, and what the feedback must
     then say: the id of the named mistake where raygrade's catalogue has one for the kind,
     else the status of the wrong part."""
     w = dict(inputs)
     hits = answer.get("hits", [])
-    if pid in ("variant-sphere", "variant-first-hit"):
-        # The normal turned inward, and the point a little off (so that points are lost).
-        w.update(normal=flipped([h["normal"] for h in hits]),
-                 point=shifted([h["point"] for h in hits], 0.5))
-        return w, "inward-normal"
-    if pid == "variant-triangle":
-        w.update(normal=flipped([h["normal"] for h in hits]),
-                 point=shifted([h["point"] for h in hits], 0.5))
-        return w, "cross-order"
+    if pid in ("variant-sphere", "variant-first-hit", "variant-triangle"):
+        # The point a little off (the normal carries no points here, so it is not asked).
+        w.update(point=shifted([h["point"] for h in hits], 0.5))
+        return w, "point (wrong)"
     if pid == "variant-plane":
         # t measured along the unit direction: t·|D|.
         d = [float(x) for x in re.search(r"direction \(([^)]*)\)", statement)[1].split(",")]
@@ -215,14 +215,12 @@ def wrong_answer(pid, inputs, answer, statement):
                       r"\((\d+), (\d+)\)", statement)
         f, res_x, res_y, x, y = (float(g) for g in m.groups())
         w["ray_direction"] = typed([x - res_x / 2, y - res_y / 2, -f])
-        w["unit_direction"] = ""
         return w, "pixel-corner"
     if pid == "seed000-cylinder-derive-origin":
         return {**w, "b": "2*vx + 2*vy"}, "cylinder-b-no-origin"
     if pid == "variant-reflect":
         d = answer["direction"]
-        return {**w, "direction": typed([d[0], -d[1], d[2]]), "unit_direction": ""}, \
-            "direction (wrong)"
+        return {**w, "direction": typed([d[0], -d[1], d[2]])}, "direction (wrong)"
     if pid == "variant-refract":
         d = answer["direction"]
         return {**w, "direction": typed([d[0], -d[1], d[2]])}, "direction (wrong)"
@@ -304,6 +302,13 @@ def main(raygrade, assignment, static=None):
                 check(right["partial_scores"] and all(
                     math.isclose(p["score"], 1.0) for p in right["partial_scores"].values()),
                     f"{pid}/{seed} right: partial scores {right['partial_scores']}")
+                # Every input asks for a part that carries points (a scored part); a part
+                # worth 0 points has no input.
+                for name in elements.inputs:
+                    part = re.sub(r"^(ray|lights)_.*", r"\1", name)
+                    scored = set(right["partial_scores"])
+                    check(part in scored or ALSO_ANSWERS.get(part) in scored,
+                          f"{pid}: input {name} asks for a part worth no points ({sorted(scored)})")
 
                 wrong_inputs, says = wrong_answer(pid, inputs, ref["answer"], ref["statement"])
                 wrong = submit(server, qdir, course, seed, params, wrong_inputs)

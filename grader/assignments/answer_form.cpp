@@ -1,6 +1,7 @@
 // Answer forms by kind.
 #include "assignments/answer_form.h"
 
+#include "grading/grade.h"
 #include "kinds/derive.h"
 #include "kinds/shade.h"
 #include "shapes/primitives.h"
@@ -101,9 +102,12 @@ json fresnel_form() {
 }
 
 json refract_form() {
+  // "Yes" to total internal reflection also answers the direction: there is none.
+  json tir = field("yesno", "total_internal_reflection", "Total internal reflection?");
+  tir["parts"] = json::array({"total_internal_reflection", "direction"});
   return {
       {"fields",
-       json::array({field("yesno", "total_internal_reflection", "Total internal reflection?"),
+       json::array({tir,
                     field("vector", "direction",
                           "The refracted direction (blank under total internal reflection)"),
                     field("vector", "reflected_direction",
@@ -142,9 +146,13 @@ json shade_form(const Problem& p) {
 json ray_tree_form(const Problem& p) {
   std::string ask = p.source.value("ask", "tree");
   if (ask == "hit") {
+    // The object and its t are one part, "hit".
     json scene = p.source.value("scene", json::object());
-    return {{"fields", json::array({object_choice(names_of(scene.value("objects", json()))),
-                                    hits_field(false, false, false)})}};
+    json object = object_choice(names_of(scene.value("objects", json())));
+    json hits = hits_field(false, false, false);
+    object["parts"] = json::array({"hit"});
+    for (auto& c : hits["columns"]) c["parts"] = json::array({"hit"});
+    return {{"fields", json::array({object, hits})}};
   }
   json f = field("json", "",
                  "The ray tree as JSON ({\"nodes\": [...], \"all_terms\": [...], "
@@ -167,6 +175,44 @@ json derive_form(const Problem& p) {
     fields.push_back(f);
   }
   return {{"fields", fields}};
+}
+
+// The parts an input answers: its "parts", else the first segment of its key ("ray/origin"
+// answers "ray").
+std::vector<std::string> parts_of(const json& f) {
+  if (f.contains("parts")) return f["parts"].get<std::vector<std::string>>();
+  std::string key = f["key"];
+  return {key.substr(0, key.find('/'))};
+}
+
+// Only the inputs of parts that carry points: a part worth 0 points is not asked. The JSON
+// catch-all (key "") stays; a table of hits keeps the columns that are asked.
+json only_asked(json form, const Grader& grader) {
+  auto asked = [&](const json& f) {
+    for (const auto& part : parts_of(f)) {
+      if (grader.part_points(part) > 0) return true;
+    }
+    return false;
+  };
+  json kept = json::array();
+  for (auto& f : form["fields"]) {
+    if (f["type"] == "hits") {
+      json columns = json::array();
+      for (auto& c : f["columns"]) {
+        if (!asked(c)) continue;
+        c.erase("parts");
+        columns.push_back(c);
+      }
+      if (columns.empty()) continue;
+      f["columns"] = columns;
+    } else if (f["key"] != "" && !asked(f)) {
+      continue;
+    }
+    f.erase("parts");
+    kept.push_back(f);
+  }
+  form["fields"] = kept;
+  return form;
 }
 
 json blank_vector() { return json::array({"", "", ""}); }
@@ -197,7 +243,9 @@ json blank_of(const json& f) {
 
 }  // namespace
 
-json answer_form(const Problem& p) {
+json answer_form(const Problem& p) { return only_asked(every_input(p), Grader(p)); }
+
+json every_input(const Problem& p) {
   if (p.kind == "intersect") return intersect_form(p);
   if (p.kind == "first-hit") return first_hit_form(p);
   if (p.kind == "camera-ray") return camera_ray_form();

@@ -12,7 +12,11 @@ namespace raygrade {
 // choice, set, formula, hits (rows of t, point, normal ...), rows (one row per named item),
 // json (the answer typed as JSON). Nothing in it depends on the answer: the same form for a
 // hit and a miss.
+// Only the parts that carry points are asked: a part worth 0 points has no input.
 nlohmann::json answer_form(const Problem& p);
+
+// Every input the kind's form can have, asked or not.
+nlohmann::json every_input(const Problem& p);
 
 // The same answer with every input left blank: the skeleton of answers-template.json, with ""
 // for every number (a blank is a part not given).

@@ -48,7 +48,11 @@ void apply_feedback_policy(GradeResult& r, FeedbackPolicy policy) {
   }
   for (auto& p : r.parts) {
     std::vector<std::string> kept;
-    if (p.status != PartStatus::kRight) kept.push_back(status_sentence(p.status));
+    if (p.max_points == 0) {
+      kept.push_back("Checked, not counted: this problem gives it no points.");
+    } else if (p.status != PartStatus::kRight) {
+      kept.push_back(status_sentence(p.status));
+    }
     for (const auto& s : p.feedback) {
       if (quotes_only_the_student(s)) kept.push_back(s);
     }

@@ -471,9 +471,11 @@
       view.feedback.appendChild(el("p", {class: "score", text: "Score: " + pts(result.score) + " / " + pts(result.max_score)}));
       const list = el("ul", {class: "parts"});
       for (const part of result.parts || []) {
-        const item = el("li", {class: "part " + part.status, "data-part": part.name});
-        const points = part.points !== undefined ? " (" + pts(part.points) + " / " + pts(part.max_points) + ")" : "";
-        item.appendChild(el("strong", {text: part.name + ": " + part.status + points}));
+        // A part worth no points was not asked: checked, shown without a verdict or a score.
+        const counted = !(part.max_points === 0);
+        const item = el("li", {class: "part " + (counted ? part.status : "not-counted"), "data-part": part.name});
+        const points = counted && part.points !== undefined ? " (" + pts(part.points) + " / " + pts(part.max_points) + ")" : "";
+        item.appendChild(el("strong", {text: part.name + ": " + (counted ? part.status : "not counted") + points}));
         for (const line of part.feedback || []) item.appendChild(el("div", {text: line}));
         list.appendChild(item);
       }

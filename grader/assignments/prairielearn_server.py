@@ -506,11 +506,14 @@ def _outcome(data, q, answer):
         partial, parts = {}, []
         for part in result["parts"]:
             most = part["max_points"]
-            score = part["points"] / most if most > 0 else (
-                1.0 if part["status"] == "right" else 0.0)
             text = _without_folders(" ".join(part["feedback"]), data)
-            partial[part["name"]] = {"score": score, "feedback": text}
-            parts.append({"name": part["name"], "status": part["status"], "feedback": text})
+            status = part["status"]
+            if most > 0:
+                partial[part["name"]] = {"score": part["points"] / most, "feedback": text}
+            else:
+                # A part that carries no points was not asked: no score badge, no verdict.
+                status = "not counted"
+            parts.append({"name": part["name"], "status": status, "feedback": text})
         most = result["max_score"]
         score = result["score"] / most if most > 0 else 0.0
         mistakes = ["%s: %s" % (m["id"], m["message"]) for m in result.get("mistakes", [])]

@@ -2,6 +2,7 @@
 #include "grading/grade.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <stdexcept>
 
@@ -94,6 +95,8 @@ Grader::Grader(const Problem& problem) : problem_(&problem), kind_(make_kind_gra
 
 double Grader::max_score() const { return kind_->context().points.total(); }
 
+double Grader::part_points(std::string_view part) const { return kind_->context().points.of(part); }
+
 GradeResult Grader::unanswered() const {
   GradeResult r;
   r.problem_id = problem_->id;
@@ -123,16 +126,20 @@ GradeResult Grader::grade(const nlohmann::json& answer, const GradeOptions& opti
   // A part that carries no points is not asked: not required when left out, and when given
   // it is checked as feedback, and the student is told that it does not count.
   std::vector<PartResult> kept;
+  std::vector<std::string> unasked;
   for (auto& part : r.parts) {
     if (part.max_points == 0) {
       if (part.status == PartStatus::kMissing) continue;
-      r.notes.push_back(fmt::format(
-          "{} is not asked in this problem (it carries no points): it is checked, not counted.",
-          part.name));
+      unasked.push_back(part.name);
     }
     kept.push_back(std::move(part));
   }
   r.parts = std::move(kept);
+  if (!unasked.empty()) {
+    r.notes.push_back(fmt::format(
+        "Not asked in this problem (no points): {}. Checked and shown below, not counted.",
+        fmt::join(unasked, ", ")));
+  }
   for (const auto& part : r.parts) {
     r.score += part.points;
     r.max_score += part.max_points;

@@ -36,6 +36,8 @@ class Grader {
 
   const Problem& problem() const { return *problem_; }
   double max_score() const;
+  // The points of one part ("t", "normal"): 0 for a part the problem does not ask.
+  double part_points(std::string_view part) const;
 
  private:
   const Problem* problem_;

@@ -44,9 +44,11 @@ std::string feedback_html(const SubmissionGrade& g) {
       for (const auto& p : r.parts) {
         std::string fb;
         for (const auto& f : p.feedback) fb += (fb.empty() ? "" : "<br>") + h(f);
-        s += fmt::format("<tr><td>{}</td><td class=\"{}\">{} / {}</td><td>{}</td></tr>\n",
-                         h(p.name), to_string(p.status), format_points(p.points),
-                         format_points(p.max_points), fb);
+        std::string points = p.max_points == 0 ? "not counted"
+                                               : fmt::format("{} / {}", format_points(p.points),
+                                                             format_points(p.max_points));
+        s += fmt::format("<tr><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", h(p.name),
+                         p.max_points == 0 ? "not-counted" : to_string(p.status), points, fb);
       }
       s += "</table>\n";
     }

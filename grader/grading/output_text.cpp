@@ -19,8 +19,11 @@ std::vector<std::string> feedback_lines(const GradeResult& r) {
   std::vector<std::string> out;
   for (const auto& n : r.notes) out.push_back(n);
   for (const auto& p : r.parts) {
-    std::string head = fmt::format("{} ({}/{}, {})", p.name, format_points(p.points),
-                                   format_points(p.max_points), to_string(p.status));
+    // A part that carries no points shows no verdict beside a score.
+    std::string head = p.max_points == 0
+                           ? fmt::format("{} ({})", p.name, shown_status(p))
+                           : fmt::format("{} ({}/{}, {})", p.name, format_points(p.points),
+                                         format_points(p.max_points), shown_status(p));
     if (p.feedback.empty()) {
       out.push_back(head);
     } else {

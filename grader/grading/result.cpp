@@ -17,6 +17,11 @@ const char* to_string(PartStatus s) {
   return "missing";
 }
 
+const char* shown_status(const PartResult& p) {
+  if (p.max_points == 0 && p.status != PartStatus::kMissing) return "not counted";
+  return to_string(p.status);
+}
+
 double GradeResult::fraction() const {
   if (max_score > 0) return score / max_score;
   for (const auto& p : parts) {

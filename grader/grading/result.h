@@ -30,6 +30,11 @@ struct PartResult {
   std::vector<std::string> feedback;  // sentences for the student
 };
 
+// The status a student sees: "not counted" for a part that carries no points (given
+// anyway, it is checked and its feedback shown, without a verdict beside a score), else
+// the part's status.
+const char* shown_status(const PartResult& p);
+
 struct GradeResult {
   std::string problem_id;
   std::string title;
