@@ -6,6 +6,8 @@
 #include <fmt/ranges.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "test_util.h"
 
 namespace raygrade {
@@ -165,6 +167,30 @@ TEST(Grade, OnePointGivenTwiceIsOneHit) {
   // Both roots are 1.0 to one decimal: at the precision asked, 1.0 twice is right.
   auto ts = grade(kGrazeIntersect, R"({"hits": [{"t": 1.0}, {"t": 1.0}]})");
   EXPECT_DOUBLE_EQ(part(ts, "t")->points, 2);
+}
+
+// The triangle a = (0, 0, 0), b = (1, 0, 0), c = (0, 1, 0), hit from (0.2, 0.3, 1) along −z at
+// t = 1, P = (0.2, 0.3, 0): P = a + u(b − a) + v(c − a) with u = 0.2, v = 0.3, so the weights
+// are (w_a, w_b, w_c) = (0.5, 0.2, 0.3). Given alone, they give t and the point in another form.
+TEST(Grade, AHitGivenByItsWeightsAloneIsGraded) {
+  const char* triangle = R"({"id": "tri", "ray": {"origin": [0.2, 0.3, 1], "direction": [0, 0, -1]},
+    "object": {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}})";
+  for (const char* answer :
+       {R"({"hits": [{"u": 0.2, "v": 0.3}]})", R"({"hits": [{"barycentric": [0.5, 0.2, 0.3]}]})"}) {
+    auto r = grade(triangle, answer);
+    EXPECT_DOUBLE_EQ(r.score, 3) << answer;  // t 2, point 1
+    EXPECT_EQ(std::count_if(r.notes.begin(), r.notes.end(),
+                            [](const std::string& n) {
+                              return n.find("weights alone") != std::string::npos;
+                            }),
+              1)
+        << answer;
+  }
+  // Weights in the wrong order are no hit's: nothing is read from them.
+  auto wrong = grade(triangle, R"({"hits": [{"barycentric": [0.3, 0.2, 0.5]}]})");
+  EXPECT_DOUBLE_EQ(wrong.score, 0);
+  auto swapped = grade(triangle, R"({"hits": [{"u": 0.3, "v": 0.2}]})");
+  EXPECT_DOUBLE_EQ(swapped.score, 0);
 }
 
 // d² given as 0.75 instead of 0: t_hc = √(1 − 0.75) = 0.5 follows from it, and so do

@@ -85,6 +85,8 @@ class HitsGrader final : public KindGrader {
   void grade_hits(const std::vector<StudentHit>& hits, const StepsGrade* steps,
                   GradeResult& out) const;
   void grade_claimed_miss(const StepsGrade* steps, GradeResult& out) const;
+  std::optional<std::size_t> hit_of_weights(const StudentHit& h) const;
+  void read_hits_from_weights(std::vector<StudentHit>& hits, GradeResult& out) const;
   void grade_contained(bool says_line, bool no_hits, GradeResult& out) const;
   void grade_barycentric(const std::vector<StudentHit>& hits, const std::vector<int>& match,
                          GradeResult& out) const;
@@ -253,6 +255,50 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()), conventions_(p.c
   mistaken_ = mistaken_solutions(*task_);
 }
 
+// The reference hit whose barycentric weights a hit gives ((w_a, w_b, w_c), or u = w_b and
+// v = w_c), within the point's tolerance.
+std::optional<std::size_t> HitsGrader::hit_of_weights(const StudentHit& h) const {
+  const Tolerance& tol = context_.tolerance.for_field("point");
+  for (std::size_t j = 0; j < ref_.size(); ++j) {
+    if (!ref_[j].barycentric) continue;
+    const auto& w = *ref_[j].barycentric;
+    if (h.barycentric && h.barycentric->ok &&
+        compare_vector(h.barycentric->c, Vec3d{w[0], w[1], w[2]}, tol).match == Match::kRight)
+      return j;
+    if (!h.barycentric && h.u && h.v && h.u->value && h.v->value &&
+        compare_number(*h.u->value, w[1], 1, tol).match == Match::kRight &&
+        compare_number(*h.v->value, w[2], 1, tol).match == Match::kRight)
+      return j;
+  }
+  return std::nullopt;
+}
+
+// A triangle's hit given by its weights alone, with neither t nor the point: the weights name
+// the point P = w_a·a + w_b·b + w_c·c, and with it t. Where they are a hit's weights, that
+// hit's t and point are given in another form, and graded as given (exactly: the weights'
+// own digits are graded in `barycentric`).
+void HitsGrader::read_hits_from_weights(std::vector<StudentHit>& hits, GradeResult& out) const {
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    StudentHit& h = hits[i];
+    if (h.t || !h.t_fault.empty() || h.point || (!h.barycentric && !h.u && !h.v)) continue;
+    std::optional<std::size_t> j = hit_of_weights(h);
+    if (!j) continue;
+    const Hit& ref = ref_[*j];
+    auto exact = [](double value, std::string text) {
+      return StudentNumber{value, TypedDigits{}, std::move(text)};
+    };
+    h.t = exact(ref.t, fmt_t(ref.t));
+    AnswerReader::Vector p;
+    p.ok = true;
+    for (int k = 0; k < 3; ++k) p.c[k] = exact(ref.point[k], format_number(ref.point[k], numbers_));
+    h.point = p;
+    out.notes.push_back(fmt::format(
+        "Hit {} is given by its barycentric weights alone: they are a hit's weights, so its t "
+        "and its point P = w_a·a + w_b·b + w_c·c are read from them.",
+        i + 1));
+  }
+}
+
 // A value nearer to another candidate (the far root, a root behind the origin, another
 // object's hit) than to reference hit j is never that hit, whatever the tolerance.
 bool HitsGrader::nearer_another_t(double t, std::size_t j) const {
@@ -318,6 +364,7 @@ void HitsGrader::grade(const AnswerReader& a, GradeResult& out) const {
     if (h.has("v")) s.v = h.at("v").number();
     hits.push_back(std::move(s));
   }
+  read_hits_from_weights(hits, out);
   if (!first_hit_ && contained_) return grade_contained(says_line, hits.empty(), out);
   if (hits.empty() && !ref_.empty()) return grade_claimed_miss(steps ? &*steps : nullptr, out);
   grade_hits(hits, steps ? &*steps : nullptr, out);
