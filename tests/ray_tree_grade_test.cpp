@@ -174,15 +174,17 @@ TEST(RayTreeGrade, AWrongIntensityIsQuotedAsTyped) {
 // N·L = −1: P faces away from it. A shadow ray cast anyway goes up through A itself and on to
 // ball B (radius 1 at (0, 5, 0)), which blocks it: "in shadow" holds as well as "faces away".
 // Without B, only "faces away" holds.
-Problem facing_away_scene(bool with_blocker) {
+Problem facing_away_scene(bool with_blocker, const char* convention = nullptr) {
   std::string objects = R"({"name": "A", "type": "sphere", "center": [0, 0, 0], "radius": 1})";
   if (with_blocker)
     objects += R"(, {"name": "B", "type": "sphere", "center": [0, 5, 0], "radius": 1})";
-  auto f = parse_json_text("away.json", fmt::format(R"({{"id": "away", "kind": "ray-tree",
+  std::string conventions =
+      convention ? fmt::format(R"("conventions": {{"facing_away": "{}"}},)", convention) : "";
+  auto f = parse_json_text("away.json", fmt::format(R"({{"id": "away", "kind": "ray-tree", {}
     "ray": {{"origin": [0, -5, 0], "direction": [0, 1, 0]}},
     "scene": {{"objects": [{}], "lights": [{{"name": "lamp", "position": [0, 10, 0]}}],
                "ambient_light": 1}}}})",
-                                                    objects));
+                                                    conventions, objects));
   return read_problem(Cursor(f));
 }
 
@@ -211,6 +213,29 @@ TEST(RayTreeGrade, FacingAwayAndBlockedAcceptsBothReadings) {
   EXPECT_NE(shadows->status, PartStatus::kRight);
   EXPECT_NE(all_feedback(*shadows).find("blocked by B, not A"), std::string::npos)
       << all_feedback(*shadows);
+}
+
+// A course's convention picks one reading: "shadow-ray" casts the shadow ray first (B blocks it:
+// in shadow), "normal-first" tests N·L = −1 first and never casts it (not in shadow).
+TEST(RayTreeGrade, FacingAwayConventionPicksOneReading) {
+  auto full = [](const Problem& p, bool shadow) {
+    GradeResult r = grade_answer(p, said_shadow(shadow));
+    return r.score == r.max_score;
+  };
+  Problem cast = facing_away_scene(true, "shadow-ray");
+  EXPECT_TRUE(full(cast, true));
+  EXPECT_FALSE(full(cast, false));
+  GradeResult named = grade_answer(cast, said_shadow(true, "B"));
+  EXPECT_DOUBLE_EQ(named.score, named.max_score);
+  Problem normal = facing_away_scene(true, "normal-first");
+  EXPECT_TRUE(full(normal, false));
+  EXPECT_FALSE(full(normal, true));
+  // Without a blocker the convention changes nothing: facing away alone is not a shadow.
+  Problem alone = facing_away_scene(false, "shadow-ray");
+  EXPECT_TRUE(full(alone, false));
+  EXPECT_FALSE(full(alone, true));
+  // An unknown value is an error naming its path.
+  EXPECT_THROW(facing_away_scene(true, "sometimes"), Error);
 }
 
 TEST(RayTreeGrade, FacingAwayAloneIsNotAShadow) {

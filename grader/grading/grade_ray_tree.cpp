@@ -437,9 +437,16 @@ class RayTreeGrader final : public KindGrader {
       // In shadow: 1, lit: 0, not said: −1 (an int: GCC misreads an optional<bool> here).
       int shadow = s && s->in_shadow ? int(*s->in_shadow) : -1;
       std::set<std::string> want = term_set(node_terms(n));
+      // Facing away and blocked as well: "in shadow" and "not in shadow" both hold, unless the
+      // course's convention picks one (the shadow ray decides, or N·L is tested first).
       bool want_shadow = in_shadow(n);
-      // Facing away and blocked as well: "in shadow" and "not in shadow" both hold.
       bool either = shadow_either(n);
+      using F = Conventions::FacingAway;
+      F convention = context_.problem->conventions.facing_away;
+      if (either && convention != F::kEither) {
+        want_shadow = convention == F::kShadowRay;
+        either = false;
+      }
       // Terms without in_shadow say only whether some light reaches the point: ambient alone
       // is right at a point in shadow and at one that faces away from every light alike.
       if (shadow < 0 && terms && !scene().lights.empty()) {
@@ -450,7 +457,7 @@ class RayTreeGrader final : public KindGrader {
         any_shadow = true;
         std::string wrong_blocker = !s || !s->shadowed_by || shadow != 1 ? ""
                                     : want_shadow || either
-                                        ? blocker_fault(n, *s->shadowed_by, !want_shadow)
+                                        ? blocker_fault(n, *s->shadowed_by, faces_away(n))
                                         : "";
         if (((shadow == 1) == want_shadow || either) && wrong_blocker.empty()) {
           ++shadows_right;

@@ -23,7 +23,23 @@ const std::vector<std::string>& common_problem_keys() {
 
 Conventions read_conventions(const Cursor& c, Conventions base) {
   if (!c.is_object()) c.fail("conventions is an object", "type");
-  c.allow_only({"contained"});
+  c.allow_only({"contained", "facing_away"});
+  if (c.has("facing_away")) {
+    std::string v = c.at("facing_away").string();
+    if (v == "either") {
+      base.facing_away = Conventions::FacingAway::kEither;
+    } else if (v == "shadow-ray") {
+      base.facing_away = Conventions::FacingAway::kShadowRay;
+    } else if (v == "normal-first") {
+      base.facing_away = Conventions::FacingAway::kNormalFirst;
+    } else {
+      c.at("facing_away")
+          .fail(fmt::format("facing_away is \"either\", \"shadow-ray\" or \"normal-first\", "
+                            "not \"{}\"",
+                            v),
+                "invalid");
+    }
+  }
   if (c.has("contained")) {
     std::string v = c.at("contained").string();
     if (v == "either") {

@@ -67,6 +67,12 @@ struct Conventions {
   // kLine: only "contained": true is; kMiss: only [] is.
   enum class Contained { kEither, kLine, kMiss };
   Contained contained = Contained::kEither;
+  // A point of a ray tree whose surface faces away from a light (N·L ≤ 0) while a shadow ray
+  // toward that light would also meet another object. kEither: "in shadow" and "not in
+  // shadow" are both right (the default); kShadowRay: the shadow ray decides (in shadow);
+  // kNormalFirst: N·L is tested first, so the ray is never cast (not in shadow).
+  enum class FacingAway { kEither, kShadowRay, kNormalFirst };
+  FacingAway facing_away = FacingAway::kEither;
 };
 
 // Reads a "conventions" object on top of `base`. Throws Error naming the path of a fault.
