@@ -116,6 +116,42 @@ TEST_F(Gradebook, EachPlatformsImportLayout) {
   EXPECT_NE(r.err.find("needs --assignment and --roster"), std::string::npos) << r.err;
 }
 
+// Moodle's grading worksheet as downloaded (moodle-worksheet.csv, written by hand in Moodle's
+// columns): each row found by its email (in any case) gets its student's total from the table of
+// the README; a row of no roster student stays as it was, and Donald, who has no row, is named.
+TEST_F(Gradebook, MoodlesWorksheetFilledIn) {
+  fs::copy(kData / "moodle-worksheet.csv", dir_.path() / "worksheet.csv");
+  auto r = run_raygrade(
+      "grade --assignment hw.json --roster roster.csv subs --format csv-moodle "
+      "--moodle-worksheet worksheet.csv --now 2026-12-01T00:00:00Z",
+      dir_.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;  // Barbara's file is rejected
+  EXPECT_EQ(r.out, read_text(kData / "moodle-worksheet-filled.csv"));
+  EXPECT_NE(r.err.find("worksheet row 7 (guest@example.edu) is no roster student's"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("student 's6' (don@example.edu) has no row on the worksheet"),
+            std::string::npos)
+      << r.err;
+  // A worksheet without the column Moodle matches rows by is refused before anything is graded.
+  write_text(dir_.path() / "bad.csv", "Full name,Email address,Grade\nAda,ada@example.edu,\n");
+  auto bad = run_raygrade(
+      "grade --assignment hw.json --roster roster.csv subs --format "
+      "csv-moodle --moodle-worksheet bad.csv --out out",
+      dir_.path());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("bad.csv:1: error: the worksheet has no \"Identifier\" column"),
+            std::string::npos)
+      << bad.err;
+  EXPECT_FALSE(fs::exists(dir_.path() / "out" / "gradebook.csv"));
+  // Only the Moodle layout takes a worksheet.
+  auto other = run_raygrade(
+      "grade --assignment hw.json --roster roster.csv subs --format "
+      "csv-canvas --moodle-worksheet worksheet.csv",
+      dir_.path());
+  EXPECT_EQ(other.exit_code, 2);
+}
+
 TEST_F(Gradebook, AnUnknownChoiceIsRefused) {
   auto r = grade("--pick newest");
   EXPECT_EQ(r.exit_code, 2);

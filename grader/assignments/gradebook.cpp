@@ -155,6 +155,64 @@ std::string RosterGradebook::platform_csv(std::string_view layout, const std::st
   return s;
 }
 
+std::string RosterGradebook::moodle_worksheet(const std::vector<std::vector<std::string>>& rows,
+                                              const std::string& file,
+                                              std::vector<std::string>& notes) const {
+  auto fault = [&](int row, std::string message) {
+    return Error(
+        Diagnostic{file, "", row, 0, Severity::kError, std::move(message), "moodle-worksheet"});
+  };
+  if (rows.empty()) throw fault(1, "the worksheet is empty: download it from the assignment");
+  const std::vector<std::string>& header = rows.front();
+  auto column = [&](std::string_view name, bool needed) -> std::optional<std::size_t> {
+    auto it = std::find(header.begin(), header.end(), name);
+    if (it != header.end()) return static_cast<std::size_t>(it - header.begin());
+    if (!needed) return std::nullopt;
+    throw fault(1, fmt::format("the worksheet has no \"{}\" column: use the file Moodle's "
+                               "\"Download grading worksheet\" gives, with the email address "
+                               "shown (Site administration > Users > Show user identity)",
+                               name));
+  };
+  std::size_t email = *column("Email address", true), grade = *column("Grade", true);
+  column("Identifier", true);
+  column("Last modified (grade)", true);
+  std::map<std::string, std::size_t> by_email;
+  for (std::size_t i = 0; i < roster_.size(); ++i) {
+    if (!roster_[i].email.empty()) by_email[ascii_lower(roster_[i].email)] = i;
+  }
+  std::vector<bool> has_row(roster_.size(), false);
+  std::string out;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    std::vector<std::string> cells = rows[r];
+    if (cells.size() != header.size()) {
+      throw fault(static_cast<int>(r + 1), fmt::format("row {} has {} cells, the header {}", r + 1,
+                                                       cells.size(), header.size()));
+    }
+    if (r > 0) {
+      auto it = by_email.find(ascii_lower(cells[email]));
+      if (it == by_email.end()) {
+        notes.push_back(fmt::format("worksheet row {} ({}) is no roster student's: left as it was",
+                                    r + 1, cells[email]));
+      } else {
+        std::size_t i = it->second;
+        has_row[i] = true;
+        const Handed* pick = chosen(handed_[i]);
+        cells[grade] = format_points(pick ? pick->score : 0.0);
+      }
+    }
+    for (std::size_t c = 0; c < cells.size(); ++c) out += (c ? "," : "") + csv_field(cells[c]);
+    out += "\n";
+  }
+  for (std::size_t i = 0; i < roster_.size(); ++i) {
+    if (!has_row[i]) {
+      notes.push_back(
+          fmt::format("student '{}' ({}) has no row on the worksheet: no grade for them",
+                      roster_[i].id, roster_[i].email));
+    }
+  }
+  return out;
+}
+
 std::string RosterGradebook::csv() const {
   std::optional<double> max_score = this->max_score();
   std::string s = gradebook_csv_header(problem_ids_);

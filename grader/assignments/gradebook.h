@@ -40,6 +40,16 @@ class RosterGradebook {
   // points (docs/assignments.md says how each platform matches its students).
   std::string platform_csv(std::string_view layout, const std::string& title) const;
 
+  // Moodle's offline grading worksheet as downloaded from the assignment (`rows`, read from
+  // `file`), each row's "Grade" set to the total of the roster student whose email is its
+  // "Email address"; every other cell as downloaded (a status can name another student, so
+  // "Feedback comments" is not written), since Moodle matches a row by its "Identifier" and skips
+  // one whose "Last modified (grade)" is older than its own record. A row of no roster student
+  // stays as downloaded, and is listed in `notes`, as is each roster student without a row. Throws
+  // Error naming the file when a column Moodle needs is missing or a row is cut short.
+  std::string moodle_worksheet(const std::vector<std::vector<std::string>>& rows,
+                               const std::string& file, std::vector<std::string>& notes) const;
+
  private:
   // What a row needs of one submission.
   struct Handed {

@@ -20,6 +20,8 @@ constexpr std::size_t kMaxRosterBytes = 4u << 20;
   throw Error(Diagnostic{file, "", line, column, Severity::kError, std::move(message), "roster"});
 }
 
+}  // namespace
+
 // The cells of every line of a CSV text (RFC 4180: quoted cells may hold commas, quotes as "",
 // and line breaks).
 std::vector<std::vector<std::string>> csv_rows(const std::string& text, const std::string& file) {
@@ -68,8 +70,6 @@ std::vector<std::vector<std::string>> csv_rows(const std::string& text, const st
   }
   return rows;
 }
-
-}  // namespace
 
 std::vector<StudentIdentity> load_roster(const std::string& path) {
   std::optional<std::string> bytes = read_whole_file(path);

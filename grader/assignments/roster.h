@@ -11,6 +11,10 @@ namespace raygrade {
 // Reads a roster: a CSV file whose first line names its columns, among them "id" (required),
 // "name" and "email" (any order; other columns are errors, so that a misspelt header is seen).
 // Cells may be quoted ("Lovelace, Ada"). Throws Error naming the file, line and column.
+// The cells of every line of a CSV text (RFC 4180: quoted cells may hold commas, quotes as "",
+// and line breaks). Throws Error naming `file` and the line of a quote left open.
+std::vector<std::vector<std::string>> csv_rows(const std::string& text, const std::string& file);
+
 std::vector<StudentIdentity> load_roster(const std::string& path);
 
 // The roster entry a submission's student is, and why there is none: every field the

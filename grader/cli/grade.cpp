@@ -40,6 +40,7 @@ struct GradeCliOptions {
   std::string feedback;             // overrides the assignment's feedback policy
   std::string now;                  // the time the due date is compared with (default: the clock)
   std::string gradescope_metadata;  // submission_metadata.json: who uploaded the submission
+  std::string moodle_worksheet;     // with --format csv-moodle: Moodle's worksheet to fill in
   unsigned jobs = 0;                // threads that grade (0: one per core)
 };
 
@@ -91,12 +92,25 @@ struct GradeSetup {
   std::unique_ptr<AssignmentSpec> spec;
   std::unique_ptr<AssignmentBank> spec_bank;
   std::unique_ptr<AssignmentGrader> spec_grader;
+  std::vector<std::vector<std::string>> worksheet;  // Moodle's worksheet, read before grading
 };
 
 // A usage fault: printed, and the exit code for it.
 int usage(std::string_view message) {
   fmt::print(stderr, "raygrade grade: {}\n", message);
   return kExitBadInput;
+}
+
+// Moodle's grading worksheet as downloaded (UTF-8, a byte-order mark allowed).
+std::vector<std::vector<std::string>> read_worksheet(const std::string& path) {
+  std::optional<std::string> text = read_whole_file(path);
+  if (!text) {
+    throw Error(Diagnostic{path, "", 0, 0, Severity::kError, "cannot read the worksheet",
+                           "moodle-worksheet"});
+  }
+  constexpr std::string_view kBom = "\xEF\xBB\xBF";
+  if (text->starts_with(kBom)) text->erase(0, kBom.size());
+  return csv_rows(*text, path);
 }
 
 std::optional<int> setup_from_bank(const GradeCliOptions& o, GradeSetup& s) {
@@ -116,6 +130,7 @@ std::optional<int> setup_from_assignment(const GradeCliOptions& o, GradeSetup& s
   try {
     s.spec = std::make_unique<AssignmentSpec>(load_assignment(o.assignment));
     if (!o.roster.empty()) s.roster = options.roster = load_roster(o.roster);
+    if (!o.moodle_worksheet.empty()) s.worksheet = read_worksheet(o.moodle_worksheet);
     if (!o.gradescope_metadata.empty()) {
       GradescopeMetadata m = read_gradescope_metadata(o.gradescope_metadata);
       options.uploaders = std::move(m.users);
@@ -209,8 +224,15 @@ class GradeOutput {
 
   void finish() {
     if (class_book_) {
-      csv() << (platform_book_ ? class_book_->platform_csv(format_.name, setup_.title)
-                               : class_book_->csv());
+      if (!setup_.worksheet.empty()) {
+        std::vector<std::string> notes;
+        csv() << class_book_->moodle_worksheet(setup_.worksheet, o_.moodle_worksheet, notes);
+        for (const auto& n : notes)
+          fmt::print(stderr, "raygrade grade: warning: {}\n", printable(n));
+      } else {
+        csv() << (platform_book_ ? class_book_->platform_csv(format_.name, setup_.title)
+                                 : class_book_->csv());
+      }
       for (const auto& c : class_book_->choices())
         fmt::print(stderr, "raygrade grade: {}\n", printable(c));
     }
@@ -291,6 +313,10 @@ int run_grade(const GradeCliOptions& o) {
   if (format->layout == GradeLayout::kClassGradebook && o.roster.empty())
     return usage(fmt::format(
         "--format {} needs --assignment and --roster (a row per roster student)", o.format));
+  if (!o.moodle_worksheet.empty() && o.format != "csv-moodle")
+    return usage(
+        "--moodle-worksheet fills in Moodle's grading worksheet: it goes with --format "
+        "csv-moodle");
   if (!o.pick.empty() && o.roster.empty())
     return usage("--pick chooses among a roster student's submissions: it needs --roster");
   std::optional<PickPolicy> pick = parse_pick_policy(o.pick.empty() ? "latest" : o.pick);
@@ -397,6 +423,9 @@ Runner setup_grade(CLI::App& sub) {
   sub.add_option("--gradescope-metadata", o->gradescope_metadata,
                  "with --assignment: Gradescope's submission_metadata.json; the student a "
                  "submission names must be the account that uploaded it");
+  sub.add_option("--moodle-worksheet", o->moodle_worksheet,
+                 "with --format csv-moodle: the grading worksheet downloaded from the Moodle "
+                 "assignment; the gradebook is that worksheet with each student's grade filled in");
   sub.add_option("-j,--jobs", o->jobs,
                  "threads that grade at once (default: one per core); the output is the same");
   sub.add_option("--now", o->now,

@@ -163,6 +163,16 @@ std::string latex_escape(std::string_view s) {
   return out;
 }
 
+std::string csv_field(std::string_view s) {
+  if (s.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(s);
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
 std::string csv_cell(std::string_view s) {
   // Control characters (NUL, tab, line breaks and escape sequences among them) and C1 controls
   // become \xNN and \uNNNN: a gradebook on a terminal cannot retitle or clear it, and a cell
@@ -171,14 +181,7 @@ std::string csv_cell(std::string_view s) {
   if (!v.empty() && (v[0] == '=' || v[0] == '+' || v[0] == '-' || v[0] == '@')) {
     v.insert(v.begin(), '\'');
   }
-  bool quote = v.find_first_of(",\"") != std::string::npos;
-  if (!quote) return v;
-  std::string out = "\"";
-  for (char c : v) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
+  return csv_field(v);
 }
 
 std::string text_escape(std::string_view s) {

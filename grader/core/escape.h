@@ -23,6 +23,11 @@ std::string latex_escape(std::string_view s);
 // quoted when needed, and a leading = + - @ neutralised with a leading apostrophe so
 // spreadsheets do not run it as a formula.
 std::string csv_cell(std::string_view s);
+
+// A CSV field with RFC 4180's quoting alone (quoted when it holds a comma, a quote or a line
+// break), for cells handed back unchanged to the platform that wrote them (Moodle's worksheet:
+// its "-" must stay "-").
+std::string csv_field(std::string_view s);
 // Plain text for terminals and .txt files: control characters other than tab and newline
 // (terminal escape sequences among them) and C1 controls are dropped.
 std::string text_escape(std::string_view s);
