@@ -152,6 +152,46 @@ TEST_F(Gradebook, MoodlesWorksheetFilledIn) {
   EXPECT_EQ(other.exit_code, 2);
 }
 
+// What Moodle's "Upload multiple feedback files in a zip" reads of each file in the zip: the
+// participant number and plugin from its first folder's name split at '_' (fullname, number,
+// plugin type, plugin name), as assignfeedback_file's importer splits it; one line per file,
+// "number plugin file", and "same" when the file is the page raygrade wrote.
+constexpr const char* kMoodleReads = R"(/usr/bin/python3 -c '
+import pathlib, sys, zipfile
+for name in sorted(zipfile.ZipFile("out/moodle-feedback.zip").namelist()):
+    folder, file = name.split("/", 1)
+    info = folder.split("_", 4)
+    same = zipfile.ZipFile("out/moodle-feedback.zip").read(name) == (pathlib.Path("out") / file).read_bytes()
+    print(info[1], info[2] + "_" + info[3], file, "same" if same else "differs")
+')";
+
+// With --format html, the pages go into a zip laid out for Moodle: by the README's table, Ada
+// (participant 101), Alan (102, two files) and Grace (103) have pages; Barbara's file is
+// rejected and Edsger handed nothing in, so they have none; Donald has no worksheet row.
+TEST_F(Gradebook, AZipOfFeedbackFilesForMoodle) {
+  fs::copy(kData / "moodle-worksheet.csv", dir_.path() / "worksheet.csv");
+  auto r = run_raygrade(
+      "grade --assignment hw.json --roster roster.csv subs --format html "
+      "--out out --moodle-worksheet worksheet.csv --now 2026-12-01T00:00:00Z",
+      dir_.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;  // Barbara's file is rejected
+  EXPECT_NE(r.err.find("the feedback page s6.html is no worksheet row's"), std::string::npos)
+      << r.err;
+  auto zip = testing::run_shell(kMoodleReads, dir_.path());
+  ASSERT_EQ(zip.exit_code, 0) << zip.err;
+  EXPECT_EQ(zip.out,
+            "101 assignfeedback_file s1.html same\n"
+            "102 assignfeedback_file s2-2.html same\n"
+            "102 assignfeedback_file s2.html same\n"
+            "103 assignfeedback_file s3.html same\n");
+  // Without --out there is no folder for the zip.
+  auto no_out = run_raygrade(
+      "grade --assignment hw.json --roster roster.csv subs --format html "
+      "--moodle-worksheet worksheet.csv",
+      dir_.path());
+  EXPECT_EQ(no_out.exit_code, 2);
+}
+
 TEST_F(Gradebook, AnUnknownChoiceIsRefused) {
   auto r = grade("--pick newest");
   EXPECT_EQ(r.exit_code, 2);

@@ -155,27 +155,74 @@ std::string RosterGradebook::platform_csv(std::string_view layout, const std::st
   return s;
 }
 
-std::string RosterGradebook::moodle_worksheet(const std::vector<std::vector<std::string>>& rows,
-                                              const std::string& file,
-                                              std::vector<std::string>& notes) const {
+MoodleWorksheet::MoodleWorksheet(const std::vector<std::vector<std::string>>& rows,
+                                 const std::string& file) {
   auto fault = [&](int row, std::string message) {
     return Error(
         Diagnostic{file, "", row, 0, Severity::kError, std::move(message), "moodle-worksheet"});
   };
   if (rows.empty()) throw fault(1, "the worksheet is empty: download it from the assignment");
   const std::vector<std::string>& header = rows.front();
-  auto column = [&](std::string_view name, bool needed) -> std::optional<std::size_t> {
+  auto column = [&](std::string_view name) {
     auto it = std::find(header.begin(), header.end(), name);
     if (it != header.end()) return static_cast<std::size_t>(it - header.begin());
-    if (!needed) return std::nullopt;
     throw fault(1, fmt::format("the worksheet has no \"{}\" column: use the file Moodle's "
                                "\"Download grading worksheet\" gives, with the email address "
                                "shown (Site administration > Users > Show user identity)",
                                name));
   };
-  std::size_t email = *column("Email address", true), grade = *column("Grade", true);
-  column("Identifier", true);
-  column("Last modified (grade)", true);
+  identifier = column("Identifier");
+  full_name = column("Full name");
+  email = column("Email address");
+  grade = column("Grade");
+  column("Last modified (grade)");
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    if (rows[r].size() != header.size()) {
+      throw fault(static_cast<int>(r + 1), fmt::format("row {} has {} cells, the header {}", r + 1,
+                                                       rows[r].size(), header.size()));
+    }
+  }
+}
+
+std::vector<ZipEntry> moodle_feedback_files(const std::vector<std::vector<std::string>>& rows,
+                                            const std::string& file,
+                                            const std::vector<StudentIdentity>& roster,
+                                            const std::vector<StudentPage>& pages,
+                                            std::vector<std::string>& notes) {
+  MoodleWorksheet sheet(rows, file);
+  std::map<std::string, std::string> email_of;  // roster id → email, in lower case
+  for (const auto& who : roster) email_of[who.id] = ascii_lower(who.email);
+  std::map<std::string, std::string> folder_of;  // email → the folder Moodle reads
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    const std::string& id = rows[r][sheet.identifier];
+    std::size_t digits = id.find_last_not_of("0123456789") + 1;
+    if (digits == id.size()) continue;  // no participant number
+    // Moodle's importer splits the folder name at '_': the name may hold none.
+    std::string name = rows[r][sheet.full_name];
+    std::replace_if(
+        name.begin(), name.end(), [](char c) { return c == '_' || c == '/' || c == '\\'; }, ' ');
+    folder_of[ascii_lower(rows[r][sheet.email])] =
+        fmt::format("{}_{}_assignfeedback_file", name, id.substr(digits));
+  }
+  std::vector<ZipEntry> out;
+  for (const auto& page : pages) {
+    auto email = email_of.find(page.student_id);
+    auto folder = email == email_of.end() ? folder_of.end() : folder_of.find(email->second);
+    if (folder == folder_of.end()) {
+      notes.push_back(
+          fmt::format("the feedback page {} is no worksheet row's: not in the zip", page.file));
+      continue;
+    }
+    out.push_back({folder->second + "/" + page.file, page.text, false});
+  }
+  return out;
+}
+
+std::string RosterGradebook::moodle_worksheet(const std::vector<std::vector<std::string>>& rows,
+                                              const std::string& file,
+                                              std::vector<std::string>& notes) const {
+  MoodleWorksheet sheet(rows, file);
+  std::size_t email = sheet.email, grade = sheet.grade;
   std::map<std::string, std::size_t> by_email;
   for (std::size_t i = 0; i < roster_.size(); ++i) {
     if (!roster_[i].email.empty()) by_email[ascii_lower(roster_[i].email)] = i;
@@ -184,10 +231,6 @@ std::string RosterGradebook::moodle_worksheet(const std::vector<std::vector<std:
   std::string out;
   for (std::size_t r = 0; r < rows.size(); ++r) {
     std::vector<std::string> cells = rows[r];
-    if (cells.size() != header.size()) {
-      throw fault(static_cast<int>(r + 1), fmt::format("row {} has {} cells, the header {}", r + 1,
-                                                       cells.size(), header.size()));
-    }
     if (r > 0) {
       auto it = by_email.find(ascii_lower(cells[email]));
       if (it == by_email.end()) {

@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "assignments/roster.h"
+#include "core/zip.h"
 #include "grading/submission.h"
 
 namespace raygrade {
@@ -18,6 +20,30 @@ namespace raygrade {
 // first.
 enum class PickPolicy { kLatest, kBest, kFirst };
 std::optional<PickPolicy> parse_pick_policy(std::string_view name);
+
+// The columns of Moodle's grading worksheet that raygrade reads. Throws Error naming `file` when
+// one Moodle needs is missing, or a row is cut short.
+struct MoodleWorksheet {
+  MoodleWorksheet(const std::vector<std::vector<std::string>>& rows, const std::string& file);
+  std::size_t identifier = 0, full_name = 0, email = 0, grade = 0;
+};
+
+// A student's feedback page: its file name and text, and the roster id it was written for.
+struct StudentPage {
+  std::string student_id;
+  std::string file;
+  std::string text;
+};
+
+// Moodle's "Upload multiple feedback files in a zip": each page in the folder Moodle's importer
+// reads, "<full name>_<participant number>_assignfeedback_file", the participant number taken
+// from the worksheet row whose "Email address" is the page's student's on the roster. A page
+// of no worksheet row is left out and listed in `notes`.
+std::vector<ZipEntry> moodle_feedback_files(const std::vector<std::vector<std::string>>& rows,
+                                            const std::string& file,
+                                            const std::vector<StudentIdentity>& roster,
+                                            const std::vector<StudentPage>& pages,
+                                            std::vector<std::string>& notes);
 
 class RosterGradebook {
  public:

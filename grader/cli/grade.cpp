@@ -239,6 +239,13 @@ class GradeOutput {
     std::filesystem::path out(o_.out);
     if (!pages_.empty())
       write_file_atomically(out / "index.html", feedback_index_html(pages_), false);
+    if (format_.extension == ".html" && !setup_.worksheet.empty()) {
+      std::vector<std::string> notes;
+      std::vector<ZipEntry> files = moodle_feedback_files(setup_.worksheet, o_.moodle_worksheet,
+                                                          setup_.roster, moodle_pages_, notes);
+      for (const auto& n : notes) fmt::print(stderr, "raygrade grade: warning: {}\n", printable(n));
+      write_file_atomically(out / "moodle-feedback.zip", zip_archive(files), false);
+    }
     if (gradebook_ && !o_.out.empty())
       write_file_atomically(out / ("gradebook" + std::string(format_.extension)), csv_file_.str(),
                             false);
@@ -268,9 +275,12 @@ class GradeOutput {
         single_ && format_.results_file
             ? "results"
             : unique_file_name(g.identity.id.empty() ? g.student : g.identity.id, names_);
-    if (format_.extension == ".html")
+    if (format_.extension == ".html") {
       pages_.push_back(
           {name + ".html", g.student, g.identity.id, g.gradable, g.score, g.max_score});
+      if (!setup_.worksheet.empty() && g.gradable && !g.identity.id.empty())
+        moodle_pages_.push_back({g.identity.id, name + ".html", text});
+    }
     // Each file appears whole or not at all (rename); the batch reaches the disk in one flush
     // at the end instead of one per file.
     write_file_atomically(std::filesystem::path(o_.out) / (name + std::string(format_.extension)),
@@ -283,6 +293,7 @@ class GradeOutput {
   bool single_, platform_book_, gradebook_, json_stream_;
   std::set<std::string> names_ = {"index", "gradebook"};  // the folder's own files
   std::vector<FeedbackPage> pages_;
+  std::vector<StudentPage> moodle_pages_;  // with --moodle-worksheet: for Moodle's feedback zip
   std::ostringstream csv_file_;
   std::optional<RosterGradebook> class_book_;
   JsonArrayStream json_out_;
@@ -313,10 +324,11 @@ int run_grade(const GradeCliOptions& o) {
   if (format->layout == GradeLayout::kClassGradebook && o.roster.empty())
     return usage(fmt::format(
         "--format {} needs --assignment and --roster (a row per roster student)", o.format));
-  if (!o.moodle_worksheet.empty() && o.format != "csv-moodle")
+  if (!o.moodle_worksheet.empty() &&
+      (o.roster.empty() || !(o.format == "csv-moodle" || (o.format == "html" && !o.out.empty()))))
     return usage(
-        "--moodle-worksheet fills in Moodle's grading worksheet: it goes with --format "
-        "csv-moodle");
+        "--moodle-worksheet goes with --roster, and --format csv-moodle (the worksheet "
+        "filled in) or --format html --out DIR (a zip of feedback files for Moodle)");
   if (!o.pick.empty() && o.roster.empty())
     return usage("--pick chooses among a roster student's submissions: it needs --roster");
   std::optional<PickPolicy> pick = parse_pick_policy(o.pick.empty() ? "latest" : o.pick);
