@@ -21,38 +21,38 @@ const std::vector<std::string>& common_problem_keys() {
   return keys;
 }
 
+namespace {
+
+// The value of `key`, one of the words of `choices`: any other is an error naming them all.
+template <typename E>
+E read_choice(const Cursor& c, const char* key,
+              std::initializer_list<std::pair<std::string_view, E>> choices) {
+  std::string v = c.at(key).string();
+  std::string words;  // "a", "b" or "c"
+  std::size_t n = 0;
+  for (const auto& [word, value] : choices) {
+    if (word == v) return value;
+    words += fmt::format("{}\"{}\"", n == 0 ? "" : n + 1 == choices.size() ? " or " : ", ", word);
+    ++n;
+  }
+  c.at(key).fail(fmt::format("{} is {}, not \"{}\"", key, words, v), "invalid");
+}
+
+}  // namespace
+
 Conventions read_conventions(const Cursor& c, Conventions base) {
   if (!c.is_object()) c.fail("conventions is an object", "type");
   c.allow_only({"contained", "facing_away"});
-  if (c.has("facing_away")) {
-    std::string v = c.at("facing_away").string();
-    if (v == "either") {
-      base.facing_away = Conventions::FacingAway::kEither;
-    } else if (v == "shadow-ray") {
-      base.facing_away = Conventions::FacingAway::kShadowRay;
-    } else if (v == "normal-first") {
-      base.facing_away = Conventions::FacingAway::kNormalFirst;
-    } else {
-      c.at("facing_away")
-          .fail(fmt::format("facing_away is \"either\", \"shadow-ray\" or \"normal-first\", "
-                            "not \"{}\"",
-                            v),
-                "invalid");
-    }
-  }
+  using C = Conventions::Contained;
+  using F = Conventions::FacingAway;
   if (c.has("contained")) {
-    std::string v = c.at("contained").string();
-    if (v == "either") {
-      base.contained = Conventions::Contained::kEither;
-    } else if (v == "line") {
-      base.contained = Conventions::Contained::kLine;
-    } else if (v == "miss") {
-      base.contained = Conventions::Contained::kMiss;
-    } else {
-      c.at("contained")
-          .fail(fmt::format("contained is \"either\", \"line\" or \"miss\", not \"{}\"", v),
-                "invalid");
-    }
+    base.contained = read_choice<C>(
+        c, "contained", {{"either", C::kEither}, {"line", C::kLine}, {"miss", C::kMiss}});
+  }
+  if (c.has("facing_away")) {
+    base.facing_away = read_choice<F>(
+        c, "facing_away",
+        {{"either", F::kEither}, {"shadow-ray", F::kShadowRay}, {"normal-first", F::kNormalFirst}});
   }
   return base;
 }
