@@ -169,6 +169,18 @@ TEST(Grade, OnePointGivenTwiceIsOneHit) {
   EXPECT_DOUBLE_EQ(part(ts, "t")->points, 2);
 }
 
+// A capped cylinder (r = 1, height 1 along z) entered through its side: from (−5, 0, 2.996)
+// along (1, 0, −0.5), x = −1 at t = 4 (z = 0.996), and the bottom cap z = 0 at t = 5.992 (x =
+// 0.992). The top cap's plane z = 1 is crossed at t = 3.992, at x = −1.008: outside the cap,
+// no point of the cylinder. To two decimals 3.995 is right for t = 4, although nearer 3.992.
+TEST(Grade, ARootOnNoSurfaceTakesNoValueFromTheHit) {
+  auto r = grade(R"({"id": "c", "ray": {"origin": [-5, 0, 2.996], "direction": [1, 0, -0.5]},
+    "object": {"type": "cylinder", "base": [0, 0, 0], "axis": [0, 0, 1], "radius": 1,
+               "height": 1, "capped": true}, "tolerance": {"decimals": 2}})",
+                 R"({"hits": [{"t": 3.995}, {"t": 5.992}]})");
+  EXPECT_DOUBLE_EQ(part(r, "t")->points, 2);
+}
+
 // The triangle a = (0, 0, 0), b = (1, 0, 0), c = (0, 1, 0), hit from (0.2, 0.3, 1) along −z at
 // t = 1, P = (0.2, 0.3, 0): P = a + u(b − a) + v(c − a) with u = 0.2, v = 0.3, so the weights
 // are (w_a, w_b, w_c) = (0.5, 0.2, 0.3). Given alone, they give t and the point in another form.

@@ -120,7 +120,7 @@ class HitsGrader final : public KindGrader {
   Conventions conventions_;
   std::vector<double> behind_;      // roots with t < t_min: behind the origin
   std::vector<double> far_;         // roots past the first hit of the same object
-  std::vector<double> others_;      // every candidate root that is none of the reference hits
+  std::vector<double> others_;      // every object's hit that is none of the reference hits
   std::vector<double> candidates_;  // every root of every right derivation, every hit
   std::vector<std::pair<std::string, double>> other_objects_;  // the hits of objects hit later
   std::vector<MethodDerivation> methods_;
@@ -162,10 +162,13 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()), conventions_(p.c
   // Roots every method computes, kept when they are not hits: behind the origin, or far.
   // All of them, and every object's hits, are the candidates a widened tolerance must not
   // reach.
-  std::vector<double> candidates;
+  std::vector<double> candidates, surface;
   for (const Shape* s : shapes) {
     Intersection x = s->intersect(ray_);
-    for (const auto& h : x.hits) candidates.push_back(h.t);
+    for (const auto& h : x.hits) {
+      candidates.push_back(h.t);
+      surface.push_back(h.t);
+    }
     for (const auto& m : s->methods()) {
       Derivation d;
       try {
@@ -232,7 +235,10 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()), conventions_(p.c
       object_space_scale_ = k;
     }
   }
-  for (double c : candidates) {
+  // The other points where the ray meets a surface: a value nearer one of them than the hit is
+  // not the hit. (A derivation's other roots, a cap's plane where the ray misses the cap, say,
+  // are no point of any surface, and only limit the widening.)
+  for (double c : surface) {
     if (std::none_of(ref_.begin(), ref_.end(), [&](const Hit& h) { return same(c, h.t); })) {
       others_.push_back(c);
     }
@@ -299,8 +305,8 @@ void HitsGrader::read_hits_from_weights(std::vector<StudentHit>& hits, GradeResu
   }
 }
 
-// A value nearer to another candidate (the far root, a root behind the origin, another
-// object's hit) than to reference hit j is never that hit, whatever the tolerance.
+// A value nearer to another point where the ray meets a surface (the exit, another object's hit)
+// than to reference hit j is never that hit, whatever the tolerance.
 bool HitsGrader::nearer_another_t(double t, std::size_t j) const {
   double d = std::abs(t - ref_[j].t);
   return std::any_of(others_.begin(), others_.end(), [&](double c) { return std::abs(t - c) < d; });
