@@ -40,7 +40,7 @@ struct GradeCliOptions {
   std::string feedback;             // overrides the assignment's feedback policy
   std::string now;                  // the time the due date is compared with (default: the clock)
   std::string gradescope_metadata;  // submission_metadata.json: who uploaded the submission
-  std::string moodle_worksheet;     // with --format csv-moodle: Moodle's worksheet to fill in
+  std::string moodle_worksheet;     // Moodle's grading worksheet: filled in, or names the zip
   unsigned jobs = 0;                // threads that grade (0: one per core)
 };
 
@@ -436,8 +436,10 @@ Runner setup_grade(CLI::App& sub) {
                  "with --assignment: Gradescope's submission_metadata.json; the student a "
                  "submission names must be the account that uploaded it");
   sub.add_option("--moodle-worksheet", o->moodle_worksheet,
-                 "with --format csv-moodle: the grading worksheet downloaded from the Moodle "
-                 "assignment; the gradebook is that worksheet with each student's grade filled in");
+                 "with --roster: the grading worksheet downloaded from the Moodle assignment; "
+                 "with --format csv-moodle the gradebook is that worksheet with each student's "
+                 "grade filled in, with --format html --out DIR the pages also go into "
+                 "moodle-feedback.zip for Moodle's bulk feedback upload");
   sub.add_option("-j,--jobs", o->jobs,
                  "threads that grade at once (default: one per core); the output is the same");
   sub.add_option("--now", o->now,

@@ -489,8 +489,7 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
     out.mistakes.push_back(m);
   };
   // Match t values to reference hits regardless of order: right matches first, then those
-  // right to the digits given.
-  // Each value goes to the nearest free hit it fits.
+  // right to the digits given; each value to the nearest free hit it fits.
   for (Match wanted : {Match::kRight, Match::kInsufficientPrecision}) {
     for (std::size_t i = 0; i < n_stu; ++i) {
       if (!hits[i].t || match[i] >= 0) continue;
