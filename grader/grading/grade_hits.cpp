@@ -90,6 +90,18 @@ class HitsGrader final : public KindGrader {
   void grade_contained(bool says_line, bool no_hits, GradeResult& out) const;
   void grade_barycentric(const std::vector<StudentHit>& hits, const std::vector<int>& match,
                          GradeResult& out) const;
+  // What a part earns over the hits: credit, the hits that give it, and why it lost any.
+  struct Tally {
+    double credit = 0;
+    std::size_t given = 0;
+    std::vector<std::string> feedback;
+  };
+  std::vector<Reading> readings_of(const StudentNumber& t, std::size_t i,
+                                   const std::vector<int>& match) const;
+  void grade_point(const StudentHit& h, int jj, const std::vector<int>& match, Tally& tally,
+                   GradeResult& out) const;
+  void grade_normal(const StudentHit& h, int jj, Tally& tally, GradeResult& out) const;
+  void add_part(const char* name, Tally tally, std::size_t n_stu, GradeResult& out) const;
   // A widening of t moves each coordinate of the point by at most |D|'s largest component.
   double widen_point(std::size_t j) const {
     const Vec3d& d = ray_.direction;
@@ -472,11 +484,84 @@ void HitsGrader::grade_object(const AnswerReader& a, GradeResult& out) const {
                          : fmt::format("The first object hit is {}, not {}.", right, name)}));
 }
 
+// Every reading that explains a wrong t (`t`, the student's hit i): each named mistake that
+// gives it, another object's hit, the same hit listed twice.
+std::vector<Reading> HitsGrader::readings_of(const StudentNumber& t, std::size_t i,
+                                             const std::vector<int>& match) const {
+  const Tolerance& tt = context_.tolerance.for_field("t");
+  auto near = [&](double r) { return compare_number(t, r, r, tt).match == Match::kRight; };
+  const std::string& typed = t.text;
+  double dlen = length(ray_.direction);
+  std::vector<Reading> readings;
+  for (double r : behind_) {
+    if (!near(r)) continue;
+    readings.push_back(
+        {"negative-t",
+         fmt::format("t = {} solves the equation, but t < {} puts it behind the ray's origin.",
+                     typed, fmt_t(ray_.t_min))});
+    break;
+  }
+  for (double r : far_) {
+    if (!near(r)) continue;
+    readings.push_back(
+        {"far-root", fmt::format("t = {} is where the ray leaves the object; it enters at t = {}.",
+                                 typed, ref_.empty() ? "?" : fmt_t(ref_.front().t))});
+    break;
+  }
+  if (std::abs(dlen - 1) > 1e-9) {
+    for (const auto& h : ref_) {
+      if (!near(h.t * dlen)) continue;
+      readings.push_back(
+          {"unit-direction-t",
+           fmt::format("t = {} is the distance along D/|D|; with |D| = {} the ray's t is {}.",
+                       typed, format_number(dlen, numbers_), fmt_t(h.t))});
+      break;
+    }
+  }
+  if (object_space_scale_ > 0) {
+    for (const auto& h : ref_) {
+      if (!near(h.t * object_space_scale_)) continue;
+      readings.push_back(
+          {"object-space-unit-t",
+           fmt::format("t = {} is the distance along A⁻¹D/|A⁻¹D| in the object's own space; "
+                       "with |A⁻¹D| = {} the ray's t is {}.",
+                       typed, format_number(object_space_scale_, numbers_), fmt_t(h.t))});
+      break;
+    }
+  }
+  for (const auto& ms : mistaken_) {
+    bool fits = false;
+    for (const auto& part : ms.parts) {
+      for (double r : derivation_roots(part.derivation)) {
+        // A root the mistake leaves as it was (a ball of radius 1 has r = r²) is no sign of it.
+        fits = fits || (near(r) && !is_candidate(r));
+      }
+    }
+    bool again = std::any_of(readings.begin(), readings.end(),
+                             [&](const Reading& x) { return x.id == ms.id; });
+    if (fits && !again) {
+      readings.push_back({ms.id, fmt::format("your t = {} is what it gives.", typed)});
+    }
+  }
+  for (const auto& [object, at] : other_objects_) {
+    if (!near(at)) continue;
+    readings.push_back({"", fmt::format("t = {} is where the ray meets {}, which is not the first "
+                                        "object it hits.",
+                                        typed, object)});
+    break;
+  }
+  for (std::size_t k = 0; k < match.size(); ++k) {
+    if (k == i || match[k] < 0 || !near(ref_[static_cast<std::size_t>(match[k])].t)) continue;
+    readings.push_back({"", fmt::format("t = {} is listed twice; it is one hit.", typed)});
+    break;
+  }
+  return readings;
+}
+
 void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrade* steps,
                             GradeResult& out) const {
   const Tolerance& tt = context_.tolerance.for_field("t");
   const Tolerance& tp = context_.tolerance.for_field("point");
-  const Tolerance& tn = context_.tolerance.for_field("normal");
   std::size_t n_ref = ref_.size(), n_stu = hits.size();
   std::vector<int> match(n_stu, -1);
   std::vector<bool> used(n_ref, false);
@@ -535,7 +620,6 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
   double t_credit = 0;
   std::vector<double> carried_roots;
   if (steps && steps->carried) carried_roots = derivation_roots(*steps->carried);
-  double dlen = length(ray_.direction);
   std::vector<std::size_t> without_t;  // hits that give no t (nor an unreadable one)
   for (std::size_t i = 0; i < n_stu; ++i) {
     if (!hits[i].t) {
@@ -562,73 +646,8 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
           "t = {} follows correctly from your own earlier steps (error carried forward).", typed));
       continue;
     }
-    // Every reading that explains the value; a named mistake is asserted only when it is the
-    // one reading that fits.
-    std::vector<Reading> readings;
-    for (double r : behind_) {
-      if (!near(r)) continue;
-      readings.push_back(
-          {"negative-t",
-           fmt::format("t = {} solves the equation, but t < {} puts it behind the ray's origin.",
-                       typed, fmt_t(ray_.t_min))});
-      break;
-    }
-    for (double r : far_) {
-      if (!near(r)) continue;
-      readings.push_back(
-          {"far-root",
-           fmt::format("t = {} is where the ray leaves the object; it enters at t = {}.", typed,
-                       ref_.empty() ? "?" : fmt_t(ref_.front().t))});
-      break;
-    }
-    if (std::abs(dlen - 1) > 1e-9) {
-      for (const auto& h : ref_) {
-        if (!near(h.t * dlen)) continue;
-        readings.push_back(
-            {"unit-direction-t",
-             fmt::format("t = {} is the distance along D/|D|; with |D| = {} the ray's t is {}.",
-                         typed, format_number(dlen, numbers_), fmt_t(h.t))});
-        break;
-      }
-    }
-    if (object_space_scale_ > 0) {
-      for (const auto& h : ref_) {
-        if (!near(h.t * object_space_scale_)) continue;
-        readings.push_back(
-            {"object-space-unit-t",
-             fmt::format("t = {} is the distance along A⁻¹D/|A⁻¹D| in the object's own space; "
-                         "with |A⁻¹D| = {} the ray's t is {}.",
-                         typed, format_number(object_space_scale_, numbers_), fmt_t(h.t))});
-        break;
-      }
-    }
-    for (const auto& ms : mistaken_) {
-      bool fits = false;
-      for (const auto& part : ms.parts) {
-        for (double r : derivation_roots(part.derivation)) {
-          // A root the mistake leaves as it was (a ball of radius 1 has r = r²) is no sign of it.
-          fits = fits || (near(r) && !is_candidate(r));
-        }
-      }
-      bool again = std::any_of(readings.begin(), readings.end(),
-                               [&](const Reading& x) { return x.id == ms.id; });
-      if (fits && !again) {
-        readings.push_back({ms.id, fmt::format("your t = {} is what it gives.", typed)});
-      }
-    }
-    for (const auto& [object, t] : other_objects_) {
-      if (!near(t)) continue;
-      readings.push_back(
-          {"", fmt::format("t = {} is where the ray meets {}, which is not the first "
-                           "object it hits.",
-                           typed, object)});
-      break;
-    }
-    for (std::size_t k = 0; k < n_stu; ++k) {
-      if (k == i || match[k] < 0 || !near(ref_[static_cast<std::size_t>(match[k])].t)) continue;
-      readings.push_back({"", fmt::format("t = {} is listed twice; it is one hit.", typed)});
-      break;
-    }
+    // A named mistake is asserted only when it is the one reading that fits.
+    std::vector<Reading> readings = readings_of(*hits[i].t, i, match);
     if (readings.empty()) {
       t_feedback.push_back(fmt::format("t = {} is not a hit of this ray.", typed));
     } else if (readings.size() == 1 && !readings.front().id.empty()) {
@@ -691,155 +710,167 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
       used[static_cast<std::size_t>(best)] = true;
     }
   }
-  double p_credit = 0, n_credit = 0;
-  std::size_t n_points = 0, n_normals = 0;
-  std::vector<std::string> p_feedback, n_feedback;
+  Tally points, normals;
   for (std::size_t i = 0; i < n_stu; ++i) {
     const StudentHit& h = hits[i];
-    if (h.point) {
-      ++n_points;
-      if (!h.point->ok) {
-        p_feedback.push_back("point: " + h.point->fault);
-      } else if (match[i] >= 0) {
-        auto j = static_cast<std::size_t>(match[i]);
-        NumberVerdict v = compare_vector(h.point->c, ref_[j].point, tp, widen_point(j));
-        if (v.match != Match::kWrong && nearer_another_point(h.point->value(), j)) {
-          v.match = Match::kWrong;
-        }
-        if (v.match == Match::kRight) {
-          p_credit += 1;
-        } else if (v.match == Match::kInsufficientPrecision) {
-          p_credit += tp.precision_credit;
-          p_feedback.push_back("point: " + v.message);
-        } else if (std::optional<double> c = other_root_at(h.point->c, tp)) {
-          p_feedback.push_back(
-              fmt::format("The point {} is where the ray is at t = {}; the hit at t = {} is {}.",
-                          format_vector(h.point->value(), numbers_), fmt_t(*c), fmt_t(ref_[j].t),
-                          format_vector(ref_[j].point, numbers_)));
-        } else {
-          p_feedback.push_back(fmt::format("The point at t = {} is {}.", fmt_t(ref_[j].t),
-                                           format_vector(ref_[j].point, numbers_)));
-        }
-      } else if (h.t) {
-        // Consistent with the student's own t: P = O + tD. Nothing is carried from t = 0,
-        // whose point is the ray's own origin.
-        Vec3d own = ray_.at(h.t->value);
-        if (h.t->value == 0) {
-          p_feedback.push_back(
-              "Your t = 0 puts the point at the ray's own origin: nothing is carried forward "
-              "from it.");
-        } else if (compare_vector(h.point->c, own, tp).match == Match::kRight) {
-          p_credit += context_.points.carried_forward;
-          out.carried_forward = true;
-          p_feedback.push_back(fmt::format(
-              "The point follows correctly from your t = {} (error carried forward).", h.t->text));
-        } else {
-          p_feedback.push_back(fmt::format("The point {} is not O + tD for your t = {}.",
-                                           format_vector(h.point->value(), numbers_), h.t->text));
-        }
-      } else if (std::any_of(match.begin(), match.end(), [&](int j) {
-                   return j >= 0 &&
-                          compare_vector(h.point->c, ref_[static_cast<std::size_t>(j)].point, tp,
-                                         widen_point(static_cast<std::size_t>(j)))
-                                  .match != Match::kWrong;
-                 })) {
-        p_feedback.push_back(fmt::format("The point {} is listed twice; it is one hit.",
-                                         format_vector(h.point->value(), numbers_)));
-      } else {
-        p_feedback.push_back(fmt::format("The point {} is not a hit of this ray.",
-                                         format_vector(h.point->value(), numbers_)));
-      }
-    }
-    if (h.normal) {
-      ++n_normals;
-      if (!h.normal->ok) {
-        n_feedback.push_back("normal: " + h.normal->fault);
-        continue;
-      }
-      if (match[i] < 0) {
-        n_feedback.push_back(fmt::format("The normal of a hit that is not one is not graded{}.",
-                                         h.t ? fmt::format(" (t = {})", h.t->text) : ""));
-        continue;
-      }
-      auto j = static_cast<std::size_t>(match[i]);
-      Vec3d mine = h.normal->value();
-      // Graded as a direction: any positive multiple of the unit normal is right, and its
-      // digits are judged as any number's.
-      Vec3d r = ref_[j].normal;
-      DirectionVerdict dv = compare_direction(h.normal->c, r, tn);
-      double len = dv.length;
-      if (len == 0) {
-        n_feedback.push_back("A normal cannot be the zero vector.");
-        continue;
-      }
-      if (dv.verdict.match == Match::kRight) {
-        n_credit += 1;
-        if (std::abs(len - 1) > 1e-3) {
-          n_feedback.push_back(fmt::format("Your normal has length {}; as a direction it is right.",
-                                           format_number(len, numbers_)));
-        }
-      } else if (dv.verdict.match == Match::kInsufficientPrecision) {
-        n_credit += tn.precision_credit;
-        n_feedback.push_back("normal: " + dv.verdict.message);
-      } else if (dv.opposite) {
-        Shape::NormalRule rule = shape_ ? shape_->normal_rule() : Shape::NormalRule{};
-        if (!rule.mistake.empty()) {
-          const std::string& id = rule.mistake;
-          out.mistakes.push_back(
-              make_mistake(id, "normal",
-                           fmt::format("your normal {} points the opposite way to {}.{}",
-                                       format_vector(mine, numbers_), format_vector(r, numbers_),
-                                       rule.sentence)));
-          n_credit += mistake_info(id).credit;
-          n_feedback.push_back(fmt::format("Your normal points the opposite way to {}.",
-                                           format_vector(r, numbers_)));
-        } else {
-          n_feedback.push_back(
-              fmt::format("Your normal points the opposite way to the plane's "
-                          "normal {}.",
-                          format_vector(r, numbers_)));
-        }
-      } else if (auto by_matrix = normal_by_matrix(shape_, ref_[j]);
-                 by_matrix &&
-                 compare_direction(h.normal->c, *by_matrix, tn).verdict.match == Match::kRight) {
-        const char* id = "normal-not-inverse-transpose";
-        out.mistakes.push_back(make_mistake(
-            id, "normal",
-            fmt::format("your normal {} is the object's normal taken to the world by the matrix "
-                        "A; by the inverse transpose (A⁻¹)ᵀ it is {}.",
-                        format_vector(mine, numbers_), format_vector(r, numbers_))));
-        n_credit += mistake_info(id).credit;
-        n_feedback.push_back(
-            fmt::format("The normal at t = {} is {}: normals go back by the "
-                        "inverse transpose of the transform's matrix.",
-                        fmt_t(ref_[j].t), format_vector(r, numbers_)));
-      } else {
-        n_feedback.push_back(fmt::format("The normal at t = {} is {}.", fmt_t(ref_[j].t),
-                                         format_vector(r, numbers_)));
-      }
-    }
+    if (h.point) grade_point(h, match[i], match, points, out);
+    if (h.normal) grade_normal(h, match[i], normals, out);
   }
-  auto add = [&](const char* name, double credit, std::size_t given, std::vector<std::string> fb) {
-    std::size_t d = std::max(n_ref, given);
-    if (n_ref == 0 && n_stu == 0) {  // no hit and none given: nothing was missed
-      if (context_.points.of(name) > 0) out.parts.push_back(make_part(context_, name, 1, {}));
-      return;
-    }
-    if (given == 0) {
-      if (context_.points.of(name) > 0) out.parts.push_back(missing_part(context_, name));
-      return;
-    }
-    if (credit >= static_cast<double>(d) && fb.empty()) fb.push_back("Right.");
-    if (given < n_ref) {
-      fb.push_back(fmt::format(
-          "The ray has {} hits; {} of them {} given.", n_ref, given,
-          given == 1 ? fmt::format("has its {}", name) : fmt::format("have their {}s", name)));
-    }
-    out.parts.push_back(make_part(context_, name, credit / static_cast<double>(d), std::move(fb)));
-  };
-  add("point", p_credit, n_points, std::move(p_feedback));
-  add("normal", n_credit, n_normals, std::move(n_feedback));
+  add_part("point", std::move(points), n_stu, out);
+  add_part("normal", std::move(normals), n_stu, out);
   grade_barycentric(hits, match, out);
+}
+
+// One hit's point, matched to reference hit `jj` (or to none, −1): its credit and what is
+// wrong with it go into `tally`.
+void HitsGrader::grade_point(const StudentHit& h, int jj, const std::vector<int>& match,
+                             Tally& tally, GradeResult& out) const {
+  const Tolerance& tp = context_.tolerance.for_field("point");
+  ++tally.given;
+  if (!h.point->ok) {
+    tally.feedback.push_back("point: " + h.point->fault);
+  } else if (jj >= 0) {
+    auto j = static_cast<std::size_t>(jj);
+    NumberVerdict v = compare_vector(h.point->c, ref_[j].point, tp, widen_point(j));
+    if (v.match != Match::kWrong && nearer_another_point(h.point->value(), j)) {
+      v.match = Match::kWrong;
+    }
+    if (v.match == Match::kRight) {
+      tally.credit += 1;
+    } else if (v.match == Match::kInsufficientPrecision) {
+      tally.credit += tp.precision_credit;
+      tally.feedback.push_back("point: " + v.message);
+    } else if (std::optional<double> c = other_root_at(h.point->c, tp)) {
+      tally.feedback.push_back(
+          fmt::format("The point {} is where the ray is at t = {}; the hit at t = {} is {}.",
+                      format_vector(h.point->value(), numbers_), fmt_t(*c), fmt_t(ref_[j].t),
+                      format_vector(ref_[j].point, numbers_)));
+    } else {
+      tally.feedback.push_back(fmt::format("The point at t = {} is {}.", fmt_t(ref_[j].t),
+                                           format_vector(ref_[j].point, numbers_)));
+    }
+  } else if (h.t) {
+    // Consistent with the student's own t: P = O + tD. Nothing is carried from t = 0,
+    // whose point is the ray's own origin.
+    Vec3d own = ray_.at(h.t->value);
+    if (h.t->value == 0) {
+      tally.feedback.push_back(
+          "Your t = 0 puts the point at the ray's own origin: nothing is carried forward "
+          "from it.");
+    } else if (compare_vector(h.point->c, own, tp).match == Match::kRight) {
+      tally.credit += context_.points.carried_forward;
+      out.carried_forward = true;
+      tally.feedback.push_back(fmt::format(
+          "The point follows correctly from your t = {} (error carried forward).", h.t->text));
+    } else {
+      tally.feedback.push_back(fmt::format("The point {} is not O + tD for your t = {}.",
+                                           format_vector(h.point->value(), numbers_), h.t->text));
+    }
+  } else if (std::any_of(match.begin(), match.end(), [&](int j) {
+               return j >= 0 && compare_vector(h.point->c, ref_[static_cast<std::size_t>(j)].point,
+                                               tp, widen_point(static_cast<std::size_t>(j)))
+                                        .match != Match::kWrong;
+             })) {
+    tally.feedback.push_back(fmt::format("The point {} is listed twice; it is one hit.",
+                                         format_vector(h.point->value(), numbers_)));
+  } else {
+    tally.feedback.push_back(fmt::format("The point {} is not a hit of this ray.",
+                                         format_vector(h.point->value(), numbers_)));
+  }
+}
+
+// One hit's normal, matched to reference hit `jj` (or to none, −1), graded as a direction.
+void HitsGrader::grade_normal(const StudentHit& h, int jj, Tally& tally, GradeResult& out) const {
+  const Tolerance& tn = context_.tolerance.for_field("normal");
+  ++tally.given;
+  if (!h.normal->ok) {
+    tally.feedback.push_back("normal: " + h.normal->fault);
+    return;
+  }
+  if (jj < 0) {
+    tally.feedback.push_back(fmt::format("The normal of a hit that is not one is not graded{}.",
+                                         h.t ? fmt::format(" (t = {})", h.t->text) : ""));
+    return;
+  }
+  auto j = static_cast<std::size_t>(jj);
+  Vec3d mine = h.normal->value();
+  // Graded as a direction: any positive multiple of the unit normal is right, and its
+  // digits are judged as any number's.
+  Vec3d r = ref_[j].normal;
+  DirectionVerdict dv = compare_direction(h.normal->c, r, tn);
+  double len = dv.length;
+  if (len == 0) {
+    tally.feedback.push_back("A normal cannot be the zero vector.");
+    return;
+  }
+  if (dv.verdict.match == Match::kRight) {
+    tally.credit += 1;
+    if (std::abs(len - 1) > 1e-3) {
+      tally.feedback.push_back(fmt::format("Your normal has length {}; as a direction it is right.",
+                                           format_number(len, numbers_)));
+    }
+  } else if (dv.verdict.match == Match::kInsufficientPrecision) {
+    tally.credit += tn.precision_credit;
+    tally.feedback.push_back("normal: " + dv.verdict.message);
+  } else if (dv.opposite) {
+    Shape::NormalRule rule = shape_ ? shape_->normal_rule() : Shape::NormalRule{};
+    if (!rule.mistake.empty()) {
+      const std::string& id = rule.mistake;
+      out.mistakes.push_back(make_mistake(
+          id, "normal",
+          fmt::format("your normal {} points the opposite way to {}.{}",
+                      format_vector(mine, numbers_), format_vector(r, numbers_), rule.sentence)));
+      tally.credit += mistake_info(id).credit;
+      tally.feedback.push_back(
+          fmt::format("Your normal points the opposite way to {}.", format_vector(r, numbers_)));
+    } else {
+      tally.feedback.push_back(
+          fmt::format("Your normal points the opposite way to the plane's "
+                      "normal {}.",
+                      format_vector(r, numbers_)));
+    }
+  } else if (auto by_matrix = normal_by_matrix(shape_, ref_[j]);
+             by_matrix &&
+             compare_direction(h.normal->c, *by_matrix, tn).verdict.match == Match::kRight) {
+    const char* id = "normal-not-inverse-transpose";
+    out.mistakes.push_back(make_mistake(
+        id, "normal",
+        fmt::format("your normal {} is the object's normal taken to the world by the matrix "
+                    "A; by the inverse transpose (A⁻¹)ᵀ it is {}.",
+                    format_vector(mine, numbers_), format_vector(r, numbers_))));
+    tally.credit += mistake_info(id).credit;
+    tally.feedback.push_back(
+        fmt::format("The normal at t = {} is {}: normals go back by the "
+                    "inverse transpose of the transform's matrix.",
+                    fmt_t(ref_[j].t), format_vector(r, numbers_)));
+  } else {
+    tally.feedback.push_back(
+        fmt::format("The normal at t = {} is {}.", fmt_t(ref_[j].t), format_vector(r, numbers_)));
+  }
+}
+
+// The part `name` from what its hits earned: a share per reference hit (or per hit given, when
+// more are given), missing when none gives it.
+void HitsGrader::add_part(const char* name, Tally tally, std::size_t n_stu,
+                          GradeResult& out) const {
+  std::size_t n_ref = ref_.size(), d = std::max(n_ref, tally.given);
+  if (n_ref == 0 && n_stu == 0) {  // no hit and none given: nothing was missed
+    if (context_.points.of(name) > 0) out.parts.push_back(make_part(context_, name, 1, {}));
+    return;
+  }
+  if (tally.given == 0) {
+    if (context_.points.of(name) > 0) out.parts.push_back(missing_part(context_, name));
+    return;
+  }
+  if (tally.credit >= static_cast<double>(d) && tally.feedback.empty())
+    tally.feedback.push_back("Right.");
+  if (tally.given < n_ref) {
+    tally.feedback.push_back(fmt::format(
+        "The ray has {} hits; {} of them {} given.", n_ref, tally.given,
+        tally.given == 1 ? fmt::format("has its {}", name) : fmt::format("have their {}s", name)));
+  }
+  out.parts.push_back(
+      make_part(context_, name, tally.credit / static_cast<double>(d), std::move(tally.feedback)));
 }
 
 // Barycentric weights (w_a, w_b, w_c) of a triangle hit, in the order of the vertices, or
