@@ -152,6 +152,35 @@ TEST_F(Gradebook, MoodlesWorksheetFilledIn) {
   EXPECT_EQ(other.exit_code, 2);
 }
 
+// Moodle reads Grade out of the worksheet's own "Maximum Grade": a Moodle assignment out of 100
+// for raygrade's 5 points takes each total times 20 (Ada 5 -> 100, Alan and Grace 2 -> 40), and
+// a maximum that is no number of points (a scale) is refused before anything is graded.
+TEST_F(Gradebook, MoodlesWorksheetOutOfItsOwnMaximum) {
+  fs::copy(kData / "moodle-worksheet-100.csv", dir_.path() / "worksheet.csv");
+  auto r = run_raygrade(
+      "grade --assignment hw.json --roster roster.csv subs --format csv-moodle "
+      "--moodle-worksheet worksheet.csv --now 2026-12-01T00:00:00Z",
+      dir_.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;  // Barbara's file is rejected
+  EXPECT_EQ(r.out, read_text(kData / "moodle-worksheet-100-filled.csv"));
+  EXPECT_NE(r.err.find("the worksheet's Maximum Grade is 100, the assignment's 5 points"),
+            std::string::npos)
+      << r.err;
+  write_text(dir_.path() / "scale.csv",
+             "Identifier,Full name,Email address,Grade,Maximum Grade,Last modified (grade)\n"
+             "Participant 101,Ada Lovelace,ada@example.edu,,Competent,-\n");
+  auto scale = run_raygrade(
+      "grade --assignment hw.json --roster roster.csv subs --format csv-moodle "
+      "--moodle-worksheet scale.csv --out out",
+      dir_.path());
+  EXPECT_EQ(scale.exit_code, 2);
+  EXPECT_NE(scale.err.find("scale.csv:2: error: row 2's Maximum Grade \"Competent\" is not a "
+                           "number of points"),
+            std::string::npos)
+      << scale.err;
+  EXPECT_FALSE(fs::exists(dir_.path() / "out" / "gradebook.csv"));
+}
+
 // What Moodle's "Upload multiple feedback files in a zip" reads of each file in the zip: the
 // participant number and plugin from its first folder's name split at '_' (fullname, number,
 // plugin type, plugin name), as assignfeedback_file's importer splits it; one line per file,

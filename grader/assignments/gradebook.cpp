@@ -4,7 +4,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <map>
+#include <set>
+#include <system_error>
 #include <tuple>
 
 #include "assignments/variants.h"
@@ -175,12 +179,26 @@ MoodleWorksheet::MoodleWorksheet(const std::vector<std::vector<std::string>>& ro
   full_name = column("Full name");
   email = column("Email address");
   grade = column("Grade");
+  maximum = column("Maximum Grade");
   column("Last modified (grade)");
+  maxima.assign(rows.size(), 0.0);
   for (std::size_t r = 1; r < rows.size(); ++r) {
+    int line = static_cast<int>(r + 1);
     if (rows[r].size() != header.size()) {
-      throw fault(static_cast<int>(r + 1), fmt::format("row {} has {} cells, the header {}", r + 1,
-                                                       rows[r].size(), header.size()));
+      throw fault(line, fmt::format("row {} has {} cells, the header {}", r + 1, rows[r].size(),
+                                    header.size()));
     }
+    std::string most = rows[r][maximum];
+    std::replace(most.begin(), most.end(), ',', '.');  // a decimal comma
+    double value = 0;
+    auto [end, ec] = std::from_chars(most.data(), most.data() + most.size(), value);
+    if (ec != std::errc() || end != most.data() + most.size() || !(value > 0) ||
+        !std::isfinite(value)) {
+      throw fault(line, fmt::format("row {}'s Maximum Grade \"{}\" is not a number of points: "
+                                    "raygrade fills in point grades (Grade > Type: Point)",
+                                    r + 1, rows[r][maximum]));
+    }
+    maxima[r] = value;
   }
 }
 
@@ -223,6 +241,8 @@ std::string RosterGradebook::moodle_worksheet(const std::vector<std::vector<std:
                                               std::vector<std::string>& notes) const {
   MoodleWorksheet sheet(rows, file);
   std::size_t email = sheet.email, grade = sheet.grade;
+  double total = max_score().value_or(0.0);
+  std::set<double> scaled;  // the Moodle maxima that differ from the assignment's points
   std::map<std::string, std::size_t> by_email;
   for (std::size_t i = 0; i < roster_.size(); ++i) {
     if (!roster_[i].email.empty()) by_email[ascii_lower(roster_[i].email)] = i;
@@ -240,7 +260,14 @@ std::string RosterGradebook::moodle_worksheet(const std::vector<std::vector<std:
         std::size_t i = it->second;
         has_row[i] = true;
         const Handed* pick = chosen(handed_[i]);
-        cells[grade] = format_points(pick ? pick->score : 0.0);
+        double score = pick ? pick->score : 0.0;
+        double most = sheet.maxima[r];
+        if (total > 0 && most != total) {
+          // Moodle reads the grade out of its own maximum.
+          score = score * most / total;
+          scaled.insert(most);
+        }
+        cells[grade] = format_points(score);
       }
     }
     for (std::size_t c = 0; c < cells.size(); ++c) out += (c ? "," : "") + csv_field(cells[c]);
@@ -252,6 +279,12 @@ std::string RosterGradebook::moodle_worksheet(const std::vector<std::vector<std:
           fmt::format("student '{}' ({}) has no row on the worksheet: no grade for them",
                       roster_[i].id, roster_[i].email));
     }
+  }
+  for (double most : scaled) {
+    notes.push_back(fmt::format(
+        "the worksheet's Maximum Grade is {}, the assignment's {} points: each total scaled to "
+        "it (to 2 decimals)",
+        format_points(most), format_points(total)));
   }
   return out;
 }

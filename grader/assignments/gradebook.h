@@ -21,11 +21,14 @@ namespace raygrade {
 enum class PickPolicy { kLatest, kBest, kFirst };
 std::optional<PickPolicy> parse_pick_policy(std::string_view name);
 
-// The columns of Moodle's grading worksheet that raygrade reads. Throws Error naming `file` when
-// one Moodle needs is missing, or a row is cut short.
+// The columns of Moodle's grading worksheet that raygrade reads, and each row's "Maximum Grade"
+// (Moodle writes it as "5.00", or "5,00" in a language with a decimal comma). Throws Error
+// naming `file` and the row when a column Moodle needs is missing, a row is cut short, or a
+// maximum is not a positive number of points (an assignment graded on a scale).
 struct MoodleWorksheet {
   MoodleWorksheet(const std::vector<std::vector<std::string>>& rows, const std::string& file);
-  std::size_t identifier = 0, full_name = 0, email = 0, grade = 0;
+  std::size_t identifier = 0, full_name = 0, email = 0, grade = 0, maximum = 0;
+  std::vector<double> maxima;  // per row; the header's is 0
 };
 
 // A student's feedback page: its file name and text, and the roster id it was written for.
@@ -68,11 +71,13 @@ class RosterGradebook {
 
   // Moodle's offline grading worksheet as downloaded from the assignment (`rows`, read from
   // `file`), each row's "Grade" set to the total of the roster student whose email is its
-  // "Email address"; every other cell as downloaded (a status can name another student, so
-  // "Feedback comments" is not written), since Moodle matches a row by its "Identifier" and skips
-  // one whose "Last modified (grade)" is older than its own record. A row of no roster student
-  // stays as downloaded, and is listed in `notes`, as is each roster student without a row. Throws
-  // Error naming the file when a column Moodle needs is missing or a row is cut short.
+  // "Email address", out of the row's "Maximum Grade" (scaled from the assignment's points
+  // when they differ, and said once in `notes`); every other cell as downloaded (a status can name
+  // another student, so "Feedback comments" is not written), since Moodle matches a row by its
+  // "Identifier" and skips one whose "Last modified (grade)" is older than its own record. A row of
+  // no roster student stays as downloaded, and is listed in `notes`, as is each roster student
+  // without a row. Throws Error naming the file when a column Moodle needs is missing or a row is
+  // cut short.
   std::string moodle_worksheet(const std::vector<std::vector<std::string>>& rows,
                                const std::string& file, std::vector<std::string>& notes) const;
 

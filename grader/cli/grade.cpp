@@ -110,7 +110,9 @@ std::vector<std::vector<std::string>> read_worksheet(const std::string& path) {
   }
   constexpr std::string_view kBom = "\xEF\xBB\xBF";
   if (text->starts_with(kBom)) text->erase(0, kBom.size());
-  return csv_rows(*text, path);
+  std::vector<std::vector<std::string>> rows = csv_rows(*text, path);
+  MoodleWorksheet check(rows, path);  // refused before anything is graded
+  return rows;
 }
 
 std::optional<int> setup_from_bank(const GradeCliOptions& o, GradeSetup& s) {
