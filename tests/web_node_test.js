@@ -4,18 +4,24 @@
 // cases (which need the precision ladder's top, SoftFloat in the browser, MPFR natively) as
 // one bank; the example assignment's worked solutions and grades. The standard error lines and
 // exit codes are compared too.
-// Usage: node tests/web_node_test.js RAYGRADE_JS NATIVE_RAYGRADE SOURCE_DIR
+// Usage: node tests/web_node_test.js RAYGRADE_JS NATIVE_RAYGRADE SOURCE_DIR [K/N]
+// With K/N (0 <= K < N), only every Nth comparison from the Kth is made, so N processes side by
+// side make them all.
 'use strict';
 const fs = require('fs');
 const os = require('os');
 const path = require('path');
 const {spawnSync} = require('child_process');
 
-const [raygradeJs, native, sourceDir] = process.argv.slice(2);
-if (!sourceDir) {
-  console.error('usage: node web_node_test.js RAYGRADE_JS NATIVE_RAYGRADE SOURCE_DIR');
+const [raygradeJs, native, sourceDir, share = '0/1'] = process.argv.slice(2);
+const [shard, shards] = share.split('/').map(Number);
+if (!sourceDir || !(shards >= 1 && shard >= 0 && shard < shards)) {
+  console.error('usage: node web_node_test.js RAYGRADE_JS NATIVE_RAYGRADE SOURCE_DIR [K/N]');
   process.exit(2);
 }
+// Whether this process makes the next comparison.
+let next = 0;
+const mine = () => next++ % shards === shard;
 process.chdir(sourceDir);
 
 // The .json files under `folder`, in the order raygrade lists a folder (sorted paths).
@@ -64,19 +70,21 @@ require(path.resolve(raygradeJs))().then((raygrade) => {
 
   // Each file: the answers, and the worked solution in every format.
   for (const f of bank) {
-    compare(`solve ${f}`, raygrade.solve(one(f)), raygrade.lastErrors(), raygrade.lastStatus(),
+    if (mine()) compare(`solve ${f}`, raygrade.solve(one(f)), raygrade.lastErrors(), raygrade.lastStatus(),
             runNative(['solve', f, '--format', 'json']));
     for (const format of ['md', 'html', 'txt']) {
+      if (!mine()) continue;
       compare(`solve ${f} --format ${format}`, raygrade.solution(one(f), format),
               raygrade.lastErrors(), raygrade.lastStatus(),
               runNative(['solve', f, '--format', format]));
     }
   }
   // The whole bank at once.
-  compare('solve problems', raygrade.solve(texts), raygrade.lastErrors(), raygrade.lastStatus(),
+  if (mine()) compare('solve problems', raygrade.solve(texts), raygrade.lastErrors(), raygrade.lastStatus(),
           runNative(['solve', 'problems', '--format', 'json']));
   // Every sample submission against the whole bank.
   for (const s of jsonFiles('submissions')) {
+    if (!mine()) continue;
     const web = raygrade.grade(texts, fs.readFileSync(s, 'utf8'), s);
     compare(`grade ${s}`, web, raygrade.lastErrors(), raygrade.lastStatus(),
             runNative(['grade', '--problems', 'problems', '--format', 'json', s]));
@@ -86,6 +94,7 @@ require(path.resolve(raygradeJs))().then((raygrade) => {
   const assignment = 'assignments/homework-rays.json';
   const withAssignment = Object.assign({[assignment]: fs.readFileSync(assignment, 'utf8')}, texts);
   for (const format of ['json', 'html']) {
+    if (!mine()) continue;
     compare(`solve ${assignment} --student s001 --format ${format}`,
             raygrade.solveAssignment(withAssignment, assignment, 's001', format),
             raygrade.lastErrors(), raygrade.lastStatus(),
@@ -94,6 +103,7 @@ require(path.resolve(raygradeJs))().then((raygrade) => {
   for (const when of ['2026-11-24T00:00:00Z', '2026-12-24T00:00:00Z']) {
     for (const s of jsonFiles('submissions')) {
       for (const cacheKey of ['', 'example']) {
+        if (!mine()) continue;
         const web = raygrade.gradeAssignment(withAssignment, assignment, fs.readFileSync(s, 'utf8'),
                                              {now: Date.parse(when) / 1000, submissionName: s, cacheKey});
         compare(`grade --assignment --now ${when} ${s} (cache key "${cacheKey}")`, web,
@@ -104,31 +114,41 @@ require(path.resolve(raygradeJs))().then((raygrade) => {
   }
   // The hard cases, where the answer needs double-double, the top of the ladder or an exact
   // decision on a boundary; and a problem file with a fault, for the diagnostics.
-  const scratch = fs.mkdtempSync(path.join(os.tmpdir(), 'raygrade-web-'));
-  const hard = path.join(scratch, 'hard-cases.json');
-  // The accuracy study's hard cases as one bank of intersect problems, posed by the native
-  // raygrade itself (each primitive writes its own object), so no primitive is left out.
-  const posed = runNative(['bench', '--corpus-problems', hard]);
-  if (posed.status !== 0) throw new Error(`raygrade bench --corpus-problems: ${posed.errors.join('; ')}`);
-  compare('solve hard cases', raygrade.solve({[hard.slice(1)]: fs.readFileSync(hard, 'utf8')}),
-          raygrade.lastErrors(), raygrade.lastStatus(),
-          runNative(['solve', hard.slice(1), '--format', 'json'], '/'));
+  // The hard cases in two halves (every other problem), so two processes share them.
   const levels = {};
-  for (const s of JSON.parse(raygrade.solve({'hard.json': fs.readFileSync(hard, 'utf8')})).solutions) {
-    // No level: an object the study has no case for (a cone whose apex − base is not exactly
-    // h·â once written as a problem), answered in double.
-    const level = s.level || 'none';
-    levels[level] = (levels[level] || 0) + 1;
+  for (const half of [0, 1]) {
+    if (!mine()) continue;
+    const scratch = fs.mkdtempSync(path.join(os.tmpdir(), 'raygrade-web-'));
+    const all = path.join(scratch, 'hard-cases.json');
+    // The accuracy study's hard cases as one bank of intersect problems, posed by the native
+    // raygrade itself (each primitive writes its own object), so no primitive is left out.
+    const posed = runNative(['bench', '--corpus-problems', all]);
+    if (posed.status !== 0) throw new Error(`raygrade bench --corpus-problems: ${posed.errors.join('; ')}`);
+    const bankOfAll = JSON.parse(fs.readFileSync(all, 'utf8'));
+    bankOfAll.problems = bankOfAll.problems.filter((_, i) => i % 2 === half);
+    const hard = path.join(scratch, `hard-cases-${half}.json`);
+    fs.writeFileSync(hard, JSON.stringify(bankOfAll, null, 2) + '\n');
+    const web = raygrade.solve({[hard.slice(1)]: fs.readFileSync(hard, 'utf8')});
+    compare(`solve hard cases (half ${half})`, web, raygrade.lastErrors(), raygrade.lastStatus(),
+            runNative(['solve', hard.slice(1), '--format', 'json'], '/'));
+    for (const s of JSON.parse(web).solutions) {
+      // No level: an object the study has no case for (a cone whose apex − base is not exactly
+      // h·â once written as a problem), answered in double.
+      const level = s.level || 'none';
+      levels[level] = (levels[level] || 0) + 1;
+    }
+    fs.rmSync(scratch, {recursive: true});
   }
-  fs.rmSync(scratch, {recursive: true});
-  const broken = '{"problems": [{"id": "p", "kind": "intersect", "ray": {"origin": [0, 0, 0],\n' +
-                 '  "direction": [0, 0, 0]}, "object": {"type": "sphere", "radius": 1}, "colour": 1}]}';
-  const brokenFile = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'raygrade-web-')), 'broken.json');
-  fs.writeFileSync(brokenFile, broken);
-  compare('solve a faulty file', raygrade.solve({[brokenFile.slice(1)]: broken}),
-          raygrade.lastErrors(), raygrade.lastStatus(),
-          runNative(['solve', brokenFile.slice(1), '--format', 'json'], '/'));
-  fs.rmSync(path.dirname(brokenFile), {recursive: true});
+  if (mine()) {
+    const broken = '{"problems": [{"id": "p", "kind": "intersect", "ray": {"origin": [0, 0, 0],\n' +
+                   '  "direction": [0, 0, 0]}, "object": {"type": "sphere", "radius": 1}, "colour": 1}]}';
+    const brokenFile = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'raygrade-web-')), 'broken.json');
+    fs.writeFileSync(brokenFile, broken);
+    compare('solve a faulty file', raygrade.solve({[brokenFile.slice(1)]: broken}),
+            raygrade.lastErrors(), raygrade.lastStatus(),
+            runNative(['solve', brokenFile.slice(1), '--format', 'json'], '/'));
+    fs.rmSync(path.dirname(brokenFile), {recursive: true});
+  }
   // Misuse of the API is an error that says what is wrong, never silently ignored.
   const refused = (what, call, words) => {
     ++compared;
@@ -143,11 +163,13 @@ require(path.resolve(raygradeJs))().then((raygrade) => {
     console.log(`FAIL ${what}: no error`);
     ++failures;
   };
-  refused('an unknown option', () => raygrade.gradeAssignment(withAssignment, assignment, '{}',
+  if (mine()) {
+    refused('an unknown option', () => raygrade.gradeAssignment(withAssignment, assignment, '{}',
                                                                {cachekey: 'x'}), 'unknown option "cachekey"');
-  refused('a file name outside the folder', () => raygrade.solve({'../p.json': '{}'}), 'must be relative');
-  refused('an unknown format', () => raygrade.solution(texts[bank[0]], 'pdf'), 'unknown format "pdf"');
-  console.log(`hard cases by level: ${JSON.stringify(levels)}`);
+    refused('a file name outside the folder', () => raygrade.solve({'../p.json': '{}'}), 'must be relative');
+    refused('an unknown format', () => raygrade.solution(texts[bank[0]], 'pdf'), 'unknown format "pdf"');
+  }
+  if (Object.keys(levels).length) console.log(`hard cases by level: ${JSON.stringify(levels)}`);
   console.log(`${compared - failures} of ${compared} outputs identical`);
   process.exit(failures ? 1 : 0);
 }).catch((e) => {
