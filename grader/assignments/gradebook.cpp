@@ -4,11 +4,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
-#include <system_error>
 #include <tuple>
 
 #include "assignments/variants.h"
@@ -190,9 +189,10 @@ MoodleWorksheet::MoodleWorksheet(const std::vector<std::vector<std::string>>& ro
     }
     std::string most = rows[r][maximum];
     std::replace(most.begin(), most.end(), ',', '.');  // a decimal comma
-    double value = 0;
-    auto [end, ec] = std::from_chars(most.data(), most.data() + most.size(), value);
-    if (ec != std::errc() || end != most.data() + most.size() || !(value > 0) ||
+    // strtod in the C locale (Emscripten's libc++ has no floating-point std::from_chars).
+    char* end = nullptr;
+    double value = std::strtod(most.c_str(), &end);
+    if (most.empty() || end != most.c_str() + most.size() || !(value > 0) ||
         !std::isfinite(value)) {
       throw fault(line, fmt::format("row {}'s Maximum Grade \"{}\" is not a number of points: "
                                     "raygrade fills in point grades (Grade > Type: Point)",
