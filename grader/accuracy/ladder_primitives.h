@@ -117,7 +117,7 @@ template <typename P>
 constexpr Primitive primitive_of() {
   return [&]<std::size_t... I>(std::index_sequence<I...>) {
     std::size_t index = 0;
-    ((std::is_same_v<P, LadderPrimitive<I>> ? (index = I, true) : false) || ...);
+    (void)((std::is_same_v<P, LadderPrimitive<I>> && (index = I, true)) || ...);
     return static_cast<Primitive>(index);
   }
   (std::make_index_sequence<kPrimitiveCount>{});
