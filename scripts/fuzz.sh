@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Runs the libFuzzer targets (fuzz/) for a chosen time: scripts/fuzz.sh TARGET|all SECONDS.
-# Builds them first (clang, ASan and UBSan: the `fuzz` preset). New inputs found go to
-# build/fuzz/corpus/<target>/ (the seeds in fuzz/corpus/ are only read); a crash is saved in
-# build/fuzz/artifacts/<target>/ and makes the script fail: add it to tests/fixtures/fuzz/<target>/
-# so that the regression test replays it.
+# Builds them first (clang, ASan and UBSan: the `fuzz` preset), then runs as many targets at once
+# as there are processors. New inputs found go to build/fuzz/corpus/<target>/ (the seeds in
+# fuzz/corpus/ are only read); a crash is saved in build/fuzz/artifacts/<target>/ and makes the
+# script fail: add it to tests/fixtures/fuzz/<target>/ so that the regression test replays it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ $# -ne 2 ]; then
@@ -21,27 +21,42 @@ if [ "$what" = all ]; then
 else
   targets=$what
 fi
-status=0
-for t in $targets; do
-  binary=build/fuzz/fuzz/fuzz_$t
-  if [ ! -x "$binary" ]; then
-    echo "fuzz: no target '$t' (known: $(ls fuzz/corpus | tr '\n' ' '))" >&2
-    exit 2
-  fi
-  work=build/fuzz/corpus/$t
-  artifacts=build/fuzz/artifacts/$t
-  log=build/fuzz/$t.log
+# One target's run; its status is the run's.
+fuzz_one() {
+  local t=$1
+  local work=build/fuzz/corpus/$t artifacts=build/fuzz/artifacts/$t log=build/fuzz/$t.log
   mkdir -p "$work" "$artifacts"
   # -timeout: an input that takes 10 s is a hang; -rss_limit_mb: a leak or a memory bomb.
-  if "$binary" "$work" "fuzz/corpus/$t" -dict=fuzz/json.dict -max_total_time="$seconds" \
-      -timeout=10 -rss_limit_mb=2048 -max_len=8192 -artifact_prefix="$artifacts/" \
-      -print_final_stats=1 >"$log" 2>&1; then
+  if "build/fuzz/fuzz/fuzz_$t" "$work" "fuzz/corpus/$t" -dict=fuzz/json.dict \
+      -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
+      -artifact_prefix="$artifacts/" -print_final_stats=1 >"$log" 2>&1; then
     runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || true)
     echo "fuzz: $t: ${runs:-?} runs in ${seconds} s, no crash"
   else
     echo "fuzz: $t: FAILED, see $log and $artifacts/" >&2
     grep -m 20 -E 'ERROR|SUMMARY|runtime error|terminate called|what\(\)|Test unit written' "$log" >&2 || true
-    status=1
+    return 1
   fi
+}
+for t in $targets; do
+  if [ ! -x "build/fuzz/fuzz/fuzz_$t" ]; then
+    echo "fuzz: no target '$t' (known: $(ls fuzz/corpus | tr '\n' ' '))" >&2
+    exit 2
+  fi
+done
+# As many targets at once as there are processors, each on its own.
+status=0
+running=0
+for t in $targets; do
+  if [ "$running" -ge "$(nproc)" ]; then
+    wait -n || status=1
+    running=$((running - 1))
+  fi
+  fuzz_one "$t" &
+  running=$((running + 1))
+done
+while [ "$running" -gt 0 ]; do
+  wait -n || status=1
+  running=$((running - 1))
 done
 exit $status
