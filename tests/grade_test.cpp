@@ -25,12 +25,7 @@ const char* kSphere2 = R"({"id": "s2", "method": "geometric",
   "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
   "object": {"type": "sphere", "center": [-2, 0, 0], "radius": 1}})";
 
-const PartResult* part(const GradeResult& r, const std::string& name) {
-  for (const auto& p : r.parts) {
-    if (p.name == name) return &p;
-  }
-  return nullptr;
-}
+using testing::part;
 
 GradeResult grade(const char* problem, const char* answer) {
   Problem p = testing::problem(problem);

@@ -21,12 +21,7 @@ namespace {
 
 using nlohmann::json;
 
-const PartResult* part(const GradeResult& r, const std::string& name) {
-  for (const auto& p : r.parts) {
-    if (p.name == name) return &p;
-  }
-  return nullptr;
-}
+using testing::part;
 
 GradeResult grade(const std::string& problem, const char* answer) {
   Problem p = testing::problem(problem);

@@ -85,10 +85,10 @@ TEST(RayTree, InShadowNamesTheBlocker) {
   EXPECT_FALSE(node.contains("faces_away"));
 }
 
-const char* kGlass = R"({"transparency": 0.8, "refractive_index": 1.5})";
+const char* kGlassMaterial = R"({"transparency": 0.8, "refractive_index": 1.5})";
 
 TEST(RayTree, TransparentBlockerBlocksInBlockMode) {
-  Problem p = testing::problem(blocker_problem(kGlass, "block"));
+  Problem p = testing::problem(blocker_problem(kGlassMaterial, "block"));
   const TreeNode& n = tree_task(p).tree().nodes[0];
   EXPECT_EQ(n.lights[0].status, LightStatus::kBlocked);
   EXPECT_TRUE(in_shadow(n));
@@ -97,7 +97,7 @@ TEST(RayTree, TransparentBlockerBlocksInBlockMode) {
 // In transmit mode the glass ball passes k_t = 0.8 of the light: diffuse and specular apply
 // and the diffuse term is k_d·0.8·I_p·(N·L) = 0.7·0.8·1·1 = 0.56 (default k_d = 0.7).
 TEST(RayTree, TransparentBlockerTransmitsInTransmitMode) {
-  Problem p = testing::problem(blocker_problem(kGlass, "transmit", "intensity"));
+  Problem p = testing::problem(blocker_problem(kGlassMaterial, "transmit", "intensity"));
   const TreeNode& n = tree_task(p).tree().nodes[0];
   EXPECT_EQ(n.lights[0].status, LightStatus::kTransmitted);
   EXPECT_DOUBLE_EQ(n.lights[0].transmission, 0.8);
@@ -126,7 +126,7 @@ TEST(RayTree, NothingTransparentCastsNoRefractionRays) {
 }
 
 TEST(RayTree, AskingOnlyForTheHitCastsNoShadowRays) {
-  Problem p = testing::problem(blocker_problem(kGlass, "block", "hit"));
+  Problem p = testing::problem(blocker_problem(kGlassMaterial, "block", "hit"));
   const RayTree& t = tree_task(p).tree();
   EXPECT_EQ(t.counts.shadow, 0);
   EXPECT_EQ(t.counts.total(), 1);
@@ -254,7 +254,7 @@ TEST(RayTree, EffectsAreDataInTheAnswer) {
   EXPECT_EQ(by_name["intensity"]["simulated"], false);
   EXPECT_EQ(by_name["intensity"]["why"], "the question does not ask for intensities");
   // Asking only for the hit skips the shadow rays, and says why.
-  Problem hit = testing::problem(blocker_problem(kGlass, "block", "hit"));
+  Problem hit = testing::problem(blocker_problem(kGlassMaterial, "block", "hit"));
   nlohmann::json answer = hit.task->answer();
   bool said = false;
   for (const auto& e : answer["effects"]) {

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "grading/result.h"
 #include "json/cursor.h"
 #include "problems/problem.h"
 #include "shapes/shape.h"
@@ -44,6 +45,14 @@ inline constexpr const char* kTwoLightShade = R"({"id": "s", "kind": "shade",
     "material": {"ambient": 0.1, "diffuse": 0.5, "specular": 0.3, "shininess": 12},
     "lights": [{"name": "A", "position": [3, 4, 0]},
                {"name": "B", "position": [0, 9, 0], "blocked": true}]})";
+
+// The part of a graded problem with this name, or null.
+inline const PartResult* part(const GradeResult& r, const std::string& name) {
+  for (const auto& p : r.parts) {
+    if (p.name == name) return &p;
+  }
+  return nullptr;
+}
 
 inline Ray ray(Vec3d o, Vec3d d, double t_min = 0, double t_max = kInfinity) {
   return Ray{o, d, t_min, t_max};

@@ -7,7 +7,7 @@
 namespace raygrade {
 namespace {
 
-constexpr const char* kStyle =
+constexpr const char* kFeedbackStyle =
     "body{font-family:system-ui,sans-serif;max-width:52rem;margin:2rem auto;padding:0 1rem;"
     "line-height:1.45;color:#222}h1{font-size:1.4rem}h2{font-size:1.1rem;margin-top:1.6rem}"
     "table{border-collapse:collapse;width:100%}td,th{border-bottom:1px solid #ddd;padding:.3rem;"
@@ -22,7 +22,7 @@ std::string h(std::string_view s) { return html_escape(s); }
 std::string feedback_html(const SubmissionGrade& g) {
   std::string s = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   s += fmt::format("<title>Feedback for {}</title>\n<style>{}</style>\n</head>\n<body>\n",
-                   h(g.student), kStyle);
+                   h(g.student), kFeedbackStyle);
   s += fmt::format("<main>\n<h1>Feedback for {}</h1>\n", h(g.student));
   if (!g.gradable) {
     s += fmt::format("<p class=\"fault\">This submission could not be graded: {}</p>\n",
@@ -63,7 +63,7 @@ std::string feedback_html(const SubmissionGrade& g) {
 std::string feedback_index_html(const std::vector<FeedbackPage>& pages) {
   std::string s = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   s += fmt::format("<title>Feedback pages</title>\n<style>{}</style>\n</head>\n<body>\n<main>\n",
-                   kStyle);
+                   kFeedbackStyle);
   s += fmt::format("<h1>Feedback pages</h1>\n<table>\n<caption>{} students</caption>\n",
                    pages.size());
   s += "<tr><th scope=\"col\">Student</th><th scope=\"col\">Id</th>"

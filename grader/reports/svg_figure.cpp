@@ -260,7 +260,7 @@ class Canvas {
   double bottom_ = 0;
 };
 
-constexpr const char* kStyle =
+constexpr const char* kFigureStyle =
     "<style>"
     ".object{fill:#dce9f7;fill-opacity:.55;stroke:#2d5f8b;stroke-width:1.6}"
     ".guide{fill:none;stroke:#8a8a8a;stroke-width:1.1;stroke-dasharray:5 4}"
@@ -411,7 +411,7 @@ SvgFigure render_svg(const Sketch& f, const std::string& title) {
       "viewBox=\"0 0 {0} {1}\" role=\"img\" aria-label=\"{2}\">\n<title>{2}</title>\n{3}\n"
       "<rect x=\"0.5\" y=\"0.5\" width=\"{4}\" height=\"{5}\" fill=\"none\" stroke=\"#ddd\"/>\n{6}"
       "</svg>",
-      width, height, html_escape(title), kStyle, width - 1, height - 1, canvas.body());
+      width, height, html_escape(title), kFigureStyle, width - 1, height - 1, canvas.body());
   std::string across = named_direction(f.across_name, view.u);
   bool own_up =
       !f.up_name.empty() && length(f.up) > 0 && length(view.v - normalized(f.up)) < kTinyDirection;

@@ -9,16 +9,16 @@
 namespace raygrade {
 namespace {
 
-struct P2 {
+struct UV {
   double u, v;
 };
 
-P2 project(const Vec3d& p, int drop) {
+UV project(const Vec3d& p, int drop) {
   int i = (drop + 1) % 3, j = (drop + 2) % 3;
   return {p[i], p[j]};
 }
 
-double orient(P2 a, P2 b, P2 c) { return (b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u); }
+double orient(UV a, UV b, UV c) { return (b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u); }
 
 // Edge tolerance: relative to the squared size of the polygon, a few ulps of the products.
 constexpr double kOnEdgeRelative = 64 * 2.220446049250313e-16;
@@ -26,7 +26,7 @@ constexpr double kOnEdgeRelative = 64 * 2.220446049250313e-16;
 // q on the segment ab: on its line, and between its ends ((a − q)·(b − q) ≤ 0), both within
 // the tolerance (an exact bounding-box test would reject a point a rounding off an
 // axis-aligned edge).
-bool on_segment(P2 a, P2 b, P2 q, double scale2) {
+bool on_segment(UV a, UV b, UV q, double scale2) {
   if (std::abs(orient(a, b, q)) > kOnEdgeRelative * scale2) return false;
   return (a.u - q.u) * (b.u - q.u) + (a.v - q.v) * (b.v - q.v) <= kOnEdgeRelative * scale2;
 }
@@ -55,9 +55,9 @@ Vec3d newell_normal(const std::vector<Vec3d>& v) { return newell_normal_of(v); }
 
 bool point_in_polygon(const Vec3d& q3, const std::vector<Vec3d>& vertices, const Vec3d& normal) {
   int drop = max_dimension(normal);
-  P2 q = project(q3, drop);
+  UV q = project(q3, drop);
   double umin = q.u, umax = q.u, vmin = q.v, vmax = q.v;
-  std::vector<P2> p;
+  std::vector<UV> p;
   for (const auto& v : vertices) {
     p.push_back(project(v, drop));
     umin = std::min(umin, p.back().u);
@@ -69,7 +69,7 @@ bool point_in_polygon(const Vec3d& q3, const std::vector<Vec3d>& vertices, const
   scale2 *= scale2;
   bool inside = false;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    P2 a = p[i], b = p[(i + 1) % p.size()];
+    UV a = p[i], b = p[(i + 1) % p.size()];
     if (on_segment(a, b, q, scale2)) return true;  // closed: the boundary belongs to it
     if ((a.v > q.v) != (b.v > q.v)) {
       double u = a.u + (q.v - a.v) * (b.u - a.u) / (b.v - a.v);
@@ -118,13 +118,13 @@ bool ray_in_plane_meets_polygon(const Ray& ray, const std::vector<Vec3d>& vertic
   double t0 = ray.t_min, t1 = ray.t_max;
   if (std::isfinite(t0) && point_in_polygon(ray.at(t0), vertices, normal)) return true;
   int drop = max_dimension(normal);
-  P2 o = project(ray.origin, drop), d = project(ray.direction, drop);
+  UV o = project(ray.origin, drop), d = project(ray.direction, drop);
   for (std::size_t i = 0; i < vertices.size(); ++i) {
-    P2 a = project(vertices[i], drop), b = project(vertices[(i + 1) % vertices.size()], drop);
+    UV a = project(vertices[i], drop), b = project(vertices[(i + 1) % vertices.size()], drop);
     // Solve o + t d = a + s (b − a) for t and s.
-    P2 e{b.u - a.u, b.v - a.v};
+    UV e{b.u - a.u, b.v - a.v};
     double den = d.u * e.v - d.v * e.u;
-    P2 w{a.u - o.u, a.v - o.v};
+    UV w{a.u - o.u, a.v - o.v};
     if (den == 0) {
       // Parallel to this edge: it is met only if collinear; the other edges then decide.
       continue;
