@@ -4,8 +4,8 @@
 #include <string>
 
 #include "core/error.h"
+#include "derivation/formula.h"
 #include "grading/answer_reader.h"
-#include "grading/formula.h"
 #include "grading/grade.h"
 #include "json/cursor.h"
 #include "json/source.h"

@@ -1,5 +1,5 @@
 // Formula: typed numbers and formulas, their digits, and faults pointing at the character.
-#include "grading/formula.h"
+#include "derivation/formula.h"
 
 #include <gtest/gtest.h>
 

@@ -22,7 +22,6 @@ UPWARD = {
     ("shapes", "accuracy"): 20,  # each primitive's accuracy case and its random draws
     ("shapes", "generate"): 28,  # each primitive's generator: drafts, outcomes, lattices
     ("problems", "generate"): 2,  # a parameter's random draw (prng, lattice)
-    ("problems", "grading"): 1,  # a parameter's formula (grading/formula.h)
     ("kinds", "accuracy"): 1,  # the camera ray's hard cases
 }
 

@@ -10,7 +10,7 @@
 #include "assignments/handout_assets.h"
 #include "assignments/variants.h"
 #include "core/escape.h"
-#include "grading/formula.h"
+#include "derivation/formula.h"
 #include "json/numbers.h"
 #include "json/source.h"
 #include "reports/svg_figure.h"

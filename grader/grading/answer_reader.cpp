@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/escape.h"
-#include "grading/formula.h"
+#include "derivation/formula.h"
 #include "json/cursor.h"
 
 namespace raygrade {

@@ -7,8 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "derivation/formula.h"
 #include "derivation/number_format.h"
-#include "grading/formula.h"
 #include "problems/problem.h"
 
 namespace raygrade {

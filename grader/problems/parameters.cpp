@@ -6,8 +6,8 @@
 #include <cmath>
 #include <set>
 
+#include "derivation/formula.h"
 #include "generate/lattice.h"
-#include "grading/formula.h"
 
 namespace raygrade {
 namespace {

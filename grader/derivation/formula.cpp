@@ -1,5 +1,5 @@
 // The typed-formula parser: recursive descent with a depth limit, emitting a postfix program.
-#include "grading/formula.h"
+#include "derivation/formula.h"
 
 #include <fmt/format.h>
 
