@@ -61,6 +61,27 @@ class Gradebook : public ::testing::Test {
         fmt::format("grade --assignment hw.json --roster roster.csv subs --format csv {}", extra),
         dir_.path());
   }
+  // The class graded with Moodle's worksheet `worksheet` (a file of the test data) in `format`.
+  testing::RunResult with_worksheet(const char* worksheet, const std::string& format) {
+    fs::copy(kData / worksheet, dir_.path() / "worksheet.csv");
+    return run_raygrade(
+        fmt::format("grade --assignment hw.json --roster roster.csv subs --format "
+                    "{} --moodle-worksheet worksheet.csv --now 2026-12-01T00:00:00Z",
+                    format),
+        dir_.path());
+  }
+  // Standard error of grading with a worksheet of this text, which must be refused (exit 2)
+  // before anything is written.
+  std::string refused_worksheet(const std::string& text) {
+    write_text(dir_.path() / "refused.csv", text);
+    auto r = run_raygrade(
+        "grade --assignment hw.json --roster roster.csv subs --format csv-moodle "
+        "--moodle-worksheet refused.csv --out out",
+        dir_.path());
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_FALSE(fs::exists(dir_.path() / "out" / "gradebook.csv"));
+    return r.err;
+  }
   TempDir dir_{"gradebook"};
 };
 
@@ -120,11 +141,7 @@ TEST_F(Gradebook, EachPlatformsImportLayout) {
 // columns): each row found by its email (in any case) gets its student's total from the table of
 // the README; a row of no roster student stays as it was, and Donald, who has no row, is named.
 TEST_F(Gradebook, MoodlesWorksheetFilledIn) {
-  fs::copy(kData / "moodle-worksheet.csv", dir_.path() / "worksheet.csv");
-  auto r = run_raygrade(
-      "grade --assignment hw.json --roster roster.csv subs --format csv-moodle "
-      "--moodle-worksheet worksheet.csv --now 2026-12-01T00:00:00Z",
-      dir_.path());
+  auto r = with_worksheet("moodle-worksheet.csv", "csv-moodle");
   EXPECT_EQ(r.exit_code, 2) << r.err;  // Barbara's file is rejected
   EXPECT_EQ(r.out, read_text(kData / "moodle-worksheet-filled.csv"));
   EXPECT_NE(r.err.find("worksheet row 7 (guest@example.edu) is no roster student's"),
@@ -134,16 +151,10 @@ TEST_F(Gradebook, MoodlesWorksheetFilledIn) {
             std::string::npos)
       << r.err;
   // A worksheet without the column Moodle matches rows by is refused before anything is graded.
-  write_text(dir_.path() / "bad.csv", "Full name,Email address,Grade\nAda,ada@example.edu,\n");
-  auto bad = run_raygrade(
-      "grade --assignment hw.json --roster roster.csv subs --format "
-      "csv-moodle --moodle-worksheet bad.csv --out out",
-      dir_.path());
-  EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_NE(bad.err.find("bad.csv:1: error: the worksheet has no \"Identifier\" column"),
+  std::string bad = refused_worksheet("Full name,Email address,Grade\nAda,ada@example.edu,\n");
+  EXPECT_NE(bad.find("refused.csv:1: error: the worksheet has no \"Identifier\" column"),
             std::string::npos)
-      << bad.err;
-  EXPECT_FALSE(fs::exists(dir_.path() / "out" / "gradebook.csv"));
+      << bad;
   // Only the Moodle layout takes a worksheet.
   auto other = run_raygrade(
       "grade --assignment hw.json --roster roster.csv subs --format "
@@ -156,29 +167,19 @@ TEST_F(Gradebook, MoodlesWorksheetFilledIn) {
 // for raygrade's 5 points takes each total times 20 (Ada 5 -> 100, Alan and Grace 2 -> 40), and
 // a maximum that is no number of points (a scale) is refused before anything is graded.
 TEST_F(Gradebook, MoodlesWorksheetOutOfItsOwnMaximum) {
-  fs::copy(kData / "moodle-worksheet-100.csv", dir_.path() / "worksheet.csv");
-  auto r = run_raygrade(
-      "grade --assignment hw.json --roster roster.csv subs --format csv-moodle "
-      "--moodle-worksheet worksheet.csv --now 2026-12-01T00:00:00Z",
-      dir_.path());
+  auto r = with_worksheet("moodle-worksheet-100.csv", "csv-moodle");
   EXPECT_EQ(r.exit_code, 2) << r.err;  // Barbara's file is rejected
   EXPECT_EQ(r.out, read_text(kData / "moodle-worksheet-100-filled.csv"));
   EXPECT_NE(r.err.find("the worksheet's Maximum Grade is 100, the assignment's 5 points"),
             std::string::npos)
       << r.err;
-  write_text(dir_.path() / "scale.csv",
-             "Identifier,Full name,Email address,Grade,Maximum Grade,Last modified (grade)\n"
-             "Participant 101,Ada Lovelace,ada@example.edu,,Competent,-\n");
-  auto scale = run_raygrade(
-      "grade --assignment hw.json --roster roster.csv subs --format csv-moodle "
-      "--moodle-worksheet scale.csv --out out",
-      dir_.path());
-  EXPECT_EQ(scale.exit_code, 2);
-  EXPECT_NE(scale.err.find("scale.csv:2: error: row 2's Maximum Grade \"Competent\" is not a "
-                           "number of points"),
+  std::string scale = refused_worksheet(
+      "Identifier,Full name,Email address,Grade,Maximum Grade,Last modified (grade)\n"
+      "Participant 101,Ada Lovelace,ada@example.edu,,Competent,-\n");
+  EXPECT_NE(scale.find("refused.csv:2: error: row 2's Maximum Grade \"Competent\" is not a "
+                       "number of points"),
             std::string::npos)
-      << scale.err;
-  EXPECT_FALSE(fs::exists(dir_.path() / "out" / "gradebook.csv"));
+      << scale;
 }
 
 // What Moodle's "Upload multiple feedback files in a zip" reads of each file in the zip: the
@@ -198,11 +199,7 @@ for name in sorted(zipfile.ZipFile("out/moodle-feedback.zip").namelist()):
 // (participant 101), Alan (102, two files) and Grace (103) have pages; Barbara's file is
 // rejected and Edsger handed nothing in, so they have none; Donald has no worksheet row.
 TEST_F(Gradebook, AZipOfFeedbackFilesForMoodle) {
-  fs::copy(kData / "moodle-worksheet.csv", dir_.path() / "worksheet.csv");
-  auto r = run_raygrade(
-      "grade --assignment hw.json --roster roster.csv subs --format html "
-      "--out out --moodle-worksheet worksheet.csv --now 2026-12-01T00:00:00Z",
-      dir_.path());
+  auto r = with_worksheet("moodle-worksheet.csv", "html --out out");
   EXPECT_EQ(r.exit_code, 2) << r.err;  // Barbara's file is rejected
   EXPECT_NE(r.err.find("the feedback page s6.html is no worksheet row's"), std::string::npos)
       << r.err;
