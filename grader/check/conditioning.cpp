@@ -129,10 +129,7 @@ std::vector<std::vector<std::size_t>> conditioning_groups(std::size_t inputs) {
 
 std::vector<Diagnostic> check_conditioning(const Problem& p, const nlohmann::json& reference,
                                            const NumberLiterals& literals, bool exact_boundary) {
-  const KindEntry* entry = nullptr;
-  for (const auto& k : kind_table()) {
-    if (k.name == p.kind) entry = &k;
-  }
+  const KindEntry* entry = find_kind(p.kind);
   if (!entry) return {};
   Conditioning c(p, reference, exact_boundary);
   for (const auto& key : entry->keys) {

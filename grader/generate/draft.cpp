@@ -1,6 +1,8 @@
 // Shared pieces of generated problems.
 #include "generate/draft.h"
 
+#include "kinds/intersect.h"
+
 namespace raygrade {
 
 Outcome choose_outcome(Prng& rng, std::optional<Outcome> asked, const std::vector<Outcome>& can) {
@@ -22,7 +24,7 @@ Draft intersect_draft(const Vec3d& origin, const Vec3d& direction, nlohmann::ord
                       const std::string& object_text, const std::vector<KnownHit>& hits,
                       bool contained) {
   Draft d;
-  d.fields["kind"] = "intersect";
+  d.fields["kind"] = std::string(IntersectKind::kName);
   d.fields["statement"] = fmt::format(
       "Find every point where the ray {} meets {}. Give t and the point of each hit, or say "
       "that there is none.",

@@ -9,6 +9,8 @@
 #include "core/error.h"
 #include "generate/kinds.h"
 #include "json/cursor.h"
+#include "kinds/camera_ray.h"
+#include "kinds/intersect.h"
 #include "shapes/primitives.h"
 
 namespace raygrade {
@@ -49,8 +51,8 @@ const std::vector<GeneratorEntry>& generator_table() {
     for_each_primitive([&]<typename T>() {
       rows.push_back({T::kType, T::outcomes(), &T::generate});
     });
-    rows.push_back({"first-hit", {Outcome::kHit, Outcome::kMiss}, &make_first_hit});
-    rows.push_back({"camera-ray", {}, &make_camera_ray});
+    rows.push_back({FirstHitKind::kName, {Outcome::kHit, Outcome::kMiss}, &make_first_hit});
+    rows.push_back({CameraRayKind::kName, {}, &make_camera_ray});
     return rows;
   }();
   return table;

@@ -84,10 +84,15 @@ PartResult missing_part(const GradingContext& c, const std::string& name, std::s
 }
 
 std::shared_ptr<const KindGrader> make_kind_grader(const Problem& p) {
-  if (p.kind == "intersect" || p.kind == "first-hit") return make_hits_grader(p);
-  if (p.kind == "camera-ray") return make_camera_grader(p);
-  if (p.kind == "derive") return make_formula_grader(p);
-  if (p.kind == "ray-tree") return make_ray_tree_grader(p);
+  const KindEntry* entry = find_kind(p.kind);
+  if (!entry) throw InternalError(fmt::format("problem {} has no kind of the table", p.id));
+  switch (entry->grader) {
+    case GraderFamily::kHits: return make_hits_grader(p);
+    case GraderFamily::kCamera: return make_camera_grader(p);
+    case GraderFamily::kFormula: return make_formula_grader(p);
+    case GraderFamily::kRayTree: return make_ray_tree_grader(p);
+    case GraderFamily::kFields: break;
+  }
   return make_fields_grader(p);
 }
 

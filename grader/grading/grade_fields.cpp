@@ -1,4 +1,4 @@
-// Grading the kinds `reflect`, `refract` and `shade` by their declared parts (grading/parts.h):
+// Grading the kinds of the fields grader (GraderFamily::kFields) by their declared parts:
 // each part the student gives is compared by its own rule (a direction as any positive
 // multiple, a number by the tolerance, a flag, a set of names), parts that carry no points
 // are not required, and every part below full credit says why.
@@ -46,9 +46,6 @@ class FieldsGrader final : public KindGrader {
     std::vector<std::string> names;
     for (const auto& spec : kind_parts(kind_)) names.push_back(spec.name);
     context_.points = read_points_policy(p, default_points(kind_, names));
-    if (kind_ == "reflect") {
-      d_length_ = length(vec_of(p.source.at("direction")));
-    }
   }
 
   void grade(const AnswerReader& a, GradeResult& out) const override {
@@ -77,8 +74,8 @@ class FieldsGrader final : public KindGrader {
   std::optional<AnswerReader> answer_for(const AnswerReader& a, const std::string& name) const {
     if (a.has(name)) return a.at(name);
     if (name == "direction" && a.has("unit_direction")) return a.at("unit_direction");
-    if (kind_ == "refract" && name == "direction" && a.has("total_internal_reflection") &&
-        a.at("total_internal_reflection").json() == true) {
+    if (name == "direction" && find_part(kind_, "total_internal_reflection") &&
+        a.has("total_internal_reflection") && a.at("total_internal_reflection").json() == true) {
       return AnswerReader(kNull, nullptr, a.path() + "/direction");
     }
     return std::nullopt;
@@ -90,7 +87,7 @@ class FieldsGrader final : public KindGrader {
     if (spec.name == "lights") return grade_lights(s);
     if (!ref || ref->is_null()) {
       if (s.json().is_null() || s.json() == false) return {1, {}};
-      if (spec.name == "specular" && kind_ == "shade") return grade_no_specular(s);
+      if (spec.name == "specular") return grade_no_specular(s);
       return {0, {absent_reason(spec.name)}};
     }
     if (spec.compare == Comparison::kScalar && ref->is_array()) {
@@ -256,10 +253,9 @@ class FieldsGrader final : public KindGrader {
     bool usual = std::abs(d.length - 1) <= kLengthNoteTolerance ||
                  std::abs(d.length - ref_length) <= kLengthNoteTolerance * ref_length;
     if (!usual) {
-      std::string keeps =
-          kind_ == "reflect"
-              ? fmt::format(" (r = d − 2(d·n̂)n̂ keeps the length of d, {})", number(d_length_))
-              : "";
+      std::string keeps = spec.length_note.empty()
+                              ? ""
+                              : fmt::format(" ({}, {})", spec.length_note, number(ref_length));
       out.feedback.push_back(fmt::format("Your {} has length {}{}; as a direction it is right.",
                                          name, number(d.length), keeps));
     }
@@ -361,7 +357,6 @@ class FieldsGrader final : public KindGrader {
   nlohmann::json reference_;
   const NormalTask* normal_task_;  // for a normal problem's named mistakes
   NumberFormat numbers_;
-  double d_length_ = 1;
 };
 
 }  // namespace

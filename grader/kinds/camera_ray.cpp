@@ -2,6 +2,7 @@
 #include "kinds/camera_ray.h"
 
 #include "derivation/number_format.h"
+#include "kinds/form.h"
 #include "kinds/view_ray.h"
 
 namespace raygrade {
@@ -106,6 +107,59 @@ Sketch CameraRayTask::sketch() const {
   f.point(cam_.eye + dr, Ink::kHit,
           fmt::format("pixel ({}, {})", format_number(x_), format_number(y_)));
   return f;
+}
+
+std::unique_ptr<Task> CameraRayKind::read(const Cursor& problem) {
+  return CameraRayTask::read(problem);
+}
+
+std::vector<PartSpec> CameraRayKind::parts() {
+  using C = Comparison;
+  return {{"ray", "the ray through the pixel: the eye and the direction (any positive multiple)", 1,
+           C::kDirection},
+          {"steps", "the derivation's named steps", 0, C::kSteps}};
+}
+
+nlohmann::json CameraRayKind::answer_form(const Problem& /*p*/) {
+  return form::fields({form::field("vector", "ray/origin", "The ray's origin"),
+                       form::field("vector", "ray/direction", "The ray's direction"),
+                       form::field("vector", "unit_direction", "The direction as a unit vector")});
+}
+
+std::string_view CameraRayKind::schema() {
+  return R"json({
+  "required": [
+    "camera",
+    "pixel"
+  ],
+  "properties": {
+    "camera": {
+      "$ref": "#/$defs/camera"
+    },
+    "pixel": {
+      "type": "array",
+      "items": {
+        "anyOf": [
+          {
+            "type": "number"
+          },
+          {
+            "$ref": "#/$defs/expression"
+          }
+        ]
+      },
+      "minItems": 2,
+      "maxItems": 2
+    },
+    "convention": {
+      "enum": [
+        "center",
+        "corner"
+      ],
+      "default": "center"
+    }
+  }
+})json";
 }
 
 }  // namespace raygrade

@@ -1,9 +1,23 @@
 // Kind `camera-ray`: the primary ray a perspective camera shoots through a pixel (seed 004).
 #pragma once
 
+#include "problems/kind.h"
 #include "problems/problem.h"
 
 namespace raygrade {
+
+// The kind `camera-ray` (kinds/kind.h).
+struct CameraRayKind {
+  static constexpr std::string_view kName = "camera-ray";
+  static constexpr std::string_view kSummary =
+      "the ray a perspective camera shoots through a pixel";
+  static constexpr GraderFamily kGrader = GraderFamily::kCamera;
+  static std::vector<std::string> keys() { return {"camera", "pixel", "convention"}; }
+  static std::unique_ptr<Task> read(const Cursor& problem);
+  static std::vector<PartSpec> parts();
+  static nlohmann::json answer_form(const Problem& p);
+  static std::string_view schema();
+};
 
 // Where a pixel's ray passes. kCorner is seed 004's convention: offsets x − resX/2, so the
 // ray of pixel (x, y) passes through the pixel's lower-left corner. kCenter adds half a pixel
@@ -32,7 +46,7 @@ class CameraRayTask final : public Task {
       : cam_(cam), x_(x), y_(y), convention_(convention) {}
   static std::unique_ptr<Task> read(const Cursor& problem);
 
-  std::string_view kind() const override { return "camera-ray"; }
+  std::string_view kind() const override { return CameraRayKind::kName; }
   nlohmann::json answer() const override;
   std::vector<std::string> methods() const override { return {"image-plane"}; }
   std::vector<SolutionPart> derive(std::string_view method,

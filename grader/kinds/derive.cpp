@@ -3,6 +3,7 @@
 
 #include <set>
 
+#include "kinds/form.h"
 #include "kinds/intersect.h"
 #include "kinds/sketch.h"
 
@@ -106,6 +107,57 @@ Sketch DeriveTask::sketch() const {
              components ? "p + t v" : "O + t D");
   for (const auto& h : x.hits) sketch_hit(f, h, Ink::kHit);
   return f;
+}
+
+std::unique_ptr<Task> DeriveKind::read(const Cursor& problem) { return DeriveTask::read(problem); }
+
+std::vector<PartSpec> DeriveKind::parts() {
+  using C = Comparison;
+  return {{"<quantity>", "each quantity the problem names in find", 1, C::kFormula}};
+}
+
+nlohmann::json DeriveKind::answer_form(const Problem& p) {
+  const auto* task = dynamic_cast<const DeriveTask*>(p.task.get());
+  nlohmann::json fields = nlohmann::json::array();
+  if (!task) return form::fields(fields);
+  nlohmann::json symbols = nlohmann::json::array();
+  for (const auto& s : task->symbols()) {
+    symbols.push_back(s.name);
+    if (s.display != s.name) symbols.push_back(s.display);
+  }
+  for (const auto& q : task->quantities()) {
+    nlohmann::json f = form::field("formula", q.name, q.name + " =");
+    f["symbols"] = symbols;
+    fields.push_back(f);
+  }
+  return form::fields(fields);
+}
+
+std::string_view DeriveKind::schema() {
+  return R"json({
+  "required": [
+    "ray",
+    "object",
+    "find"
+  ],
+  "properties": {
+    "ray": {
+      "$ref": "#/$defs/ray"
+    },
+    "object": {
+      "$ref": "#/$defs/object"
+    },
+    "find": {
+      "type": "array",
+      "items": {
+        "type": "string",
+        "minLength": 1
+      },
+      "minItems": 1,
+      "description": "the names of the derivation's steps to answer as formulas (docs/steps.md)"
+    }
+  }
+})json";
 }
 
 }  // namespace raygrade

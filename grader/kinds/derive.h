@@ -3,10 +3,23 @@
 // the derivation's scalar symbols (px, py, vx, vy, r; cx, cy for an axis through (cx, cy)).
 #pragma once
 
+#include "problems/kind.h"
 #include "problems/problem.h"
 #include "shapes/shape.h"
 
 namespace raygrade {
+
+// The kind `derive` (kinds/kind.h).
+struct DeriveKind {
+  static constexpr std::string_view kName = "derive";
+  static constexpr std::string_view kSummary = "quantities of a derivation as formulas";
+  static constexpr GraderFamily kGrader = GraderFamily::kFormula;
+  static std::vector<std::string> keys() { return {"ray", "object", "find"}; }
+  static std::unique_ptr<Task> read(const Cursor& problem);
+  static std::vector<PartSpec> parts();
+  static nlohmann::json answer_form(const Problem& p);
+  static std::string_view schema();
+};
 
 // A quantity asked for, with its reference formula from the derivation.
 struct DerivedQuantity {
@@ -33,7 +46,7 @@ class DeriveTask final : public Task {
         symbols_(std::move(symbols)) {}
   static std::unique_ptr<Task> read(const Cursor& problem);
 
-  std::string_view kind() const override { return "derive"; }
+  std::string_view kind() const override { return DeriveKind::kName; }
   // {"a": "v_x² + v_y²", ...}: each quantity's formula as text.
   nlohmann::json answer() const override;
   std::vector<std::string> methods() const override { return object_->methods(); }

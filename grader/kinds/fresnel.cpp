@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "derivation/number_format.h"
+#include "kinds/form.h"
 #include "kinds/sketch.h"
 #include "scenes/optics.h"
 
@@ -118,6 +119,64 @@ Sketch FresnelTask::sketch() const {
             "refracted: 1 − F = " + format_number(1 - r.reflectance));
   }
   return f;
+}
+
+std::unique_ptr<Task> FresnelKind::read(const Cursor& problem) {
+  return FresnelTask::read(problem);
+}
+
+std::vector<PartSpec> FresnelKind::parts() {
+  using C = Comparison;
+  return {
+      {"reflectance", "the reflected share F (1 under total internal reflection)", 1, C::kScalar},
+      {"transmittance", "the transmitted share 1 − F", 0, C::kScalar},
+      {"total_internal_reflection", "whether the light is totally reflected", 0, C::kFlag},
+      {"angle_of_incidence", "θi in degrees", 0, C::kScalar},
+      {"angle_of_refraction", "θt in degrees (none past the critical angle)", 0, C::kScalar},
+      {"r0", "Schlick: the reflectance at normal incidence", 0, C::kScalar},
+      {"r_s", "exact: the s-polarized reflectance", 0, C::kScalar},
+      {"r_p", "exact: the p-polarized reflectance", 0, C::kScalar}};
+}
+
+nlohmann::json FresnelKind::answer_form(const Problem& /*p*/) {
+  return form::fields(
+      {form::field("number", "reflectance", "The reflectance F"),
+       form::field("number", "transmittance", "The transmitted share 1 − F"),
+       form::field("yesno", "total_internal_reflection", "Total internal reflection?")});
+}
+
+std::string_view FresnelKind::schema() {
+  return R"json({
+  "required": [
+    "n1",
+    "n2"
+  ],
+  "properties": {
+    "n1": {
+      "$ref": "#/$defs/positive"
+    },
+    "n2": {
+      "$ref": "#/$defs/positive"
+    },
+    "model": {
+      "enum": [
+        "exact",
+        "schlick"
+      ]
+    },
+    "angle": {
+      "type": "number",
+      "minimum": 0,
+      "exclusiveMaximum": 90
+    },
+    "direction": {
+      "$ref": "#/$defs/nonzero_vec3"
+    },
+    "normal": {
+      "$ref": "#/$defs/nonzero_vec3"
+    }
+  }
+})json";
 }
 
 }  // namespace raygrade

@@ -2,10 +2,26 @@
 // Schlick's approximation, with total internal reflection past the critical angle.
 #pragma once
 
+#include "problems/kind.h"
 #include "problems/problem.h"
 #include "scenes/fresnel.h"
 
 namespace raygrade {
+
+// The kind `fresnel` (kinds/kind.h).
+struct FresnelKind {
+  static constexpr std::string_view kName = "fresnel";
+  static constexpr std::string_view kSummary =
+      "the share of light a boundary reflects: the Fresnel equations or Schlick's approximation";
+  static constexpr GraderFamily kGrader = GraderFamily::kFields;
+  static std::vector<std::string> keys() {
+    return {"n1", "n2", "model", "angle", "direction", "normal"};
+  }
+  static std::unique_ptr<Task> read(const Cursor& problem);
+  static std::vector<PartSpec> parts();
+  static nlohmann::json answer_form(const Problem& p);
+  static std::string_view schema();
+};
 
 class FresnelTask final : public Task {
  public:
@@ -15,7 +31,7 @@ class FresnelTask final : public Task {
       : model_(model), n1_(n1), n2_(n2), angle_(angle), d_(direction), n_(normal) {}
   static std::unique_ptr<Task> read(const Cursor& problem);
 
-  std::string_view kind() const override { return "fresnel"; }
+  std::string_view kind() const override { return FresnelKind::kName; }
   nlohmann::json answer() const override;
   std::vector<std::string> methods() const override { return {"fresnel"}; }
   std::vector<SolutionPart> derive(std::string_view method,

@@ -5,7 +5,9 @@
 
 #include "accuracy/settle.h"
 #include "derivation/number_format.h"
+#include "kinds/form.h"
 #include "kinds/sketch.h"
+#include "shapes/primitives.h"
 
 namespace raygrade {
 
@@ -188,6 +190,93 @@ Sketch FirstHitTask::sketch() const {
   }
   if (first.index >= 0) sketch_hit(f, first.hit, Ink::kHit, "first hit, ");
   return f;
+}
+
+std::unique_ptr<Task> IntersectKind::read(const Cursor& problem) {
+  return IntersectTask::read(problem);
+}
+
+std::vector<PartSpec> IntersectKind::parts() {
+  using C = Comparison;
+  return {{"t", "every hit's t, in any order ([] when the ray misses)", 2, C::kHits},
+          {"point", "every hit's point P = O + tD", 1, C::kPoint},
+          {"normal", "the unit normal at every hit (any positive multiple)", 0, C::kDirection},
+          {"barycentric", "a triangle hit's weights (w_a, w_b, w_c), or its u = w_b and v = w_c", 0,
+           C::kWeights},
+          {"steps", "the derivation's named steps", 0, C::kSteps}};
+}
+
+nlohmann::json IntersectKind::answer_form(const Problem& p) {
+  const nlohmann::json& object =
+      p.source.contains("object") ? p.source["object"] : nlohmann::json();
+  bool barycentric =
+      object.is_object() && hits_have_barycentric(object.value("type", std::string()));
+  nlohmann::json f = form::hits_field(barycentric, true, true);
+  f["miss"] = "The ray misses (no hits)";
+  f["contained"] = "The ray lies in the surface (contained)";
+  return form::fields({f});
+}
+
+std::string_view IntersectKind::schema() {
+  return R"json({
+  "required": [
+    "ray",
+    "object"
+  ],
+  "properties": {
+    "ray": {
+      "$ref": "#/$defs/ray"
+    },
+    "object": {
+      "$ref": "#/$defs/object"
+    },
+    "expected": {
+      "$ref": "#/$defs/hits_answer"
+    }
+  }
+})json";
+}
+
+std::unique_ptr<Task> FirstHitKind::read(const Cursor& problem) {
+  return FirstHitTask::read(problem);
+}
+
+std::vector<PartSpec> FirstHitKind::parts() {
+  using C = Comparison;
+  return {{"object", "the name of the object hit first (null when none is)", 2, C::kName},
+          {"t", "the first hit's t", 1, C::kHits},
+          {"point", "the first hit's point", 1, C::kPoint},
+          {"normal", "the unit normal there", 0, C::kDirection}};
+}
+
+nlohmann::json FirstHitKind::answer_form(const Problem& p) {
+  return form::fields(
+      {form::object_choice(form::names_of(p.source.value("objects", nlohmann::json()))),
+       form::hits_field(false, false, true)});
+}
+
+std::string_view FirstHitKind::schema() {
+  return R"json({
+  "required": [
+    "ray",
+    "objects"
+  ],
+  "properties": {
+    "ray": {
+      "$ref": "#/$defs/ray"
+    },
+    "objects": {
+      "type": "array",
+      "items": {
+        "$ref": "#/$defs/named_object"
+      },
+      "minItems": 1
+    },
+    "expected": {
+      "$ref": "#/$defs/first_hit_answer"
+    }
+  }
+})json";
 }
 
 }  // namespace raygrade

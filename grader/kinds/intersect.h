@@ -1,10 +1,35 @@
 // Kinds `intersect` (one object) and `first-hit` (the nearest of several named objects).
 #pragma once
 
+#include "problems/kind.h"
 #include "problems/problem.h"
 #include "shapes/shape.h"
 
 namespace raygrade {
+
+// The kind `intersect` (kinds/kind.h).
+struct IntersectKind {
+  static constexpr std::string_view kName = "intersect";
+  static constexpr std::string_view kSummary = "every hit of a ray with one object";
+  static constexpr GraderFamily kGrader = GraderFamily::kHits;
+  static std::vector<std::string> keys() { return {"ray", "object"}; }
+  static std::unique_ptr<Task> read(const Cursor& problem);
+  static std::vector<PartSpec> parts();
+  static nlohmann::json answer_form(const Problem& p);
+  static std::string_view schema();
+};
+
+// The kind `first-hit` (kinds/kind.h).
+struct FirstHitKind {
+  static constexpr std::string_view kName = "first-hit";
+  static constexpr std::string_view kSummary = "the object a ray hits first";
+  static constexpr GraderFamily kGrader = GraderFamily::kHits;
+  static std::vector<std::string> keys() { return {"ray", "objects"}; }
+  static std::unique_ptr<Task> read(const Cursor& problem);
+  static std::vector<PartSpec> parts();
+  static nlohmann::json answer_form(const Problem& p);
+  static std::string_view schema();
+};
 
 class IntersectTask final : public Task {
  public:
@@ -12,7 +37,7 @@ class IntersectTask final : public Task {
       : ray_(ray), object_(std::move(object)), method_(std::move(method)) {}
   static std::unique_ptr<Task> read(const Cursor& problem);
 
-  std::string_view kind() const override { return "intersect"; }
+  std::string_view kind() const override { return IntersectKind::kName; }
   nlohmann::json answer() const override;
   std::optional<std::string> level() const override;
   std::vector<std::string> methods() const override { return object_->methods(); }
@@ -52,7 +77,7 @@ class FirstHitTask final : public Task {
       : ray_(ray), objects_(std::move(objects)), method_(std::move(method)) {}
   static std::unique_ptr<Task> read(const Cursor& problem);
 
-  std::string_view kind() const override { return "first-hit"; }
+  std::string_view kind() const override { return FirstHitKind::kName; }
   nlohmann::json answer() const override;
   std::optional<std::string> level() const override;
   std::vector<std::string> methods() const override;

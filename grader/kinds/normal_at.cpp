@@ -7,6 +7,7 @@
 
 #include "core/internal_error.h"
 #include "derivation/number_format.h"
+#include "kinds/form.h"
 #include "kinds/intersect.h"
 #include "kinds/sketch.h"
 #include "shapes/primitives.h"
@@ -165,6 +166,43 @@ Sketch NormalTask::sketch() const {
   sketch_surface(f, point_, n, along - dot(along, n) * n, "N = " + sketch_vector(n));
   f.point(point_, Ink::kHit, "P");
   return f;
+}
+
+std::unique_ptr<Task> NormalKind::read(const Cursor& problem) { return NormalTask::read(problem); }
+
+std::vector<PartSpec> NormalKind::parts() {
+  using C = Comparison;
+  return {
+      {"normal", "the outward unit normal at the point (any positive multiple)", 1, C::kDirection},
+      {"object_normal", "a transformed object's normal in object space, before (A⁻¹)ᵀ", 0,
+       C::kDirection}};
+}
+
+nlohmann::json NormalKind::answer_form(const Problem& p) {
+  nlohmann::json fields =
+      nlohmann::json::array({form::field("vector", "normal", "The outward unit normal at P")});
+  if (p.task->answer().contains("object_normal")) {
+    fields.push_back(
+        form::field("vector", "object_normal", "The normal in object space, before (A⁻¹)ᵀ"));
+  }
+  return form::fields(fields);
+}
+
+std::string_view NormalKind::schema() {
+  return R"json({
+  "required": [
+    "object",
+    "point"
+  ],
+  "properties": {
+    "object": {
+      "$ref": "#/$defs/object"
+    },
+    "point": {
+      "$ref": "#/$defs/vec3"
+    }
+  }
+})json";
 }
 
 }  // namespace raygrade

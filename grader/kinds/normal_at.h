@@ -7,12 +7,26 @@
 #include <optional>
 #include <string_view>
 
+#include "problems/kind.h"
 #include "problems/problem.h"
 #include "shapes/shape.h"
 #include "shapes/surface_point.h"
 #include "shapes/transform.h"
 
 namespace raygrade {
+
+// The kind `normal` (kinds/kind.h).
+struct NormalKind {
+  static constexpr std::string_view kName = "normal";
+  static constexpr std::string_view kSummary =
+      "the unit normal of an object at a point of its surface";
+  static constexpr GraderFamily kGrader = GraderFamily::kFields;
+  static std::vector<std::string> keys() { return {"object", "point"}; }
+  static std::unique_ptr<Task> read(const Cursor& problem);
+  static std::vector<PartSpec> parts();
+  static nlohmann::json answer_form(const Problem& p);
+  static std::string_view schema();
+};
 
 // The part of `primitive`'s surface nearest to `p` (object space), with its outward normal
 // there: the primitive's own nearest_surface (in shapes/<name>.cpp).
@@ -24,7 +38,7 @@ class NormalTask final : public Task {
       : object_(std::move(object)), point_(point) {}
   static std::unique_ptr<Task> read(const Cursor& problem);
 
-  std::string_view kind() const override { return "normal"; }
+  std::string_view kind() const override { return NormalKind::kName; }
   nlohmann::json answer() const override;
   std::vector<std::string> methods() const override { return {"gradient"}; }
   std::vector<SolutionPart> derive(std::string_view method,

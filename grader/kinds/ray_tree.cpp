@@ -8,6 +8,7 @@
 #include "derivation/derivation.h"
 #include "derivation/number_format.h"
 #include "kinds/camera_ray.h"
+#include "kinds/form.h"
 #include "kinds/swatch.h"
 #include "kinds/view_ray.h"
 #include "scenes/tree_draw.h"
@@ -338,6 +339,134 @@ std::vector<std::string> RayTreeTask::conclusion() const {
   }
   for (auto& s : component_sentences()) out.push_back(std::move(s));
   return out;
+}
+
+std::unique_ptr<Task> RayTreeKind::read(const Cursor& problem) {
+  return RayTreeTask::read(problem);
+}
+
+std::vector<PartSpec> RayTreeKind::parts() {
+  using C = Comparison;
+  return {{"hit", "ask \"hit\": the object the ray hits first and its t", 1, C::kHits},
+          {"tree", "the hit points of the tree and their objects", 1, C::kTree},
+          {"shadows", "which hit points are in shadow, and by what when named", 1, C::kFlag},
+          {"terms", "which Phong terms apply at each hit point", 1, C::kNames},
+          {"intensity", "ask \"intensity\": the intensity along the primary ray", 1, C::kScalar},
+          {"media", "ask \"media\": n1 and n2 at every hit along the ray, in order", 1, C::kHits}};
+}
+
+nlohmann::json RayTreeKind::answer_form(const Problem& p) {
+  std::string ask = p.source.value("ask", "tree");
+  if (ask == "hit") {
+    // The object and its t are one part, "hit".
+    nlohmann::json scene = p.source.value("scene", nlohmann::json::object());
+    nlohmann::json object =
+        form::object_choice(form::names_of(scene.value("objects", nlohmann::json())));
+    nlohmann::json hits = form::hits_field(false, false, false);
+    object["parts"] = nlohmann::json::array({"hit"});
+    for (auto& c : hits["columns"]) c["parts"] = nlohmann::json::array({"hit"});
+    return form::fields({object, hits});
+  }
+  return form::fields({form::field("json", "",
+                                   "The ray tree as JSON ({\"nodes\": [...], \"all_terms\": [...], "
+                                   "\"ambient_only\": [...]}), as docs/scenes.md describes")});
+}
+
+std::string_view RayTreeKind::schema() {
+  return R"json({
+  "required": [
+    "scene"
+  ],
+  "properties": {
+    "scene": {
+      "$ref": "#/$defs/scene"
+    },
+    "ray": {
+      "$ref": "#/$defs/ray"
+    },
+    "camera": {
+      "anyOf": [
+        {
+          "$ref": "#/$defs/camera"
+        },
+        {
+          "$ref": "#/$defs/view_camera"
+        }
+      ]
+    },
+    "pixel": {
+      "type": "array",
+      "items": {
+        "anyOf": [
+          {
+            "type": "number"
+          },
+          {
+            "$ref": "#/$defs/expression"
+          }
+        ]
+      },
+      "minItems": 2,
+      "maxItems": 2
+    },
+    "convention": {
+      "enum": [
+        "center",
+        "corner"
+      ]
+    },
+    "ask": {
+      "enum": [
+        "hit",
+        "tree",
+        "intensity",
+        "media"
+      ],
+      "default": "tree"
+    },
+    "labels": {
+      "type": "object",
+      "additionalProperties": {
+        "type": "string"
+      },
+      "description": "a node's path (P, P.R, P.T.R) to its label"
+    },
+    "components": {
+      "type": "object",
+      "description": "with ask intensity: a hit point's label to the components of its intensity asked there, each a part of its own",
+      "additionalProperties": {
+        "type": "array",
+        "minItems": 1,
+        "uniqueItems": true,
+        "items": {
+          "enum": [
+            "ambient",
+            "diffuse",
+            "specular",
+            "local",
+            "reflected",
+            "transmitted",
+            "total"
+          ]
+        }
+      },
+      "minProperties": 1
+    }
+  },
+  "oneOf": [
+    {
+      "required": [
+        "ray"
+      ]
+    },
+    {
+      "required": [
+        "camera",
+        "pixel"
+      ]
+    }
+  ]
+})json";
 }
 
 }  // namespace raygrade

@@ -4,11 +4,27 @@
 
 #include <map>
 
+#include "problems/kind.h"
 #include "problems/problem.h"
 #include "scenes/scene.h"
 #include "scenes/trace.h"
 
 namespace raygrade {
+
+// The kind `ray-tree` (kinds/kind.h).
+struct RayTreeKind {
+  static constexpr std::string_view kName = "ray-tree";
+  static constexpr std::string_view kSummary =
+      "the tree of rays one ray spawns in a scene: shadows, reflection, refraction, Phong";
+  static constexpr GraderFamily kGrader = GraderFamily::kRayTree;
+  static std::vector<std::string> keys() {
+    return {"scene", "ray", "camera", "pixel", "convention", "ask", "labels", "components"};
+  }
+  static std::unique_ptr<Task> read(const Cursor& problem);
+  static std::vector<PartSpec> parts();
+  static nlohmann::json answer_form(const Problem& p);
+  static std::string_view schema();
+};
 
 // Reads a problem's `ray`, or its `camera` and `pixel` (and `convention`), as the primary ray.
 Ray read_primary_ray(const Cursor& problem);
@@ -35,7 +51,7 @@ class RayTreeTask final : public Task {
   RayTreeTask(Scene scene, Ray primary, Ask ask, std::map<std::string, std::string> labels);
   static std::unique_ptr<Task> read(const Cursor& problem);
 
-  std::string_view kind() const override { return "ray-tree"; }
+  std::string_view kind() const override { return RayTreeKind::kName; }
   nlohmann::json answer() const override;
   std::vector<std::string> methods() const override { return {"whitted"}; }
   std::vector<SolutionPart> derive(std::string_view method,

@@ -2,6 +2,7 @@
 #include "kinds/reflect.h"
 
 #include "derivation/number_format.h"
+#include "kinds/form.h"
 #include "kinds/sketch.h"
 #include "scenes/optics.h"
 
@@ -53,6 +54,40 @@ Sketch ReflectTask::sketch() const {
   sketch_incoming(f, at, d, "d = " + sketch_vector(d_));
   f.arrow(at, at + normalized(reflect(d, n)), Ink::kRay, "r = " + sketch_vector(reflect(d_, n)));
   return f;
+}
+
+std::unique_ptr<Task> ReflectKind::read(const Cursor& problem) {
+  return ReflectTask::read(problem);
+}
+
+std::vector<PartSpec> ReflectKind::parts() {
+  using C = Comparison;
+  return {{"direction", "the reflected direction r (any positive multiple)", 1, C::kDirection,
+           "r = d − 2(d·n̂)n̂ keeps the length of d"},
+          {"unit_direction", "r as a unit vector", 0, C::kUnitDirection}};
+}
+
+nlohmann::json ReflectKind::answer_form(const Problem& /*p*/) {
+  return form::fields(
+      {form::field("vector", "direction", "The reflected direction"),
+       form::field("vector", "unit_direction", "The reflected direction as a unit vector")});
+}
+
+std::string_view ReflectKind::schema() {
+  return R"json({
+  "required": [
+    "direction",
+    "normal"
+  ],
+  "properties": {
+    "direction": {
+      "$ref": "#/$defs/nonzero_vec3"
+    },
+    "normal": {
+      "$ref": "#/$defs/nonzero_vec3"
+    }
+  }
+})json";
 }
 
 }  // namespace raygrade

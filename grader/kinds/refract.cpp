@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "derivation/number_format.h"
+#include "kinds/form.h"
 #include "kinds/sketch.h"
 #include "scenes/optics.h"
 
@@ -111,6 +112,63 @@ Sketch RefractTask::sketch() const {
     f.arrow(at, at + r.direction, Ink::kRay, "t, θt = " + format_number(theta_t) + "°");
   }
   return f;
+}
+
+std::unique_ptr<Task> RefractKind::read(const Cursor& problem) {
+  return RefractTask::read(problem);
+}
+
+std::vector<PartSpec> RefractKind::parts() {
+  using C = Comparison;
+  return {{"direction", "the refracted direction (null past the critical angle)", 1, C::kDirection},
+          {"total_internal_reflection", "whether the light is totally reflected", 0, C::kFlag},
+          {"angle_of_incidence", "θi in degrees", 0, C::kScalar},
+          {"angle_of_refraction", "θt in degrees (none past the critical angle)", 0, C::kScalar},
+          {"critical_angle", "asin(n2/n1) in degrees (only when n1 > n2)", 0, C::kScalar},
+          {"reflected_direction", "the totally reflected direction (any positive multiple)", 0,
+           C::kDirection}};
+}
+
+nlohmann::json RefractKind::answer_form(const Problem& /*p*/) {
+  // "Yes" to total internal reflection also answers the direction: there is none.
+  nlohmann::json tir =
+      form::field("yesno", "total_internal_reflection", "Total internal reflection?");
+  tir["parts"] = nlohmann::json::array({"total_internal_reflection", "direction"});
+  return form::fields(
+      {tir,
+       form::field("vector", "direction",
+                   "The refracted direction (blank under total internal reflection)"),
+       form::field("vector", "reflected_direction",
+                   "The reflected direction (under total internal reflection)"),
+       form::field("number", "angle_of_incidence", "The angle of incidence, in degrees"),
+       form::field("number", "angle_of_refraction", "The angle of refraction, in degrees"),
+       form::field("number", "critical_angle",
+                   "The critical angle, in degrees (when there is one)")});
+}
+
+std::string_view RefractKind::schema() {
+  return R"json({
+  "required": [
+    "direction",
+    "normal",
+    "n1",
+    "n2"
+  ],
+  "properties": {
+    "direction": {
+      "$ref": "#/$defs/nonzero_vec3"
+    },
+    "normal": {
+      "$ref": "#/$defs/nonzero_vec3"
+    },
+    "n1": {
+      "$ref": "#/$defs/positive"
+    },
+    "n2": {
+      "$ref": "#/$defs/positive"
+    }
+  }
+})json";
 }
 
 }  // namespace raygrade

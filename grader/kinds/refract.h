@@ -2,9 +2,23 @@
 // internal reflection beyond the critical angle.
 #pragma once
 
+#include "problems/kind.h"
 #include "problems/problem.h"
 
 namespace raygrade {
+
+// The kind `refract` (kinds/kind.h).
+struct RefractKind {
+  static constexpr std::string_view kName = "refract";
+  static constexpr std::string_view kSummary =
+      "Snell's law at a surface, with total internal reflection";
+  static constexpr GraderFamily kGrader = GraderFamily::kFields;
+  static std::vector<std::string> keys() { return {"direction", "normal", "n1", "n2"}; }
+  static std::unique_ptr<Task> read(const Cursor& problem);
+  static std::vector<PartSpec> parts();
+  static nlohmann::json answer_form(const Problem& p);
+  static std::string_view schema();
+};
 
 class RefractTask final : public Task {
  public:
@@ -12,7 +26,7 @@ class RefractTask final : public Task {
       : d_(direction), n_(normal), n1_(n1), n2_(n2) {}
   static std::unique_ptr<Task> read(const Cursor& problem);
 
-  std::string_view kind() const override { return "refract"; }
+  std::string_view kind() const override { return RefractKind::kName; }
   nlohmann::json answer() const override;
   std::vector<std::string> methods() const override { return {"vector"}; }
   std::vector<SolutionPart> derive(std::string_view method,

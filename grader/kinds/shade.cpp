@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "derivation/number_format.h"
+#include "kinds/form.h"
 #include "kinds/sketch.h"
 #include "kinds/swatch.h"
 #include "scenes/optics.h"
@@ -348,6 +349,109 @@ Sketch ShadeTask::sketch() const {
     if (m_.specular > 0) f.arrow(point_, point_ + 2 * n_dot_l * normal_ - l, Ink::kGuide, "R_" + i);
   }
   return f;
+}
+
+std::unique_ptr<Task> ShadeKind::read(const Cursor& problem) { return ShadeTask::read(problem); }
+
+std::vector<PartSpec> ShadeKind::parts() {
+  using C = Comparison;
+  return {{"intensity", "the Phong intensity", 1, C::kScalar},
+          {"ambient", "the ambient term k_a·I_a", 0, C::kScalar},
+          {"diffuse", "the sum of the diffuse terms", 0, C::kScalar},
+          {"specular", "the sum of the specular terms", 0, C::kScalar},
+          {"terms", "which terms apply (ambient, diffuse, specular)", 0, C::kNames},
+          {"lights", "per light: whether it reaches the point, N·L, R·V and its two terms", 0,
+           C::kScalar},
+          {"colour", "the material's colour at the point (a pattern's colour there), [r, g, b]", 0,
+           C::kScalar}};
+}
+
+nlohmann::json ShadeKind::answer_form(const Problem& p) {
+  // With colours every term is [r, g, b]: three numbers, as a vector's field takes them.
+  const auto* task = dynamic_cast<const ShadeTask*>(p.task.get());
+  bool rgb = task && task->colour();
+  std::string term = rgb ? "vector" : "number";
+  std::string unit = rgb ? " [r, g, b]" : "";
+  nlohmann::json lights = form::field("rows", "lights", "Each light");
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& n : form::names_of(p.source.value("lights", nlohmann::json()))) {
+    rows.push_back({{"label", "light " + n}, {"fixed", {{"light", n}}}});
+  }
+  lights["rows"] = rows;
+  lights["columns"] = nlohmann::json::array({form::field("number", "n_dot_l", "N·L"),
+                                             form::field("number", "r_dot_v", "R·V"),
+                                             form::field("yesno", "reaches", "reaches the point?"),
+                                             form::field(term, "diffuse", "diffuse" + unit),
+                                             form::field(term, "specular", "specular" + unit)});
+  nlohmann::json terms = form::field("set", "terms", "The terms that apply");
+  terms["options"] = nlohmann::json::array({"ambient", "diffuse", "specular"});
+  return form::fields({form::field(term, "ambient", "The ambient term" + unit),
+                       form::field(term, "diffuse", "The diffuse term" + unit),
+                       form::field(term, "specular", "The specular term" + unit),
+                       form::field(term, "intensity", "The intensity" + unit), lights, terms});
+}
+
+std::string_view ShadeKind::schema() {
+  return R"json({
+  "required": [
+    "point",
+    "normal",
+    "eye",
+    "lights"
+  ],
+  "properties": {
+    "point": {
+      "$ref": "#/$defs/vec3"
+    },
+    "normal": {
+      "$ref": "#/$defs/nonzero_vec3"
+    },
+    "eye": {
+      "$ref": "#/$defs/vec3"
+    },
+    "material": {
+      "$ref": "#/$defs/material"
+    },
+    "ambient_light": {
+      "$ref": "#/$defs/intensity"
+    },
+    "lights": {
+      "type": "array",
+      "items": {
+        "type": "object",
+        "description": "a light, and `blocked` when its shadow ray is blocked",
+        "properties": {
+          "name": {
+            "type": "string"
+          },
+          "type": {
+            "enum": [
+              "point",
+              "directional"
+            ]
+          },
+          "position": {
+            "$ref": "#/$defs/vec3"
+          },
+          "direction": {
+            "$ref": "#/$defs/nonzero_vec3"
+          },
+          "intensity": {
+            "$ref": "#/$defs/intensity"
+          },
+          "blocked": {
+            "type": "boolean"
+          }
+        },
+        "additionalProperties": false
+      }
+    },
+    "object_transform": {
+      "$ref": "#/$defs/transform",
+      "description": "the transform of the object the point lies on, which places the material's colour pattern (docs/scenes.md, Patterns)"
+    }
+  }
+})json";
 }
 
 }  // namespace raygrade

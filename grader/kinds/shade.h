@@ -3,11 +3,26 @@
 // is a colour (scenes/colour.h), every term is a colour [r, g, b], worked channel by channel.
 #pragma once
 
+#include "problems/kind.h"
 #include "problems/problem.h"
 #include "scenes/pattern.h"
 #include "scenes/scene.h"
 
 namespace raygrade {
+
+// The kind `shade` (kinds/kind.h).
+struct ShadeKind {
+  static constexpr std::string_view kName = "shade";
+  static constexpr std::string_view kSummary = "the Phong intensity at a point, term by term";
+  static constexpr GraderFamily kGrader = GraderFamily::kFields;
+  static std::vector<std::string> keys() {
+    return {"point", "normal", "eye", "material", "lights", "ambient_light", "object_transform"};
+  }
+  static std::unique_ptr<Task> read(const Cursor& problem);
+  static std::vector<PartSpec> parts();
+  static nlohmann::json answer_form(const Problem& p);
+  static std::string_view schema();
+};
 
 struct ShadeLight {
   Light light;
@@ -26,7 +41,7 @@ class ShadeTask final : public Task {
         lights_(std::move(lights)) {}
   static std::unique_ptr<Task> read(const Cursor& problem);
 
-  std::string_view kind() const override { return "shade"; }
+  std::string_view kind() const override { return ShadeKind::kName; }
   nlohmann::json answer() const override;
   std::vector<std::string> methods() const override { return {"phong"}; }
   std::vector<SolutionPart> derive(std::string_view method,

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "derivation/number_format.h"
+#include "kinds/form.h"
 
 namespace raygrade {
 namespace {
@@ -289,6 +290,71 @@ Sketch ViewRayTask::sketch() const {
   f.point(c.projection == Projection::kOrthographic ? ray.origin : ray.origin + ray.direction,
           Ink::kHit, fmt::format("pixel ({}, {})", format_number(i_), format_number(j_)));
   return f;
+}
+
+std::unique_ptr<Task> ViewRayKind::read(const Cursor& problem) {
+  return ViewRayTask::read(problem);
+}
+
+std::vector<PartSpec> ViewRayKind::parts() {
+  using C = Comparison;
+  return {{"origin", "where the ray starts (the eye; the pixel itself when orthographic)", 1,
+           C::kPoint},
+          {"direction", "the ray's direction (any positive multiple)", 1, C::kDirection},
+          {"unit_direction", "the direction as a unit vector", 0, C::kUnitDirection},
+          {"u", "the camera's u (the image's right)", 0, C::kDirection},
+          {"v", "the camera's v (the image's up)", 0, C::kDirection},
+          {"w", "the camera's w (pointing back)", 0, C::kDirection},
+          {"l", "the image plane's left edge", 0, C::kScalar},
+          {"r", "right edge", 0, C::kScalar},
+          {"b", "bottom edge", 0, C::kScalar},
+          {"t", "top edge", 0, C::kScalar},
+          {"pixel_width", "a pixel's width (r − l)/n_x", 0, C::kScalar},
+          {"pixel_height", "a pixel's height (t − b)/n_y", 0, C::kScalar},
+          {"u_s", "the pixel's position along u", 0, C::kScalar},
+          {"v_s", "the pixel's position along v", 0, C::kScalar}};
+}
+
+nlohmann::json ViewRayKind::answer_form(const Problem& /*p*/) {
+  return form::fields({form::field("vector", "origin", "Where the ray starts"),
+                       form::field("vector", "direction", "The ray's direction")});
+}
+
+std::string_view ViewRayKind::schema() {
+  return R"json({
+  "required": [
+    "camera",
+    "pixel",
+    "convention"
+  ],
+  "properties": {
+    "camera": {
+      "$ref": "#/$defs/view_camera"
+    },
+    "pixel": {
+      "type": "array",
+      "items": {
+        "anyOf": [
+          {
+            "type": "number"
+          },
+          {
+            "$ref": "#/$defs/expression"
+          }
+        ]
+      },
+      "minItems": 2,
+      "maxItems": 2
+    },
+    "convention": {
+      "enum": [
+        "center",
+        "corner"
+      ],
+      "default": "center"
+    }
+  }
+})json";
 }
 
 }  // namespace raygrade

@@ -5,9 +5,24 @@
 #pragma once
 
 #include "kinds/camera_ray.h"
+#include "problems/kind.h"
 #include "problems/problem.h"
 
 namespace raygrade {
+
+// The kind `view-ray` (kinds/kind.h).
+struct ViewRayKind {
+  static constexpr std::string_view kName = "view-ray";
+  static constexpr std::string_view kSummary =
+      "the ray through a pixel of a look-at camera: u, v, w, the image plane (bounds or field "
+      "of view), perspective or orthographic";
+  static constexpr GraderFamily kGrader = GraderFamily::kFields;
+  static std::vector<std::string> keys() { return {"camera", "pixel", "convention"}; }
+  static std::unique_ptr<Task> read(const Cursor& problem);
+  static std::vector<PartSpec> parts();
+  static nlohmann::json answer_form(const Problem& p);
+  static std::string_view schema();
+};
 
 enum class Projection { kPerspective, kOrthographic };
 enum class PixelOrigin { kBottomLeft, kTopLeft };
@@ -42,7 +57,7 @@ class ViewRayTask final : public Task {
       : cam_(std::move(cam)), i_(i), j_(j), convention_(convention) {}
   static std::unique_ptr<Task> read(const Cursor& problem);
 
-  std::string_view kind() const override { return "view-ray"; }
+  std::string_view kind() const override { return ViewRayKind::kName; }
   nlohmann::json answer() const override;
   std::vector<std::string> methods() const override { return {"uvw"}; }
   std::vector<SolutionPart> derive(std::string_view method,

@@ -139,7 +139,7 @@ Problem read_plain_problem(const Cursor& c, const Conventions& defaults) {
   Problem p;
   p.id = c.at("id").string();
   if (p.id.empty()) c.at("id").fail("the id must not be empty", "invalid");
-  p.kind = c.string_or("kind", "intersect");
+  p.kind = c.string_or("kind", std::string(kind_table().front().name));
   const KindEntry* entry = nullptr;
   std::vector<std::string> names;
   for (const auto& k : kind_table()) {

@@ -9,6 +9,7 @@
 
 #include "derivation/derivation.h"
 #include "json/cursor.h"
+#include "problems/kind.h"
 #include "problems/parameters.h"
 #include "shapes/ray.h"
 #include "shapes/sketch.h"
@@ -103,16 +104,6 @@ struct Problem {
   const nlohmann::json* template_json = nullptr;  // inside template_file
   ParameterValues values;
 };
-
-// One row of the table of kinds.
-struct KindEntry {
-  std::string_view name;
-  std::string_view summary;
-  std::vector<std::string> keys;  // the problem keys this kind reads beside the common ones
-  std::unique_ptr<Task> (*read)(const Cursor& problem);
-};
-
-const std::vector<KindEntry>& kind_table();
 
 // The keys every problem may carry.
 const std::vector<std::string>& common_problem_keys();

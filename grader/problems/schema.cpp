@@ -42,36 +42,47 @@ nlohmann::ordered_json primitive_definition(std::string_view type,
 }
 
 // The kinds, from the table of kinds: `kind` takes its names, and each kind's case (an `if` on
-// the kind in the problem's allOf, written in problem_schema_base.json with the kind's own
-// properties) allows exactly the keys read_problem allows, the common ones and the kind's own.
-// A kind of the table without a case, or a case of no kind, is a bug of raygrade.
+// the kind in the problem's allOf, with the kind's own "required" and "properties") allows
+// exactly the keys read_problem allows, the common ones and the kind's own. A kind whose case
+// does not describe one of its keys is a bug of raygrade.
 void derive_kinds(nlohmann::ordered_json& problem) {
   nlohmann::ordered_json names = nlohmann::ordered_json::array();
   for (const KindEntry& k : kind_table()) names.push_back(k.name);
   problem["properties"]["kind"]["enum"] = names;
-  std::size_t matched = 0;
+  nlohmann::ordered_json cases = nlohmann::ordered_json::array();
   for (const KindEntry& k : kind_table()) {
-    nlohmann::ordered_json* then = nullptr;
-    for (auto& c : problem["allOf"]) {
-      if (c["if"]["properties"]["kind"].value("const", "") == k.name) then = &c["then"];
+    nlohmann::ordered_json then;
+    try {
+      then = nlohmann::ordered_json::parse(k.schema);
+    } catch (const nlohmann::json::exception& e) {
+      throw InternalError(
+          fmt::format("the schema of the kind '{}' is not JSON: {}", k.name, e.what()));
     }
-    if (!then)
-      throw InternalError(fmt::format(
-          "the problem schema has no case for the kind '{}' (problem_schema_base.json)", k.name));
-    ++matched;
     nlohmann::ordered_json keys = nlohmann::ordered_json::array();
     for (const auto& key : common_problem_keys()) keys.push_back(key);
     for (const auto& key : k.keys) {
-      if (!(*then)["properties"].contains(key))
-        throw InternalError(fmt::format(
-            "the problem schema's case for the kind '{}' does not describe its key '{}'", k.name,
-            key));
+      if (!then["properties"].contains(key))
+        throw InternalError(
+            fmt::format("the schema of the kind '{}' does not describe its key '{}'", k.name, key));
       keys.push_back(key);
     }
-    (*then)["propertyNames"] = {{"enum", keys}};
+    then["propertyNames"] = {{"enum", keys}};
+    nlohmann::ordered_json c;
+    // The first kind is also the kind of a problem that names none.
+    bool first = cases.empty();
+    if (first) {
+      c["if"] = {{"properties", {{"kind", {{"const", k.name}}}}}};
+    } else {
+      c["if"] = {{"required", {"kind"}}, {"properties", {{"kind", {{"const", k.name}}}}}};
+    }
+    c["then"] = std::move(then);
+    if (first) {
+      c["$comment"] = fmt::format(
+          "kind {}, also when `kind` is left out; propertyNames flags unknown keys", k.name);
+    }
+    cases.push_back(std::move(c));
   }
-  if (matched != problem["allOf"].size())
-    throw InternalError("the problem schema has a case for a kind that is not in the table");
+  problem["allOf"] = std::move(cases);
 }
 
 }  // namespace

@@ -1,0 +1,46 @@
+// The pieces of answer forms.
+#include "kinds/form.h"
+
+namespace raygrade::form {
+
+using json = nlohmann::json;
+
+json field(std::string type, std::string key, std::string label) {
+  return {{"type", std::move(type)}, {"key", std::move(key)}, {"label", std::move(label)}};
+}
+
+std::vector<std::string> names_of(const json& list) {
+  std::vector<std::string> out;
+  if (!list.is_array()) return out;
+  for (const auto& item : list) {
+    if (item.is_object() && item.contains("name") && item["name"].is_string()) {
+      out.push_back(item["name"].get<std::string>());
+    }
+  }
+  return out;
+}
+
+json object_choice(const std::vector<std::string>& names) {
+  json f = field("choice", "object", "The first object hit");
+  json options = json::array({{{"text", "none (the ray hits nothing)"}, {"value", nullptr}}});
+  for (const auto& n : names) options.push_back({{"text", n}, {"value", n}});
+  f["options"] = options;
+  return f;
+}
+
+json hits_field(bool barycentric, bool several, bool point_and_normal) {
+  json f = field("hits", "hits", several ? "Hits, in any order" : "The first hit");
+  json columns = json::array({field("number", "t", "t")});
+  if (point_and_normal) {
+    columns.push_back(field("vector", "point", "point"));
+    columns.push_back(field("vector", "normal", "normal"));
+  }
+  if (barycentric) columns.push_back(field("vector", "barycentric", "barycentric (w_a, w_b, w_c)"));
+  f["columns"] = columns;
+  f["several"] = several;
+  return f;
+}
+
+json fields(json list) { return {{"fields", std::move(list)}}; }
+
+}  // namespace raygrade::form

@@ -1,0 +1,26 @@
+// The pieces kinds build their answer forms from (docs/assignments.md, "Answer forms"): an
+// input, a column of a table, the choice of an object, a table of hits.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace raygrade::form {
+
+// One input: {"type", "key", "label"}; a key "ray/origin" answers ray.origin.
+nlohmann::json field(std::string type, std::string key, std::string label);
+
+// The names of a list of objects or lights, in order.
+std::vector<std::string> names_of(const nlohmann::json& list);
+
+// The choice of the object hit first among `names`, or none.
+nlohmann::json object_choice(const std::vector<std::string>& names);
+
+// A table of hits: t, with the point and normal and the barycentric weights when asked.
+nlohmann::json hits_field(bool barycentric, bool several, bool point_and_normal);
+
+// {"fields": fields}
+nlohmann::json fields(nlohmann::json list);
+
+}  // namespace raygrade::form
