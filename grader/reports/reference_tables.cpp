@@ -74,6 +74,22 @@ std::string kinds_table() {
   return out;
 }
 
+// Every kind's parts, in the order of the table of kinds and of each kind's parts().
+std::string parts_table() {
+  std::string out =
+      "| kind | part | asks for | default points | compared as |\n| --- | --- | --- | --- | --- "
+      "|\n";
+  for (const KindEntry& k : kind_table()) {
+    bool first = true;
+    for (const PartSpec& part : k.parts) {
+      out += fmt::format("| {} | `{}` | {} | {} | {} |\n", first ? fmt::format("`{}`", k.name) : "",
+                         part.name, cell(part.asks), part.points, to_string(part.compare));
+      first = false;
+    }
+  }
+  return out;
+}
+
 std::string solution_formats_table() {
   std::string out = "| format | what it is |\n| --- | --- |\n";
   for (const SolutionFormat& f : solution_formats())
@@ -119,6 +135,7 @@ const std::vector<ReferenceTable>& reference_tables() {
   static const std::vector<ReferenceTable> tables = {
       {"primitives", primitives_table()},
       {"kinds", kinds_table()},
+      {"parts", parts_table()},
       {"solution-formats", solution_formats_table()},
       {"grade-formats", grade_formats_table()},
   };
