@@ -4,6 +4,7 @@
 #include "kinds/camera_ray.h"
 #include "kinds/derive.h"
 #include "kinds/fresnel.h"
+#include "kinds/interpolate.h"
 #include "kinds/intersect.h"
 #include "kinds/kind.h"
 #include "kinds/normal_at.h"
@@ -28,6 +29,7 @@ using Kinds = KindList<
     ShadeKind,
     FresnelKind,
     NormalKind,
+    InterpolateKind,
     DeriveKind>;
 // clang-format on
 
