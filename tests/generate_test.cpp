@@ -13,9 +13,9 @@
 #include <sstream>
 
 #include "check/check.h"
-#include "generate/prng.h"
 #include "json/source.h"
 #include "run_binary.h"
+#include "sampling/prng.h"
 #include "test_util.h"
 
 namespace raygrade {

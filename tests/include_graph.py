@@ -18,12 +18,7 @@ import re
 import sys
 
 # (from, to): how many #include lines of `from` name a header of `to`, a folder above it.
-UPWARD = {
-    ("shapes", "accuracy"): 20,  # each primitive's accuracy case and its random draws
-    ("shapes", "generate"): 28,  # each primitive's generator: drafts, outcomes, lattices
-    ("problems", "generate"): 2,  # a parameter's random draw (prng, lattice)
-    ("kinds", "accuracy"): 1,  # the camera ray's hard cases
-}
+UPWARD = {}
 
 # (file, function's first line): its length in lines.
 LONG = {

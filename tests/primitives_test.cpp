@@ -134,8 +134,7 @@ void check_primitive() {
     }
   }
   // Every primitive of the list is in the precision study.
-  static_assert(HasLadder<T>,
-                "a primitive joins the precision study (accuracy/ladder_primitives.h)");
+  static_assert(HasLadder<T>, "a primitive joins the precision study (shapes/ladder_primitives.h)");
   check_ladder<T>();
 }
 

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string_view>
 
-#include "accuracy/accuracy_case.h"
+#include "shapes/accuracy_case.h"
 
 namespace raygrade {
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "accuracy/accuracy_case.h"
 #include "accuracy/certified.h"
-#include "accuracy/split_mix.h"
+#include "sampling/split_mix.h"
+#include "shapes/accuracy_case.h"
 
 namespace raygrade {
 

@@ -7,7 +7,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "accuracy/accuracy_case.h"
+#include "shapes/accuracy_case.h"
 
 namespace raygrade {
 

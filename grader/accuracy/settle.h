@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "accuracy/accuracy_case.h"
+#include "shapes/accuracy_case.h"
 #include "shapes/shape.h"
 
 namespace raygrade {

@@ -9,7 +9,7 @@
 #include "assignments/assignment.h"
 #include "assignments/variants.h"
 #include "check/problem_checks.h"
-#include "generate/prng.h"
+#include "sampling/prng.h"
 
 namespace raygrade {
 namespace {

@@ -8,7 +8,7 @@
 #include "check/literals.h"
 #include "check/problem_checks.h"
 #include "core/escape.h"
-#include "generate/prng.h"
+#include "sampling/prng.h"
 
 namespace raygrade {
 namespace {

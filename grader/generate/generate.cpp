@@ -49,10 +49,13 @@ const std::vector<GeneratorEntry>& generator_table() {
     // The primitives' rows, from the list of primitives in its order; then the kinds'.
     std::vector<GeneratorEntry> rows;
     for_each_primitive([&]<typename T>() {
-      rows.push_back({T::kType, T::outcomes(), &T::generate});
+      rows.push_back({T::kType, IntersectKind::kName, T::outcomes(), &T::generate});
     });
-    rows.push_back({FirstHitKind::kName, {Outcome::kHit, Outcome::kMiss}, &make_first_hit});
-    rows.push_back({CameraRayKind::kName, {}, &make_camera_ray});
+    rows.push_back({FirstHitKind::kName,
+                    FirstHitKind::kName,
+                    {Outcome::kHit, Outcome::kMiss},
+                    &make_first_hit});
+    rows.push_back({CameraRayKind::kName, CameraRayKind::kName, {}, &make_camera_ray});
     return rows;
   }();
   return table;
@@ -96,6 +99,7 @@ std::vector<GeneratedProblem> generate_problems(const GenerateOptions& options) 
       problem["id"] = id;
       problem["title"] =
           fmt::format("Generated {} problem {} (seed {})", g.name, i + 1, options.seed);
+      problem["kind"] = std::string(g.kind);
       for (auto& [key, value] : draft.fields.items()) problem[key] = value;
       auto file = parse_json_text(id + ".json", problem.dump(2));
       std::string key;

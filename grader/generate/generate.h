@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "generate/outcome.h"
-#include "generate/prng.h"
+#include "sampling/outcome.h"
+#include "sampling/prng.h"
 
 namespace raygrade {
 
@@ -21,6 +21,7 @@ std::optional<Outcome> parse_outcome(std::string_view name);
 // each primitive's outcomes() and generate()) or a kind ("first-hit").
 struct GeneratorEntry {
   std::string_view name;
+  std::string_view kind;          // the kind of the problems it drafts
   std::vector<Outcome> outcomes;  // the outcomes it can build; empty: outcome does not apply
   Draft (*make)(Prng& rng, std::optional<Outcome> outcome);
 };

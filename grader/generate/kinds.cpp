@@ -4,9 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "generate/draft.h"
-#include "kinds/camera_ray.h"
-#include "kinds/intersect.h"
+#include "sampling/draft.h"
 #include "shapes/sphere.h"
 
 namespace raygrade {
@@ -46,7 +44,6 @@ Draft make_first_hit(Prng& rng, std::optional<Outcome> asked) {
     parts.push_back(fmt::format("{} with center {} and radius {}", name, point_text(center), r));
   }
   Draft draft;
-  draft.fields["kind"] = std::string(FirstHitKind::kName);
   draft.fields["statement"] = fmt::format(
       "The ray {} is traced through a scene of {} spheres: {}. Which sphere does it hit first, "
       "at which t and point?",
@@ -77,7 +74,6 @@ Draft make_camera_ray(Prng& rng, std::optional<Outcome> /*outcome*/) {
   Vec3d ray =
       double(f) * dir + (x + shift - rx / 2.0) * cross(dir, up) + (y + shift - ry / 2.0) * up;
   Draft draft;
-  draft.fields["kind"] = std::string(CameraRayKind::kName);
   draft.fields["statement"] = fmt::format(
       "A camera at {} looks along d = {} with up vector u = {}, focal length f = {} and "
       "resolution {} × {}. Which ray does it shoot through pixel ({}, {}), with pixel (0, 0) at "

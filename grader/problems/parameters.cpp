@@ -7,7 +7,7 @@
 #include <set>
 
 #include "derivation/formula.h"
-#include "generate/lattice.h"
+#include "sampling/lattice.h"
 
 namespace raygrade {
 namespace {

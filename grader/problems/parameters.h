@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "generate/prng.h"
 #include "json/cursor.h"
+#include "sampling/prng.h"
 
 namespace raygrade {
 

@@ -3,11 +3,11 @@
 
 #include <algorithm>
 
-#include "accuracy/accuracy_case.h"
-#include "accuracy/split_mix.h"
 #include "derivation/number_format.h"
-#include "generate/draft.h"
-#include "generate/solids.h"
+#include "sampling/draft.h"
+#include "sampling/solids.h"
+#include "sampling/split_mix.h"
+#include "shapes/accuracy_case.h"
 #include "shapes/describe.h"
 
 namespace raygrade {

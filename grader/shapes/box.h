@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "generate/outcome.h"
+#include "sampling/outcome.h"
 #include "shapes/shape.h"
 #include "shapes/sphere.h"
 #include "shapes/surface_point.h"
@@ -50,7 +50,7 @@ template <typename T>
 
 class Box final : public Shape {
  public:
-  // What the accuracy study needs of a box (accuracy/ladder_primitives.h).
+  // What the accuracy study needs of a box (shapes/ladder_primitives.h).
   struct Ladder;
 
   Box(Vec3d lo, Vec3d hi) : lo_(lo), hi_(hi) {}

@@ -5,14 +5,14 @@
 #include <cmath>
 #include <tuple>
 
-#include "accuracy/accuracy_case.h"
-#include "accuracy/huge_coordinates.h"
-#include "accuracy/split_mix.h"
-#include "generate/draft.h"
-#include "generate/solids.h"
 #include "math/unit_vector.h"
+#include "sampling/draft.h"
+#include "sampling/solids.h"
+#include "sampling/split_mix.h"
+#include "shapes/accuracy_case.h"
 #include "shapes/cylinder.h"
 #include "shapes/describe.h"
+#include "shapes/huge_coordinates.h"
 #include "shapes/round.h"
 #include "shapes/sphere.h"
 

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "generate/outcome.h"
+#include "sampling/outcome.h"
 #include "shapes/cylinder.h"
 #include "shapes/shape.h"
 #include "shapes/sphere.h"
@@ -78,7 +78,7 @@ Roots<T> naive_quadratic_roots(T a, T b, T c) {
 // where s ≥ h). A hit on the rim between the side and an end is found by both and listed once.
 class Capsule final : public Shape {
  public:
-  // What the accuracy study needs of a capsule (accuracy/ladder_primitives.h).
+  // What the accuracy study needs of a capsule (shapes/ladder_primitives.h).
   struct Ladder;
 
   Capsule(Vec3d a, Vec3d b, double radius);

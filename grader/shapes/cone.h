@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include "generate/outcome.h"
+#include "sampling/outcome.h"
 #include "shapes/round.h"
 #include "shapes/shape.h"
 #include "shapes/sphere.h"
@@ -89,7 +89,7 @@ bool cone_on_side(const ConeSide<T>& k, const T& t) {
 
 class Cone final : public Shape {
  public:
-  // What the accuracy study needs of an open cone (accuracy/ladder_primitives.h).
+  // What the accuracy study needs of an open cone (shapes/ladder_primitives.h).
   struct Ladder;
 
   Cone(Vec3d base, Vec3d axis, double radius, double height, bool capped);

@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "derivation/mistake.h"
-#include "generate/outcome.h"
+#include "sampling/outcome.h"
 #include "shapes/sphere.h"
 #include "shapes/surface_point.h"
 
@@ -170,7 +170,7 @@ template <typename T>
 
 class Cylinder final : public Shape {
  public:
-  // What the accuracy study needs of a cylinder (accuracy/ladder_primitives.h).
+  // What the accuracy study needs of a cylinder (shapes/ladder_primitives.h).
   struct Ladder;
 
   Cylinder(Vec3d base, Vec3d axis, double radius, std::optional<double> height, bool capped);

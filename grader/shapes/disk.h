@@ -4,8 +4,8 @@
 #include <limits>
 #include <optional>
 
-#include "generate/outcome.h"
 #include "math/robust.h"
+#include "sampling/outcome.h"
 #include "shapes/plane.h"
 #include "shapes/shape.h"
 #include "shapes/surface_point.h"
@@ -32,7 +32,7 @@ class SplitMix;
 // inside when |P − C|² ≤ r², the rim included (the disk is closed).
 class Disk final : public Shape {
  public:
-  // What the accuracy study needs of a disk (accuracy/ladder_primitives.h).
+  // What the accuracy study needs of a disk (shapes/ladder_primitives.h).
   struct Ladder;
 
   Disk(Vec3d center, Vec3d normal, double radius)

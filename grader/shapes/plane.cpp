@@ -1,11 +1,11 @@
 // Plane: reading, reference intersection, and the point-normal and implicit derivations.
 #include "shapes/plane.h"
 
-#include "accuracy/accuracy_case.h"
-#include "accuracy/split_mix.h"
-#include "generate/draft.h"
-#include "generate/flats.h"
 #include "math/unit_vector.h"
+#include "sampling/draft.h"
+#include "sampling/flats.h"
+#include "sampling/split_mix.h"
+#include "shapes/accuracy_case.h"
 #include "shapes/describe.h"
 #include "shapes/flat.h"
 

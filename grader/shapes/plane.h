@@ -4,8 +4,8 @@
 #include <optional>
 
 #include "derivation/mistake.h"
-#include "generate/outcome.h"
 #include "math/robust.h"
+#include "sampling/outcome.h"
 #include "shapes/shape.h"
 #include "shapes/surface_point.h"
 
@@ -68,7 +68,7 @@ std::optional<T> naive_plane_t(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>
 
 class Plane final : public Shape {
  public:
-  // What the accuracy study needs of a plane (accuracy/ladder_primitives.h).
+  // What the accuracy study needs of a plane (shapes/ladder_primitives.h).
   struct Ladder;
 
   // Exactly one of `point` and `d` is set.

@@ -3,8 +3,8 @@
 
 #include <array>
 
-#include "generate/outcome.h"
 #include "math/robust.h"
+#include "sampling/outcome.h"
 #include "shapes/flat.h"
 #include "shapes/plane.h"
 #include "shapes/shape.h"
@@ -54,7 +54,7 @@ bool watertight_polygon(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Ve
 
 class Polygon final : public Shape {
  public:
-  // What the accuracy study needs of a polygon (accuracy/ladder_primitives.h).
+  // What the accuracy study needs of a polygon (shapes/ladder_primitives.h).
   struct Ladder;
 
   explicit Polygon(std::vector<Vec3d> vertices);

@@ -11,7 +11,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "generate/outcome.h"
+#include "sampling/outcome.h"
 #include "shapes/box.h"
 #include "shapes/capsule.h"
 #include "shapes/cone.h"
@@ -40,7 +40,7 @@ concept PrimitiveType = std::derived_from<T, Shape> && std::is_final_v<T> &&
   { T::read(object) } -> std::same_as<std::unique_ptr<Shape>>;
   { T::schema() } -> std::same_as<nlohmann::ordered_json>;
   // Its generator (in the primitive's own .cpp): the outcomes it can build (Outcome,
-  // generate/outcome.h), and a problem with nice numbers for one of them.
+  // sampling/outcome.h), and a problem with nice numbers for one of them.
   { T::outcomes() } -> std::same_as<const std::vector<Outcome>&>;
   { T::generate(rng, outcome) } -> std::same_as<Draft>;
   // The normal kind (in its own .cpp; shapes/surface_point.h): the part of its

@@ -1,11 +1,11 @@
 // Sphere: reading, reference intersection, and the geometric and algebraic derivations.
 #include "shapes/sphere.h"
 
-#include "accuracy/accuracy_case.h"
-#include "accuracy/split_mix.h"
-#include "generate/draft.h"
-#include "generate/solids.h"
 #include "math/unit_vector.h"
+#include "sampling/draft.h"
+#include "sampling/solids.h"
+#include "sampling/split_mix.h"
+#include "shapes/accuracy_case.h"
 #include "shapes/describe.h"
 
 namespace raygrade {

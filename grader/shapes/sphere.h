@@ -4,8 +4,8 @@
 #include <cmath>
 #include <optional>
 
-#include "generate/outcome.h"
 #include "math/robust.h"
+#include "sampling/outcome.h"
 #include "shapes/shape.h"
 #include "shapes/surface_point.h"
 
@@ -291,7 +291,7 @@ void add_roots(const Roots<T>& k, Add&& add, Normal&& normal_at) {
 
 class Sphere final : public Shape {
  public:
-  // What the accuracy study needs of a sphere (accuracy/ladder_primitives.h).
+  // What the accuracy study needs of a sphere (shapes/ladder_primitives.h).
   struct Ladder;
 
   Sphere(Vec3d center, double radius) : center_(center), radius_(radius) {}

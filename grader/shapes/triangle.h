@@ -5,8 +5,8 @@
 #include <array>
 #include <limits>
 
-#include "generate/outcome.h"
 #include "math/robust.h"
+#include "sampling/outcome.h"
 #include "shapes/plane.h"
 #include "shapes/shape.h"
 #include "shapes/surface_point.h"
@@ -117,7 +117,7 @@ TriangleHit<T> watertight_triangle(const Vec3<T>& o, const Vec3<T>& d, const Vec
 
 class Triangle final : public Shape {
  public:
-  // What the accuracy study needs of a triangle (accuracy/ladder_primitives.h).
+  // What the accuracy study needs of a triangle (shapes/ladder_primitives.h).
   struct Ladder;
 
   Triangle(Vec3d a, Vec3d b, Vec3d c) : v_{a, b, c} {}

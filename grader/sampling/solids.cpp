@@ -1,5 +1,5 @@
 // Helpers the generators of solid primitives share.
-#include "generate/solids.h"
+#include "sampling/solids.h"
 
 namespace raygrade {
 

@@ -1,5 +1,5 @@
 // Lattice points and integer vectors for the problem generator.
-#include "generate/lattice.h"
+#include "sampling/lattice.h"
 
 #include <cmath>
 #include <map>

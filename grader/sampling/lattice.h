@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "generate/prng.h"
 #include "math/vec3.h"
+#include "sampling/prng.h"
 
 namespace raygrade {
 

@@ -1,7 +1,5 @@
 // Shared pieces of generated problems.
-#include "generate/draft.h"
-
-#include "kinds/intersect.h"
+#include "sampling/draft.h"
 
 namespace raygrade {
 
@@ -24,7 +22,6 @@ Draft intersect_draft(const Vec3d& origin, const Vec3d& direction, nlohmann::ord
                       const std::string& object_text, const std::vector<KnownHit>& hits,
                       bool contained) {
   Draft d;
-  d.fields["kind"] = std::string(IntersectKind::kName);
   d.fields["statement"] = fmt::format(
       "Find every point where the ray {} meets {}. Give t and the point of each hit, or say "
       "that there is none.",

@@ -6,8 +6,8 @@
 #include <utility>
 #include <vector>
 
-#include "generate/generate.h"
-#include "generate/lattice.h"
+#include "sampling/lattice.h"
+#include "sampling/outcome.h"
 
 namespace raygrade {
 

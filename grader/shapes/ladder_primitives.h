@@ -84,7 +84,7 @@ constexpr bool every_ladder_primitive(TypeList<Ts...> /*list*/) {
 }
 static_assert(
     every_ladder_primitive(LadderPrimitives{}),
-    "a primitive with a Ladder must satisfy AccuracyPrimitive (accuracy/ladder_primitives.h)");
+    "a primitive with a Ladder must satisfy AccuracyPrimitive (shapes/ladder_primitives.h)");
 
 // A primitive of the accuracy study: its index in LadderPrimitives.
 enum class Primitive : std::uint8_t {};

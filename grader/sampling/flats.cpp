@@ -1,7 +1,7 @@
 // Helpers the generators of flat primitives share.
-#include "generate/flats.h"
+#include "sampling/flats.h"
 
-#include "generate/draft.h"
+#include "sampling/draft.h"
 
 namespace raygrade {
 namespace {

@@ -1,5 +1,5 @@
 // xoshiro256** (Blackman and Vigna, 2018) seeded by SplitMix64, and unbiased integer ranges.
-#include "generate/prng.h"
+#include "sampling/prng.h"
 
 namespace raygrade {
 namespace {

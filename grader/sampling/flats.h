@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "generate/lattice.h"
-#include "generate/outcome.h"
+#include "sampling/lattice.h"
+#include "sampling/outcome.h"
 
 namespace raygrade {
 

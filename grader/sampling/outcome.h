@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include "generate/prng.h"
+#include "sampling/prng.h"
 
 namespace raygrade {
 

@@ -4,9 +4,9 @@
 
 #include <vector>
 
-#include "generate/draft.h"
-#include "generate/lattice.h"
-#include "generate/outcome.h"
+#include "sampling/draft.h"
+#include "sampling/lattice.h"
+#include "sampling/outcome.h"
 
 namespace raygrade {
 

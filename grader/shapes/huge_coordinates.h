@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "accuracy/accuracy_case.h"
-#include "accuracy/split_mix.h"
+#include "sampling/split_mix.h"
+#include "shapes/accuracy_case.h"
 
 namespace raygrade {
 

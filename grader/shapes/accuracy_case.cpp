@@ -1,10 +1,10 @@
 // Cases to and from JSON; the primitive is named by its `type` key.
-#include "accuracy/accuracy_case.h"
+#include "shapes/accuracy_case.h"
 
 namespace raygrade {
 namespace {
 
-nlohmann::json vec_json(const Vec3d& v) { return {v.x, v.y, v.z}; }
+nlohmann::json case_vector(const Vec3d& v) { return {v.x, v.y, v.z}; }
 
 struct Parameters {
   std::size_t points;
@@ -22,12 +22,12 @@ Parameters parameters_of(Primitive p) {
 
 nlohmann::json case_json(const AccuracyCase& c) {
   nlohmann::json points = nlohmann::json::array();
-  for (const auto& p : c.points) points.push_back(vec_json(p));
+  for (const auto& p : c.points) points.push_back(case_vector(p));
   nlohmann::json j = {{"id", c.id},
                       {"group", c.group},
                       {"primitive", primitive_name(c.primitive)},
-                      {"origin", vec_json(c.origin)},
-                      {"direction", vec_json(c.direction)},
+                      {"origin", case_vector(c.origin)},
+                      {"direction", case_vector(c.direction)},
                       {"points", points}};
   if (parameters_of(c.primitive).radius) j["radius"] = c.radius;
   return j;

@@ -7,14 +7,14 @@
 #include <string_view>
 #include <vector>
 
-#include "accuracy/ladder_primitives.h"
 #include "json/cursor.h"
 #include "math/vec3.h"
+#include "shapes/ladder_primitives.h"
 
 namespace raygrade {
 
 // The ray is p(t) = origin + t·direction for t in [0, ∞). `points` and `radius` are the
-// primitive's parameters as its Ladder says (accuracy/ladder_primitives.h).
+// primitive's parameters as its Ladder says (shapes/ladder_primitives.h).
 struct AccuracyCase {
   std::string id;
   std::string group;  // which kind of hard case: "far-sphere", "grazing", "shared-edge", ...
