@@ -81,9 +81,28 @@ class HitsGrader final : public KindGrader {
   void grade(const AnswerReader& a, GradeResult& out) const override;
 
  private:
+  std::vector<const Shape*> read_reference();
+  void collect_candidates(const std::vector<const Shape*>& shapes, std::vector<double>& surface);
+  double read_conditioning();
+  bool same_root(double a, double b) const;
+  void limit_widening();
+  void choose_display_decimals();
   void grade_object(const AnswerReader& a, GradeResult& out) const;
   void grade_hits(const std::vector<StudentHit>& hits, const StepsGrade* steps,
                   GradeResult& out) const;
+  // How the student's hits meet the reference's by t.
+  struct TMatch {
+    std::vector<int> match;      // per student hit: the reference hit it is, or -1
+    std::vector<bool> used;      // per reference hit: whether a student hit is it
+    std::vector<Match> verdict;  // per student hit
+    std::vector<bool> twice;     // per student hit: a tangent's double root listed again
+    std::size_t n_twice = 0;
+    std::vector<std::string> feedback;  // the part t's
+  };
+  TMatch match_t(const std::vector<StudentHit>& hits) const;
+  bool grade_t(const std::vector<StudentHit>& hits, const StepsGrade* steps, TMatch& m,
+               GradeResult& out) const;
+  void match_by_point(const std::vector<StudentHit>& hits, TMatch& m) const;
   void grade_claimed_miss(const StepsGrade* steps, GradeResult& out) const;
   std::optional<std::size_t> hit_of_weights(const StudentHit& h) const;
   void read_hits_from_weights(std::vector<StudentHit>& hits, GradeResult& out) const;
@@ -129,6 +148,7 @@ class HitsGrader final : public KindGrader {
   // (t along its unit direction is then a mistake of its own); else 0.
   double object_space_scale_ = 0;
   bool double_root_ = false;  // one hit, where the ray touches the surface (a tangent)
+  double spread_ = 0;         // how far apart a double root's two computed roots may lie
   Conventions conventions_;
   std::vector<double> behind_;      // roots with t < t_min: behind the origin
   std::vector<double> far_;         // roots past the first hit of the same object
@@ -146,100 +166,17 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()), conventions_(p.c
   if (p.precision >= 0) numbers_.decimals = p.precision;
   std::vector<std::string> names;
   for (const auto& spec : kind_parts(p.kind)) names.push_back(spec.name);
-  std::vector<const Shape*> shapes;
-  if (auto* it = dynamic_cast<const IntersectTask*>(task_)) {
-    context_.points = read_points_policy(p, default_points(p.kind, names));
-    ray_ = it->ray();
-    Intersection x = it->object().intersect(ray_);
-    ref_ = x.hits;
-    contained_ = x.contained;
-    shape_ = &it->object();
-    shapes.push_back(shape_);
-  } else {
-    auto& fh = dynamic_cast<const FirstHitTask&>(*task_);
-    first_hit_ = true;
-    context_.points = read_points_policy(p, default_points(p.kind, names));
-    ray_ = fh.ray();
-    FirstHit f = first_hit(ray_, fh.objects());
-    for (const auto& o : fh.objects()) {
-      names_.push_back(o.name);
-      shapes.push_back(o.shape.get());
-    }
-    ref_object_ = f.index;
-    if (f.index >= 0) {
-      ref_.push_back(f.hit);
-      shape_ = fh.objects()[static_cast<std::size_t>(f.index)].shape.get();
-    }
-  }
-  // Roots every method computes, kept when they are not hits: behind the origin, or far.
-  // All of them, and every object's hits, are the candidates a widened tolerance must not
-  // reach.
-  std::vector<double> candidates, surface;
-  for (const Shape* s : shapes) {
-    Intersection x = s->intersect(ray_);
-    for (const auto& h : x.hits) {
-      candidates.push_back(h.t);
-      surface.push_back(h.t);
-    }
-    for (const auto& m : s->methods()) {
-      Derivation d;
-      try {
-        d = s->derive(ray_, m);
-      } catch (const Error&) {
-        continue;  // a method that does not apply to this ray
-      }
-      for (double t : derivation_roots(d)) {
-        candidates.push_back(t);
-        if (t < ray_.t_min) behind_.push_back(t);
-        if (first_hit_ && !x.hits.empty() && t > x.hits.front().t + 1e-9 * (1 + std::abs(t))) {
-          far_.push_back(t);
-        }
-      }
-    }
-  }
-  // The conditioning of the roots: a quadratic's a, b, c and discriminant, when it has one.
-  widen_.assign(ref_.size(), 0);
-  double spread = 0;  // how far apart a double root's two computed roots may lie
-  if (shape_) {
-    std::optional<Shape::QuadraticSteps> q = shape_->quadratic();
-    Derivation d;
-    try {
-      if (q) d = shape_->derive(ray_, q->method);
-    } catch (const Error&) {
-    }
-    const Step *a = q ? d.find(q->a) : nullptr, *b = q ? d.find(q->b) : nullptr,
-               *c = q ? d.find(q->c) : nullptr;
-    if (a && b && c && a->value.is_scalar() && a->value.scalar != 0) {
-      double A = a->value.scalar, B = b->value.scalar, C = c->value.scalar;
-      double disc = std::max(0.0, B * B - 4 * A * C);
-      double delta = kTangentInputError * (B * B + 4 * std::abs(A * C));
-      double w = (std::sqrt(disc + delta) - std::sqrt(disc)) / (2 * std::abs(A));
-      widen_.assign(ref_.size(), w);
-      double spread_limit = kDoubleRootDiscriminant * (B * B + 4 * std::abs(A * C));
-      double_root_ = ref_.size() == 1 && std::abs(B * B - 4 * A * C) <= spread_limit;
-      if (double_root_) spread = std::sqrt(spread_limit) / std::abs(A);
-    }
-  }
-  // A widened tolerance never reaches another candidate: at most half way to the nearest
-  // one, however near (when the problem's own tolerance already spans both, that tolerance
-  // stands, and nothing is added to it). A candidate within `same` of a hit is that hit,
-  // computed by another method (or a tangent's double root).
-  auto same = [&](double a, double b) {
-    return std::abs(a - b) <= std::max(spread, kSameRoot * (1 + std::abs(b)));
-  };
-  for (std::size_t j = 0; j < ref_.size(); ++j) {
-    for (double c : candidates) {
-      if (!same(c, ref_[j].t)) {
-        widen_[j] = std::min(widen_[j], kWideningReach * std::abs(c - ref_[j].t));
-      }
-    }
-  }
+  context_.points = read_points_policy(p, default_points(p.kind, names));
+  std::vector<const Shape*> shapes = read_reference();
+  std::vector<double> surface;
+  collect_candidates(shapes, surface);
+  spread_ = read_conditioning();
+  limit_widening();
   for (std::size_t k = 0; k < shapes.size() && first_hit_; ++k) {
     if (static_cast<int>(k) == ref_object_) continue;
     for (const auto& h : shapes[k]->intersect(ray_).hits)
       other_objects_.emplace_back(names_[k], h.t);
   }
-  candidates_ = candidates;
   if (const auto* moved = dynamic_cast<const TransformedShape*>(shape_)) {
     double k = length(moved->transform().ray_to_object(ray_).direction);
     double dlen = length(ray_.direction);
@@ -251,26 +188,130 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()), conventions_(p.c
   // not the hit. (A derivation's other roots, a cap's plane where the ray misses the cap, say,
   // are no point of any surface, and only limit the widening.)
   for (double c : surface) {
-    if (std::none_of(ref_.begin(), ref_.end(), [&](const Hit& h) { return same(c, h.t); })) {
+    if (std::none_of(ref_.begin(), ref_.end(), [&](const Hit& h) { return same_root(c, h.t); })) {
       others_.push_back(c);
     }
   }
-  // One display precision for every number of a message: without the problem's own, the
-  // decimals that show the smallest hit's t with four significant figures (7.268 and 10.732,
-  // not 7.268 beside 10.73).
-  if (p.precision < 0) {
-    double smallest = 0;
-    for (const auto& h : ref_) {
-      if (h.t != 0 && (smallest == 0 || std::abs(h.t) < smallest)) smallest = std::abs(h.t);
-    }
-    if (smallest > 0) {
-      numbers_.decimals =
-          std::clamp(kDisplayFigures - 1 - static_cast<int>(std::floor(std::log10(smallest))), 0,
-                     kMaxDisplayDecimals);
-    }
-  }
+  if (p.precision < 0) choose_display_decimals();
   if (!first_hit_) methods_ = solutions_by_method(*task_);
   mistaken_ = mistaken_solutions(*task_);
+}
+
+// The reference: the hits of the one object, or the first hit of the first object hit. Returns
+// every object of the problem.
+std::vector<const Shape*> HitsGrader::read_reference() {
+  std::vector<const Shape*> shapes;
+  if (auto* it = dynamic_cast<const IntersectTask*>(task_)) {
+    ray_ = it->ray();
+    Intersection x = it->object().intersect(ray_);
+    ref_ = x.hits;
+    contained_ = x.contained;
+    shape_ = &it->object();
+    shapes.push_back(shape_);
+    return shapes;
+  }
+  auto& fh = dynamic_cast<const FirstHitTask&>(*task_);
+  first_hit_ = true;
+  ray_ = fh.ray();
+  FirstHit f = first_hit(ray_, fh.objects());
+  for (const auto& o : fh.objects()) {
+    names_.push_back(o.name);
+    shapes.push_back(o.shape.get());
+  }
+  ref_object_ = f.index;
+  if (f.index >= 0) {
+    ref_.push_back(f.hit);
+    shape_ = fh.objects()[static_cast<std::size_t>(f.index)].shape.get();
+  }
+  return shapes;
+}
+
+// Roots every method computes, kept when they are not hits: behind the origin, or far. All of
+// them, and every object's hits, are the candidates a widened tolerance must not reach; the
+// hits alone are the points of a surface.
+void HitsGrader::collect_candidates(const std::vector<const Shape*>& shapes,
+                                    std::vector<double>& surface) {
+  for (const Shape* s : shapes) {
+    Intersection x = s->intersect(ray_);
+    for (const auto& h : x.hits) {
+      candidates_.push_back(h.t);
+      surface.push_back(h.t);
+    }
+    for (const auto& m : s->methods()) {
+      Derivation d;
+      try {
+        d = s->derive(ray_, m);
+      } catch (const Error&) {
+        continue;  // a method that does not apply to this ray
+      }
+      for (double t : derivation_roots(d)) {
+        candidates_.push_back(t);
+        if (t < ray_.t_min) behind_.push_back(t);
+        if (first_hit_ && !x.hits.empty() && t > x.hits.front().t + 1e-9 * (1 + std::abs(t))) {
+          far_.push_back(t);
+        }
+      }
+    }
+  }
+}
+
+// The conditioning of the roots: a quadratic's a, b, c and discriminant, when it has one, set
+// each hit's widening and whether it is a double root. Returns how far apart a double root's
+// two computed roots may lie.
+double HitsGrader::read_conditioning() {
+  widen_.assign(ref_.size(), 0);
+  if (!shape_) return 0;
+  std::optional<Shape::QuadraticSteps> q = shape_->quadratic();
+  Derivation d;
+  try {
+    if (q) d = shape_->derive(ray_, q->method);
+  } catch (const Error&) {
+  }
+  const Step *a = q ? d.find(q->a) : nullptr, *b = q ? d.find(q->b) : nullptr,
+             *c = q ? d.find(q->c) : nullptr;
+  if (!(a && b && c && a->value.is_scalar() && a->value.scalar != 0)) return 0;
+  double A = a->value.scalar, B = b->value.scalar, C = c->value.scalar;
+  double disc = std::max(0.0, B * B - 4 * A * C);
+  double delta = kTangentInputError * (B * B + 4 * std::abs(A * C));
+  double w = (std::sqrt(disc + delta) - std::sqrt(disc)) / (2 * std::abs(A));
+  widen_.assign(ref_.size(), w);
+  double spread_limit = kDoubleRootDiscriminant * (B * B + 4 * std::abs(A * C));
+  double_root_ = ref_.size() == 1 && std::abs(B * B - 4 * A * C) <= spread_limit;
+  return double_root_ ? std::sqrt(spread_limit) / std::abs(A) : 0;
+}
+
+// A candidate within this of a hit is that hit, computed by another method (or a tangent's
+// double root).
+bool HitsGrader::same_root(double a, double b) const {
+  return std::abs(a - b) <= std::max(spread_, kSameRoot * (1 + std::abs(b)));
+}
+
+// A widened tolerance never reaches another candidate: at most half way to the nearest one,
+// however near (when the problem's own tolerance already spans both, that tolerance stands,
+// and nothing is added to it).
+void HitsGrader::limit_widening() {
+  for (std::size_t j = 0; j < ref_.size(); ++j) {
+    for (double c : candidates_) {
+      if (!same_root(c, ref_[j].t)) {
+        widen_[j] = std::min(widen_[j], kWideningReach * std::abs(c - ref_[j].t));
+      }
+    }
+  }
+}
+
+// One display precision for every number of a message: without the problem's own, the
+// decimals that show the smallest hit's t with four significant figures (7.268 and 10.732, not
+// 7.268 beside 10.73).
+void HitsGrader::choose_display_decimals() {
+  double smallest = 0;
+  for (const auto& h : ref_) {
+    if (h.t != 0 && (smallest == 0 || std::abs(h.t) < smallest)) smallest = std::abs(h.t);
+  }
+  if (smallest > 0) {
+    numbers_.decimals =
+        std::clamp(kDisplayFigures - 1 - static_cast<int>(std::floor(std::log10(smallest))), 0,
+                   kMaxDisplayDecimals);
+  }
 }
 
 // The reference hit whose barycentric weights a hit gives ((w_a, w_b, w_c), or u = w_b and
@@ -560,29 +601,41 @@ std::vector<Reading> HitsGrader::readings_of(const StudentNumber& t, std::size_t
 
 void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrade* steps,
                             GradeResult& out) const {
+  std::size_t n_stu = hits.size();
+  TMatch m = match_t(hits);
+  bool any_t = grade_t(hits, steps, m, out);
+  // Points and normals of the hits the student found; when no t was given, matched by point.
+  if (!any_t) match_by_point(hits, m);
+  Tally points, normals;
+  for (std::size_t i = 0; i < n_stu; ++i) {
+    const StudentHit& h = hits[i];
+    if (h.point) grade_point(h, m.match[i], m.match, points, out);
+    if (h.normal) grade_normal(h, m.match[i], normals, out);
+  }
+  add_part("point", std::move(points), n_stu, out);
+  add_part("normal", std::move(normals), n_stu, out);
+  grade_barycentric(hits, m.match, out);
+}
+
+// Match t values to reference hits regardless of order.
+HitsGrader::TMatch HitsGrader::match_t(const std::vector<StudentHit>& hits) const {
   const Tolerance& tt = context_.tolerance.for_field("t");
-  const Tolerance& tp = context_.tolerance.for_field("point");
   std::size_t n_ref = ref_.size(), n_stu = hits.size();
-  std::vector<int> match(n_stu, -1);
-  std::vector<bool> used(n_ref, false);
-  std::vector<Match> verdict(n_stu, Match::kWrong);
-  std::vector<std::string> t_feedback;
-  bool any_t = false;
-  // A mistake found in t is named, and said in the part's feedback too.
-  auto t_mistake = [&](const FoundMistake& m) {
-    t_feedback.push_back(m.message);
-    out.mistakes.push_back(m);
-  };
-  // Match t values to reference hits regardless of order: right matches first, then those
-  // right to the digits given; each value to the nearest free hit it fits.
+  TMatch m;
+  m.match.assign(n_stu, -1);
+  m.used.assign(n_ref, false);
+  m.verdict.assign(n_stu, Match::kWrong);
+  m.twice.assign(n_stu, false);
+  // Right matches first, then those right to the digits given; each value to the nearest free
+  // hit it fits.
   for (Match wanted : {Match::kRight, Match::kInsufficientPrecision}) {
     for (std::size_t i = 0; i < n_stu; ++i) {
-      if (!hits[i].t || match[i] >= 0) continue;
+      if (!hits[i].t || m.match[i] >= 0) continue;
       double value = hits[i].t->value;
       int best = -1;
       NumberVerdict best_verdict;
       for (std::size_t j = 0; j < n_ref; ++j) {
-        if (used[j] || nearer_another_t(value, j)) continue;
+        if (m.used[j] || nearer_another_t(value, j)) continue;
         NumberVerdict v = compare_number(*hits[i].t, ref_[j].t, ref_[j].t, tt, widen_[j]);
         if (v.match != wanted) continue;
         if (best >= 0 &&
@@ -592,31 +645,44 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
         best_verdict = v;
       }
       if (best < 0) continue;
-      match[i] = best;
-      used[static_cast<std::size_t>(best)] = true;
-      verdict[i] = best_verdict.match;
+      m.match[i] = best;
+      m.used[static_cast<std::size_t>(best)] = true;
+      m.verdict[i] = best_verdict.match;
       if (best_verdict.match == Match::kInsufficientPrecision)
-        t_feedback.push_back("t: " + best_verdict.message);
+        m.feedback.push_back("t: " + best_verdict.message);
     }
   }
   // A tangent's double root listed twice (t = 5, 5), as many textbooks list it: one hit.
-  std::vector<bool> twice(n_stu, false);
-  std::size_t n_twice = 0;
-  if (double_root_ && used[0]) {
+  if (double_root_ && m.used[0]) {
     for (std::size_t i = 0; i < n_stu; ++i) {
-      if (!hits[i].t || match[i] >= 0) continue;
+      if (!hits[i].t || m.match[i] >= 0) continue;
       if (compare_number(*hits[i].t, ref_[0].t, ref_[0].t, tt, widen_[0]).match != Match::kRight)
         continue;
-      match[i] = 0;
-      verdict[i] = Match::kRight;
-      twice[i] = true;
-      ++n_twice;
-      t_feedback.push_back(fmt::format(
+      m.match[i] = 0;
+      m.verdict[i] = Match::kRight;
+      m.twice[i] = true;
+      ++m.n_twice;
+      m.feedback.push_back(fmt::format(
           "t = {} twice is right: the ray touches the surface, where the quadratic's two roots "
           "coincide (a double root); it is one hit.",
           hits[i].t->text));
     }
   }
+  return m;
+}
+
+// The part t: each matched value's credit, the rest explained (error carried forward, a named
+// mistake, another reading), and the hits not found. Returns whether any t was given.
+bool HitsGrader::grade_t(const std::vector<StudentHit>& hits, const StepsGrade* steps, TMatch& m,
+                         GradeResult& out) const {
+  const Tolerance& tt = context_.tolerance.for_field("t");
+  std::size_t n_ref = ref_.size(), n_stu = hits.size();
+  bool any_t = false;
+  // A mistake found in t is named, and said in the part's feedback too.
+  auto t_mistake = [&](const FoundMistake& mistake) {
+    m.feedback.push_back(mistake.message);
+    out.mistakes.push_back(mistake);
+  };
   double t_credit = 0;
   std::vector<double> carried_roots;
   if (steps && steps->carried) carried_roots = derivation_roots(*steps->carried);
@@ -624,16 +690,16 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
   for (std::size_t i = 0; i < n_stu; ++i) {
     if (!hits[i].t) {
       if (!hits[i].t_fault.empty())
-        t_feedback.push_back("t: " + hits[i].t_fault);
+        m.feedback.push_back("t: " + hits[i].t_fault);
       else
         without_t.push_back(i);
       continue;
     }
     any_t = true;
     const std::string& typed = hits[i].t->text;
-    if (twice[i]) continue;
-    if (match[i] >= 0) {
-      t_credit += verdict[i] == Match::kRight ? 1 : tt.precision_credit;
+    if (m.twice[i]) continue;
+    if (m.match[i] >= 0) {
+      t_credit += m.verdict[i] == Match::kRight ? 1 : tt.precision_credit;
       continue;
     }
     auto near = [&](double r) {
@@ -642,37 +708,37 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
     if (std::any_of(carried_roots.begin(), carried_roots.end(), near)) {
       t_credit += context_.points.carried_forward;
       out.carried_forward = true;
-      t_feedback.push_back(fmt::format(
+      m.feedback.push_back(fmt::format(
           "t = {} follows correctly from your own earlier steps (error carried forward).", typed));
       continue;
     }
     // A named mistake is asserted only when it is the one reading that fits.
-    std::vector<Reading> readings = readings_of(*hits[i].t, i, match);
+    std::vector<Reading> readings = readings_of(*hits[i].t, i, m.match);
     if (readings.empty()) {
-      t_feedback.push_back(fmt::format("t = {} is not a hit of this ray.", typed));
+      m.feedback.push_back(fmt::format("t = {} is not a hit of this ray.", typed));
     } else if (readings.size() == 1 && !readings.front().id.empty()) {
       t_mistake(make_mistake(readings.front().id, "t", readings.front().message));
     } else if (readings.size() == 1) {
-      t_feedback.push_back(readings.front().message);
+      m.feedback.push_back(readings.front().message);
     } else {
       std::vector<std::string> fit;
       for (const auto& x : readings) {
         fit.push_back(x.id.empty() ? x.message
                                    : fmt::format("{} ({})", mistake_info(x.id).title, x.message));
       }
-      t_feedback.push_back(fmt::format(
+      m.feedback.push_back(fmt::format(
           "t = {} is not a hit. More than one reading explains it, so none is named: {}", typed,
           fmt::join(fit, "; or ")));
     }
   }
   // Beside hits that give their t, one that gives none counts as a hit with a wrong t.
   if (any_t) {
-    for (std::size_t i : without_t) t_feedback.push_back(fmt::format("Hit {} gives no t.", i + 1));
+    for (std::size_t i : without_t) m.feedback.push_back(fmt::format("Hit {} gives no t.", i + 1));
   }
-  std::size_t denom = std::max(n_ref, n_stu - n_twice);
+  std::size_t denom = std::max(n_ref, n_stu - m.n_twice);
   for (std::size_t j = 0; j < n_ref; ++j) {
-    if (!used[j] && any_t) {
-      t_feedback.push_back(first_hit_
+    if (!m.used[j] && any_t) {
+      m.feedback.push_back(first_hit_
                                ? fmt::format("The first hit is at t = {}.", fmt_t(ref_[j].t))
                                : fmt::format("The ray also hits at t = {}.", fmt_t(ref_[j].t)));
     }
@@ -680,45 +746,40 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
   if (n_ref == 0 && n_stu == 0) {
     out.parts.push_back(make_part(context_, "t", 1, {"Right: the ray does not hit."}));
   } else if (!any_t) {
-    out.parts.push_back(missing_part(context_, "t", t_feedback.empty() ? "" : t_feedback.front()));
+    out.parts.push_back(missing_part(context_, "t", m.feedback.empty() ? "" : m.feedback.front()));
   } else {
-    if (t_credit >= static_cast<double>(denom) && n_twice == 0 && t_feedback.empty()) {
-      t_feedback.push_back(n_ref == 1 ? "Right." : "Right: every hit, in any order.");
+    if (t_credit >= static_cast<double>(denom) && m.n_twice == 0 && m.feedback.empty()) {
+      m.feedback.push_back(n_ref == 1 ? "Right." : "Right: every hit, in any order.");
     }
-    if (n_ref == 0) t_feedback.push_back("The ray does not hit this object.");
+    if (n_ref == 0) m.feedback.push_back("The ray does not hit this object.");
     out.parts.push_back(
-        make_part(context_, "t", t_credit / static_cast<double>(denom), t_feedback));
+        make_part(context_, "t", t_credit / static_cast<double>(denom), m.feedback));
   }
-  // Points and normals of the hits the student found; when no t was given, matched by point.
-  if (!any_t) {
-    for (std::size_t i = 0; i < n_stu; ++i) {
-      if (!hits[i].point || !hits[i].point->ok) continue;
-      const Vec3d& p = hits[i].point->value();
-      int best = -1;
-      for (std::size_t j = 0; j < n_ref; ++j) {
-        if (used[j] || nearer_another_point(p, j)) continue;
-        if (compare_vector(hits[i].point->c, ref_[j].point, tp, widen_point(j)).match ==
-            Match::kWrong)
-          continue;
-        if (best >= 0 &&
-            length(p - ref_[j].point) >= length(p - ref_[static_cast<std::size_t>(best)].point))
-          continue;
-        best = static_cast<int>(j);
-      }
-      if (best < 0) continue;
-      match[i] = best;
-      used[static_cast<std::size_t>(best)] = true;
-    }
-  }
-  Tally points, normals;
+  return any_t;
+}
+
+// Without any t, each student hit is matched to the nearest free reference hit by its point.
+void HitsGrader::match_by_point(const std::vector<StudentHit>& hits, TMatch& m) const {
+  const Tolerance& tp = context_.tolerance.for_field("point");
+  std::size_t n_ref = ref_.size(), n_stu = hits.size();
   for (std::size_t i = 0; i < n_stu; ++i) {
-    const StudentHit& h = hits[i];
-    if (h.point) grade_point(h, match[i], match, points, out);
-    if (h.normal) grade_normal(h, match[i], normals, out);
+    if (!hits[i].point || !hits[i].point->ok) continue;
+    const Vec3d& p = hits[i].point->value();
+    int best = -1;
+    for (std::size_t j = 0; j < n_ref; ++j) {
+      if (m.used[j] || nearer_another_point(p, j)) continue;
+      if (compare_vector(hits[i].point->c, ref_[j].point, tp, widen_point(j)).match ==
+          Match::kWrong)
+        continue;
+      if (best >= 0 &&
+          length(p - ref_[j].point) >= length(p - ref_[static_cast<std::size_t>(best)].point))
+        continue;
+      best = static_cast<int>(j);
+    }
+    if (best < 0) continue;
+    m.match[i] = best;
+    m.used[static_cast<std::size_t>(best)] = true;
   }
-  add_part("point", std::move(points), n_stu, out);
-  add_part("normal", std::move(normals), n_stu, out);
-  grade_barycentric(hits, match, out);
 }
 
 // One hit's point, matched to reference hit `jj` (or to none, −1): its credit and what is

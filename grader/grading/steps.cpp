@@ -85,6 +85,57 @@ std::optional<std::string> trivial_value(const Value& v) {
   return std::nullopt;
 }
 
+// The method whose derivation has the most of the student's step names.
+const MethodDerivation* closest_method(const std::vector<MethodDerivation>& reference,
+                                       const nlohmann::json& steps) {
+  const MethodDerivation* best = nullptr;
+  std::size_t best_count = 0;
+  for (const auto& m : reference) {
+    std::size_t count = 0;
+    for (const auto& [name, v] : steps.items()) count += m.derivation.find(name) != nullptr;
+    if (!best || count > best_count) {
+      best = &m;
+      best_count = count;
+    }
+  }
+  return best;
+}
+
+// Why a step is wrong that does not follow from the student's own earlier values: a named
+// mistake when exactly one gives the value, else the right value.
+void explain_wrong_step(const std::vector<MistakenSolution>& mistaken, const std::string& method,
+                        const Step& step, const AnswerReader& s, const Value& mine,
+                        const Tolerance& tol, const NumberFormat& fmt_numbers, StepsGrade& out,
+                        std::vector<std::string>& feedback) {
+  // A mistake is named only when it is the one that gives this value.
+  std::vector<std::string_view> fit;
+  for (const auto& ms : mistaken) {
+    if (ms.method != method || ms.parts.empty()) continue;
+    const Step* wrong = ms.parts.front().derivation.find(step.name);
+    if (!wrong || match_value(s, wrong->value, tol) != Match::kRight) continue;
+    if (std::find(fit.begin(), fit.end(), ms.id) == fit.end()) fit.push_back(ms.id);
+  }
+  if (fit.size() == 1) {
+    out.mistakes.push_back(make_mistake(
+        fit.front(), "steps/" + step.name,
+        fmt::format("you have {} = {}; the right value is {}.", step.name,
+                    format_value(mine, fmt_numbers), format_value(step.value, fmt_numbers))));
+    feedback.push_back(fmt::format("{} is wrong: see the named mistake.", step.name));
+  } else if (fit.size() > 1) {
+    std::vector<std::string> titles;
+    for (std::string_view id : fit) titles.emplace_back(mistake_info(id).title);
+    feedback.push_back(fmt::format(
+        "{} = {} is not right: it is {}. More than one slip gives your value, so none is "
+        "named: {}.",
+        step.name, format_value(mine, fmt_numbers), format_value(step.value, fmt_numbers),
+        fmt::join(titles, "; or ")));
+  } else {
+    feedback.push_back(fmt::format("{} = {} is not right: it is {}.", step.name,
+                                   format_value(mine, fmt_numbers),
+                                   format_value(step.value, fmt_numbers)));
+  }
+}
+
 }  // namespace
 
 StepsGrade grade_steps(const GradingContext& c, const Task& task,
@@ -95,17 +146,7 @@ StepsGrade grade_steps(const GradingContext& c, const Task& task,
   const Tolerance& tol = c.tolerance.for_field("steps");
   NumberFormat fmt_numbers;
   if (c.problem->precision >= 0) fmt_numbers.decimals = c.problem->precision;
-  // The method whose derivation has the most of the student's step names.
-  const MethodDerivation* best = nullptr;
-  std::size_t best_count = 0;
-  for (const auto& m : reference) {
-    std::size_t count = 0;
-    for (const auto& [name, v] : steps.json().items()) count += m.derivation.find(name) != nullptr;
-    if (!best || count > best_count) {
-      best = &m;
-      best_count = count;
-    }
-  }
+  const MethodDerivation* best = closest_method(reference, steps.json());
   std::vector<std::string> feedback;
   if (!best) {
     out.part = make_part(c, "steps", 0, {"This problem has no worked steps to compare with."});
@@ -179,33 +220,7 @@ StepsGrade grade_steps(const GradingContext& c, const Task& task,
       }
     }
     if (!carried) {
-      // A mistake is named only when it is the one that gives this value.
-      std::vector<std::string_view> fit;
-      for (const auto& ms : mistaken) {
-        if (ms.method != best->method || ms.parts.empty()) continue;
-        const Step* wrong = ms.parts.front().derivation.find(step.name);
-        if (!wrong || match_value(s, wrong->value, tol) != Match::kRight) continue;
-        if (std::find(fit.begin(), fit.end(), ms.id) == fit.end()) fit.push_back(ms.id);
-      }
-      if (fit.size() == 1) {
-        out.mistakes.push_back(make_mistake(
-            fit.front(), "steps/" + step.name,
-            fmt::format("you have {} = {}; the right value is {}.", step.name,
-                        format_value(*mine, fmt_numbers), format_value(step.value, fmt_numbers))));
-        feedback.push_back(fmt::format("{} is wrong: see the named mistake.", step.name));
-      } else if (fit.size() > 1) {
-        std::vector<std::string> titles;
-        for (std::string_view id : fit) titles.emplace_back(mistake_info(id).title);
-        feedback.push_back(fmt::format(
-            "{} = {} is not right: it is {}. More than one slip gives your value, so none is "
-            "named: {}.",
-            step.name, format_value(*mine, fmt_numbers), format_value(step.value, fmt_numbers),
-            fmt::join(titles, "; or ")));
-      } else {
-        feedback.push_back(fmt::format("{} = {} is not right: it is {}.", step.name,
-                                       format_value(*mine, fmt_numbers),
-                                       format_value(step.value, fmt_numbers)));
-      }
+      explain_wrong_step(mistaken, best->method, step, s, *mine, tol, fmt_numbers, out, feedback);
     }
     out.wrong.push_back(step.name);
     if (std::optional<std::string> trivial = trivial_value(*mine)) {
