@@ -22,13 +22,8 @@ std::shared_ptr<ExprNode> make(Op op, std::vector<E> args = {}) {
 
 E wrap(std::shared_ptr<ExprNode> n) { return E(std::shared_ptr<const ExprNode>(std::move(n))); }
 
-// Values a formula cannot take (a vector where a number goes, a symbol with no value). A
-// mistake's rewritten formula or a student's own values cause it, and the graders that try
-// those catch it as an Error; one that reaches a user keeps the code "internal", which the CLI
-// and the batch report as raygrade's fault (exit 3), never the file's.
-[[noreturn]] void defect(const std::string& what) {
-  throw Error(Diagnostic{"", "", 0, 0, Severity::kError, "derivation: " + what, "internal"});
-}
+// Values a formula cannot take (expr.h, EvaluationFault).
+[[noreturn]] void defect(const std::string& what) { throw EvaluationFault("derivation: " + what); }
 
 }  // namespace
 
@@ -272,7 +267,7 @@ std::optional<E> cross_components(const ExprNode& n, const RenderOptions& o) {
   try {
     a = evaluate(n.args[0], *o.substitute);
     b = evaluate(n.args[1], *o.substitute);
-  } catch (const Error&) {
+  } catch (const EvaluationFault&) {
     return std::nullopt;
   }
   if (!a.is_vector() || !b.is_vector()) return std::nullopt;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/internal_error.h"
 #include "derivation/number_format.h"
 #include "derivation/value.h"
 
@@ -99,6 +100,16 @@ using Env = std::map<std::string, Value, std::less<>>;
 
 // Evaluates a formula; symbols come from `env`. Throws Error on a type mismatch or an unknown
 // symbol (a defect in the derivation code, never in user input).
+// A formula evaluated with values it cannot take: a vector where a number goes, a symbol with
+// no value. In raygrade's own derivations that is a bug of raygrade (an InternalError: exit 3,
+// and a batch sets the one submission aside); only the readings that rewrite a formula (a named
+// mistake) or substitute a student's own values catch it, as "this reading does not apply".
+class EvaluationFault : public InternalError {
+ public:
+  using InternalError::InternalError;
+};
+
+// Throws EvaluationFault on a formula its values do not fit.
 Value evaluate(const E& e, const Env& env);
 
 // How to show a symbol: as itself, or (when substituting) as its value.

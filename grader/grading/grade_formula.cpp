@@ -80,7 +80,7 @@ class FormulaGrader final : public KindGrader {
         std::vector<double> values;
         try {
           for (const auto& env : envs) values.push_back(evaluate(*wrong, env).scalar);
-        } catch (const Error&) {
+        } catch (const EvaluationFault&) {  // the mistake does not apply to this formula
           continue;
         }
         if (!agree(values, out.reference)) out.mistakes.emplace_back(fm.id, std::move(values));

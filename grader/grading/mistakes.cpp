@@ -242,6 +242,8 @@ std::vector<MistakenSolution> mistaken_solutions(const Task& task) {
           out.push_back(MistakenSolution{std::string(fm.id), method, std::move(parts)});
         }
       } catch (const Error&) {
+        // The mistake takes the derivation off the method's way (no root where one was).
+      } catch (const EvaluationFault&) {
         // The mistake makes the derivation meaningless here (a vector where a number was).
       }
     }

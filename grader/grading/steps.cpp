@@ -51,6 +51,8 @@ std::vector<SolutionPart> derive_or_nothing(const Task& task, const std::string&
     return task.derive(method, &own);
   } catch (const Error&) {
     return {};
+  } catch (const EvaluationFault&) {
+    return {};
   }
 }
 
