@@ -9,6 +9,7 @@
 
 #include "assignments/roster.h"
 #include "core/atomic_file.h"
+#include "core/escape.h"
 #include "json/cursor.h"
 #include "json/source.h"
 
@@ -200,6 +201,55 @@ void write_entries(const std::filesystem::path& folder, const std::vector<ZipEnt
                      perms::others_exec
                : perms::owner_read | perms::owner_write | perms::group_read | perms::others_read);
   }
+}
+
+namespace {
+
+LmsPackage gradescope_package(const LmsExportInput& in, const std::string& out) {
+  std::vector<ZipEntry> entries =
+      gradescope_autograder(*in.spec, in.bank->bank, in.binary, in.roster);
+  LmsPackage p;
+  for (const auto& e : entries) p.files.push_back({"autograder/" + e.name, e.bytes, e.executable});
+  p.files.push_back({"autograder.zip", zip_archive(entries), false});
+  p.next_step = fmt::format(
+      "Wrote {0}/autograder.zip (and the same files in {0}/autograder/): {1} problems of {2}, "
+      "raygrade from {3}. Upload the zip as the autograder of a Gradescope programming "
+      "assignment.",
+      out, in.spec->problems.size(), in.spec->id, in.binary.string());
+  return p;
+}
+
+LmsPackage prairielearn_package(const LmsExportInput& in, const std::string& out) {
+  LmsPackage p;
+  p.files = prairielearn_course(*in.spec, in.bank->problems, in.bank->bank, in.binary);
+  p.next_step = fmt::format(
+      "Wrote {0}/questions/{1}/ ({2} questions) and {0}/serverFilesCourse/raygrade/ (raygrade "
+      "from {3}). Copy both folders into the PrairieLearn course's repository and list the "
+      "questions in an assessment.",
+      out, safe_file_name(in.spec->id), in.spec->problems.size(), in.binary.string());
+  return p;
+}
+
+}  // namespace
+
+const std::vector<LmsExport>& lms_exports() {
+  static const std::vector<LmsExport> table = {
+      {"gradescope", "Gradescope",
+       "the autograder zip of a programming assignment (setup.sh, run_autograder, raygrade, the "
+       "assignment and its bank)",
+       true, &gradescope_package},
+      {"prairielearn", "PrairieLearn",
+       "one question per problem, with raygrade in serverFilesCourse", false,
+       &prairielearn_package},
+  };
+  return table;
+}
+
+const LmsExport* find_lms_export(std::string_view name) {
+  for (const LmsExport& e : lms_exports()) {
+    if (e.name == name) return &e;
+  }
+  return nullptr;
 }
 
 }  // namespace raygrade

@@ -59,6 +59,35 @@ std::vector<ZipEntry> prairielearn_course(const AssignmentSpec& spec,
                                           const std::vector<const Problem*>& problems,
                                           const Bank& bank, const std::filesystem::path& binary);
 
+// What an export is made from.
+struct LmsExportInput {
+  const AssignmentSpec* spec = nullptr;
+  const AssignmentBank* bank = nullptr;
+  std::filesystem::path binary;  // the static raygrade to ship
+  std::string roster;            // a roster CSV, for the platforms that take one
+};
+
+// One export: the files to write, as paths under the --out folder, and what to tell the
+// instructor to do with them.
+struct LmsPackage {
+  std::vector<ZipEntry> files;
+  std::string next_step;
+};
+
+// One learning platform raygrade exports to: one row of lms_exports(). `raygrade export`, its
+// help and its errors take the platforms from the table.
+struct LmsExport {
+  std::string_view name;   // on the command line: "gradescope"
+  std::string_view title;  // in sentences: "Gradescope"
+  std::string_view summary;
+  bool takes_roster = false;
+  // Throws Error when a file cannot be read or the input is faulty; `out` is the folder the
+  // files go to, for the sentence that says so.
+  LmsPackage (*make)(const LmsExportInput& in, const std::string& out);
+};
+const std::vector<LmsExport>& lms_exports();
+const LmsExport* find_lms_export(std::string_view name);
+
 // Writes the entries under `folder` (executables with mode 0755).
 void write_entries(const std::filesystem::path& folder, const std::vector<ZipEntry>& entries);
 

@@ -1,13 +1,11 @@
 // raygrade export: an assignment made ready for a learning platform (Gradescope, PrairieLearn).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <filesystem>
 
 #include "assignments/lms_export.h"
 #include "cli/command.h"
-#include "core/atomic_file.h"
-#include "core/escape.h"
-#include "core/zip.h"
 
 namespace raygrade::cli {
 namespace {
@@ -20,14 +18,24 @@ struct ExportOptions {
   std::string roster;  // Gradescope: the class roster, which ties accounts to student ids
 };
 
+// The platforms' names, for help and errors: "gradescope, prairielearn".
+std::string platform_names() {
+  std::vector<std::string> names;
+  for (const LmsExport& e : lms_exports()) names.emplace_back(e.name);
+  return fmt::format("{}", fmt::join(names, ", "));
+}
+
 int run_export(const ExportOptions& o) {
-  bool gradescope = o.platform == "gradescope";
-  if (!gradescope && o.platform != "prairielearn") {
-    fmt::print(stderr, "raygrade export: unknown platform '{}' (gradescope, prairielearn)\n",
-               o.platform);
+  const LmsExport* platform = find_lms_export(o.platform);
+  if (!platform) {
+    fmt::print(stderr, "raygrade export: unknown platform '{}' ({})\n", o.platform,
+               platform_names());
     return kExitBadInput;
   }
-  std::string platform = gradescope ? "Gradescope" : "PrairieLearn";
+  if (!o.roster.empty() && !platform->takes_roster) {
+    fmt::print(stderr, "raygrade export: {} takes no --roster\n", platform->name);
+    return kExitBadInput;
+  }
   std::filesystem::path binary;
   if (!o.binary.empty()) {
     binary = o.binary;
@@ -35,7 +43,7 @@ int run_export(const ExportOptions& o) {
       fmt::print(stderr,
                  "raygrade export: warning: {} is not a statically linked executable; it may "
                  "not run on {}'s servers\n",
-                 o.binary, platform);
+                 o.binary, platform->title);
     }
   } else {
     std::error_code ec;
@@ -46,7 +54,7 @@ int run_export(const ExportOptions& o) {
                  "raygrade export: no statically linked raygrade found (this one, {}, links "
                  "shared libraries that {}'s servers may lack). Build it with `cmake --preset "
                  "static && cmake --build --preset static`, or give --binary PATH.\n",
-                 running.string(), platform);
+                 running.string(), platform->title);
       return kExitBadInput;
     }
     binary = *found;
@@ -58,24 +66,9 @@ int run_export(const ExportOptions& o) {
       for (const auto& e : bank.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
       return kExitBadInput;
     }
-    std::filesystem::path out(o.out);
-    if (gradescope) {
-      std::vector<ZipEntry> entries = gradescope_autograder(spec, bank.bank, binary, o.roster);
-      write_entries(out / "autograder", entries);
-      write_file_atomically(out / "autograder.zip", zip_archive(entries));
-      fmt::print(stderr,
-                 "Wrote {0}/autograder.zip (and the same files in {0}/autograder/): {1} "
-                 "problems of {2}, raygrade from {3}. Upload the zip as the autograder of a "
-                 "Gradescope programming assignment.\n",
-                 o.out, spec.problems.size(), spec.id, binary.string());
-    } else {
-      write_entries(out, prairielearn_course(spec, bank.problems, bank.bank, binary));
-      fmt::print(stderr,
-                 "Wrote {0}/questions/{1}/ ({2} questions) and {0}/serverFilesCourse/raygrade/ "
-                 "(raygrade from {3}). Copy both folders into the PrairieLearn course's "
-                 "repository and list the questions in an assessment.\n",
-                 o.out, safe_file_name(spec.id), spec.problems.size(), binary.string());
-    }
+    LmsPackage package = platform->make({&spec, &bank, binary, o.roster}, o.out);
+    write_entries(o.out, package.files);
+    fmt::print(stderr, "{}\n", package.next_step);
   } catch (const Error& e) {
     fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
     return kExitBadInput;
@@ -90,7 +83,7 @@ int run_export(const ExportOptions& o) {
 
 Runner setup_export(CLI::App& sub) {
   auto o = std::make_shared<ExportOptions>();
-  sub.add_option("platform", o->platform, "gradescope or prairielearn")->required();
+  sub.add_option("platform", o->platform, "the platform: " + platform_names())->required();
   sub.add_option("assignment", o->assignment, "the assignment file")->required();
   sub.add_option("--out", o->out, "the folder to write into")->required();
   sub.add_option("--binary", o->binary,
@@ -98,13 +91,7 @@ Runner setup_export(CLI::App& sub) {
   sub.add_option("--roster", o->roster,
                  "gradescope: the roster CSV the handouts were written from (id, name, email); "
                  "needed when each student has their own numbers");
-  return [o] {
-    if (!o->roster.empty() && o->platform != "gradescope") {
-      fmt::print(stderr, "raygrade export: --roster goes with gradescope\n");
-      return static_cast<int>(kExitBadInput);
-    }
-    return run_export(*o);
-  };
+  return [o] { return run_export(*o); };
 }
 
 }  // namespace raygrade::cli
