@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <regex>
 #include <set>
 
 #include "core/error.h"
@@ -276,6 +278,47 @@ TEST(Mistakes, UnknownIdIsAnInternalErrorNotBadInput) {
   } catch (const InternalError&) {
   }
   EXPECT_FALSE(reported_as_input);
+}
+
+}  // namespace
+}  // namespace raygrade
+
+namespace raygrade {
+namespace {
+
+// Every mistake id the code names is in the catalogue. The places a named mistake starts from
+// are read in the sources: make_mistake("id", ...), mistake_info("id"), `id = "id"`, a reading
+// {"id", ...} pushed onto `readings`, and a primitive's normal rule {"id", ...}. An id written
+// there that the catalogue lacks would only fail when a student made that mistake.
+TEST(Mistakes, EveryIdTheCodeNamesIsInTheCatalogue) {
+  std::set<std::string> catalogue;
+  for (const auto& m : mistake_catalogue()) catalogue.emplace(m.id);
+  const std::regex uses[] = {
+      std::regex(R"re(make_mistake\(\s*"([^"]*)")re"),
+      std::regex(R"re(mistake_info\(\s*"([^"]*)")re"),
+      std::regex(R"re(\bid\s*=\s*"([^"]*)")re"),
+      std::regex(R"re(readings\.push_back\(\s*\{\s*"([^"]+)")re"),
+      std::regex(R"re(normal_rule\(\)[^{;]*\{\s*return\s*\{\s*"([^"]*)")re"),
+  };
+  int found = 0;
+  std::vector<std::string> unknown;
+  for (const char* folder : {"grader/grading", "grader/shapes", "grader/kinds", "grader/scenes"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(testing::kSource + "/" + folder)) {
+      std::string text = testing::read_all(entry.path());
+      for (const auto& use : uses) {
+        for (std::sregex_iterator it(text.begin(), text.end(), use), end; it != end; ++it) {
+          std::string id = (*it)[1];
+          ++found;
+          if (!catalogue.count(id)) {
+            unknown.push_back(fmt::format("{}: '{}'", entry.path().filename().string(), id));
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GE(found, 20) << "the scan finds the places mistakes are named: has their form changed?";
+  EXPECT_TRUE(unknown.empty()) << "ids the catalogue lacks: "
+                               << fmt::format("{}", fmt::join(unknown, "; "));
 }
 
 }  // namespace
