@@ -137,19 +137,7 @@ std::string_view CameraRayKind::schema() {
       "$ref": "#/$defs/camera"
     },
     "pixel": {
-      "type": "array",
-      "items": {
-        "anyOf": [
-          {
-            "type": "number"
-          },
-          {
-            "$ref": "#/$defs/expression"
-          }
-        ]
-      },
-      "minItems": 2,
-      "maxItems": 2
+      "$ref": "#/$defs/pixel"
     },
     "convention": {
       "enum": [

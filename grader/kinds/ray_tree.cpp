@@ -395,19 +395,7 @@ std::string_view RayTreeKind::schema() {
       ]
     },
     "pixel": {
-      "type": "array",
-      "items": {
-        "anyOf": [
-          {
-            "type": "number"
-          },
-          {
-            "$ref": "#/$defs/expression"
-          }
-        ]
-      },
-      "minItems": 2,
-      "maxItems": 2
+      "$ref": "#/$defs/pixel"
     },
     "convention": {
       "enum": [

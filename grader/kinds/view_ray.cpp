@@ -332,19 +332,7 @@ std::string_view ViewRayKind::schema() {
       "$ref": "#/$defs/view_camera"
     },
     "pixel": {
-      "type": "array",
-      "items": {
-        "anyOf": [
-          {
-            "type": "number"
-          },
-          {
-            "$ref": "#/$defs/expression"
-          }
-        ]
-      },
-      "minItems": 2,
-      "maxItems": 2
+      "$ref": "#/$defs/pixel"
     },
     "convention": {
       "enum": [
