@@ -288,7 +288,7 @@ namespace {
 
 // Every mistake id the code names is in the catalogue. The places a named mistake starts from
 // are read in the sources: make_mistake("id", ...), mistake_info("id"), `id = "id"`, a reading
-// {"id", ...} pushed onto `readings`, and a primitive's normal rule {"id", ...}. An id written
+// {"id", ...} pushed onto `readings`, and a primitive's kNormalMistake. An id written
 // there that the catalogue lacks would only fail when a student made that mistake.
 TEST(Mistakes, EveryIdTheCodeNamesIsInTheCatalogue) {
   std::set<std::string> catalogue;
@@ -298,7 +298,7 @@ TEST(Mistakes, EveryIdTheCodeNamesIsInTheCatalogue) {
       std::regex(R"re(mistake_info\(\s*"([^"]*)")re"),
       std::regex(R"re(\bid\s*=\s*"([^"]*)")re"),
       std::regex(R"re(readings\.push_back\(\s*\{\s*"([^"]+)")re"),
-      std::regex(R"re(normal_rule\(\)[^{;]*\{\s*return\s*\{\s*"([^"]*)")re"),
+      std::regex(R"re(kNormalMistake\s*=\s*"([^"]*)")re"),
   };
   int found = 0;
   std::vector<std::string> unknown;

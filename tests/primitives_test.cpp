@@ -128,7 +128,7 @@ void check_primitive() {
     for (auto& c : flipped["hits"][0]["normal"]) c = -c.get<double>();
     GradeResult wrong = grade_answer(p, flipped);
     EXPECT_LT(wrong.score, wrong.max_score);
-    std::string mistake = shape->normal_rule().mistake;
+    std::string mistake = normal_rule(shape->type()).mistake;
     if (!mistake.empty()) {
       EXPECT_TRUE(wrong.has_mistake(mistake)) << mistake;
     }

@@ -433,7 +433,7 @@ void HitsGrader::grade(const AnswerReader& a, GradeResult& out) const {
 // and most ray tracers report that as no intersection; others as the line. By default both
 // are right, with a note that teaches the case; the problem's convention may make one strict.
 void HitsGrader::grade_contained(bool says_line, bool no_hits, GradeResult& out) const {
-  std::string line = shape_ ? shape_->contained_line()
+  std::string line = shape_ ? contained_line(shape_->type())
                             : "The ray lies in the object's plane: it meets it along a whole line";
   using C = Conventions::Contained;
   double credit = 1;
@@ -874,7 +874,7 @@ void HitsGrader::grade_normal(const StudentHit& h, int jj, Tally& tally, GradeRe
     tally.credit += tn.precision_credit;
     tally.feedback.push_back("normal: " + dv.verdict.message);
   } else if (dv.opposite) {
-    Shape::NormalRule rule = shape_ ? shape_->normal_rule() : Shape::NormalRule{};
+    NormalRule rule = shape_ ? normal_rule_of(*shape_) : NormalRule{};
     if (!rule.mistake.empty()) {
       const std::string& id = rule.mistake;
       out.mistakes.push_back(make_mistake(

@@ -102,7 +102,9 @@ std::optional<Vec3d> NormalTask::normal_by_matrix() const {
   return wrong;
 }
 
-bool NormalTask::solid() const { return primitive().normal_rule().mistake == "inward-normal"; }
+bool NormalTask::solid() const {
+  return normal_rule(primitive().type()).mistake == "inward-normal";
+}
 
 nlohmann::json NormalTask::answer() const {
   nlohmann::json j = {{"normal", vec_json(world_normal())}};

@@ -72,11 +72,9 @@ class Box final : public Shape {
 
   std::string_view type() const override { return kType; }
   bool solid() const override { return true; }
-  NormalRule normal_rule() const override {
-    return {"inward-normal",
-            " A box's outward normal is the axis of the slab hit, pointing away from the box's "
-            "centre."};
-  }
+  static constexpr std::string_view kNormalMistake = "inward-normal";
+  static constexpr std::string_view kNormalSentence =
+      " A box's outward normal is the axis of the slab hit, pointing away from the box's centre.";
   Intersection intersect(const Ray& ray) const override;
   std::vector<std::string> methods() const override { return {"slab"}; }
   Derivation derive(const Ray& ray, std::string_view method,

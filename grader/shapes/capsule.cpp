@@ -38,12 +38,6 @@ nlohmann::json Capsule::to_json() const {
           {"radius", radius_}};
 }
 
-Shape::NormalRule Capsule::normal_rule() const {
-  return {"inward-normal",
-          " A capsule's outward normal is (P − Q)/r, Q the nearest point of the segment ab: on "
-          "the side the foot of P on the axis, on an end that end's centre a or b."};
-}
-
 Intersection Capsule::intersect(const Ray& ray) const {
   if (std::optional<Intersection> x = intersect_rescaled(*this, ray)) return *x;
   Intersection out;

@@ -108,7 +108,10 @@ class Capsule final : public Shape {
   double extent() const override { return height_ / 2 + radius_; }
   void sketch(Sketch& figure, const std::string& label) const override;
   bool solid() const override { return true; }
-  NormalRule normal_rule() const override;
+  static constexpr std::string_view kNormalMistake = "inward-normal";
+  static constexpr std::string_view kNormalSentence =
+      " A capsule's outward normal is (P − Q)/r, Q the nearest point of the segment ab: on "
+      "the side the foot of P on the axis, on an end that end's centre a or b.";
   std::optional<QuadraticSteps> quadratic() const override { return QuadraticSteps{}; }
 
  private:

@@ -48,17 +48,6 @@ nlohmann::json Cone::to_json() const {
   return j;
 }
 
-Shape::NormalRule Cone::normal_rule() const {
-  return {"inward-normal",
-          " A cone's side has the outward normal (h·ê + r·â)/√(h² + r²), ê the unit vector across "
-          "the axis towards P; at the apex it is â; the base cap's is −â."};
-}
-
-std::string Cone::contained_line() const {
-  return "The ray runs along a line of the cone's side through its apex (a = b = c = 0): it "
-         "meets the side along a whole segment";
-}
-
 Intersection Cone::intersect(const Ray& ray) const {
   if (std::optional<Intersection> x = intersect_rescaled(*this, ray)) return *x;
   Intersection out;

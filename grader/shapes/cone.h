@@ -120,8 +120,13 @@ class Cone final : public Shape {
   void sketch(Sketch& figure, const std::string& label) const override;
   // Closed with its cap.
   bool solid() const override { return capped_; }
-  NormalRule normal_rule() const override;
-  std::string contained_line() const override;
+  static constexpr std::string_view kNormalMistake = "inward-normal";
+  static constexpr std::string_view kNormalSentence =
+      " A cone's side has the outward normal (h·ê + r·â)/√(h² + r²), ê the unit vector across "
+      "the axis towards P; at the apex it is â; the base cap's is −â.";
+  static constexpr std::string_view kContainedLine =
+      "The ray runs along a line of the cone's side through its apex (a = b = c = 0): it "
+      "meets the side along a whole segment";
   std::optional<QuadraticSteps> quadratic() const override { return QuadraticSteps{}; }
 
  private:

@@ -244,17 +244,6 @@ void Cylinder::sketch_symbols(Sketch& figure, const Ray& ray,
   figure.path({base_ + radius_ * normalized(toward), base_}, false, Ink::kGuide, "r");
 }
 
-Shape::NormalRule Cylinder::normal_rule() const {
-  return {"inward-normal",
-          " A cylinder's side has the outward normal (P − Q)/r, Q the nearest point of the axis; "
-          "a cap's is the axis direction, away from the cylinder."};
-}
-
-std::string Cylinder::contained_line() const {
-  return "The ray runs along the cylinder's side (its distance from the axis is r and it is "
-         "parallel to the axis): it meets the side along a whole line";
-}
-
 nlohmann::ordered_json Cylinder::schema() {
   return nlohmann::ordered_json::parse(R"json(
 {

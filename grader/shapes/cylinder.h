@@ -195,8 +195,13 @@ class Cylinder final : public Shape {
   std::string_view type() const override { return kType; }
   // Closed when it has a height and both caps.
   bool solid() const override { return height_.has_value() && capped_; }
-  NormalRule normal_rule() const override;
-  std::string contained_line() const override;
+  static constexpr std::string_view kNormalMistake = "inward-normal";
+  static constexpr std::string_view kNormalSentence =
+      " A cylinder's side has the outward normal (P − Q)/r, Q the nearest point of the axis; "
+      "a cap's is the axis direction, away from the cylinder.";
+  static constexpr std::string_view kContainedLine =
+      "The ray runs along the cylinder's side (its distance from the axis is r and it is "
+      "parallel to the axis): it meets the side along a whole line";
   std::optional<QuadraticSteps> quadratic() const override { return QuadraticSteps{}; }
   Intersection intersect(const Ray& ray) const override;
   std::vector<std::string> methods() const override { return {"quadratic"}; }

@@ -76,7 +76,7 @@ class Polygon final : public Shape {
 
   std::string_view type() const override { return kType; }
   // A normal the other way is the cross product's factors swapped.
-  NormalRule normal_rule() const override { return {"cross-order", ""}; }
+  static constexpr std::string_view kNormalMistake = "cross-order";
   Intersection intersect(const Ray& ray) const override;
   std::vector<std::string> methods() const override;
   Derivation derive(const Ray& ray, std::string_view method,

@@ -97,4 +97,27 @@ inline bool bounds_half_space(std::string_view type) {
   return yes;
 }
 
+// What grading says of a normal that points the wrong way on the primitive whose `type` key is
+// `type`: the named mistake (its kNormalMistake: "inward-normal" on a solid, "cross-order" on a
+// triangle or polygon; empty: none) and the sentence, led by a space, that explains the outward
+// normal (its kNormalSentence; empty: none). Teaching, not geometry: no part of Shape.
+struct NormalRule {
+  std::string mistake;
+  std::string sentence;
+};
+inline NormalRule normal_rule(std::string_view type) {
+  NormalRule rule;
+  for_each_primitive([&]<typename T>() {
+    if (type != T::kType) return;
+    if constexpr (requires { T::kNormalMistake; }) rule.mistake = T::kNormalMistake;
+    if constexpr (requires { T::kNormalSentence; }) rule.sentence = T::kNormalSentence;
+  });
+  return rule;
+}
+
+// What a ray that meets the primitive whose `type` key is `type` along a whole line does, for a
+// problem whose answer is "contained": its kContainedLine, else the flat objects' sentence (the
+// ray lies in the object's plane).
+std::string contained_line(std::string_view type);
+
 }  // namespace raygrade

@@ -48,13 +48,6 @@ std::unique_ptr<Shape> read_shape(const Cursor& object) {
   return shape;
 }
 
-std::string Shape::contained_line() const {
-  return fmt::format(
-      "The ray lies in the {0}'s plane (N·D = 0 and its origin is on the plane): it meets the {0} "
-      "along a whole line",
-      type());
-}
-
 int direction_exponent(const Vec3d& direction) { return scale_exponent(direction); }
 
 std::optional<Intersection> intersect_rescaled(const Shape& shape, const Ray& ray) {

@@ -55,19 +55,6 @@ class Shape {
   // tells entering from leaving by it. The default, for a surface that encloses nothing, is no.
   virtual bool solid() const { return false; }
 
-  // How grading names a normal that points the wrong way: the mistake's id ("inward-normal",
-  // "cross-order"; empty: no named mistake) and the sentence, led by a space, that explains the
-  // outward normal (empty: none).
-  struct NormalRule {
-    std::string mistake;
-    std::string sentence;
-  };
-  virtual NormalRule normal_rule() const { return {}; }
-
-  // What a ray that meets the object along a whole line does, for a problem whose answer is
-  // "contained". The default is the flat objects' sentence: the ray lies in the object's plane.
-  virtual std::string contained_line() const;
-
   // The steps of the quadratic a t² + b t + c = 0 whose roots are the hits, and the method that
   // derives them (empty: the default method): grading widens the tolerance of t near a tangent
   // from them. None for a primitive solved without a quadratic.

@@ -313,9 +313,8 @@ class Sphere final : public Shape {
 
   std::string_view type() const override { return kType; }
   bool solid() const override { return true; }
-  NormalRule normal_rule() const override {
-    return {"inward-normal", " A sphere's outward normal is (P − C)/r."};
-  }
+  static constexpr std::string_view kNormalMistake = "inward-normal";
+  static constexpr std::string_view kNormalSentence = " A sphere's outward normal is (P − C)/r.";
   std::optional<QuadraticSteps> quadratic() const override { return QuadraticSteps{"algebraic"}; }
   Intersection intersect(const Ray& ray) const override;
   std::vector<std::string> methods() const override { return {"geometric", "algebraic"}; }

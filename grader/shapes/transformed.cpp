@@ -44,9 +44,9 @@ E times(const std::array<E, 3>& rows, const E& v) {
 
 }  // namespace
 
-Shape::NormalRule TransformedShape::normal_rule() const {
-  NormalRule rule = object_->normal_rule();
-  if (!rule.sentence.empty()) {
+NormalRule normal_rule_of(const Shape& shape) {
+  NormalRule rule = normal_rule(shape.type());
+  if (dynamic_cast<const TransformedShape*>(&shape) && !rule.sentence.empty()) {
     rule.sentence =
         " A transformed object's outward normal is its primitive's, taken back to the world by "
         "the inverse transpose (A⁻¹)ᵀ and normalized.";

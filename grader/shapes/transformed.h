@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "shapes/primitives.h"
 #include "shapes/shape.h"
 #include "shapes/transform.h"
 
@@ -28,9 +29,6 @@ class TransformedShape final : public Shape {
   Vec3d center() const override;
   double extent() const override;
   bool solid() const override { return object_->solid(); }
-  // The primitive's mistake; its sentence on the outward normal, taken to the world.
-  NormalRule normal_rule() const override;
-  std::string contained_line() const override { return object_->contained_line(); }
   std::optional<QuadraticSteps> quadratic() const override { return object_->quadratic(); }
 
   const Shape& object() const { return *object_; }
@@ -40,5 +38,9 @@ class TransformedShape final : public Shape {
   std::unique_ptr<Shape> object_;
   Transform transform_;
 };
+
+// The normal rule of a shape's primitive (shapes/primitives.h); a transformed object's sentence
+// on the outward normal says how it is taken to the world.
+NormalRule normal_rule_of(const Shape& shape);
 
 }  // namespace raygrade
