@@ -20,6 +20,7 @@
 #include "grading/grade.h"
 #include "grading/mistakes.h"
 #include "grading/outputs.h"
+#include "problems/kind.h"
 #include "run_binary.h"
 #include "test_util.h"
 
@@ -90,6 +91,17 @@ TEST(Assignment, ParsesDueDates) {
   EXPECT_FALSE(parse_time("2026-13-01"));
   EXPECT_FALSE(parse_time("2026-12-04T24:00:00Z"));
   EXPECT_FALSE(parse_time("tomorrow"));
+}
+
+// Pages show a moment in UTC to the minute, and in ISO 8601 in a <time>'s datetime.
+TEST(Assignment, ShowsTimesInUtc) {
+  EXPECT_EQ(utc_time_text(kDue), "Friday 4 December 2026, 23:59 UTC");
+  EXPECT_EQ(iso_utc_time(kDue), "2026-12-04T23:59:00Z");
+  EXPECT_EQ(utc_time_text(0), "Thursday 1 January 1970, 00:00 UTC");
+  EXPECT_EQ(iso_utc_time(-1), "1969-12-31T23:59:59Z");
+  EXPECT_EQ(iso_utc_time(*parse_time("2024-02-29")), "2024-02-29T23:59:59Z");
+  EXPECT_EQ(utc_time_text(*parse_time("2000-03-01T00:30:00+01:00")),
+            "Tuesday 29 February 2000, 23:30 UTC");
 }
 
 TEST(Assignment, FaultsNameTheirPlace) {
@@ -592,6 +604,11 @@ TEST(Assignment, TheHandoutShowsTheStudentsNumbersAndNoAnswer) {
   Handout h = make_handout(spec, problems, &who);
   EXPECT_NE(h.html.find("Ada &lt;Lovelace&gt;"), std::string::npos);
   EXPECT_EQ(h.html.find("Ada <Lovelace>"), std::string::npos);
+  // The problems are the page's main landmark; the due date is in UTC, in a <time>.
+  EXPECT_NE(h.html.find("</header>\n<main>\n<section"), std::string::npos);
+  EXPECT_NE(h.html.find("Due <time datetime=\"2026-12-04T23:59:00Z\">Friday 4 December 2026, "
+                        "23:59 UTC</time>"),
+            std::string::npos);
   for (const auto& p : problems) {
     EXPECT_NE(h.html.find(html_escape(p.statement)), std::string::npos) << p.id;
   }
@@ -621,10 +638,54 @@ std::vector<std::string> asked_inputs(const nlohmann::json& form) {
       for (const auto& c : f["columns"]) out.push_back(c["key"]);
       continue;
     }
+    if (f["type"] == "tree") {  // the ray tree: the parts it asks
+      for (const auto& part : f["asks"]) out.push_back(part);
+      continue;
+    }
     std::string key = f["key"];
+    if (key.rfind("components/", 0) == 0) {  // components/I1/diffuse answers I1.diffuse
+      std::string rest = key.substr(11);
+      out.push_back(rest.replace(rest.find('/'), 1, "."));
+      continue;
+    }
     out.push_back(key.substr(0, key.find('/')));
   }
   return out;
+}
+
+// No kind asks for JSON: every problem of the bank, every input its kind's form can have, is
+// one of the form's types (a number, a vector, a choice ... a ray tree built point by point),
+// and every kind of the table is among them.
+TEST(Assignment, NoKindAsksForJson) {
+  Bank bundled = load_bank({std::string(RAYGRADE_SOURCE_DIR) + "/problems"});
+  const std::set<std::string> types = {"number",  "vector", "yesno", "choice", "set",
+                                       "formula", "hits",   "rows",  "tree"};
+  std::set<std::string> kinds;
+  for (const auto& p : bundled.problems) {
+    kinds.insert(p.kind);
+    for (const nlohmann::json& form : {every_input(p), answer_form(p)}) {
+      for (const auto& f : form["fields"]) {
+        EXPECT_TRUE(types.count(f["type"].get<std::string>())) << p.id << ": " << f.dump();
+        EXPECT_EQ(f["label"].get<std::string>().find("JSON"), std::string::npos) << p.id;
+      }
+    }
+  }
+  for (const auto& entry : kind_table()) {
+    EXPECT_TRUE(kinds.count(std::string(entry.name))) << entry.name << " is not in the bank";
+  }
+  // The ray trees: a tree field for each ask but hit, media and components, each with its
+  // objects and lights to choose from.
+  int trees = 0;
+  for (const auto& p : bundled.problems) {
+    nlohmann::json form = every_input(p);
+    for (const auto& f : form["fields"]) {
+      if (f["type"] != "tree") continue;
+      ++trees;
+      EXPECT_FALSE(f["objects"].empty()) << p.id;
+      EXPECT_GE(f["rows"].get<int>(), 1) << p.id;
+    }
+  }
+  EXPECT_GE(trees, 9);  // the bank's trees asked as trees
 }
 
 // A part worth 0 points is not asked: no input on the handout, in the answer template or in
@@ -642,31 +703,42 @@ TEST(Assignment, NoInputForAPartWorthNoPoints) {
   }
   for (const auto& p : drawn) all.push_back(&p);
   // Inputs that answer another part too.
-  const std::map<std::string, std::string> also = {
-      {"total_internal_reflection", "direction"}, {"object", "hit"}, {"t", "hit"}};
+  const std::multimap<std::string, std::string> also = {{"total_internal_reflection", "direction"},
+                                                        {"object", "hit"},
+                                                        {"t", "hit"},
+                                                        {"t", "media"},
+                                                        {"n1", "media"},
+                                                        {"n2", "media"}};
+  auto scored_by_other = [&](const Grader& g, const std::string& input) {
+    auto [from, to] = also.equal_range(input);
+    for (auto it = from; it != to; ++it) {
+      if (g.part_points(it->second) > 0) return true;
+    }
+    return false;
+  };
   for (const Problem* p : all) {
     Grader g(*p);
     nlohmann::json form = answer_form(*p);
     for (const auto& part : asked_inputs(form)) {
-      if (part.empty()) continue;  // the ray tree typed as JSON
-      auto other = also.find(part);
-      bool scored =
-          g.part_points(part) > 0 || (other != also.end() && g.part_points(other->second) > 0);
-      EXPECT_TRUE(scored) << p->id << ": an input for " << part << ", worth no points";
+      EXPECT_TRUE(g.part_points(part) > 0 || scored_by_other(g, part))
+          << p->id << ": an input for " << part << ", worth no points";
     }
     // The answer template: each key of its answer (and of each row of its hits).
     nlohmann::json blank = blank_answer(form);
     std::vector<std::string> keys;
     for (const auto& [key, value] : blank.items()) {
-      if (key != "hits") keys.push_back(key);
       if (key == "hits") {
         for (const auto& [column, v] : value[0].items()) keys.push_back(column);
+      } else if (key == "components") {  // {"I1": {"diffuse": ""}} answers I1.diffuse
+        for (const auto& [label, asked] : value.items()) {
+          for (const auto& [component, v] : asked.items()) keys.push_back(label + "." + component);
+        }
+      } else {
+        keys.push_back(key);
       }
     }
     for (const auto& key : keys) {
-      auto other = also.find(key);
-      EXPECT_TRUE(g.part_points(key) > 0 ||
-                  (other != also.end() && g.part_points(other->second) > 0))
+      EXPECT_TRUE(g.part_points(key) > 0 || scored_by_other(g, key))
           << p->id << ": the template has " << key << ", worth no points";
     }
   }

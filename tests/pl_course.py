@@ -1,5 +1,5 @@
 """What the PrairieLearn tests share: an exported course of the example assignment and of a
-one-problem assignment answered in JSON, and each question's server.py loaded as a module.
+one-problem assignment answered through the ray tree's inputs, and each question's server.py loaded as a module.
 
 With the environment variable RAYGRADE_PL_SERVER set to a server.py, that file replaces the
 exported one in every question (to run the tests against another version of it)."""
@@ -11,8 +11,8 @@ import shutil
 import subprocess
 import tempfile
 
-# The problem of the example's bank whose answer is typed as JSON (a ray tree).
-JSON_PROBLEM = "seed001-ray-tree"
+# The problem of the example's bank answered as a ray tree, point by point.
+TREE_PROBLEM = "seed001-ray-tree"
 
 
 def short(value, most=200):
@@ -27,25 +27,25 @@ def export(raygrade, assignment, out):
     return None if proc.returncode == 0 else f"export of {assignment} failed: {short(proc.stderr)}"
 
 
-def json_assignment(assignment, folder, name):
-    """An assignment named `name` of the example's bank with the one problem answered in
-    JSON, written into `folder`."""
+def tree_assignment(assignment, folder, name):
+    """An assignment named `name` of the example's bank with the one ray tree problem,
+    written into `folder`."""
     spec = json.loads(pathlib.Path(assignment).read_text(encoding="utf-8"))
     spec.pop("$schema", None)
     spec["assignment"] = name
     spec["bank"] = str((pathlib.Path(assignment).parent / spec["bank"]).resolve())
-    spec["problems"] = [{"id": JSON_PROBLEM, "points": 1}]
+    spec["problems"] = [{"id": TREE_PROBLEM, "points": 1}]
     path = folder / f"{name}.json"
     path.write_text(json.dumps(spec), encoding="utf-8")
     return path
 
 
 def export_courses(raygrade, assignment, tmp, name):
-    """The two courses (the example, and the JSON-answered one) in `tmp`; their folders and
+    """The two courses (the example, and the ray tree one) in `tmp`; their folders and
     the first complaint of the exports (None when both went through)."""
-    courses = [tmp / "course", tmp / "course-json"]
+    courses = [tmp / "course", tmp / "course-tree"]
     fault = export(raygrade, assignment, courses[0]) or \
-        export(raygrade, json_assignment(assignment, tmp, name), courses[1])
+        export(raygrade, tree_assignment(assignment, tmp, name), courses[1])
     return courses, fault
 
 

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <set>
 
 #include "assignments/lms_export.h"
+#include "problems/kind.h"
 #include "run_binary.h"
 
 namespace raygrade {
@@ -32,6 +34,44 @@ std::map<std::string, ZipEntry> export_hostile_names(const TempDir& dir) {
   for (auto& e : prairielearn_course(spec, bank.problems, bank.bank, dir.path() / "raygrade"))
     files[e.name] = e;
   return files;
+}
+
+// Every problem of the bank as a PrairieLearn question: none asks for JSON (no multi-line box,
+// no input that says JSON), every input is one server.py reads, and every kind is there.
+TEST(PrairieLearnExport, NoQuestionOfAnyKindAsksForJson) {
+  TempDir dir("pl-every-kind");
+  std::string bank_dir = std::string(RAYGRADE_SOURCE_DIR) + "/problems";
+  Bank bundled = load_bank({bank_dir});
+  nlohmann::json spec_json = {{"assignment", "every-kind"}, {"bank", bank_dir}};
+  for (const auto& p : bundled.problems) spec_json["problems"].push_back(p.id);
+  write_text(dir.path() / "all.json", spec_json.dump());
+  write_text(dir.path() / "raygrade", "not really a binary");
+  AssignmentSpec spec = load_assignment((dir.path() / "all.json").string());
+  AssignmentBank bank = load_assignment_bank(spec);
+  ASSERT_TRUE(bank.errors.empty());
+  const std::set<std::string> read = {"number", "vector",  "yesno", "choice",
+                                      "set",    "formula", "names"};
+  std::set<std::string> kinds;
+  int questions = 0;
+  for (auto& e : prairielearn_course(spec, bank.problems, bank.bank, dir.path() / "raygrade")) {
+    if (e.name.ends_with("/question.html")) {
+      ++questions;
+      EXPECT_EQ(e.bytes.find("JSON"), std::string::npos) << e.name;
+      EXPECT_EQ(e.bytes.find("multiline"), std::string::npos) << e.name;
+      EXPECT_EQ(e.bytes.find("textarea"), std::string::npos) << e.name;
+    } else if (e.name.ends_with("/info.json")) {
+      nlohmann::json info = nlohmann::json::parse(e.bytes);
+      kinds.insert(info["tags"].back().get<std::string>());
+    } else if (e.name.ends_with("/raygrade.json")) {
+      nlohmann::json q = nlohmann::json::parse(e.bytes);
+      EXPECT_FALSE(q["inputs"].empty()) << e.name;
+      for (const auto& in : q["inputs"]) {
+        EXPECT_TRUE(read.count(in["type"].get<std::string>())) << e.name << ": " << in.dump();
+      }
+    }
+  }
+  EXPECT_EQ(questions, static_cast<int>(bundled.problems.size()));
+  for (const auto& entry : kind_table()) EXPECT_TRUE(kinds.count(std::string(entry.name)));
 }
 
 TEST(PrairieLearnExport, WritesOneQuestionPerProblemAndTheServerFiles) {

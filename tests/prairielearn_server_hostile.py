@@ -4,7 +4,7 @@ and whatever shape PrairieLearn's data has, parse() and grade() raise nothing, a
 still draws a variant when the seed is odd.
 
 `raygrade export prairielearn` writes the example assignment's questions into a temporary
-folder, and one more question whose answer is a single JSON input (the example has none). For
+folder, and one more question, the ray tree, answered point by point. For
 every question, its server.py is imported and called with:
 - text inputs nested 1,000 brackets deep and of 100 kB: a format error on that input;
 - other odd text, and lists, dictionaries, numbers and booleans as submitted values;
@@ -30,7 +30,6 @@ from pl_course import Tally, load_server, run_on_courses, short
 
 # The seed of the ordinary variant that hostile answers are submitted to.
 SEED = 7
-# A problem of the bank answered in one JSON input (the ray tree).
 # Stands for a key left out of the data.
 MISSING = object()
 
@@ -276,8 +275,8 @@ def on_courses(raygrade, courses, tmp):
         fake_course(tmp, mode)
     folders = [(qdir, course) for course in courses for qdir in questions_of(course)]
     questions = [Question(qdir, course, i) for i, (qdir, course) in enumerate(folders)]
-    check(any("json" in q.inputs.values() for q in questions),
-          "no question has a JSON input")
+    check(any("names" in q.inputs.values() for q in questions),
+          "no question has the ray tree's inputs")
     for q in questions:
         q.params = draw(q, f"seed {SEED}") or {}
         hostile_inputs(q)
@@ -287,7 +286,7 @@ def on_courses(raygrade, courses, tmp):
 
 
 def main(raygrade, assignment):
-    return run_on_courses(raygrade, assignment, "hostile-json", TALLY, on_courses)
+    return run_on_courses(raygrade, assignment, "hostile-tree", TALLY, on_courses)
 
 
 if __name__ == "__main__":

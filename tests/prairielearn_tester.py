@@ -3,7 +3,7 @@
 without PrairieLearn.
 
 `raygrade export prairielearn` writes the example assignment's questions into a temporary folder,
-and one more question whose answer is a single JSON input (the ray tree; the example has none).
+and one more question, the ray tree, answered point by point (the example has none).
 For every question, three variant seeds and each test type (correct, incorrect, invalid), this
 does what PrairieLearn does:
 1. generate(), then the elements' prepare() and prepare(): the variant;
@@ -40,7 +40,6 @@ from pl_course import Tally, load_server, run_on_courses
 
 SEEDS = [7, 1234567, 2**31 - 1]
 TEST_TYPES = ["correct", "incorrect", "invalid"]
-# A problem of the bank answered in one JSON input (the ray tree).
 # The key of correct_answers that holds the choices' answers between generate() and prepare().
 CHOICES = "raygrade:choices"
 
@@ -475,7 +474,7 @@ def on_courses(raygrade, courses, tmp):
 
 
 def main(raygrade, assignment):
-    return run_on_courses(raygrade, assignment, "tester-json", TALLY, on_courses)
+    return run_on_courses(raygrade, assignment, "tester-tree", TALLY, on_courses)
 
 
 if __name__ == "__main__":

@@ -63,7 +63,7 @@ TEST(RayTreeGrade, DiffuseAtAShadowedPointIsWrongWithTheReason) {
   EXPECT_EQ(terms->status, PartStatus::kPartial);
   EXPECT_DOUBLE_EQ(terms->points, 0.8);  // four of the five points right
   std::string fb = all_feedback(*terms);
-  EXPECT_NE(fb.find("I4 needs ambient, not ambient, diffuse"), std::string::npos) << fb;
+  EXPECT_NE(fb.find("I4 needs ambient only, not ambient and diffuse:"), std::string::npos) << fb;
   EXPECT_NE(fb.find("blocked by glass sphere"), std::string::npos) << fb;
   ASSERT_TRUE(r.has_mistake("diffuse-in-shadow"));
   const PartResult* shadows = part(r, "shadows");
@@ -119,7 +119,10 @@ TEST(RayTreeGrade, MissingAndImpossibleRaysCostPartOfTheTree) {
   const PartResult* tree = part(r, "tree");
   EXPECT_DOUBLE_EQ(tree->points, (4 - 0.5) / 5);
   std::string fb = all_feedback(*tree);
-  EXPECT_NE(fb.find("Missing: I5"), std::string::npos) << fb;
+  // Named in the form's words: the student's own label of the parent, the object it meets.
+  EXPECT_NE(fb.find("Missing: the point where the refraction ray from I4 meets back wall."),
+            std::string::npos)
+      << fb;
   EXPECT_NE(fb.find("floor does not reflect"), std::string::npos) << fb;
 }
 
@@ -128,8 +131,23 @@ TEST(RayTreeGrade, WrongObjectEarnsHalfTheNode) {
   a["nodes"][2]["object"] = "back wall";
   GradeResult r = grade_answer(seed(), a);
   EXPECT_DOUBLE_EQ(part(r, "tree")->points, 4.5 / 5);
-  EXPECT_NE(all_feedback(*part(r, "tree")).find("is on floor, not on back wall"),
-            std::string::npos);
+  EXPECT_NE(all_feedback(*part(r, "tree"))
+                .find("I3: the reflection ray from I2 meets floor, not back wall."),
+            std::string::npos)
+      << all_feedback(*part(r, "tree"));
+}
+
+// "object": null says the ray leaves the scene: where the tree's ray meets an object, that
+// point earns nothing, and the feedback says what it meets.
+TEST(RayTreeGrade, SayingARayLeavesTheSceneWhereItHitsEarnsNothing) {
+  nlohmann::json a = seed_answer();
+  a["nodes"][2]["object"] = nullptr;
+  GradeResult r = grade_answer(seed(), a);
+  EXPECT_DOUBLE_EQ(part(r, "tree")->points, 4.0 / 5);
+  EXPECT_NE(all_feedback(*part(r, "tree"))
+                .find("I3: the reflection ray from I2 meets floor; it does not leave the scene."),
+            std::string::npos)
+      << all_feedback(*part(r, "tree"));
 }
 
 // The ray (0, 0, 0) + t(0, −0.2, −1) reaches the ball of radius 1 at (0, −1, −6) where

@@ -39,6 +39,15 @@ json only_asked(json form, const Grader& grader) {
       }
       if (columns.empty()) continue;
       f["columns"] = columns;
+    } else if (f["type"] == "tree") {
+      // The tree's points are always built (they place the shadows and terms); the columns of
+      // shadows and terms only when those parts are asked.
+      json asks = json::array();
+      for (const auto& part : parts_of(f)) {
+        if (grader.part_points(part) > 0) asks.push_back(part);
+      }
+      if (asks.empty()) continue;
+      f["asks"] = asks;
     } else if (f["key"] != "" && !asked(f)) {
       continue;
     }

@@ -332,19 +332,210 @@
     return {node: el("span", {}, boxes.map((b, i) => el("label", {class: "flag"}, [b, el("span", {text: " " + f.options[i] + " "})]))),
             value: () => { const v = f.options.filter((o, i) => boxes[i].checked); return v.length ? v : undefined; }};
   }
-  function jsonField(prefix, f) {
-    const area = el("textarea", {name: prefix, rows: "8", "aria-label": f.label, spellcheck: "false"});
-    const hint = el("span", {class: "hint"});
-    area.addEventListener("input", () => {
-      try { if (area.value.trim()) JSON.parse(area.value); hint.textContent = area.value.trim() ? "\u2713 JSON" : ""; hint.className = "hint ok"; }
-      catch (e) { hint.textContent = "not JSON yet: " + e.message; hint.className = "hint err"; }
-      save();
-    });
-    inputs.push(area);
-    return {node: el("div", {}, [area, hint]), value: () => {
-      if (!area.value.trim()) return undefined;
-      try { return JSON.parse(area.value); } catch (e) { return undefined; }
-    }};
+  // A ray tree, point by point: where each point's ray comes from, what it meets, its shadow
+  // ray toward each light, and the Phong terms that apply there; shown as a tree while it is
+  // being built. Points are named I1, I2, ... in the order of the list.
+  const TERM_SETS = [["ambient"], ["ambient", "diffuse"], ["ambient", "specular"], ["ambient", "diffuse", "specular"]];
+  const TERM_TEXT = ["ambient only", "ambient and diffuse", "ambient and specular", "ambient, diffuse and specular"];
+  const SHADOW_TEXT = {lit: "reaches the light (lit)", shadow: "is blocked (in shadow)", away: "the surface faces away"};
+  const NOTHING = "\u0000nothing";
+  function treeField(prefix, f) {
+    const asks = f.asks || ["tree", "shadows", "terms"];
+    const askShadows = asks.indexOf("shadows") >= 0 && f.lights.length > 0;
+    const askTerms = asks.indexOf("terms") >= 0;
+    const points = [];
+    let nextId = 1;
+    const list = el("ol", {class: "tree-points"});
+    const outline = el("div", {class: "tree-outline"});
+    const name = (pt) => "I" + (points.indexOf(pt) + 1);
+    const byId = (id) => points.find((q) => q.id === id);
+    function select(label, options, className) {
+      const s = el("select", {"aria-label": label, class: className || ""},
+        [el("option", {value: "", text: "\u2014"})].concat(options.map(([v, t]) => el("option", {value: v, text: t}))));
+      s.addEventListener("change", () => { refresh(); save(); });
+      return s;
+    }
+    // "the eye", or a reflection or refraction at another point: kept by the point's id, so
+    // that moving or removing points renames, never rewires.
+    function fillFrom(pt) {
+      const keep = pt.from.value;
+      pt.from.textContent = "";
+      const options = [["", "\u2014"], ["eye", "the eye (the primary ray)"]];
+      for (const q of points) {
+        if (q === pt) continue;
+        options.push(["R:" + q.id, "the reflection at " + name(q)], ["T:" + q.id, "the refraction at " + name(q)]);
+      }
+      for (const [v, t] of options) pt.from.appendChild(el("option", {value: v, text: t}));
+      pt.from.value = options.some(([v]) => v === keep) ? keep : "";
+    }
+    function relabel() {
+      points.forEach((pt) => {
+        const n = name(pt);
+        pt.title.textContent = "Point " + n;
+        pt.from.setAttribute("aria-label", n + ": the ray that meets it");
+        pt.object.setAttribute("aria-label", n + ": the object it is on");
+        pt.lights.forEach((l, i) => {
+          l.status.setAttribute("aria-label", "The shadow ray of " + n + " toward " + f.lights[i]);
+          l.boxes.forEach((b, j) => b.setAttribute("aria-label", "The shadow ray of " + n + " toward " + f.lights[i] + " is blocked by " + f.objects[j]));
+        });
+        if (pt.terms) pt.terms.setAttribute("aria-label", n + ": the Phong terms that apply");
+        fillFrom(pt);
+      });
+    }
+    function refresh() {
+      for (const pt of points) for (const l of pt.lights) l.blockers.hidden = l.status.value !== "shadow";
+      drawOutline();
+    }
+    function describe(pt) {
+      const v = pt.object.value;
+      let text = name(pt) + ": " + (v === NOTHING ? "leaves the scene" : v ? "on " + v : "object not chosen");
+      const said = pt.lights.map((l, i) => l.status.value ? "toward " + f.lights[i] + " " + SHADOW_TEXT[l.status.value] : "").filter((x) => x);
+      if (said.length) text += "; shadow ray " + said.join(", ");
+      if (pt.terms && pt.terms.value !== "") text += "; " + TERM_TEXT[Number(pt.terms.value)];
+      return text;
+    }
+    function drawOutline() {
+      outline.textContent = "";
+      outline.appendChild(el("p", {class: "label", text: "The tree so far"}));
+      const seen = new Set();
+      function branch(parentId) {
+        const ul = el("ul", {});
+        for (const pt of points) {
+          const from = pt.from.value;
+          const mine = parentId === null ? from === "eye" : from.slice(2) === String(parentId);
+          if (!mine || seen.has(pt)) continue;
+          seen.add(pt);
+          const how = parentId === null ? "primary ray" : (from[0] === "R" ? "reflection" : "refraction");
+          const li = el("li", {text: how + " \u2192 " + describe(pt)});
+          const sub = branch(pt.id);
+          if (sub.childNodes.length) li.appendChild(sub);
+          ul.appendChild(li);
+        }
+        return ul;
+      }
+      const tree = branch(null);
+      outline.appendChild(tree.childNodes.length ? tree : el("p", {class: "muted", text: "No point comes from the eye yet."}));
+      const loose = points.filter((pt) => !seen.has(pt));
+      if (loose.length) outline.appendChild(el("p", {class: "muted", text: "Not attached yet: " + loose.map(name).join(", ") + "."}));
+    }
+    function addPoint(state) {
+      const pt = {id: state && state.id ? state.id : nextId};
+      nextId = Math.max(nextId, pt.id) + 1;
+      pt.title = el("strong", {});
+      pt.from = el("select", {class: "tree-from"});
+      pt.from.addEventListener("change", () => { refresh(); save(); });
+      pt.object = select("object", f.objects.map((o) => [o, o]).concat([[NOTHING, "nothing: the ray leaves the scene"]]), "tree-object");
+      pt.lights = [];
+      const cells = [labelled("comes from", pt.from), labelled("meets", pt.object)];
+      if (askShadows) {
+        f.lights.forEach((light, i) => {
+          const status = select("shadow ray", Object.keys(SHADOW_TEXT).map((k) => [k, SHADOW_TEXT[k]]), "tree-light");
+          const boxes = f.objects.map((o) => {
+            const b = el("input", {type: "checkbox", class: "tree-blocker", value: o});
+            b.addEventListener("change", () => { refresh(); save(); });
+            return b;
+          });
+          const blockers = el("span", {class: "tree-blockers"}, [el("span", {text: " blocked by: "})].concat(
+            boxes.map((b, j) => el("label", {class: "flag"}, [b, el("span", {text: " " + f.objects[j] + " "})]))));
+          pt.lights.push({status: status, boxes: boxes, blockers: blockers});
+          cells.push(el("div", {class: "field"}, [el("span", {class: "label", text: "shadow ray toward " + light}), status, blockers]));
+        });
+      }
+      if (askTerms) {
+        pt.terms = select("terms", TERM_TEXT.map((t, i) => [String(i), t]), "tree-terms");
+        cells.push(labelled("Phong terms", pt.terms));
+      }
+      const up = el("button", {type: "button", class: "tree-up", text: "Move up"});
+      const down = el("button", {type: "button", class: "tree-down", text: "Move down"});
+      const remove = el("button", {type: "button", class: "tree-remove", text: "Remove"});
+      const move = (by) => {
+        const i = points.indexOf(pt), j = i + by;
+        if (j < 0 || j >= points.length) return;
+        points.splice(i, 1);
+        points.splice(j, 0, pt);
+        list.insertBefore(pt.node, by < 0 ? points[j + 1].node : points[j - 1].node.nextSibling);
+        relabel(); refresh(); save();
+      };
+      up.addEventListener("click", () => move(-1));
+      down.addEventListener("click", () => move(1));
+      remove.addEventListener("click", () => {
+        points.splice(points.indexOf(pt), 1);
+        list.removeChild(pt.node);
+        relabel(); refresh(); save();
+      });
+      pt.node = el("li", {class: "tree-point"}, [el("div", {}, [pt.title]), el("div", {class: "row"}, cells),
+                                                 el("div", {class: "buttons"}, [up, down, remove])]);
+      points.push(pt);
+      list.appendChild(pt.node);
+      relabel();
+      if (state) {
+        pt.from.value = state.from || "";
+        pt.object.value = state.object || "";
+        (state.lights || []).forEach((l, i) => {
+          if (!pt.lights[i]) return;
+          pt.lights[i].status.value = l.status || "";
+          pt.lights[i].boxes.forEach((b) => { b.checked = (l.blockers || []).indexOf(b.value) >= 0; });
+        });
+        if (pt.terms) pt.terms.value = state.terms || "";
+      }
+      refresh();
+      return pt;
+    }
+    const add = el("button", {type: "button", class: "tree-add", text: "Add a point"});
+    add.addEventListener("click", () => { addPoint(null); save(); });
+    const node = el("div", {class: "tree"}, [list, el("div", {class: "buttons"}, [add]), outline]);
+    drawOutline();
+    return {node: node, addPoint: addPoint,
+      state: () => points.map((pt) => ({id: pt.id, from: pt.from.value, object: pt.object.value,
+        lights: pt.lights.map((l) => ({status: l.status.value, blockers: l.boxes.filter((b) => b.checked).map((b) => b.value)})),
+        terms: pt.terms ? pt.terms.value : ""})),
+      load: (states) => {
+        // Ids first, so that every "comes from" can name any point.
+        for (const st of states) addPoint({id: st.id});
+        states.forEach((st, k) => {
+          const pt = points[k];
+          relabel();
+          pt.from.value = st.from || "";
+          pt.object.value = st.object || "";
+          (st.lights || []).forEach((l, i) => {
+            if (!pt.lights[i]) return;
+            pt.lights[i].status.value = l.status || "";
+            pt.lights[i].boxes.forEach((b) => { b.checked = (l.blockers || []).indexOf(b.value) >= 0; });
+          });
+          if (pt.terms) pt.terms.value = st.terms || "";
+        });
+        refresh();
+      },
+      apply: (answer) => {
+        const nodes = [];
+        for (const pt of points) {
+          const from = pt.from.value;
+          if (!from) continue;  // a point not attached to the tree is not sent
+          const n = {label: name(pt)};
+          if (from === "eye") { n.parent = null; n.ray = "primary"; }
+          else {
+            const parent = byId(Number(from.slice(2)));
+            if (!parent) continue;
+            n.parent = name(parent);
+            n.ray = from[0] === "R" ? "reflection" : "refraction";
+          }
+          if (pt.object.value === NOTHING) n.object = null;
+          else if (pt.object.value) n.object = pt.object.value;
+          const statuses = pt.lights.map((l) => l.status.value);
+          if (statuses.some((x) => x)) {
+            const lit = statuses.indexOf("lit") >= 0, blocked = statuses.indexOf("shadow") >= 0;
+            n.in_shadow = !lit && blocked;
+            if (n.in_shadow) {
+              const by = [];
+              pt.lights.forEach((l) => { if (l.status.value === "shadow") for (const b of l.boxes) if (b.checked && by.indexOf(b.value) < 0) by.push(b.value); });
+              if (by.length) n.shadowed_by = by;
+            }
+          }
+          if (pt.terms && pt.terms.value !== "") n.terms = TERM_SETS[Number(pt.terms.value)].slice();
+          nodes.push(n);
+        }
+        if (nodes.length) answer.nodes = nodes;
+      }};
   }
 
   function setAt(answer, key, value) {
@@ -366,9 +557,9 @@
       else if (f.type === "rows") made = rowsField(prefix, f);
       else if (f.type === "choice") made = choiceField(prefix, f);
       else if (f.type === "set") made = setField(prefix, f);
-      else if (f.type === "json") made = jsonField(prefix, f);
+      else if (f.type === "tree") made = treeField(prefix, f);
       else made = box(f.type, prefix, f.label, f.symbols);
-      form.appendChild(f.type === "hits" ? el("div", {class: "field"}, [el("div", {class: "label", text: f.label}), made.node])
+      form.appendChild(f.type === "hits" || f.type === "tree" ? el("div", {class: "field"}, [el("div", {class: "label", text: f.label}), made.node])
                                          : labelled(f.label, made.node));
       fields.push({f: f, made: made});
     });
@@ -403,7 +594,9 @@
   function save() {
     const values = {};
     for (const i of inputs) values[i.name] = i.type === "checkbox" ? i.checked : i.value;
-    try { localStorage.setItem(storageKey, JSON.stringify({values: values, rows: rowCounts()})); } catch (e) { /* storage off */ }
+    const trees = {};
+    for (const p of problems) p.fields.forEach(({made}, i) => { if (made.state) trees[p.id + "." + i] = made.state(); });
+    try { localStorage.setItem(storageKey, JSON.stringify({values: values, rows: rowCounts(), trees: trees})); } catch (e) { /* storage off */ }
     document.getElementById("saved").textContent = "Saved in this browser.";
   }
   function restore() {
@@ -414,6 +607,10 @@
       const n = state.rows && state.rows[p.id + "." + f.key];
       while (made.rows && n && made.rows.length < n) made.addRow();
     }
+    for (const p of problems) p.fields.forEach(({made}, i) => {
+      const t = state.trees && state.trees[p.id + "." + i];
+      if (made.load && Array.isArray(t)) made.load(t);
+    });
     for (const i of inputs) {
       if (!(i.name in state.values)) continue;
       if (i.type === "checkbox") i.checked = !!state.values[i.name]; else i.value = state.values[i.name];
@@ -547,4 +744,22 @@
   if (data.practice) practice();
   restore();
   window.raygradeHandout = {readFormula: readFormula, submission: submission};
+})();
+
+// Dates in the student's own time, with UTC beside them: a <time datetime> holds the UTC text
+// ("Friday 4 December 2026, 23:59 UTC"), which is what a browser without script shows.
+(function () {
+  const DAYS = ["Sunday", "Monday", "Tuesday", "Wednesday", "Thursday", "Friday", "Saturday"];
+  const MONTHS = ["January", "February", "March", "April", "May", "June", "July", "August",
+                  "September", "October", "November", "December"];
+  const two = (n) => String(n).padStart(2, "0");
+  for (const time of document.querySelectorAll("time[datetime]")) {
+    const d = new Date(time.getAttribute("datetime"));
+    if (isNaN(d.getTime()) || d.getTimezoneOffset() === 0) continue;  // UTC is the local time
+    const local = DAYS[d.getDay()] + " " + d.getDate() + " " + MONTHS[d.getMonth()] + " " + d.getFullYear();
+    const utc = DAYS[d.getUTCDay()] + " " + d.getUTCDate() + " " + MONTHS[d.getUTCMonth()] + " " + d.getUTCFullYear();
+    const utcTime = two(d.getUTCHours()) + ":" + two(d.getUTCMinutes()) + " UTC";
+    time.textContent = local + ", " + two(d.getHours()) + ":" + two(d.getMinutes()) +
+      " (your time; " + (local === utc ? utcTime : utc + ", " + utcTime) + ")";
+  }
 })();

@@ -39,22 +39,24 @@ struct Input {
 };
 
 std::string string_input(const std::string& name, const std::string& label,
-                         const std::string& placeholder, bool multiline = false) {
+                         const std::string& placeholder) {
   return fmt::format(
       // display="block": the input takes the line's width, however long its label. No
       // help popover: PrairieLearn's own says what its grader reads, and raygrade reads these.
       "<pl-string-input answers-name=\"{}\" label=\"{}\" placeholder=\"{}\" allow-blank=\"true\" "
-      "remove-leading-trailing=\"true\" display=\"block\" show-help-text=\"false\"{}>"
+      "remove-leading-trailing=\"true\" display=\"block\" show-help-text=\"false\">"
       "</pl-string-input>",
-      name, html_text(label), html_text(placeholder), multiline ? " multiline=\"true\"" : "");
+      name, html_text(label), html_text(placeholder));
 }
 
-// A choice among fixed options; raygrade grades it, not the element.
-std::string choice_input(const std::string& name, const std::string& label, const json& options) {
+// A choice among fixed options; raygrade grades it, not the element. A long list shows as a
+// drop-down.
+std::string choice_input(const std::string& name, const std::string& label, const json& options,
+                         bool dropdown = false) {
   std::string html = fmt::format(
       "<p>{}</p>\n<pl-multiple-choice answers-name=\"{}\" "
-      "builtin-grading=\"false\" order=\"fixed\" allow-blank=\"true\">",
-      html_text(label), name);
+      "builtin-grading=\"false\" order=\"fixed\" allow-blank=\"true\"{}>",
+      html_text(label), name, dropdown ? " display=\"dropdown\"" : "");
   for (const auto& o : options) {
     html += fmt::format("\n  <pl-answer>{}</pl-answer>", html_text(o["text"].get<std::string>()));
   }
@@ -70,6 +72,79 @@ std::string placeholder_of(const std::string& type) {
   if (type == "formula") return "a formula";
   if (type == "set") return "names separated by commas";
   return "a number or an expression, e.g. 9 - sqrt(3)";
+}
+
+// A ray tree as a fixed number of points I1, I2, ... (the form's "rows"), each a drop-down of
+// where its ray comes from and one of the object it meets, then per light the shadow ray's
+// status and its blockers, and the Phong terms. server.py puts the choices under
+// "raygrade:tree" and turns them into the answer's nodes (docs/assignments.md).
+void tree_inputs(const json& f, std::vector<Input>& out, json& question) {
+  question["tree"] = true;
+  int rows = f["rows"];
+  std::set<std::string> asks;
+  for (const auto& a : f["asks"]) asks.insert(a.get<std::string>());
+  json none = {{"text", "\u2014"}, {"value", nullptr}};
+  auto add_choice = [&](const std::string& name, const json& path, const std::string& label,
+                        json options) {
+    json spec = {{"name", name}, {"type", "choice"}, {"path", path}, {"options", options}};
+    out.push_back({spec, choice_input(name, label, options, true)});
+  };
+  for (int k = 1; k <= rows; ++k) {
+    std::string row = std::to_string(k), point = fmt::format("I{}", k);
+    json base = json::array({"raygrade:tree", row});
+    auto at = [&](const std::string& key) {
+      json path = base;
+      path.push_back(key);
+      return path;
+    };
+    json from = json::array({none, {{"text", "the eye (the primary ray)"}, {"value", "eye"}}});
+    for (int j = 1; j <= rows; ++j) {
+      if (j == k) continue;
+      from.push_back(
+          {{"text", fmt::format("the reflection at I{}", j)}, {"value", fmt::format("R:{}", j)}});
+      from.push_back(
+          {{"text", fmt::format("the refraction at I{}", j)}, {"value", fmt::format("T:{}", j)}});
+    }
+    add_choice(fmt::format("tree_{}_from", k), at("from"),
+               fmt::format("Point {}: the ray that meets it comes from", point), from);
+    json objects = json::array({none});
+    for (const auto& o : f["objects"]) objects.push_back({{"text", o}, {"value", o}});
+    objects.push_back(
+        {{"text", "nothing: the ray leaves the scene"}, {"value", "raygrade:nothing"}});
+    add_choice(fmt::format("tree_{}_object", k), at("object"),
+               fmt::format("Point {}: the object it is on", point), objects);
+    if (asks.count("shadows")) {
+      for (std::size_t i = 0; i < f["lights"].size(); ++i) {
+        std::string light = f["lights"][i];
+        json status = json::array({none,
+                                   {{"text", "reaches the light (lit)"}, {"value", "lit"}},
+                                   {{"text", "is blocked (in shadow)"}, {"value", "shadow"}},
+                                   {{"text", "the surface faces away"}, {"value", "away"}}});
+        add_choice(fmt::format("tree_{}_light_{}", k, i), at(fmt::format("light{}", i)),
+                   fmt::format("Point {}: the shadow ray toward {}", point, light), status);
+        std::string name = fmt::format("tree_{}_blockers_{}", k, i);
+        json spec = {{"name", name}, {"type", "names"}, {"path", at(fmt::format("blockers{}", i))}};
+        out.push_back(
+            {spec, string_input(name,
+                                fmt::format("Point {}: when in shadow, the shadow ray toward {} "
+                                            "is blocked by (names separated by commas)",
+                                            point, light),
+                                "names of objects, or blank")});
+      }
+    }
+    if (asks.count("terms")) {
+      json terms = json::array({none});
+      for (const auto& [text, set] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+               {"ambient only", {"ambient"}},
+               {"ambient and diffuse", {"ambient", "diffuse"}},
+               {"ambient and specular", {"ambient", "specular"}},
+               {"ambient, diffuse and specular", {"ambient", "diffuse", "specular"}}}) {
+        terms.push_back({{"text", text}, {"value", set}});
+      }
+      add_choice(fmt::format("tree_{}_terms", k), at("terms"),
+                 fmt::format("Point {}: the Phong terms that apply", point), terms);
+    }
+  }
 }
 
 // One input per value the student types: a field of the answer form, a column of its hits (all
@@ -105,6 +180,7 @@ void inputs_of_field(const json& f, std::vector<Input>& out, json& question) {
     }
     return;
   }
+  if (type == "tree") return tree_inputs(f, out, question);
   if (type == "rows") {
     for (std::size_t r = 0; r < f["rows"].size(); ++r) {
       const json& row = f["rows"][r];
@@ -130,16 +206,13 @@ void inputs_of_field(const json& f, std::vector<Input>& out, json& question) {
     out.push_back({spec, choice_input(spec["name"], label, spec["options"])});
     return;
   }
-  if (type == "json") spec["path"] = json::array();
   std::string hint = label;
   if (type == "set") {
     for (std::size_t k = 0; k < f["options"].size(); ++k)
       hint += (k ? ", " : " (") + f["options"][k].get<std::string>();
     hint += ")";
   }
-  out.push_back(
-      {spec, string_input(spec["name"], hint, type == "json" ? "JSON" : placeholder_of(type),
-                          type == "json")});
+  out.push_back({spec, string_input(spec["name"], hint, placeholder_of(type))});
 }
 
 // A PrairieLearn uuid that is the same at every export of a problem of an assignment: its two

@@ -218,10 +218,7 @@ def _typed_input(q, inp, answer):
     """What a student types into text input `inp` for raygrade's answer `answer`."""
     if inp.get("list"):
         return _typed_column(q, inp, answer)
-    value = _get(answer, inp["path"])
-    if inp["type"] == "json":
-        return "" if value is None else json.dumps(value, ensure_ascii=False)
-    return _typed(value)
+    return _typed(_get(answer, inp["path"]))
 
 
 def _option_index(inp, answer):
@@ -234,12 +231,84 @@ def _option_index(inp, answer):
     return None
 
 
+# The ray tree's inputs (question.html's points I1, I2 ...) hold their choices under TREE until
+# _answer() turns them into the answer's nodes.
+TREE = "raygrade:tree"
+NOTHING = "raygrade:nothing"
+TERMS = ("ambient", "diffuse", "specular")
+LIGHT_STATUS = {"visible": "lit", "transmitted": "lit", "blocked": "shadow", "behind": "away"}
+
+
+def _tree_rows(answer):
+    """The reference tree as the points of the form: row k is the k-th point of the tree that
+    meets an object, its ray from the eye or from another row, each light's shadow ray and its
+    blockers, and its terms."""
+    nodes = [n for n in answer.get("nodes", []) if isinstance(n, dict) and n.get("hit", True)]
+    row_of = {n.get("label"): str(k + 1) for k, n in enumerate(nodes)}
+    rows = {}
+    for k, n in enumerate(nodes):
+        row = {}
+        parent = n.get("parent")
+        if parent is None:
+            row["from"] = "eye"
+        elif parent in row_of:
+            row["from"] = ("R:" if n.get("ray") == "reflection" else "T:") + row_of[parent]
+        row["object"] = n.get("object")
+        for i, light in enumerate(n.get("lights") or []):
+            status = LIGHT_STATUS.get(light.get("status"))
+            row["light%d" % i] = status
+            if status == "shadow":
+                row["blockers%d" % i] = list(light.get("blocked_by") or [])
+        if isinstance(n.get("terms"), list):
+            row["terms"] = [t for t in TERMS if t in n["terms"]]
+        rows[str(k + 1)] = row
+    return rows
+
+
+def _tree_nodes(rows):
+    """The answer's nodes from the points of the form (labels I1, I2 ... by row); a point whose
+    ray comes from nowhere is left out."""
+    nodes = []
+    for key in sorted(rows, key=lambda r: int(r)):
+        row = rows[key]
+        origin = row.get("from")
+        if not origin:
+            continue
+        node = {"label": "I" + key}
+        if origin == "eye":
+            node.update(parent=None, ray="primary")
+        else:
+            node.update(parent="I" + origin[2:],
+                        ray="reflection" if origin[0] == "R" else "refraction")
+        if row.get("object") == NOTHING:
+            node["object"] = None
+        elif row.get("object"):
+            node["object"] = row["object"]
+        lights = sorted(int(k[5:]) for k in row if k.startswith("light") and row[k])
+        statuses = [row["light%d" % i] for i in lights]
+        if statuses:
+            node["in_shadow"] = "lit" not in statuses and "shadow" in statuses
+            if node["in_shadow"]:
+                by = []
+                for i in lights:
+                    if row["light%d" % i] == "shadow":
+                        by += [b for b in row.get("blockers%d" % i) or [] if b not in by]
+                if by:
+                    node["shadowed_by"] = by
+        if row.get("terms"):
+            node["terms"] = list(row["terms"])
+        nodes.append(node)
+    return nodes
+
+
 def _set_correct_answers(data, q, answer):
     """data["correct_answers"][NAME]: the text of each text input for the reference answer;
     the option index of each choice under CHOICES, for prepare(). An input whose reference
     cannot be typed gets none: a variant still works without it."""
     if not isinstance(answer, dict):
         return
+    if q.get("tree"):
+        answer = {**answer, TREE: _tree_rows(answer)}
     correct = _dict(data, "correct_answers")
     choices = {}
     for inp in q["inputs"]:
@@ -309,22 +378,11 @@ def _submitted(data):
     return answers if isinstance(answers, dict) else {}
 
 
-def _depth(text, json_strings):
-    """The deepest nesting of (), [] and {} in `text`; with `json_strings`, brackets inside a
-    JSON string do not count."""
+def _depth(text):
+    """The deepest nesting of (), [] and {} in `text`."""
     depth = deepest = 0
-    in_string = escaped = False
     for c in text:
-        if in_string:
-            if escaped:
-                escaped = False
-            elif c == "\\":
-                escaped = True
-            elif c == '"':
-                in_string = False
-        elif c == '"' and json_strings:
-            in_string = True
-        elif c in "([{":
+        if c in "([{":
             depth += 1
             deepest = max(deepest, depth)
         elif c in ")]}":
@@ -332,7 +390,7 @@ def _depth(text, json_strings):
     return deepest
 
 
-def _text(data, name, json_strings=False):
+def _text(data, name):
     """The text typed into input `name` (a number PrairieLearn has read already as its text);
     ValueError when it is not text, or too long or too deeply nested to read safely."""
     value = _submitted(data).get(name)
@@ -348,39 +406,9 @@ def _text(data, name, json_strings=False):
         value.encode("utf-8")
     except UnicodeEncodeError:
         raise ValueError("the answer holds a character that is not text") from None
-    if _depth(value, json_strings) > MAX_DEPTH:
+    if _depth(value) > MAX_DEPTH:
         raise ValueError("brackets are nested more than %d deep" % MAX_DEPTH)
     return value.strip()
-
-
-def _json_constant(name):
-    raise ValueError("%s is not a number an answer may hold" % name)
-
-
-def _json_number(text):
-    value = float(text)
-    if not math.isfinite(value):
-        raise ValueError("a number is too large")
-    return value
-
-
-def _json_integer(text):
-    if len(text) > 300:  # beyond any double, and int() refuses over 4,300 digits
-        raise ValueError("a number is too large")
-    return int(text)
-
-
-def _json_object(text):
-    """The JSON object `text` holds, its numbers finite."""
-    try:
-        value = json.loads(text, parse_constant=_json_constant, parse_float=_json_number,
-                           parse_int=_json_integer)
-    except json.JSONDecodeError as e:
-        raise ValueError("this is not JSON (%s at line %d, column %d)"
-                         % (e.msg, e.lineno, e.colno)) from None
-    if not isinstance(value, dict):
-        raise ValueError("the answer is a JSON object, {...}")
-    return value
 
 
 def _choice(data, inp):
@@ -417,7 +445,7 @@ def _read_input(data, inp, answer, hits, blanks):
         if chosen is not None:
             _put(answer, inp["path"], chosen["value"])
         return
-    text = _text(data, name, json_strings=kind == "json")
+    text = _text(data, name)
     if inp.get("list"):
         items = [] if not text else _split(text, ";")
         if len(items) == 1 and items[0].lower() in inp.get("words", {}):
@@ -432,9 +460,9 @@ def _read_input(data, inp, answer, hits, blanks):
     elif kind == "set":
         if text:
             _put(answer, inp["path"], [w.strip().lower() for w in _split(text, ",")])
-    elif kind == "json":
+    elif kind == "names":  # object names, as they are written
         if text:
-            answer.update(_json_object(text))
+            _put(answer, inp["path"], [w for w in _split(text, ",") if w])
     else:
         _put(answer, inp["path"], text)
 
@@ -468,6 +496,11 @@ def _answer(data, q):
             ]
         else:
             answer.pop(q["hits_key"], None)
+    rows = answer.pop(TREE, None)
+    if isinstance(rows, dict):
+        nodes = _tree_nodes(rows)
+        if nodes:
+            answer["nodes"] = nodes
     return answer, errors
 
 
@@ -555,10 +588,9 @@ def grade(data):
 # answers and compares.
 
 # Text that parse() refuses, by the kind of input: a vector of two numbers, an empty value between
-# two semicolons, JSON cut short, and for any other text brackets nested deeper than MAX_DEPTH.
+# two semicolons, and for any other text brackets nested deeper than MAX_DEPTH.
 UNREADABLE_VECTOR = "1, 2"
 UNREADABLE_LIST = "1;;2"
-UNREADABLE_JSON = "{"
 UNREADABLE_TEXT = "(" * (MAX_DEPTH + 1) + "1" + ")" * (MAX_DEPTH + 1)
 # A key no choice has, as pl-multiple-choice's own test() submits.
 UNREADABLE_CHOICE = "0"
@@ -646,7 +678,6 @@ def _invalid(q, correct):
     def first(wanted):
         return next((i for i in q["inputs"] if wanted(i)), None)
     inp = (first(lambda i: i["type"] == "vector") or first(lambda i: i.get("list"))
-           or first(lambda i: i["type"] == "json")
            or first(lambda i: i["type"] not in CHOICE_TYPES) or first(lambda i: True))
     if inp is None:
         return None
@@ -654,8 +685,6 @@ def _invalid(q, correct):
         text = UNREADABLE_VECTOR
     elif inp.get("list"):
         text = UNREADABLE_LIST
-    elif inp["type"] == "json":
-        text = UNREADABLE_JSON
     elif inp["type"] in CHOICE_TYPES:
         text = UNREADABLE_CHOICE
     else:
@@ -702,11 +731,9 @@ def _wrong_values(data, inp, text):
         return ["; ".join([wrong] + items[1:])]
     if kind == "vector":
         return [_wrong_vector(text)]
-    if kind == "set":
+    if kind in ("set", "names"):
         terms = _split(text, ",")
         return [", ".join(terms[1:])] if len(terms) > 1 else []
-    if kind == "json":
-        return [json.dumps(v, ensure_ascii=False) for v in _shortened(text)] + ["{}"]
     return [_wrong_number(text)]
 
 
@@ -731,16 +758,3 @@ def _wrong_vector(text):
     if not any(parts):
         return "1, 1, 1"
     return ", ".join(repr(-p) for p in parts)
-
-
-def _shortened(text):
-    """The JSON object `text` with the last item of one of its lists left out (a node of the
-    ray tree, a term), each list in turn."""
-    try:
-        value = json.loads(text)
-    except ValueError:
-        return []
-    if not isinstance(value, dict):
-        return []
-    return [{**value, key: item[:-1]} for key, item in value.items()
-            if isinstance(item, list) and item]

@@ -26,6 +26,7 @@ struct StudentNode {
   std::string label;
   std::string where;  // its JSON path in the answer
   std::optional<std::string> path, parent, ray, object;
+  bool leaves = false;  // "object": null: the student says the ray meets nothing
   std::optional<bool> in_shadow;
   std::optional<std::set<std::string>> shadowed_by;  // the objects the student says block
   std::optional<std::set<std::string>> terms;
@@ -42,7 +43,12 @@ std::string terms_words(const std::set<std::string>& t) {
   for (const auto& k : t) {
     if (k != "ambient" && k != "diffuse" && k != "specular") order.push_back(k);
   }
-  return order.empty() ? "no terms" : fmt::format("{}", fmt::join(order, ", "));
+  // In the words of the answer form's choices: "ambient only", "ambient, diffuse and specular".
+  if (order.empty()) return "no terms";
+  if (order.size() == 1) return order.front() + " only";
+  std::string last = order.back();
+  order.pop_back();
+  return fmt::format("{} and {}", fmt::join(order, ", "), last);
 }
 
 class RayTreeGrader final : public KindGrader {
@@ -239,7 +245,13 @@ class RayTreeGrader final : public KindGrader {
       if (n.has("path")) s.path = n.at("path").string();
       if (n.has("parent") && !n.at("parent").json().is_null()) s.parent = n.at("parent").string();
       if (n.has("ray")) s.ray = n.at("ray").string();
-      if (n.has("object") && !n.at("object").json().is_null()) s.object = n.at("object").string();
+      if (n.has("object")) {
+        if (n.at("object").json().is_null()) {
+          s.leaves = true;
+        } else {
+          s.object = n.at("object").string();
+        }
+      }
       if (n.has("in_shadow")) {
         if (!n.at("in_shadow").json().is_boolean())
           n.at("in_shadow").fail("expected true or false", "type");
@@ -320,23 +332,34 @@ class RayTreeGrader final : public KindGrader {
     double earned = 0;
     int total = 0;
     std::vector<std::string> fb;
+    // A point is named as the student named it where they gave it: the form's I1, I2, ...
+    auto shown = [&](int index) {
+      auto it = match.find(index);
+      return it != match.end() && !it->second->label.empty() ? it->second->label
+                                                             : tree().nodes[index].label;
+    };
     for (const auto& n : tree().nodes) {
       if (!n.hit) continue;
       ++total;
       auto it = match.find(n.index);
-      std::string what = n.parent < 0
-                             ? "the primary ray's hit"
-                             : fmt::format("where the {} ray from {} hits", to_string(n.kind),
-                                           tree().nodes[n.parent].label);
+      std::string what =
+          n.parent < 0 ? "the primary ray"
+                       : fmt::format("the {} ray from {}", to_string(n.kind), shown(n.parent));
       if (it == match.end()) {
-        fb.push_back(fmt::format("Missing: {}, {} ({}).", n.label, what, object_name(n.object)));
+        fb.push_back(
+            fmt::format("Missing: the point where {} meets {}.", what, object_name(n.object)));
         continue;
       }
       const StudentNode& s = *it->second;
+      if (s.leaves) {
+        fb.push_back(fmt::format("{}: {} meets {}; it does not leave the scene.", s.label, what,
+                                 object_name(n.object)));
+        continue;
+      }
       if (s.object && *s.object != object_name(n.object)) {
         earned += 0.5;
-        fb.push_back(fmt::format("{}: {} is on {}, not on {}.", s.label, what,
-                                 object_name(n.object), *s.object));
+        fb.push_back(fmt::format("{}: {} meets {}, not {}.", s.label, what, object_name(n.object),
+                                 *s.object));
       } else {
         earned += 1;
       }

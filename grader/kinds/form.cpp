@@ -1,6 +1,8 @@
 // The pieces of answer forms.
 #include "kinds/form.h"
 
+#include <algorithm>
+
 namespace raygrade::form {
 
 using json = nlohmann::json;
@@ -38,6 +40,22 @@ json hits_field(bool barycentric, bool several, bool point_and_normal) {
   if (barycentric) columns.push_back(field("vector", "barycentric", "barycentric (w_a, w_b, w_c)"));
   f["columns"] = columns;
   f["several"] = several;
+  return f;
+}
+
+json tree_field(const Scene& scene) {
+  json f = field("tree", "", "The ray tree: one row per point where a ray meets an object");
+  json objects = json::array(), lights = json::array();
+  for (const auto& o : scene.objects) objects.push_back(o.name);
+  for (const auto& l : scene.lights) lights.push_back(l.name);
+  f["objects"] = objects;
+  f["lights"] = lights;
+  // A form of fixed size (a PrairieLearn question) offers the points of a full binary tree as
+  // deep as the scene's max_depth, at most kTreeFormRows: the size follows from the givens,
+  // never from the answer.
+  int full = scene.max_depth >= 4 ? kTreeFormRows : (1 << scene.max_depth) - 1;
+  f["rows"] = std::min(full, kTreeFormRows);
+  f["parts"] = json::array({"tree", "shadows", "terms"});
   return f;
 }
 

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "scenes/scene.h"
+
 namespace raygrade::form {
 
 // One input: {"type", "key", "label"}; a key "ray/origin" answers ray.origin.
@@ -19,6 +21,14 @@ nlohmann::json object_choice(const std::vector<std::string>& names);
 
 // A table of hits: t, with the point and normal and the barycentric weights when asked.
 nlohmann::json hits_field(bool barycentric, bool several, bool point_and_normal);
+
+// The most points a ray tree form of fixed size offers.
+inline constexpr int kTreeFormRows = 8;
+
+// A ray tree built point by point (docs/assignments.md, "The ray tree form"): the scene's objects
+// and lights to choose from, and how many points a form of fixed size offers. Its parts: tree,
+// shadows, terms.
+nlohmann::json tree_field(const Scene& scene);
 
 // {"fields": fields}
 nlohmann::json fields(nlohmann::json list);

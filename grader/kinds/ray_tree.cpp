@@ -367,9 +367,44 @@ nlohmann::json RayTreeKind::answer_form(const Problem& p) {
     for (auto& c : hits["columns"]) c["parts"] = nlohmann::json::array({"hit"});
     return form::fields({object, hits});
   }
-  return form::fields({form::field("json", "",
-                                   "The ray tree as JSON ({\"nodes\": [...], \"all_terms\": [...], "
-                                   "\"ambient_only\": [...]}), as docs/scenes.md describes")});
+  auto task = dynamic_cast<const RayTreeTask*>(p.task.get());
+  if (!task) throw InternalError(fmt::format("problem {} is not a ray tree", p.id));
+  nlohmann::json list = nlohmann::json::array();
+  if (task->tree().ask == Ask::kMedia) {
+    // Every boundary along the ray's line, in order: t, then the indices on either side.
+    nlohmann::json hits =
+        form::field("hits", "hits", "Every surface the ray's line crosses, in order");
+    nlohmann::json columns =
+        nlohmann::json::array({form::field("number", "t", "t"),
+                               form::field("number", "n1", "n1 (the side it comes from)"),
+                               form::field("number", "n2", "n2 (the side it goes into)")});
+    for (auto& c : columns) c["parts"] = nlohmann::json::array({"media"});
+    hits["columns"] = columns;
+    hits["several"] = true;
+    list.push_back(hits);
+    return form::fields(list);
+  }
+  if (!task->components().empty()) {
+    // One number per component asked, keyed by the tree's labels.
+    for (const auto& c : task->components()) {
+      nlohmann::json f =
+          form::field("number", "components/" + c.label + "/" + c.component,
+                      c.component == "total" ? fmt::format("{}'s intensity", c.label)
+                                             : fmt::format("{}'s {} term", c.label, c.component));
+      f["parts"] = nlohmann::json::array({c.part()});
+      list.push_back(f);
+    }
+    return form::fields(list);
+  }
+  list.push_back(form::tree_field(task->scene()));
+  if (task->ask() == Ask::kIntensity) {
+    nlohmann::json f =
+        task->colour()
+            ? form::field("vector", "intensity", "The colour seen along the primary ray (r, g, b)")
+            : form::field("number", "intensity", "The intensity seen along the primary ray");
+    list.push_back(f);
+  }
+  return form::fields(list);
 }
 
 std::string_view RayTreeKind::schema() {
