@@ -10,8 +10,8 @@ namespace raygrade {
 
 // {"fields": [...]}, each field {"type", "key", "label", ...}; types: number, vector, yesno,
 // choice, set, formula, hits (rows of t, point, normal ...), rows (one row per named item),
-// tree (a ray tree built point by point). No input asks for JSON. Nothing in it depends on the answer: the same form for a
-// hit and a miss.
+// tree (a ray tree built point by point). No input asks for JSON. Nothing in it depends on
+// the answer: the same form for a hit and a miss.
 // Only the parts that carry points are asked: a part worth 0 points has no input.
 nlohmann::json answer_form(const Problem& p);
 
