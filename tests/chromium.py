@@ -3,6 +3,7 @@ import os
 import shutil
 import subprocess
 import tempfile
+import time
 
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
          "--disable-background-networking", "--disable-component-update", "--disable-sync"]
@@ -45,3 +46,41 @@ def write_solution_pages(binary, bank, out, formats):
     subprocess.run([binary, "solutions", bank, "--out", pages, "--format", formats], check=True,
                    capture_output=True)
     return pages, shots
+
+
+def selenium_chromium(profile, downloads=None, size="1200,1600"):
+    """Headless Chromium driven by Selenium, in the fresh profile folder `profile`; downloads go
+    to `downloads` without asking. Needs python3-selenium and chromedriver."""
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    options = webdriver.ChromeOptions()
+    for flag in FLAGS:
+        options.add_argument(flag if flag != "--headless" else "--headless=new")
+    options.add_argument(f"--user-data-dir={profile}")
+    options.add_argument(f"--window-size={size}")
+    options.binary_location = chromium()
+    if downloads:
+        options.add_experimental_option("prefs", {"download.default_directory": downloads,
+                                                  "download.prompt_for_download": False})
+    driver = webdriver.Chrome(service=Service(shutil.which("chromedriver")), options=options)
+    if downloads:
+        driver.execute_cdp_cmd("Page.setDownloadBehavior",
+                               {"behavior": "allow", "downloadPath": downloads})
+    return driver
+
+
+def click(driver, element):
+    """Scrolls an element to the middle of the window, as a person would, and clicks it."""
+    driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", element)
+    element.click()
+
+
+def wait_for_file(folder, name, seconds=30):
+    """The path of `name` in `folder` once a download has finished writing it, or None."""
+    end = time.time() + seconds
+    path = os.path.join(folder, name)
+    while time.time() < end:
+        if os.path.exists(path) and not os.path.exists(path + ".crdownload"):
+            return path
+        time.sleep(0.2)
+    return None

@@ -17,14 +17,11 @@ import shutil
 import subprocess
 import sys
 import tempfile
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from chromium import FLAGS, SKIPPED, require_chromium  # noqa: E402
+from chromium import SKIPPED, click, require_chromium, selenium_chromium, wait_for_file  # noqa: E402
 
 try:
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
     from selenium.webdriver.common.by import By
     from selenium.webdriver.support.ui import Select
 except ImportError:
@@ -67,24 +64,6 @@ def typed(x):
     return f"{x:.12g}"
 
 
-def driver_for(downloads, profile):
-    options = webdriver.ChromeOptions()
-    for flag in FLAGS:
-        options.add_argument(flag if flag != "--headless" else "--headless=new")
-    options.add_argument(f"--user-data-dir={profile}")
-    options.add_argument("--window-size=1200,1600")
-    options.binary_location = shutil.which("chromium") or shutil.which("chromium-browser")
-    options.add_experimental_option("prefs", {"download.default_directory": downloads,
-                                              "download.prompt_for_download": False})
-    driver = webdriver.Chrome(service=Service(shutil.which("chromedriver")), options=options)
-    driver.execute_cdp_cmd("Page.setDownloadBehavior", {"behavior": "allow", "downloadPath": downloads})
-    return driver
-
-
-def click(driver, el):
-    """Scrolls an element to the middle of the window, as a person would, and clicks it."""
-    driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", el)
-    el.click()
 
 
 def fill(driver, answers):
@@ -154,15 +133,6 @@ def fill(driver, answers):
                 put(prefix, json.dumps({k: v for k, v in a.items()}))
 
 
-def wait_for_file(folder, name, seconds=30):
-    end = time.time() + seconds
-    path = os.path.join(folder, name)
-    while time.time() < end:
-        if os.path.exists(path) and not os.path.exists(path + ".crdownload"):
-            return path
-        time.sleep(0.2)
-    return None
-
 
 def grade(submission, *extra):
     r = run("grade", "--assignment", ASSIGNMENT, "--format", "json", "--feedback", "full", *extra, submission)
@@ -199,7 +169,7 @@ def main():
         downloads = os.path.join(work, "downloads")
         os.makedirs(downloads)
         profile = os.path.join(work, "profile")
-        driver = driver_for(downloads, profile)
+        driver = selenium_chromium(profile, downloads)
         try:
             driver.get("file://" + pages["s001"])
             # An unreadable entry is flagged as it is typed, and the flag goes when it is fixed.

@@ -28,14 +28,11 @@ import shutil
 import subprocess
 import sys
 import tempfile
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from chromium import FLAGS, SKIPPED, require_chromium  # noqa: E402
+from chromium import SKIPPED, click, require_chromium, selenium_chromium, wait_for_file  # noqa: E402
 
 try:
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
     from selenium.webdriver.common.by import By
     from selenium.webdriver.support.ui import Select
 except ImportError:
@@ -87,23 +84,6 @@ def from_text(point):
     return "the eye (the primary ray)" if origin == "eye" else FROM_TEXT[origin[0]].format(origin[1])
 
 
-def driver_for(downloads, profile):
-    options = webdriver.ChromeOptions()
-    for flag in FLAGS:
-        options.add_argument(flag if flag != "--headless" else "--headless=new")
-    options.add_argument(f"--user-data-dir={profile}")
-    options.add_argument("--window-size=1200,1600")
-    options.binary_location = shutil.which("chromium") or shutil.which("chromium-browser")
-    options.add_experimental_option("prefs", {"download.default_directory": downloads,
-                                              "download.prompt_for_download": False})
-    driver = webdriver.Chrome(service=Service(shutil.which("chromedriver")), options=options)
-    driver.execute_cdp_cmd("Page.setDownloadBehavior", {"behavior": "allow", "downloadPath": downloads})
-    return driver
-
-
-def click(driver, el):
-    driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", el)
-    el.click()
 
 
 def choose(driver, el, text):
@@ -128,26 +108,24 @@ def build_tree(driver, points):
     return form
 
 
-def wait_for_file(folder, name, seconds=30):
-    end = time.time() + seconds
-    path = os.path.join(folder, name)
-    while time.time() < end:
-        if os.path.exists(path) and not os.path.exists(path + ".crdownload"):
-            return path
-        time.sleep(0.2)
-    return None
-
 
 def answer_in_browser(page, work, points, shot):
     """Builds the tree in a fresh browser, downloads answers.json; its path and the outline."""
     downloads = os.path.join(work, shot + "-downloads")
     os.makedirs(downloads)
-    driver = driver_for(downloads, os.path.join(work, shot + "-profile"))
+    driver = selenium_chromium(os.path.join(work, shot + "-profile"), downloads)
     try:
         driver.get("file://" + page)
         form = build_tree(driver, points)
         outline = form.find_element(By.CSS_SELECTOR, ".tree-outline").text
         driver.save_screenshot(os.path.join(OUT, shot + ".png"))
+        # The tree is kept in the browser: a reload shows the same points and the same tree.
+        driver.refresh()
+        form = driver.find_element(By.CSS_SELECTOR, f"section[data-problem='{PROBLEM}'] .form")
+        check(len(form.find_elements(By.CSS_SELECTOR, "li.tree-point")) == len(points),
+              "the points were not kept after a reload")
+        check(form.find_element(By.CSS_SELECTOR, ".tree-outline").text == outline,
+              "the tree drawn after a reload differs")
         click(driver, driver.find_element(By.ID, "download"))
         return wait_for_file(downloads, "answers.json"), outline
     finally:

@@ -468,18 +468,20 @@
       points.push(pt);
       list.appendChild(pt.node);
       relabel();
-      if (state) {
-        pt.from.value = state.from || "";
-        pt.object.value = state.object || "";
-        (state.lights || []).forEach((l, i) => {
-          if (!pt.lights[i]) return;
-          pt.lights[i].status.value = l.status || "";
-          pt.lights[i].boxes.forEach((b) => { b.checked = (l.blockers || []).indexOf(b.value) >= 0; });
-        });
-        if (pt.terms) pt.terms.value = state.terms || "";
-      }
+      if (state) put(pt, state);
       refresh();
       return pt;
+    }
+    // A point's choices from its saved state.
+    function put(pt, state) {
+      pt.from.value = state.from || "";
+      pt.object.value = state.object || "";
+      (state.lights || []).forEach((l, i) => {
+        if (!pt.lights[i]) return;
+        pt.lights[i].status.value = l.status || "";
+        pt.lights[i].boxes.forEach((b) => { b.checked = (l.blockers || []).indexOf(b.value) >= 0; });
+      });
+      if (pt.terms) pt.terms.value = state.terms || "";
     }
     const add = el("button", {type: "button", class: "tree-add", text: "Add a point"});
     add.addEventListener("click", () => { addPoint(null); save(); });
@@ -492,18 +494,8 @@
       load: (states) => {
         // Ids first, so that every "comes from" can name any point.
         for (const st of states) addPoint({id: st.id});
-        states.forEach((st, k) => {
-          const pt = points[k];
-          relabel();
-          pt.from.value = st.from || "";
-          pt.object.value = st.object || "";
-          (st.lights || []).forEach((l, i) => {
-            if (!pt.lights[i]) return;
-            pt.lights[i].status.value = l.status || "";
-            pt.lights[i].boxes.forEach((b) => { b.checked = (l.blockers || []).indexOf(b.value) >= 0; });
-          });
-          if (pt.terms) pt.terms.value = st.terms || "";
-        });
+        relabel();
+        states.forEach((st, k) => put(points[k], st));
         refresh();
       },
       apply: (answer) => {
