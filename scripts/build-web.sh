@@ -4,6 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 RAYGRADE_EXTRA="web" bash scripts/install-deps.sh
+# three.js and esbuild: the library embeds the pages' 3D view, bundled when it is configured.
+bash scripts/fetch-web-libs.sh
 # Emscripten's JavaScript optimizer needs Debian's acorn, which a node from elsewhere does not
 # find by itself.
 export NODE_PATH="${NODE_PATH:+$NODE_PATH:}/usr/share/nodejs"

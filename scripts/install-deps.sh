@@ -7,8 +7,13 @@ packages=(
   nlohmann-json3-dev libfmt-dev libcli11-dev libgtest-dev libgmock-dev
   libbenchmark-dev libmpfr-dev libglm-dev
   python3-jsonschema pkg-config clang-format strace
-  libgmp-dev file
+  libgmp-dev file nodejs
 )
+# npm fetches the browser libraries the build bundles (scripts/fetch-web-libs.sh). Debian ships
+# it as its own package; a nodejs from elsewhere (NodeSource) carries it already.
+if ! command -v npm >/dev/null; then
+  packages+=(npm)
+fi
 # Extra groups, asked for by name: RAYGRADE_EXTRA="browser fuzz web".
 for extra in ${RAYGRADE_EXTRA:-}; do
   case "$extra" in

@@ -18,9 +18,11 @@ step() {
 trap 'printf "\nStep times:\n%s" "$timings" >&2' EXIT
 # The browser extra: the HTML worked solutions are checked in headless Chromium.
 step "install" env RAYGRADE_EXTRA="${RAYGRADE_EXTRA:-} browser" bash scripts/install-deps.sh
+step "web libraries" bash scripts/fetch-web-libs.sh
 step "configure release" cmake --preset release >/dev/null
 step "build release" cmake --build --preset release
-step "test release" ctest --preset release
+# The accessibility audit waits for the web build: it covers the practice page too.
+step "test release" ctest --preset release -E axe_in_browser
 # The browser build (docs/web.md): raygrade.js against the native binary, byte for byte, on the
 # whole bank, the sample submissions and the hard cases; then a practice page in headless
 # Chromium, from file:// (screenshots in build/web/practice-check).
@@ -42,6 +44,8 @@ web_test() {
 step "test web" web_test
 step "practice page" /usr/bin/python3 tests/practice_in_browser.py build/release/grader/raygrade \
   build/web/web/raygrade.js assignments/homework-rays.json build/web/practice-check
+# axe-core over the handout, practice, worked-solution and feedback pages (docs/web.md).
+step "accessibility" ctest --preset release -R axe_in_browser --output-on-failure
 # The static binary the LMS exports ship (a second build of the library, without tests): the
 # conformance set, every subcommand against the release binary's output, and the Gradescope
 # autograder and the PrairieLearn questions run with it.

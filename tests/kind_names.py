@@ -30,6 +30,9 @@ faults = []
 for path in sorted(list((root / "grader").rglob("*")) + list((root / "web").rglob("*"))):
     if not path.is_file() or kinds_dir in path.parents:
         continue
+    # The browser libraries web/vendor/node_modules holds (three.js, axe-core) are not raygrade's.
+    if "node_modules" in path.parts:
+        continue
     if path.suffix not in {".cpp", ".h", ".in", ".py", ".js", ".json", ".css", ".html"}:
         continue
     comment = "#" if path.suffix == ".py" else "//"

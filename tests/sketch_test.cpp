@@ -5,6 +5,7 @@
 #include <cmath>
 #include <regex>
 
+#include "assignments/handout.h"
 #include "reports/svg_figure.h"
 #include "test_util.h"
 
@@ -241,6 +242,27 @@ TEST(DeriveSketch, OffsetCylinderNamesItsCentre) {
   const SketchItem& r = item(f, Type::kPath, "r");
   expect_near(r.points[0], {2 - std::sqrt(2.0), 3 - std::sqrt(2.0), 0});
   expect_near(r.points[1], {2, 3, 0});
+}
+
+// A camera's ray through a pixel is the answer of camera-ray and view-ray problems: the
+// statement's figure draws the eye and the image plane, never that ray (the worked solution's
+// figure draws it).
+TEST(Sketch, AStatementNeverDrawsTheCameraRayItAsksFor) {
+  for (const char* source : {R"({"id": "c", "kind": "camera-ray", "camera": {"eye": [0, 0, 0],
+        "direction": [0, 0, -1], "up": [0, 1, 0], "focal_length": 1, "resolution": [640, 480]},
+        "pixel": [320, 240], "convention": "corner"})",
+                             R"({"id": "v", "kind": "view-ray", "camera": {"eye": [0, 0, 0],
+        "direction": [0, 0, -1], "up": [0, 1, 0], "focal_length": 1,
+        "bounds": [-2, 2, -1.5, 1.5], "resolution": [8, 6], "pixel_origin": "bottom-left"},
+        "pixel": [2, 1], "convention": "center"})"}) {
+    Problem p = testing::problem(source);
+    std::string solution = render_svg(p.task->sketch(), "solution").svg;
+    std::string statement = statement_figure_svg(p);
+    EXPECT_NE(solution.find("class=\"ray\""), std::string::npos) << p.id;
+    EXPECT_EQ(statement.find("class=\"ray\""), std::string::npos) << p.id << statement;
+    EXPECT_NE(statement.find("class=\"guide\""), std::string::npos) << p.id;
+    EXPECT_EQ(statement.find("pixel ("), std::string::npos) << p.id;
+  }
 }
 
 }  // namespace

@@ -43,6 +43,38 @@ std::int64_t days_from_civil(std::int64_t y, unsigned m, unsigned d) {
   return era * 146097 + static_cast<std::int64_t>(doe) - 719468;
 }
 
+// A civil date and time of day, UTC, from seconds since 1970-01-01 UTC (Howard Hinnant's
+// civil_from_days, the inverse of days_from_civil).
+struct UtcTime {
+  std::int64_t year;
+  unsigned month, day, weekday;  // weekday 0 is Sunday
+  int hour, minute, second;
+};
+
+UtcTime utc_time(std::int64_t seconds) {
+  std::int64_t days = seconds / 86400;
+  std::int64_t rest = seconds % 86400;
+  if (rest < 0) {
+    rest += 86400;
+    --days;
+  }
+  UtcTime t{};
+  t.weekday = static_cast<unsigned>(((days + 4) % 7 + 7) % 7);  // 1970-01-01 was a Thursday
+  t.hour = static_cast<int>(rest / 3600);
+  t.minute = static_cast<int>(rest / 60 % 60);
+  t.second = static_cast<int>(rest % 60);
+  const std::int64_t z = days + 719468;
+  const std::int64_t era = (z >= 0 ? z : z - 146096) / 146097;
+  const auto doe = static_cast<unsigned>(z - era * 146097);
+  const unsigned yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+  const unsigned doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+  const unsigned mp = (5 * doy + 2) / 153;
+  t.day = doy - (153 * mp + 2) / 5 + 1;
+  t.month = mp < 10 ? mp + 3 : mp - 9;
+  t.year = static_cast<std::int64_t>(yoe) + era * 400 + (t.month <= 2);
+  return t;
+}
+
 bool digits(std::string_view s, std::size_t at, std::size_t n, int& out) {
   if (at + n > s.size()) return false;
   out = 0;
@@ -115,6 +147,23 @@ std::optional<std::int64_t> parse_time(std::string_view s) {
   }
   return days_from_civil(y, static_cast<unsigned>(mo), static_cast<unsigned>(d)) * 86400 +
          h * 3600 + mi * 60 + sec - offset;
+}
+
+std::string utc_time_text(std::int64_t seconds) {
+  static const char* const kWeekdays[] = {"Sunday",   "Monday", "Tuesday", "Wednesday",
+                                          "Thursday", "Friday", "Saturday"};
+  static const char* const kMonths[] = {"January",   "February", "March",    "April",
+                                        "May",       "June",     "July",     "August",
+                                        "September", "October",  "November", "December"};
+  UtcTime t = utc_time(seconds);
+  return fmt::format("{} {} {} {}, {:02}:{:02} UTC", kWeekdays[t.weekday], t.day,
+                     kMonths[t.month - 1], t.year, t.hour, t.minute);
+}
+
+std::string iso_utc_time(std::int64_t seconds) {
+  UtcTime t = utc_time(seconds);
+  return fmt::format("{:04}-{:02}-{:02}T{:02}:{:02}:{:02}Z", t.year, t.month, t.day, t.hour,
+                     t.minute, t.second);
 }
 
 FeedbackPolicy AssignmentSpec::policy(const AssignmentProblem& p, std::int64_t now) const {

@@ -66,6 +66,10 @@ bool is_assignment_file(const std::string& path);
 // An ISO 8601 date and time, "2026-12-04T23:59:00Z" or with an offset ("+01:00"); a date alone
 // means the end of that day in UTC. Seconds since 1970-01-01 UTC, or nothing if malformed.
 std::optional<std::int64_t> parse_time(std::string_view text);
+// A moment as pages show it, in UTC to the minute: "Friday 4 December 2026, 23:59 UTC".
+std::string utc_time_text(std::int64_t seconds);
+// A moment in ISO 8601, UTC, to the second: "2026-12-04T23:59:00Z" (a <time>'s datetime).
+std::string iso_utc_time(std::int64_t seconds);
 
 // The problems an assignment takes from its bank, in the assignment's order, as written (with
 // their default numbers). Unknown ids are errors at their place in the assignment.

@@ -13,6 +13,8 @@
 #include "derivation/formula.h"
 #include "json/numbers.h"
 #include "json/source.h"
+#include "reports/scene_view.h"
+#include "reports/scene_view_assets.h"
 #include "reports/svg_figure.h"
 
 namespace raygrade {
@@ -56,6 +58,14 @@ std::string points_text(const AssignmentSpec& spec, std::size_t i, const Problem
   return "";
 }
 
+// The due date in UTC, the text a browser without script shows; the page's script adds the
+// student's local time from the datetime.
+std::string due_html(const AssignmentSpec& spec) {
+  if (!spec.due) return "";
+  return fmt::format("<p class=\"due\">Due <time datetime=\"{}\">{}</time></p>\n",
+                     iso_utc_time(*spec.due), html_escape(utc_time_text(*spec.due)));
+}
+
 }  // namespace
 
 std::string statement_figure_svg(const Problem& p) {
@@ -74,7 +84,7 @@ std::string statement_figure_svg(const Problem& p) {
       case Ink::kRay:
         // The first ray drawn is the one given; later ones (reflected, refracted) are answers.
         // It is drawn as a direction from its origin, without a length that could tell t.
-        if (!ray_kept && item.points.size() == 2) {
+        if (!ray_kept && !full.ray_is_answer && item.points.size() == 2) {
           SketchItem ray = item;
           ray.label.clear();
           Vec3d d = ray.points[1] - ray.points[0];
@@ -86,6 +96,9 @@ std::string statement_figure_svg(const Problem& p) {
         }
         break;
       case Ink::kGuide:
+        // A camera's image plane and f·d are given; other guides are the solution's.
+        if (full.ray_is_answer) s.items.push_back(item);
+        break;
       case Ink::kHit:
       case Ink::kMiss:
         break;  // construction lines, hits and rejected candidates belong to the solution
@@ -145,6 +158,7 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
   json listed = json::array();
   json answers = json::object();
   std::string sections;
+  int views = 0;
   for (std::size_t i = 0; i < problems.size(); ++i) {
     const Problem& p = problems[i];
     json form = answer_form(p);
@@ -152,6 +166,13 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
     answers[p.id] = blank_answer(form);
     std::string points = points_text(spec, i, p);
     std::string figure = statement_figure_svg(p);
+    // The 3D view of the givens, after the sketch (the printed and text form of the scene).
+    std::string view_html;
+    if (std::optional<SceneView> view = scene_view(p, false)) {
+      view_html =
+          scene_view_html(*view, fmt::format("scene-{}", i), p.title.empty() ? p.id : p.title);
+      ++views;
+    }
     sections += fmt::format(
         "<section class=\"problem\" id=\"problem-{}\" data-problem=\"{}\">\n<h2>{}. {}{}</h2>\n"
         "<p class=\"muted\">Problem id: <code>{}</code></p>\n<p class=\"statement\">{}</p>\n{}"
@@ -159,7 +180,7 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
         i, html_escape(p.id), i + 1, html_escape(p.title.empty() ? p.id : p.title),
         points.empty() ? "" : fmt::format(" <span class=\"points\">({})</span>", points),
         html_escape(p.id), html_escape(p.statement),
-        figure.empty() ? "" : "<figure>" + figure + "</figure>\n", i);
+        (figure.empty() ? std::string() : "<figure>" + figure + "</figure>\n") + view_html, i);
   }
   data["problems"] = listed;
   std::string grader_script;
@@ -178,6 +199,13 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
     }
     grader_script = "<script>" + practice->grader_js + "</script>\n";
   }
+  // The 3D view's script inline, once, after the last view: the page stays one file. As a
+  // module it runs after the page's own script, which starts the grader first.
+  if (views > 0) {
+    grader_script += "<style>" + std::string(kSceneViewStyle) +
+                     "</style>\n<script type=\"module\">" + std::string(kSceneViewScript) +
+                     "</script>\n";
+  }
   std::string who = student ? student->display() : "";
   std::string title = spec.title + (who.empty() ? "" : " — " + who);
   out.html = fmt::format(
@@ -190,18 +218,15 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
       "<code>2√2</code>, <code>1/3</code>, <code>pi/4</code>. Each input says at once whether "
       "it can be read; it does not say whether it is right. Your answers are kept in this "
       "browser; when you are done, download <code>answers.json</code> and hand it in.</p>\n"
-      "</header>\n{}<div id=\"actions\"><button type=\"button\" id=\"download\">Download "
+      "</header>\n<main>\n{}<div id=\"actions\"><button type=\"button\" id=\"download\">Download "
       "answers.json</button><button type=\"button\" id=\"clear\">Clear my answers</button> "
-      "<span id=\"saved\" class=\"muted\"></span></div>\n"
+      "<span id=\"saved\" class=\"muted\"></span></div>\n</main>\n"
       "<script type=\"application/json\" id=\"handout-data\">{}</script>\n{}<script>{}</script>\n"
       "</body>\n</html>\n",
       practice ? " 'wasm-unsafe-eval'" : "", html_escape(title), kHandoutStyle,
       html_escape(spec.title),
       who.empty() ? "" : fmt::format("<p class=\"student\">For {}</p>\n", html_escape(who)),
-      spec.due_text.empty()
-          ? ""
-          : fmt::format("<p class=\"due\">Due {}</p>\n", html_escape(spec.due_text)),
-      sections, script_json(data), grader_script, kHandoutScript);
+      due_html(spec), sections, script_json(data), grader_script, kHandoutScript);
   out.template_json = json::object();
   if (student) out.template_json["student"] = identity_json(*student);
   out.template_json["answers"] = answers;

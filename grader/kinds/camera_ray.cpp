@@ -103,6 +103,7 @@ Sketch CameraRayTask::sketch() const {
   f.path({cam_.eye, center}, false, Ink::kGuide, "f·d");
   Vec3d dr = camera_ray_direction(cam_, x_, y_, convention_);
   f.arrow(cam_.eye, cam_.eye + 1.3 * dr, Ink::kRay);
+  f.ray_is_answer = true;
   f.point(cam_.eye, Ink::kPoint, "eye");
   f.point(cam_.eye + dr, Ink::kHit,
           fmt::format("pixel ({}, {})", format_number(x_), format_number(y_)));

@@ -286,6 +286,7 @@ Sketch ViewRayTask::sketch() const {
   Ray ray = view_ray(c, i_, j_, convention_);
   double len = c.projection == Projection::kOrthographic ? c.focal_length + 1 : 1.3;
   f.arrow(ray.origin, ray.origin + len * ray.direction, Ink::kRay);
+  f.ray_is_answer = true;
   f.point(c.eye, Ink::kPoint, "eye");
   f.point(c.projection == Projection::kOrthographic ? ray.origin : ray.origin + ray.direction,
           Ink::kHit, fmt::format("pixel ({}, {})", format_number(i_), format_number(j_)));

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "core/escape.h"
+#include "reports/scene_view.h"
 #include "reports/svg_figure.h"
 
 namespace raygrade {
@@ -24,7 +25,7 @@ figure.sketch{margin:1rem 0 1.2rem;text-align:center}
 figure.sketch svg{max-width:100%;height:auto;background:#fff}
 figcaption{color:var(--muted);font-size:.85rem;margin-top:.3rem}
 .given{background:#f3f6fa;border-radius:8px;padding:.6rem 1rem;margin:.6rem 0 1rem}
-.given h4{margin:0 0 .3rem;font-size:.8rem;text-transform:uppercase;letter-spacing:.06em;color:var(--muted)}
+.given h3,.given h4{margin:0 0 .3rem;font-size:.8rem;text-transform:uppercase;letter-spacing:.06em;color:var(--muted)}
 .given ul{margin:0;padding:0;list-style:none;display:flex;flex-wrap:wrap;gap:.25rem 1.6rem}
 .given li{white-space:nowrap;max-width:100%}
 .given li .note{white-space:normal}
@@ -134,12 +135,14 @@ void html_part(std::string& out, const SolutionPart& part, const NumberFormat& n
            "</figcaption>\n</figure>\n";
   }
   RenderOptions plain{nullptr, numbers, false};
+  // "Given" is a heading one level below the part's own.
+  const char* given_tag = std::string_view(tag) == "h2" ? "h3" : "h4";
   bool in_steps = false;
   for (const auto& group : step_groups(part.derivation, numbers)) {
     if (group.given) {
       if (in_steps) out += "</ol>\n";
       in_steps = false;
-      out += "<div class=\"given\"><h4>Given</h4><ul>\n";
+      out += fmt::format("<div class=\"given\"><{0}>Given</{0}><ul>\n", given_tag);
       for (const auto& v : group.steps) {
         out += "<li>" + math(to_mathml(v.step->symbol, plain) + "<mo>=</mo>" +
                                  value_mathml(v.step->value, plain),
@@ -171,7 +174,8 @@ void html_part(std::string& out, const SolutionPart& part, const NumberFormat& n
   }
 }
 
-void render_article(std::string& out, const Solution& solution) {
+// Returns whether it drew a 3D view (the page then loads the view's script).
+bool render_article(std::string& out, const Solution& solution, const DocumentOptions& options) {
   const Problem& p = *solution.problem;
   std::string title = p.title.empty() ? p.id : p.title;
   out += "<article id=\"" + html_escape(safe_file_name(p.id)) + "\">\n<header>\n";
@@ -185,6 +189,13 @@ void render_article(std::string& out, const Solution& solution) {
     out += "<figure class=\"sketch\">\n" + svg.svg + "\n<figcaption>" + text_html(svg.caption) +
            "</figcaption>\n</figure>\n";
   }
+  bool viewed = false;
+  if (!options.scene_view_src.empty()) {
+    if (std::optional<SceneView> view = scene_view(p, true)) {
+      out += scene_view_html(*view, "scene-" + safe_file_name(p.id), title);
+      viewed = true;
+    }
+  }
   bool several = solution.methods.size() > 1;
   for (const auto& m : solution.methods) {
     bool heading = several || m.parts.size() > 1;
@@ -194,6 +205,7 @@ void render_article(std::string& out, const Solution& solution) {
     out += "</section>\n";
   }
   out += "</article>\n";
+  return viewed;
 }
 
 }  // namespace
@@ -213,7 +225,12 @@ std::string render_html(const std::vector<const Solution*>& solutions,
       "<meta name=\"generator\" content=\"raygrade\">\n<title>" +
       html_escape(text_escape(title)) + "</title>\n<style>" + kStyle +
       "</style>\n</head>\n<body>\n<main>\n";
-  for (const Solution* s : solutions) render_article(out, *s);
+  bool views = false;
+  for (const Solution* s : solutions) views = render_article(out, *s, options) || views;
+  if (views) {
+    out += "<style>" + std::string(kSceneViewStyle) + "</style>\n<script src=\"" +
+           html_escape(options.scene_view_src) + "\"></script>\n";
+  }
   out += "</main>\n</body>\n</html>\n";
   return out;
 }

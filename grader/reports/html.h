@@ -1,5 +1,6 @@
-// Self-contained HTML worked solutions: math as MathML, the sketch as inline SVG, the style
-// inline; no script, no network.
+// HTML worked solutions: math as MathML, the sketch as inline SVG, the style inline; no network.
+// No script either, unless DocumentOptions::scene_view_src names the 3D view's script beside
+// the page (the solutions folder), which then draws each problem's scene.
 #pragma once
 
 #include <string>

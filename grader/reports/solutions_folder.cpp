@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -10,6 +11,7 @@
 #include "core/atomic_file.h"
 #include "core/escape.h"
 #include "reports/json_report.h"
+#include "reports/scene_view_assets.h"
 
 namespace raygrade {
 namespace {
@@ -21,7 +23,8 @@ std::string index_file(const std::vector<std::pair<const Problem*, std::string>>
   std::string out = "<!-- " + html_escape(note) + " -->\n# Worked solutions\n\n";
   out +=
       "One worked solution per problem of the bank, in each format: Markdown with LaTeX math, "
-      "a self-contained HTML page (MathML and a sketch), plain text and JSON. Step names are "
+      "an HTML page (MathML, a sketch and a 3D view, whose script scene_view.js `raygrade "
+      "solutions` writes beside the pages), plain text and JSON. Step names are "
       "listed in docs/steps.md.\n\n| problem | kind | title | files |\n| --- | --- | --- | --- |\n";
   for (const auto& [p, base] : problems) {
     std::string links;
@@ -75,6 +78,9 @@ FolderSync compare(const std::string& folder, const std::vector<GeneratedFile>& 
   for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
     if (!it->is_regular_file(ec)) continue;
     std::string name = it->path().filename().string();
+    // The 3D view's script is written beside the pages but not checked (the folder in git
+    // leaves it out: it is the same bundle in every build).
+    if (name == kSceneViewFile) continue;
     if (produced.count(name) == 0 && is_generated(it->path())) leftovers.push_back(it->path());
   }
   std::sort(leftovers.begin(), leftovers.end());
@@ -120,6 +126,7 @@ std::vector<GeneratedFile> solution_files(const std::vector<Problem>& problems,
       for (Format f : formats) {
         DocumentOptions o;
         o.generated = note;
+        if (f == Format::kHtml) o.scene_view_src = kSceneViewFile;
         if (f == Format::kMarkdown &&
             std::find(formats.begin(), formats.end(), Format::kHtml) != formats.end()) {
           o.html_link = base + ".html";
@@ -142,7 +149,12 @@ std::vector<GeneratedFile> solution_files(const std::vector<Problem>& problems,
 
 FolderSync write_solution_folder(const std::string& folder,
                                  const std::vector<GeneratedFile>& files) {
-  return compare(folder, files, true);
+  FolderSync sync = compare(folder, files, true);
+  bool pages = std::any_of(files.begin(), files.end(), [](const GeneratedFile& f) {
+    return f.name.size() > 5 && f.name.compare(f.name.size() - 5, 5, ".html") == 0;
+  });
+  if (pages) update_generated_file(fs::path(folder) / kSceneViewFile, kSceneViewScript, false);
+  return sync;
 }
 
 FolderSync check_solution_folder(const std::string& folder,

@@ -50,6 +50,9 @@ struct Sketch {
   // when the renderer may choose.
   Vec3d up{};
   std::string up_name;  // what `up` is, for the caption: "the normal"
+  // The ray drawn is what the problem asks (a camera's ray through a pixel): a statement's
+  // figure leaves it out and keeps the camera's frame (the guides) instead.
+  bool ray_is_answer = false;
 
   bool empty() const { return items.empty(); }
   void path(std::vector<Vec3d> points, bool closed, Ink ink, std::string label = "") {

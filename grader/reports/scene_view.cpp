@@ -1,0 +1,301 @@
+// The 3D view's data: the givens read from the problem as written, the answers from its task.
+#include "reports/scene_view.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "core/escape.h"
+#include "json/numbers.h"
+#include "kinds/camera_ray.h"
+#include "kinds/intersect.h"
+#include "kinds/view_ray.h"
+#include "scenes/scene.h"
+#include "shapes/transformed.h"
+
+namespace raygrade {
+namespace {
+
+using json = nlohmann::json;
+
+json point_json(const Vec3d& v) { return json::array({v.x, v.y, v.z}); }
+
+// The bounding box of everything drawn that has a size, from which the viewer takes the
+// scene's centre and size (and the size of an infinite plane or cylinder).
+struct Bounds {
+  Vec3d lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+           std::numeric_limits<double>::infinity()};
+  Vec3d hi = -lo;
+  void add(const Vec3d& p, double r = 0) {
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], p[k] - r);
+      hi[k] = std::max(hi[k], p[k] + r);
+    }
+  }
+  bool empty() const { return !(lo.x <= hi.x); }
+  json frame() const {
+    if (empty()) return {{"center", point_json({0, 0, 0})}, {"radius", 1.0}};
+    double radius = length(hi - lo) / 2;
+    // A scene of one point still needs a size to be seen at.
+    if (!(radius > 0)) radius = 1;
+    return {{"center", point_json((lo + hi) * 0.5)}, {"radius", radius}};
+  }
+};
+
+// An object as the viewer builds it: its primitive's parameters in object space and the
+// matrix that places it (rows of A with b: p_world = A·p + b), when it is transformed.
+json object_json(const std::string& label, const Shape& shape, const Transform* transform) {
+  const Shape* primitive = &shape;
+  if (const auto* placed = dynamic_cast<const TransformedShape*>(&shape)) {
+    primitive = &placed->object();
+    transform = &placed->transform();
+  }
+  json j = {{"label", label.empty() ? std::string(primitive->type()) : label},
+            {"shape", primitive->to_json()}};
+  if (transform && !transform->identity()) {
+    const Affine& m = transform->to_world;
+    json rows = json::array();
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) rows.push_back(m.rows[r][c]);
+      rows.push_back(m.translation[r]);
+    }
+    j["matrix"] = rows;
+  }
+  return j;
+}
+
+// The four corners of a rectangle around `centre` with half-sides `a` and `b`.
+json rectangle(const Vec3d& centre, const Vec3d& a, const Vec3d& b) {
+  return json::array({point_json(centre - a - b), point_json(centre + a - b),
+                      point_json(centre + a + b), point_json(centre - a + b)});
+}
+
+// The camera and its pixel: the eye, the image plane's corners, the pixel's corners (not the
+// ray through it, which the camera kinds ask for).
+json camera_json(const Cursor& problem, Bounds& bounds) {
+  Cursor camera = problem.at("camera");
+  json j;
+  if (is_view_camera(camera)) {
+    ViewCamera cam = read_view_camera(camera);
+    auto [i, k] = read_pixel(problem, cam.nx, cam.ny);
+    bool orthographic = cam.projection == Projection::kOrthographic;
+    Vec3d plane = orthographic ? cam.eye : cam.eye - cam.focal_length * cam.w;
+    Vec3d mid = plane + (0.5 * (cam.l + cam.r)) * cam.u + (0.5 * (cam.b + cam.t)) * cam.v;
+    Vec3d half_u = (0.5 * (cam.r - cam.l)) * cam.u, half_v = (0.5 * (cam.t - cam.b)) * cam.v;
+    Ray through = view_ray(cam, i, k, PixelConvention::kCenter);
+    Vec3d centre = through.origin;
+    if (!orthographic) {
+      centre =
+          through.origin + (cam.focal_length / dot(through.direction, -cam.w)) * through.direction;
+    }
+    j = {{"eye", point_json(cam.eye)},
+         {"look", point_json(-cam.w)},
+         {"orthographic", orthographic},
+         {"corners", rectangle(mid, half_u, half_v)},
+         {"pixel", rectangle(centre, (0.5 * (cam.r - cam.l) / cam.nx) * cam.u,
+                             (0.5 * (cam.t - cam.b) / cam.ny) * cam.v)}};
+    bounds.add(cam.eye);
+    for (const Vec3d& c : {mid - half_u - half_v, mid + half_u + half_v}) bounds.add(c);
+    return j;
+  }
+  Camera cam = read_camera(camera);
+  auto [x, y] = read_pixel(problem, cam.res_x, cam.res_y);
+  Vec3d right = cross(cam.direction, cam.up);
+  Vec3d mid = cam.eye + cam.focal_length * cam.direction;
+  Vec3d half_x = (0.5 * cam.res_x) * right, half_y = (0.5 * cam.res_y) * cam.up;
+  Vec3d centre = cam.eye + camera_ray_direction(cam, x, y, PixelConvention::kCenter);
+  j = {{"eye", point_json(cam.eye)},
+       {"look", point_json(cam.direction)},
+       {"orthographic", false},
+       {"corners", rectangle(mid, half_x, half_y)},
+       {"pixel", rectangle(centre, 0.5 * right, 0.5 * cam.up)}};
+  bounds.add(cam.eye);
+  for (const Vec3d& c : {mid - half_x - half_y, mid + half_x + half_y}) bounds.add(c);
+  return j;
+}
+
+Vec3d vec3_of(const json& a) {
+  return {a.at(0).get<double>(), a.at(1).get<double>(), a.at(2).get<double>()};
+}
+
+bool is_vec3(const json& a) { return a.is_array() && a.size() == 3 && a[0].is_number(); }
+
+// What the answer holds that can be drawn, whatever the kind: hits (with normals), a ray tree's
+// nodes, a ray (the camera kinds), a normal at the given point.
+json answers_json(const json& answer, const json& data, double size) {
+  json hits = json::array(), segments = json::array();
+  auto ray_segment = [&](const Vec3d& origin, const Vec3d& direction, const char* role) {
+    double len = length(direction);
+    if (!(len > 0)) return;
+    segments.push_back({{"from", point_json(origin)},
+                        {"to", point_json(origin + (2 * size / len) * direction)},
+                        {"role", role}});
+  };
+  if (answer.contains("hits") && answer["hits"].is_array()) {
+    for (const auto& h : answer["hits"]) {
+      if (!h.is_object() || !h.contains("point") || !is_vec3(h["point"])) continue;
+      json hit = {{"point", h["point"]}};
+      if (h.contains("normal")) hit["normal"] = h["normal"];
+      hits.push_back(hit);
+    }
+  }
+  if (answer.contains("nodes") && answer["nodes"].is_array()) {
+    std::map<std::string, json> lights;
+    for (const auto& l : data.value("lights", json::array())) lights[l.value("label", "")] = l;
+    for (const auto& n : answer["nodes"]) {
+      if (!n.contains("origin") || !n.contains("direction")) continue;
+      std::string role = n.value("ray", "primary");
+      Vec3d origin = vec3_of(n["origin"]);
+      if (n.value("hit", false) && n.contains("point") && is_vec3(n["point"])) {
+        Vec3d point = vec3_of(n["point"]);
+        segments.push_back(
+            {{"from", point_json(origin)}, {"to", point_json(point)}, {"role", role}});
+        json hit = {{"point", n["point"]}};
+        if (n.contains("normal")) hit["normal"] = n["normal"];
+        hits.push_back(hit);
+        for (const auto& l : n.value("lights", json::array())) {
+          auto found = lights.find(l.value("light", ""));
+          if (found == lights.end() || !found->second.contains("position")) continue;
+          segments.push_back(
+              {{"from", point_json(point)}, {"to", found->second["position"]}, {"role", "shadow"}});
+        }
+      } else {
+        ray_segment(origin, vec3_of(n["direction"]), role.c_str());
+      }
+    }
+  }
+  if (answer.contains("ray") && answer["ray"].is_object()) {
+    ray_segment(vec3_of(answer["ray"].at("origin")), vec3_of(answer["ray"].at("direction")),
+                "answer");
+  } else if (answer.contains("origin") && answer.contains("direction") &&
+             is_vec3(answer["origin"]) && is_vec3(answer["direction"])) {
+    ray_segment(vec3_of(answer["origin"]), vec3_of(answer["direction"]), "answer");
+  }
+  if (answer.contains("normal") && is_vec3(answer["normal"]) && data.contains("points")) {
+    hits.push_back({{"point", data["points"][0]["at"]}, {"normal", answer["normal"]}});
+  }
+  return {{"hits", hits}, {"segments", segments}};
+}
+
+// JSON inside a <script> element: nothing that could end it or start markup.
+std::string view_json_text(const json& j) {
+  std::string text = without_negative_zeros(j).dump(-1, ' ', false, json::error_handler_t::replace);
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    if (c == '<') {
+      out += "\\u003c";
+    } else if (c == '>') {
+      out += "\\u003e";
+    } else if (c == '&') {
+      out += "\\u0026";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<SceneView> scene_view(const Problem& problem, bool answers) {
+  if (!problem.source.is_object()) return std::nullopt;
+  // The givens, read again from the problem as written: only what the student is given.
+  Cursor c(problem.source_file, &problem.source, problem.path);
+  json data = {{"objects", json::array()}};
+  Bounds bounds;
+  std::vector<std::string> words;
+  auto add_object = [&](const std::string& label, const Shape& shape, const Transform* t) {
+    json o = object_json(label, shape, t);
+    Vec3d centre = shape.center();
+    double extent = shape.extent();
+    if (t && !t->identity()) {
+      const auto& a = t->to_world.rows;
+      centre = t->to_world.point(centre);
+      extent *= std::sqrt(dot(a[0], a[0]) + dot(a[1], a[1]) + dot(a[2], a[2]));
+    }
+    bounds.add(centre, extent);
+    words.push_back(o["label"].get<std::string>());
+    data["objects"].push_back(o);
+  };
+  if (auto object = c.find("object")) {
+    std::unique_ptr<Shape> shape = read_shape(*object);
+    add_object("", *shape, nullptr);
+  }
+  if (auto objects = c.find("objects")) {
+    for (const auto& o : read_named_objects(*objects)) add_object(o.name, *o.shape, nullptr);
+  }
+  std::vector<std::string> lights;
+  if (auto s = c.find("scene")) {
+    Scene scene = read_scene(*s);
+    for (const auto& o : scene.objects) add_object(o.name, *o.shape, &o.transform);
+    for (const auto& l : scene.lights) {
+      if (l.type == LightType::kPoint) {
+        data["lights"].push_back({{"label", l.name}, {"position", point_json(l.position)}});
+        bounds.add(l.position);
+      } else {
+        data["lights"].push_back({{"label", l.name}, {"direction", point_json(l.direction)}});
+      }
+      lights.push_back(l.name);
+    }
+  }
+  bool camera = c.has("camera") && c.has("pixel");
+  if (camera) {
+    data["camera"] = camera_json(c, bounds);
+    // Where the pixel lies is what a camera kind asks for: a page of givens leaves it out.
+    if (!answers) data["camera"].erase("pixel");
+  }
+  if (data["objects"].empty() && !camera) return std::nullopt;
+  if (auto r = c.find("ray")) {
+    Ray ray = read_ray(*r);
+    data["ray"] = {{"origin", point_json(ray.origin)}, {"direction", point_json(ray.direction)}};
+    bounds.add(ray.origin);
+  }
+  if (auto p = c.find("point"); p && !data["objects"].empty()) {
+    Vec3d at = p->vec3();
+    data["points"].push_back({{"at", point_json(at)}, {"label", "P"}});
+    bounds.add(at);
+  }
+  data["frame"] = bounds.frame();
+
+  SceneView view;
+  std::string text = "The scene in 3D";
+  if (!words.empty()) text += fmt::format(": {}", fmt::join(words, ", "));
+  if (data.contains("ray"))
+    text += "; the given ray, an arrow from its origin (its length is not t)";
+  if (!lights.empty())
+    text += fmt::format("; the light{} {}", lights.size() > 1 ? "s" : "", fmt::join(lights, ", "));
+  if (camera) {
+    text += answers ? "; the camera's eye, its image plane and the pixel (orange)"
+                    : "; the camera's eye and its image plane";
+  }
+  if (data.contains("points")) text += "; the point P";
+  if (answers) {
+    data["answers"] =
+        answers_json(problem.task->answer(), data, data["frame"]["radius"].get<double>());
+    if (!data["answers"]["hits"].empty())
+      text += "; the hit points (red) with their normals (blue)";
+    if (!data["answers"]["segments"].empty()) text += "; the rays of the answer";
+  }
+  view.description = text + ".";
+  view.data = std::move(data);
+  return view;
+}
+
+std::string scene_view_html(const SceneView& view, const std::string& id,
+                            const std::string& title) {
+  return fmt::format(
+      "<figure class=\"scene-view-figure\">\n<div class=\"scene-view\" data-scene=\"{0}-data\" "
+      "data-label=\"{1}\" data-describedby=\"{0}-text\">The 3D view needs JavaScript and WebGL; "
+      "the sketch shows the scene.</div>\n<figcaption id=\"{0}-text\">{2} Drag to turn it "
+      "(or arrow keys with Shift), right-drag or arrow keys to move, wheel or + and − to zoom, "
+      "0 to start again.</figcaption>\n<script type=\"application/json\" id=\"{0}-data\">{3}"
+      "</script>\n</figure>\n",
+      html_escape(id), html_escape("3D view: " + title), html_escape(view.description),
+      view_json_text(view.data));
+}
+
+}  // namespace raygrade
