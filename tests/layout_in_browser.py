@@ -8,8 +8,9 @@ the pages of three long ones on their own (`solutions --format html`); each gets
 - the document: its scrollWidth against its clientWidth (more means a horizontal scrollbar);
 - every formula: whether it reaches past the right edge of its article, or scrolls inside
   itself (scrollWidth over clientWidth);
-- every label of every sketch: its box (SVG getBBox, the browser's own text metrics), and
-  whether any two boxes of one sketch overlap.
+- every label of every sketch: its box on the page (the browser's own text metrics, with the
+  transform that puts a second view beside the first), and whether any two boxes of one sketch
+  overlap.
 
 The measurements are read back from the dumped DOM. Screenshots of three long worked solutions
 (the triangle's edge tests e_ab, the camera ray's d_r, the refracted direction t) are saved at
@@ -49,7 +50,8 @@ MEASURE = r"""<script>
   for (const svg of document.querySelectorAll("svg")) {
     const boxes = [];
     for (const t of svg.querySelectorAll("text")) {
-      const b = t.getBBox();
+      // On the page, transforms applied: a sketch of two views moves the second one aside.
+      const b = t.getBoundingClientRect();
       boxes.push({text: t.textContent, x: b.x, y: b.y, w: b.width, h: b.height});
     }
     out.labels += boxes.length;

@@ -7,14 +7,16 @@ the pages), then:
   scene_view.js;
 - gathers the view data of every page into one page and draws them one after the other: each
   canvas must show several distinct colours besides its background (not blank), and no object
-  may be of a type the viewer does not know;
+  may be of a type the viewer does not know. By default it draws one view of each sort (the
+  same object types, camera, lights, given arrows and answer marks: about 50 of the bank's
+  views); with RAYGRADE_LONG=1 (or --every) it draws every problem's;
 - draws five chosen problems from their fixed initial camera and compares each image with its
   reference in tests/data/scene_view/ (REFERENCE_TOLERANCE below), writing the images and a
   picture of the differences to OUT;
 - writes the handout page of the example assignment and checks that no view on it holds an
   answer: no hit point or normal of the student's answers, no answer data at all.
 
-Usage: scene_view_in_browser.py RAYGRADE SOURCE_ROOT OUT [--update-references]
+Usage: scene_view_in_browser.py RAYGRADE SOURCE_ROOT OUT [--update-references] [--every]
 Exits 77 (skipped) without Chromium, Selenium or the viewer's script.
 """
 import base64
@@ -40,6 +42,8 @@ except ImportError:
 RAYGRADE, ROOT, OUT = sys.argv[1:4]
 RAYGRADE, ROOT, OUT = os.path.abspath(RAYGRADE), os.path.abspath(ROOT), os.path.abspath(OUT)
 UPDATE = "--update-references" in sys.argv[4:]
+# Every problem of the bank with RAYGRADE_LONG=1 (about 2 minutes); otherwise one of each sort.
+EVERY = os.environ.get("RAYGRADE_LONG") == "1" or "--every" in sys.argv[4:]
 REFERENCES = os.path.join(ROOT, "tests", "data", "scene_view")
 # The chosen problems: a sphere, a transformed box, a cone, a ray tree and a camera.
 CHOSEN = ["seed000-sphere-1", "transform-rotated-box", "cone-side", "seed001-ray-tree",
@@ -139,6 +143,26 @@ def data_url(path):
 def save(url, path):
     with open(path, "wb") as f:
         f.write(base64.b64decode(url.split(",", 1)[1]))
+
+
+def sort_of_view(data):
+    """What a view is made of: its objects' types, and whether it has a camera, lights, a
+    given ray or arrows, answer hits and answer rays. Views of one sort are drawn alike."""
+    answers = data.get("answers", {})
+    return (tuple(sorted({o["shape"]["type"] for o in data.get("objects", [])})),
+            "camera" in data, bool(data.get("lights")), "ray" in data, bool(data.get("arrows")),
+            bool(answers.get("hits")), tuple(sorted({s["role"] for s in answers.get("segments", [])})))
+
+
+def sample(views):
+    """The chosen views and the first view of every other sort."""
+    out, seen = {}, set()
+    for base, data in views.items():
+        key = sort_of_view(data)
+        if base in CHOSEN or key not in seen:
+            out[base] = data
+            seen.add(key)
+    return out
 
 
 def view_data(html):
@@ -264,13 +288,16 @@ def main():
         check(driver.execute_script("return !!window.raygradeSceneView"),
               "the viewer's script did not load")
         blank = []
-        for base, data in views.items():
+        drawn = views if EVERY else sample(views)
+        for base, data in drawn.items():
             got = driver.execute_script(DRAW, data, False, None)
             ok = got["ready"] == "drawn" and got["colours"] >= MIN_COLOURS
             if not ok:
                 blank.append(f"{base} ({got['ready']}, {got['colours']} colours)")
         check(not blank, f"{len(blank)} view(s) not drawn: {', '.join(blank)}")
-        print(f"drawn: {len(views) - len(blank)} of {len(views)} problems' views")
+        print(f"drawn: {len(drawn) - len(blank)} of {len(drawn)} problems' views"
+              + ("" if EVERY else f" (one of each sort, of {len(views)}; RAYGRADE_LONG=1 draws "
+                                  "every one)"))
 
         for base in CHOSEN:
             if not check(base in views, f"{base}: no such problem with a view"):

@@ -247,6 +247,53 @@ TEST(DeriveSketch, OffsetCylinderNamesItsCentre) {
 // A camera's ray through a pixel is the answer of camera-ray and view-ray problems: the
 // statement's figure draws the eye and the image plane, never that ray (the worked solution's
 // figure draws it).
+// The area (in px², by the shoelace formula) of the first closed path of class "object" in
+// `svg`, from its "M x y L x y … Z" data.
+double first_object_area(const std::string& svg) {
+  static const std::regex path(R"re(<path class="object" d="M([^"]*) Z"/>)re");
+  std::smatch m;
+  if (!std::regex_search(svg, m, path)) return -1;
+  std::vector<std::pair<double, double>> pts;
+  static const std::regex xy(R"re((-?[0-9.]+) (-?[0-9.]+))re");
+  std::string d = m[1];
+  for (auto it = std::sregex_iterator(d.begin(), d.end(), xy); it != std::sregex_iterator(); ++it) {
+    pts.emplace_back(std::stod((*it)[1]), std::stod((*it)[2]));
+  }
+  double twice = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const auto& [x0, y0] = pts[i];
+    const auto& [x1, y1] = pts[(i + 1) % pts.size()];
+    twice += x0 * y1 - x1 * y0;
+  }
+  return std::abs(twice) / 2;
+}
+
+// A ray straight down onto a triangle in the plane y = 0: the side view along the ray shows
+// the triangle as a line (area 0), so a second drawing looks along the normal, where the
+// triangle (−2, 0, −2), (2, 0, −2), (0, 0, 2), of area ½·4·4 = 8 square units, has an area
+// well above zero.
+TEST(SketchViews, AFlatObjectSeenEdgeOnGetsAFaceOnView) {
+  Problem p = testing::problem(R"({"id": "t",
+    "ray": {"origin": [0, 5, 0], "direction": [0, -1, 0]},
+    "object": {"type": "triangle", "vertices": [[-2, 0, -2], [2, 0, -2], [0, 0, 2]]}})");
+  SvgFigure svg = render_svg(p.task->sketch(), "triangle");
+  std::size_t face = svg.svg.find("<g class=\"face-view\"");
+  ASSERT_NE(face, std::string::npos) << svg.svg;
+  std::string side_part = svg.svg.substr(0, face), face_part = svg.svg.substr(face);
+  EXPECT_LT(first_object_area(side_part), 1.0) << side_part;
+  EXPECT_GT(first_object_area(face_part), 1000.0) << face_part;
+  EXPECT_NE(svg.caption.find("seen face-on, looking along its normal"), std::string::npos)
+      << svg.caption;
+  // Turned 45° about z (normal (1, −1, 0)/√2), the triangle shows its width in the side view,
+  // the plane of −y and +z: one drawing is enough.
+  Problem tilted = testing::problem(R"({"id": "t",
+    "ray": {"origin": [0, 5, 0], "direction": [0, -1, 0]},
+    "object": {"type": "triangle", "vertices": [[-2, -2, -2], [2, 2, -2], [0, 0, 2]]}})");
+  SvgFigure one = render_svg(tilted.task->sketch(), "triangle");
+  EXPECT_EQ(one.svg.find("face-view"), std::string::npos);
+  EXPECT_GT(first_object_area(one.svg), 1000.0) << one.svg;
+}
+
 TEST(Sketch, AStatementNeverDrawsTheCameraRayItAsksFor) {
   for (const char* source : {R"({"id": "c", "kind": "camera-ray", "camera": {"eye": [0, 0, 0],
         "direction": [0, 0, -1], "up": [0, 1, 0], "focal_length": 1, "resolution": [640, 480]},

@@ -22,25 +22,6 @@ namespace {
 
 using json = nlohmann::json;
 
-// JSON inside a <script> element: no "<", ">" or "&" that could end it or start markup.
-std::string script_json(const json& j) {
-  std::string text = without_negative_zeros(j).dump(-1, ' ', false, json::error_handler_t::replace);
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    if (c == '<') {
-      out += "\\u003c";
-    } else if (c == '>') {
-      out += "\\u003e";
-    } else if (c == '&') {
-      out += "\\u0026";
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
-
 json identity_json(const StudentIdentity& s) {
   json j = json::object();
   if (!s.name.empty()) j["name"] = s.name;

@@ -717,6 +717,8 @@
     createRaygrade().then((g) => {
       grader = g;
       timing.readyMs = performance.now() - start;
+      // From the start of the navigation to the page (performance's time origin) to Check.
+      timing.readyAfterNavigationMs = performance.now();
       status.textContent = "The grader runs in this page; nothing is sent anywhere.";
       for (const id of Object.keys(views)) {
         views[id].button.removeAttribute("disabled");

@@ -1,5 +1,7 @@
-// Numbers in the JSON raygrade writes.
+// Numbers in the JSON raygrade writes, and JSON written into a page.
 #pragma once
+
+#include <string>
 
 namespace raygrade {
 
@@ -18,6 +20,28 @@ template <class Json>
 Json without_negative_zeros(Json j) {
   drop_negative_zeros(j);
   return j;
+}
+
+// `j` as the text of a <script type="application/json"> element: compact, without negative
+// zeros, ill-formed UTF-8 replaced, and no "<", ">" or "&" that could end the element or start
+// markup (each written as its \u escape, which JSON.parse reads back unchanged).
+template <class Json>
+std::string script_json(const Json& j) {
+  std::string text = without_negative_zeros(j).dump(-1, ' ', false, Json::error_handler_t::replace);
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    if (c == '<') {
+      out += "\\u003c";
+    } else if (c == '>') {
+      out += "\\u003e";
+    } else if (c == '&') {
+      out += "\\u0026";
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 }  // namespace raygrade

@@ -14,7 +14,9 @@
 #include "kinds/intersect.h"
 #include "kinds/view_ray.h"
 #include "scenes/scene.h"
+#include "shapes/disk.h"
 #include "shapes/transformed.h"
+#include "shapes/triangle.h"
 
 namespace raygrade {
 namespace {
@@ -180,23 +182,104 @@ json answers_json(const json& answer, const json& data, double size) {
   return {{"hits", hits}, {"segments", segments}};
 }
 
-// JSON inside a <script> element: nothing that could end it or start markup.
-std::string view_json_text(const json& j) {
-  std::string text = without_negative_zeros(j).dump(-1, ' ', false, json::error_handler_t::replace);
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    if (c == '<') {
-      out += "\\u003c";
-    } else if (c == '>') {
-      out += "\\u003e";
-    } else if (c == '&') {
-      out += "\\u0026";
-    } else {
-      out += c;
+// A problem at one point of a surface (reflect, refract, shade, fresnel, interpolate): the
+// surface as a small disk through the point across its normal (or the triangle the point lies
+// on), the normal as an arrow, the incoming direction arriving at the point, the eye and the
+// lights. `words` gets what is drawn, for the text alternative. False when the problem has no
+// such point.
+bool local_surface(const Cursor& c, json& data, Bounds& bounds, std::vector<std::string>& words) {
+  Vec3d point{};
+  if (auto p = c.find("point")) point = p->vec3();
+  std::optional<Vec3d> normal, incoming;
+  if (auto n = c.find("normal")) normal = n->vec3();
+  if (auto d = c.find("direction")) incoming = d->vec3();
+  if (auto a = c.find("angle"); a && !normal) {
+    // Fresnel by angle: the surface y = 0 and a ray at θ from its normal in the xy plane.
+    double theta = a->number() * 3.14159265358979323846 / 180;
+    normal = Vec3d{0, 1, 0};
+    incoming = Vec3d{std::sin(theta), -std::cos(theta), 0};
+  }
+  bool triangle = c.has("vertices") && c.has("normals");
+  if (!normal && !triangle) return false;
+  // The size of what is drawn: the distance to the farthest eye or light, at least 1.
+  double size = 1;
+  std::vector<Vec3d> around;
+  if (auto e = c.find("eye")) around.push_back(e->vec3());
+  json lights = json::array();
+  if (auto ls = c.find("lights"); ls && ls->is_array()) {
+    for (const auto& l : ls->json()) {
+      if (!l.is_object()) continue;
+      json light = {{"label", l.value("name", std::string("light"))}};
+      if (l.contains("position") && is_vec3(l["position"])) {
+        light["position"] = l["position"];
+        around.push_back(vec3_of(l["position"]));
+      } else if (l.contains("direction") && is_vec3(l["direction"])) {
+        light["direction"] = l["direction"];
+      } else {
+        continue;
+      }
+      lights.push_back(light);
     }
   }
-  return out;
+  for (const Vec3d& a : around) size = std::max(size, length(a - point));
+  data["arrows"] = json::array();
+  if (triangle) {
+    json vertices = c.at("vertices").json(), normals = c.at("normals").json();
+    if (vertices.size() == 3 && is_vec3(vertices[0]) && is_vec3(vertices[1]) &&
+        is_vec3(vertices[2])) {
+      Triangle t(vec3_of(vertices[0]), vec3_of(vertices[1]), vec3_of(vertices[2]));
+      data["objects"].push_back({{"label", std::string(Triangle::kType)}, {"shape", t.to_json()}});
+    }
+    words.push_back("the triangle with its vertex normals (blue)");
+    for (std::size_t i = 0; i < vertices.size() && i < normals.size(); ++i) {
+      if (!is_vec3(vertices[i]) || !is_vec3(normals[i])) continue;
+      Vec3d v = vec3_of(vertices[i]);
+      bounds.add(v);
+      Vec3d n = vec3_of(normals[i]);
+      if (length(n) > 0) {
+        bounds.add(v + normalized(n));
+        data["arrows"].push_back(
+            {{"from", point_json(v)}, {"to", point_json(v + normalized(n))}, {"role", "normal"}});
+      }
+    }
+    bounds.add(point);
+  } else {
+    Vec3d n = normalized(*normal);
+    double radius = 0.6 * size;
+    data["objects"].push_back({{"label", "surface"}, {"shape", Disk(point, n, radius).to_json()}});
+    data["arrows"].push_back({{"from", point_json(point)},
+                              {"to", point_json(point + 0.5 * size * n)},
+                              {"role", "normal"}});
+    bounds.add(point, radius);
+    words.push_back("the surface at P with its normal (blue)");
+  }
+  if (incoming && length(*incoming) > 0) {
+    Vec3d d = normalized(*incoming);
+    Vec3d from = point - 0.8 * size * d;
+    data["arrows"].push_back(
+        {{"from", point_json(from)}, {"to", point_json(point)}, {"role", "ray"}});
+    bounds.add(from);
+    words.push_back("the incoming ray (black) arriving at P");
+  }
+  if (c.has("point") || !triangle)
+    data["points"].push_back({{"at", point_json(point)}, {"label", "P"}});
+  if (auto e = c.find("eye")) {
+    Vec3d eye = e->vec3();
+    data["points"].push_back({{"at", point_json(eye)}, {"label", "eye"}});
+    bounds.add(eye);
+    words.push_back("the eye (grey)");
+  }
+  if (!lights.empty()) {
+    std::vector<std::string> names;
+    for (const auto& l : lights) {
+      names.push_back(l["label"].get<std::string>());
+      if (l.contains("position")) bounds.add(vec3_of(l["position"]));
+    }
+    data["lights"] = lights;
+    words.push_back(
+        fmt::format("the light{} {}", names.size() > 1 ? "s" : "", fmt::join(names, ", ")));
+  }
+  return true;
 }
 
 }  // namespace
@@ -248,13 +331,18 @@ std::optional<SceneView> scene_view(const Problem& problem, bool answers) {
     // Where the pixel lies is what a camera kind asks for: a page of givens leaves it out.
     if (!answers) data["camera"].erase("pixel");
   }
-  if (data["objects"].empty() && !camera) return std::nullopt;
+  std::vector<std::string> local_words;
+  bool local = false;
+  if (data["objects"].empty() && !camera) {
+    local = local_surface(c, data, bounds, local_words);
+    if (!local) return std::nullopt;
+  }
   if (auto r = c.find("ray")) {
     Ray ray = read_ray(*r);
     data["ray"] = {{"origin", point_json(ray.origin)}, {"direction", point_json(ray.direction)}};
     bounds.add(ray.origin);
   }
-  if (auto p = c.find("point"); p && !data["objects"].empty()) {
+  if (auto p = c.find("point"); p && !local && !data["objects"].empty()) {
     Vec3d at = p->vec3();
     data["points"].push_back({{"at", point_json(at)}, {"label", "P"}});
     bounds.add(at);
@@ -263,7 +351,11 @@ std::optional<SceneView> scene_view(const Problem& problem, bool answers) {
 
   SceneView view;
   std::string text = "The scene in 3D";
-  if (!words.empty()) text += fmt::format(": {}", fmt::join(words, ", "));
+  if (local) {
+    text = fmt::format("The point P in 3D: {}", fmt::join(local_words, "; "));
+  } else if (!words.empty()) {
+    text += fmt::format(": {}", fmt::join(words, ", "));
+  }
   if (data.contains("ray"))
     text += "; the given ray, an arrow from its origin (its length is not t)";
   if (!lights.empty())
@@ -276,6 +368,20 @@ std::optional<SceneView> scene_view(const Problem& problem, bool answers) {
   if (answers) {
     data["answers"] =
         answers_json(problem.task->answer(), data, data["frame"]["radius"].get<double>());
+    const json answer = problem.task->answer();
+    if (local && answer.contains("direction") && is_vec3(answer["direction"]) &&
+        data.contains("points")) {
+      // The direction asked for (reflected, refracted), leaving P.
+      Vec3d at = vec3_of(data["points"][0]["at"]);
+      Vec3d d = vec3_of(answer["direction"]);
+      if (length(d) > 0) {
+        double size = data["frame"]["radius"].get<double>();
+        data["answers"]["segments"].push_back(
+            {{"from", point_json(at)},
+             {"to", point_json(at + (0.8 * size) * normalized(d))},
+             {"role", "answer"}});
+      }
+    }
     if (!data["answers"]["hits"].empty())
       text += "; the hit points (red) with their normals (blue)";
     if (!data["answers"]["segments"].empty()) text += "; the rays of the answer";
@@ -295,7 +401,7 @@ std::string scene_view_html(const SceneView& view, const std::string& id,
       "0 to start again.</figcaption>\n<script type=\"application/json\" id=\"{0}-data\">{3}"
       "</script>\n</figure>\n",
       html_escape(id), html_escape("3D view: " + title), html_escape(view.description),
-      view_json_text(view.data));
+      script_json(view.data));
 }
 
 }  // namespace raygrade

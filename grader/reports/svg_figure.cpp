@@ -24,6 +24,9 @@ constexpr double kMaxWidth = 560, kMaxHeight = 380, kMargin = 0.12;
 // Neither side of the frame is shorter than this fraction of the other, so that a figure
 // along one line still has room for its labels.
 constexpr double kMinAspect = 0.45;
+// A flat object whose unit normal is this close to the page (|n·m| below it, about 15° from
+// edge-on) gets a second drawing, seen face-on.
+constexpr double kEdgeOn = 0.26;
 
 struct P2 {
   double x = 0, y = 0;
@@ -277,12 +280,14 @@ constexpr const char* kFigureStyle =
 
 }  // namespace
 
-SvgFigure render_svg(const Sketch& f, const std::string& title) {
-  std::vector<Vec3d> pts;
-  std::vector<std::pair<Vec3d, double>> balls;
-  for (const auto& item : f.items) samples(item, pts, balls);
-  View view = choose_view(f, pts, balls);
+// One drawing of the sketch in `view`, at most max_w by max_h pixels (labels may reach lower).
+struct Panel {
+  std::string body;
+  int width = 0, height = 0;
+};
 
+Panel draw_panel(const Sketch& f, const View& view, const std::vector<Vec3d>& pts,
+                 const std::vector<std::pair<Vec3d, double>>& balls, double max_w, double max_h) {
   // The frame: every sample, with a margin, not too thin either way.
   P2 lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
   auto grow = [&](P2 p, double r) {
@@ -306,7 +311,7 @@ SvgFigure render_svg(const Sketch& f, const std::string& title) {
   h = hi.y - lo.y;
   lo = {lo.x - kMargin * w, lo.y - kMargin * h};
   hi = {hi.x + kMargin * w, hi.y + kMargin * h};
-  double scale = std::min(kMaxWidth / (hi.x - lo.x), kMaxHeight / (hi.y - lo.y));
+  double scale = std::min(max_w / (hi.x - lo.x), max_h / (hi.y - lo.y));
   Canvas canvas(lo, hi, scale);
 
   auto project = [&](const std::vector<Vec3d>& v) {
@@ -403,23 +408,123 @@ SvgFigure render_svg(const Sketch& f, const std::string& title) {
     }
   }
 
-  SvgFigure out;
-  int width = static_cast<int>(std::ceil(canvas.width()));
-  int height = static_cast<int>(std::ceil(std::max(canvas.height(), canvas.labels_bottom())));
-  out.svg = fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"sketch\" width=\"{0}\" height=\"{1}\" "
-      "viewBox=\"0 0 {0} {1}\" role=\"img\" aria-label=\"{2}\">\n<title>{2}</title>\n{3}\n"
-      "<rect x=\"0.5\" y=\"0.5\" width=\"{4}\" height=\"{5}\" fill=\"none\" stroke=\"#ddd\"/>\n{6}"
-      "</svg>",
-      width, height, html_escape(title), kFigureStyle, width - 1, height - 1, canvas.body());
+  Panel panel;
+  panel.width = static_cast<int>(std::ceil(canvas.width()));
+  panel.height = static_cast<int>(std::ceil(std::max(canvas.height(), canvas.labels_bottom())));
+  panel.body = canvas.body();
+  return panel;
+}
+
+// The first flat object of the sketch (a closed path of three points or more: a triangle, a
+// polygon, a disk's rim) that `view` shows nearly edge-on, where a view along its normal shows
+// what the side view hides. Its unit normal, or nothing.
+std::optional<Vec3d> edge_on_flat(const Sketch& f, const View& view, std::string& label) {
+  // A rim joined by lines to other points (a cone's base, its sides drawn to the apex) belongs
+  // to a solid whose other lines show its extent: it is not a flat object alone.
+  auto joined = [&](const SketchItem& rim) {
+    for (const auto& other : f.items) {
+      if (other.type != SketchItem::Type::kPath || other.closed || other.ink != Ink::kObject)
+        continue;
+      for (const Vec3d& p : other.points) {
+        for (const Vec3d& q : rim.points) {
+          if (p == q) return true;
+        }
+      }
+    }
+    return false;
+  };
+  for (const auto& item : f.items) {
+    if (item.type != SketchItem::Type::kPath || !item.closed || item.ink != Ink::kObject ||
+        item.points.size() < 3)
+      continue;
+    Vec3d n{};
+    for (std::size_t i = 0; i < item.points.size(); ++i) {  // Newell's method
+      const Vec3d& a = item.points[i];
+      const Vec3d& b = item.points[(i + 1) % item.points.size()];
+      n = n + cross(a, b);
+    }
+    if (!(length(n) > 0)) continue;
+    n = normalized(n);
+    // Within about 15° of edge-on: the drawing shows a quarter of the width or less.
+    if (std::abs(dot(n, view.m)) < kEdgeOn && !joined(item)) {
+      label = item.label;
+      return n;
+    }
+  }
+  return std::nullopt;
+}
+
+// The view that looks along the unit `normal`: the side view's right direction kept as far as
+// it lies in the object's plane, or an axis when it does not.
+View face_view(const View& side, const Vec3d& normal) {
+  View view;
+  view.ref = side.ref;
+  view.m = dot(normal, side.m) < 0 ? -normal : normal;
+  Vec3d u = side.u - dot(side.u, view.m) * view.m;
+  // Looking along the ray: the first axis (x, then y, then z) that lies well in the plane.
+  for (const Vec3d& axis : {Vec3d{1, 0, 0}, Vec3d{0, 1, 0}, Vec3d{0, 0, 1}}) {
+    if (length(u) >= 1e-6) break;
+    Vec3d in_plane = axis - dot(axis, view.m) * view.m;
+    if (length(in_plane) > 0.5) u = in_plane;
+  }
+  view.u = normalized(u);
+  view.v = cross(view.m, view.u);
+  return view;
+}
+
+SvgFigure render_svg(const Sketch& f, const std::string& title) {
+  std::vector<Vec3d> pts;
+  std::vector<std::pair<Vec3d, double>> balls;
+  for (const auto& item : f.items) samples(item, pts, balls);
+  View view = choose_view(f, pts, balls);
+  std::string flat_label;
+  std::optional<Vec3d> flat = edge_on_flat(f, view, flat_label);
   std::string across = named_direction(f.across_name, view.u);
   bool own_up =
       !f.up_name.empty() && length(f.up) > 0 && length(view.v - normalized(f.up)) < kTinyDirection;
   std::string up = named_direction(own_up ? f.up_name : "", view.v);
-  out.caption = fmt::format(
-      "Side view, drawn to scale: {} points right, {} points up; the page is the plane that "
-      "holds both.",
+  SvgFigure out;
+  std::string side_caption = fmt::format(
+      "view, drawn to scale: {} points right, {} points up; the page is the plane that "
+      "holds both",
       across, up);
+  if (!flat) {
+    Panel panel = draw_panel(f, view, pts, balls, kMaxWidth, kMaxHeight);
+    out.svg = fmt::format(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"sketch\" width=\"{0}\" "
+        "height=\"{1}\" viewBox=\"0 0 {0} {1}\" role=\"img\" aria-label=\"{2}\">\n<title>{2}"
+        "</title>\n{3}\n<rect x=\"0.5\" y=\"0.5\" width=\"{4}\" height=\"{5}\" fill=\"none\" "
+        "stroke=\"#ddd\"/>\n{6}</svg>",
+        panel.width, panel.height, html_escape(title), kFigureStyle, panel.width - 1,
+        panel.height - 1, panel.body);
+    out.caption = "Side " + side_caption + ".";
+    return out;
+  }
+  // A flat object seen edge-on is a line: a second view, along its normal, shows its shape
+  // and where the ray meets it.
+  View face = face_view(view, *flat);
+  Panel left = draw_panel(f, view, pts, balls, kMaxWidth * 0.6, kMaxHeight);
+  Panel right = draw_panel(f, face, pts, balls, kMaxWidth * 0.6, kMaxHeight);
+  constexpr int kGap = 12;
+  int width = left.width + kGap + right.width;
+  int height = std::max(left.height, right.height);
+  out.svg = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"sketch\" width=\"{0}\" height=\"{1}\" "
+      "viewBox=\"0 0 {0} {1}\" role=\"img\" aria-label=\"{2}\">\n<title>{2}</title>\n{3}\n"
+      "<g class=\"side-view\">\n<rect x=\"0.5\" y=\"0.5\" width=\"{4}\" height=\"{5}\" "
+      "fill=\"none\" stroke=\"#ddd\"/>\n{6}</g>\n<g class=\"face-view\" "
+      "transform=\"translate({7} 0)\">\n<rect x=\"0.5\" y=\"0.5\" width=\"{8}\" "
+      "height=\"{9}\" fill=\"none\" stroke=\"#ddd\"/>\n{10}</g>\n</svg>",
+      width, height, html_escape(title), kFigureStyle, left.width - 1, left.height - 1, left.body,
+      left.width + kGap, right.width - 1, right.height - 1, right.body);
+  std::string what = flat_label.empty() ? std::string("the flat object") : "the " + flat_label;
+  // A label may already say "triangle ABC": keep it as written.
+  if (!flat_label.empty() && flat_label.rfind("the ", 0) == 0) what = flat_label;
+  out.caption = fmt::format(
+      "Left: side {}; {} is seen edge-on there. Right: {} seen face-on, looking along its normal "
+      "{}: {} points right, {} points up.",
+      side_caption, what, what, direction_name(face.m), direction_name(face.u),
+      direction_name(face.v));
   return out;
 }
 

@@ -106,9 +106,12 @@ function addAnswers(scene, answers, frame, size) {
   }
 }
 
-// The initial eye: oblique to the ray (or the camera's look) so that neither is seen end-on.
+// The initial eye: oblique to the ray (or the camera's look, or the first given arrow) so that
+// neither is seen end-on.
 function initialEye(data, centre, distance) {
-  const along = data.ray ? vec(data.ray.direction) : data.camera ? vec(data.camera.look) : null;
+  const first = (data.arrows || []).find((a) => a.role === 'ray');
+  const along = data.ray ? vec(data.ray.direction) : data.camera ? vec(data.camera.look)
+    : first ? vec(first.to).sub(vec(first.from)) : null;
   let offset = new THREE.Vector3(0.62, 0.48, 1).normalize();
   if (along && along.lengthSq() > 0 && Math.abs(offset.dot(along.clone().normalize())) > 0.8) {
     offset = new THREE.Vector3(1, 0.48, -0.62).normalize();
@@ -140,7 +143,18 @@ function mount(container, data) {
     scene.add(marker(origin, COLOURS.origin, size));
     scene.add(arrow(origin, vec(data.ray.direction).normalize(), frame.radius * 0.5, COLOURS.ray, size));
   }
-  for (const p of data.points || []) scene.add(marker(vec(p.at), COLOURS.point, size * 1.2));
+  for (const p of data.points || []) {
+    scene.add(marker(vec(p.at), p.label === 'eye' ? COLOURS.camera : COLOURS.point, size * 1.2));
+  }
+  // Given directions drawn where they act: a surface's normal, a ray arriving at a point.
+  for (const a of data.arrows || []) {
+    const from = vec(a.from);
+    const along = vec(a.to).sub(from);
+    const length = along.length();
+    if (length > 0) {
+      scene.add(arrow(from, along.normalize(), length, COLOURS[a.role] ?? COLOURS.ray, size * 0.8));
+    }
+  }
   for (const l of data.lights || []) {
     if (l.position) {
       const bulb = new THREE.Mesh(new THREE.OctahedronGeometry(size * 2.5),
