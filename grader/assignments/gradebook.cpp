@@ -121,7 +121,8 @@ std::string RosterGradebook::platform_csv(std::string_view layout, const std::st
   std::string points = most ? format_points(*most) : "";
   std::string s;
   if (layout == "csv-canvas") {
-    // Canvas matches a row by its SIS User ID (the roster's id) or SIS Login ID (the email);
+    // Canvas matches a row by its ID (the roster's canvas_id, when it has one), SIS User ID
+    // (the roster's id) or SIS Login ID (the email);
     // the row under the header gives the points possible, and a new column name makes a new
     // assignment.
     s = "Student,ID,SIS User ID,SIS Login ID,Section," + csv_cell(title) + "\n";
@@ -142,7 +143,9 @@ std::string RosterGradebook::platform_csv(std::string_view layout, const std::st
     std::string score = format_points(pick ? pick->score : 0.0);
     std::string name = who.name.empty() ? who.id : who.name;
     if (layout == "csv-canvas") {
-      s += csv_cell(name) + ",," + csv_cell(who.id) + "," + csv_cell(who.email) + ",," + score;
+      std::string canvas_id = i < canvas_ids_.size() ? canvas_ids_[i] : "";
+      s += csv_cell(name) + "," + csv_cell(canvas_id) + "," + csv_cell(who.id) + "," +
+           csv_cell(who.email) + ",," + score;
     } else if (layout == "csv-moodle") {
       s += csv_cell(who.id) + "," + csv_cell(name) + "," + csv_cell(who.email) + "," + score;
     } else {

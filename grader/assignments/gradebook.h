@@ -57,6 +57,10 @@ class RosterGradebook {
   // (rejected before it could be tied to one); it then has no row.
   bool add(const SubmissionGrade& g);
 
+  // Each roster student's Canvas user ID (the roster's "canvas_id" column, "" where none), for
+  // the ID column of the Canvas layout.
+  void set_canvas_ids(std::vector<std::string> ids) { canvas_ids_ = std::move(ids); }
+
   // One line per student with several submissions: how many, which one counts, and why.
   std::vector<std::string> choices() const;
 
@@ -101,6 +105,7 @@ class RosterGradebook {
   std::vector<std::string> problem_ids_;
   PickPolicy pick_;
   std::vector<std::vector<Handed>> handed_;  // per roster student, in the order added
+  std::vector<std::string> canvas_ids_;      // per roster student, or empty
 };
 
 }  // namespace raygrade

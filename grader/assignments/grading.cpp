@@ -161,14 +161,49 @@ StudentIdentity AssignmentGrader::identify_uploader(
 }
 
 SubmissionGrade AssignmentGrader::grade_file(const std::string& path) {
+  SubmissionGrade g = grade_loaded(
+      path, [&] { return load_json_file(path, JsonLimits::submission()); },
+      [this](const Cursor& root) { return identify(root); });
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) g.file_time = st.st_mtim.tv_sec;
+  return g;
+}
+
+SubmissionGrade AssignmentGrader::grade_handed_in(const std::string& name, std::string text,
+                                                  std::int64_t modified,
+                                                  const StudentIdentity& owner,
+                                                  std::string_view platform) {
+  auto who = [&](const Cursor& root) {
+    std::optional<StudentIdentity> claimed = read_student(root);
+    if (!claimed) return owner;
+    RosterMatch m = match_on_roster(options_.roster, *claimed);
+    if (m.entry != &owner && (!m.entry || m.entry->id != owner.id)) {
+      root.at("student").fail(
+          fmt::format("the submission names {}, but {} says student '{}' ({}) handed it in: "
+                      "hand in your own answers",
+                      m.entry ? fmt::format("student '{}'", m.entry->id) : "someone else", platform,
+                      owner.id, owner.display()),
+          "not-uploader");
+    }
+    return owner;
+  };
+  SubmissionGrade g = grade_loaded(
+      name, [&] { return parse_json_text(name, std::move(text), JsonLimits::submission()); }, who);
+  g.file_time = modified;
+  return g;
+}
+
+SubmissionGrade AssignmentGrader::grade_loaded(
+    const std::string& path, const std::function<std::shared_ptr<const SourceFile>()>& load,
+    const std::function<StudentIdentity(const Cursor&)>& identify_student) {
   std::shared_ptr<const SourceFile> file;
   StudentIdentity who;
   SubmissionGrade g;
   try {
-    file = load_json_file(path, JsonLimits::submission());
+    file = load();
     Cursor root(file);
     if (!root.is_object()) root.fail("a submission is a JSON object", "type");
-    who = identify(root);
+    who = identify_student(root);
     g = student(student_key(who))->graders->grade(file);
     g.submitted = submitted_time(root, g);
   } catch (const Error& e) {
@@ -200,8 +235,6 @@ SubmissionGrade AssignmentGrader::grade_file(const std::string& path) {
                          "not graded: out of memory while grading this submission",
                          "resource"};
   }
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0) g.file_time = st.st_mtim.tv_sec;
   if (!who.empty()) {
     g.identity = who;
     g.student = who.display();

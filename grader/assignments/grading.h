@@ -3,12 +3,14 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <list>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "assignments/assignment.h"
@@ -40,6 +42,12 @@ class AssignmentGrader {
   // drawn.
   SubmissionGrade grade_file(const std::string& path);
 
+  // Grades a submission handed in through a learning platform (a file of its bulk download):
+  // `owner` is the roster student the platform says handed it in, and whoever the submission
+  // names must be that student. `name` is the file as diagnostics show it; `modified` its time.
+  SubmissionGrade grade_handed_in(const std::string& name, std::string text, std::int64_t modified,
+                                  const StudentIdentity& owner, std::string_view platform);
+
   // The student a submission is from: the uploader when there are uploaders, else the one it
   // names, completed from the roster. Throws Error when it names nobody, someone not on the
   // roster, a name two students share, fields that name different students, or someone other
@@ -53,6 +61,10 @@ class AssignmentGrader {
   StudentIdentity identify_uploader(const Cursor& root,
                                     const std::optional<StudentIdentity>& claimed) const;
   std::shared_ptr<const Student> student(const std::string& key);
+  // What grade_file and grade_handed_in share: `load` reads the file, `who` ties it to a student.
+  SubmissionGrade grade_loaded(const std::string& path,
+                               const std::function<std::shared_ptr<const SourceFile>()>& load,
+                               const std::function<StudentIdentity(const Cursor&)>& who);
 
   const AssignmentSpec& spec_;
   std::vector<const Problem*> problems_;

@@ -71,7 +71,8 @@ std::vector<std::vector<std::string>> csv_rows(const std::string& text, const st
   return rows;
 }
 
-std::vector<StudentIdentity> load_roster(const std::string& path) {
+std::vector<StudentIdentity> load_roster(const std::string& path,
+                                         std::vector<std::string>* canvas_ids) {
   std::optional<std::string> bytes = read_whole_file(path);
   if (!bytes) fail(path, 0, 0, "cannot open the roster");
   std::string text = std::move(*bytes);
@@ -92,11 +93,16 @@ std::vector<StudentIdentity> load_roster(const std::string& path) {
   auto rows = csv_rows(text, path);
   if (rows.empty())
     fail(path, 1, 1, "the roster is empty: its first line names the columns id, name, email");
-  int id_col = -1, name_col = -1, email_col = -1;
+  int id_col = -1, name_col = -1, email_col = -1, canvas_col = -1;
   for (std::size_t i = 0; i < rows[0].size(); ++i) {
     std::string h = ascii_lower(trimmed(rows[0][i]));
-    int* col = h == "id" ? &id_col : h == "name" ? &name_col : h == "email" ? &email_col : nullptr;
-    if (!col) fail(path, 1, 0, fmt::format("unknown column '{}' (known: id, name, email)", h));
+    int* col = h == "id"          ? &id_col
+               : h == "name"      ? &name_col
+               : h == "email"     ? &email_col
+               : h == "canvas_id" ? &canvas_col
+                                  : nullptr;
+    if (!col)
+      fail(path, 1, 0, fmt::format("unknown column '{}' (known: id, name, email, canvas_id)", h));
     if (*col >= 0) fail(path, 1, 0, fmt::format("the column '{}' is named twice", h));
     *col = static_cast<int>(i);
   }
@@ -119,6 +125,7 @@ std::vector<StudentIdentity> load_roster(const std::string& path) {
     if (!ids.insert(s.id).second)
       fail(path, line, id_col + 1, fmt::format("the id '{}' is listed twice", s.id));
     out.push_back(std::move(s));
+    if (canvas_ids) canvas_ids->push_back(cell(canvas_col));
   }
   return out;
 }

@@ -15,7 +15,11 @@ namespace raygrade {
 // and line breaks). Throws Error naming `file` and the line of a quote left open.
 std::vector<std::vector<std::string>> csv_rows(const std::string& text, const std::string& file);
 
-std::vector<StudentIdentity> load_roster(const std::string& path);
+// A roster may also have a "canvas_id" column: each student's Canvas user ID (the "ID" column of
+// Canvas's gradebook export), which ties the files of Canvas's "Download Submissions" zip to
+// roster students; given `canvas_ids`, it receives them, one per student ("" where none is given).
+std::vector<StudentIdentity> load_roster(const std::string& path,
+                                         std::vector<std::string>* canvas_ids = nullptr);
 
 // The roster entry a submission's student is, and why there is none: every field the
 // submission gives (id, email, name) must name the same one entry. A name that two entries

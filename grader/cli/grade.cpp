@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "assignments/bulk_submissions.h"
 #include "assignments/gradebook.h"
 #include "assignments/grading.h"
 #include "assignments/lms_export.h"
@@ -85,6 +86,7 @@ struct GradeSetup {
   std::vector<std::string> ids;
   std::vector<Diagnostic> errors;
   std::vector<StudentIdentity> roster;
+  std::vector<std::string> canvas_ids;  // per roster student: its "canvas_id" cell
   std::string title;         // the assignment's title (or id), for a platform's gradebook
   bool per_student = false;  // graded as each student's variant: doubles are looked for
   Bank bank;
@@ -131,7 +133,7 @@ std::optional<int> setup_from_assignment(const GradeCliOptions& o, GradeSetup& s
   AssignmentGradeOptions options;
   try {
     s.spec = std::make_unique<AssignmentSpec>(load_assignment(o.assignment));
-    if (!o.roster.empty()) s.roster = options.roster = load_roster(o.roster);
+    if (!o.roster.empty()) s.roster = options.roster = load_roster(o.roster, &s.canvas_ids);
     if (!o.moodle_worksheet.empty()) s.worksheet = read_worksheet(o.moodle_worksheet);
     if (!o.gradescope_metadata.empty()) {
       GradescopeMetadata m = read_gradescope_metadata(o.gradescope_metadata);
@@ -189,7 +191,10 @@ class GradeOutput {
     platform_book_ = format.layout == GradeLayout::kClassGradebook;
     gradebook_ = format.layout == GradeLayout::kGradebook || platform_book_;
     json_stream_ = format.layout == GradeLayout::kJsonArray && o.out.empty();
-    if (gradebook_ && !setup.roster.empty()) class_book_.emplace(setup.roster, setup.ids, pick);
+    if (gradebook_ && !setup.roster.empty()) {
+      class_book_.emplace(setup.roster, setup.ids, pick);
+      class_book_->set_canvas_ids(setup.canvas_ids);
+    }
     if (gradebook_ && !class_book_) csv() << gradebook_csv_header(setup.ids);
   }
 
@@ -319,6 +324,44 @@ std::optional<int> prepare_out(const GradeCliOptions& o, std::optional<FolderLoc
   return std::nullopt;
 }
 
+// The files of the platforms' bulk-download zips among the submissions (docs/assignments.md):
+// they need the assignment and its roster, which tie the platforms' ids to students. A zip that
+// cannot be read is an error of its own; its fellows are still graded.
+std::optional<int> read_bulk_zips(const GradeCliOptions& o, const GradeSetup& setup,
+                                  std::vector<BulkSubmission>& bulk,
+                                  std::vector<Diagnostic>& errors) {
+  BulkRoster roster{&setup.roster, setup.canvas_ids, &setup.worksheet, o.moodle_worksheet};
+  for (const auto& p : o.submissions) {
+    if (!is_zip_path(p)) continue;
+    if (!setup.per_student || setup.roster.empty())
+      return usage(fmt::format(
+          "{} is a platform's zip of submissions: grading it needs --assignment and --roster "
+          "(the roster ties the platform's students to their ids)",
+          printable(p)));
+    try {
+      std::vector<BulkSubmission> got = read_bulk_submissions(p, roster);
+      for (auto& b : got) bulk.push_back(std::move(b));
+    } catch (const Error& e) {
+      errors.push_back(e.diagnostic());
+    }
+  }
+  return std::nullopt;
+}
+
+// A file of a bulk zip graded, or its fault when it could not be tied to a student or read.
+SubmissionGrade grade_bulk(const GradeSetup& setup, const BulkSubmission& b) {
+  if (!b.fault)
+    return setup.spec_grader->grade_handed_in(b.file, b.text, b.modified, *b.owner, b.platform);
+  SubmissionGrade g;
+  g.file = b.file;
+  g.gradable = false;
+  g.fault = b.fault;
+  g.file_time = b.modified;
+  if (b.claimed) g.claimed = *b.claimed;
+  g.student = b.claimed && !b.claimed->name.empty() ? b.claimed->name : b.file;
+  return g;
+}
+
 int run_grade(const GradeCliOptions& o) {
   const GradeFormat* format = find_grade_format(o.format);
   if (!format)
@@ -341,9 +384,17 @@ int run_grade(const GradeCliOptions& o) {
     return *failed;
   for (const auto& e : setup.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   std::vector<Diagnostic> errors;
-  std::vector<std::string> files = submission_files(o.submissions, errors);
+  std::vector<BulkSubmission> bulk;
+  if (auto failed = read_bulk_zips(o, setup, bulk, errors)) return *failed;
+  std::vector<std::string> paths;
+  for (const auto& p : o.submissions) {
+    if (!is_zip_path(p)) paths.push_back(p);
+  }
+  std::vector<std::string> files =
+      paths.empty() ? std::vector<std::string>{} : submission_files(paths, errors);
   for (const auto& e : errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
-  bool single = files.size() == 1 && errors.empty();
+  std::size_t total = files.size() + bulk.size();
+  bool single = total == 1 && errors.empty();
   if (format->needs_out && !single && o.out.empty())
     return usage(fmt::format("--format {} with several submissions needs --out DIR", o.format));
   std::optional<FolderLock> lock;
@@ -351,18 +402,20 @@ int run_grade(const GradeCliOptions& o) {
   GradeOutput output(o, *format, setup, *pick, single);
   auto grade_at = [&](std::size_t i) {
     auto start = std::chrono::steady_clock::now();
-    Graded r{setup.grade_one(files[i]), {}};
+    Graded r{
+        i < files.size() ? setup.grade_one(files[i]) : grade_bulk(setup, bulk[i - files.size()]),
+        {}};
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.text = output.render(r.grade, seconds);
     return r;
   };
   // A window of files at a time, so that memory stays bounded whatever the batch's size.
-  Progress progress(files.size());
+  Progress progress(total);
   unsigned jobs = o.jobs > 0 ? o.jobs : default_jobs();
   std::size_t window = 64 * std::size_t{jobs};
-  for (std::size_t begin = 0; begin < files.size(); begin += window) {
-    std::size_t count = std::min(window, files.size() - begin);
+  for (std::size_t begin = 0; begin < total; begin += window) {
+    std::size_t count = std::min(window, total - begin);
     auto graded =
         parallel_map<Graded>(count, jobs, [&](std::size_t k) { return grade_at(begin + k); });
     for (std::size_t k = 0; k < count; ++k) {
@@ -373,7 +426,7 @@ int run_grade(const GradeCliOptions& o) {
   output.finish();
   if (!o.out.empty()) {
     flush_folder(o.out);
-    fmt::print(stderr, "Graded {} submissions into {}{}.\n", files.size() - output.rejected, o.out,
+    fmt::print(stderr, "Graded {} submissions into {}{}.\n", total - output.rejected, o.out,
                output.rejected ? fmt::format(" ({} rejected)", output.rejected) : "");
   }
   bool bad = output.rejected || !errors.empty() || !setup.errors.empty();
@@ -417,7 +470,10 @@ Runner setup_grade(CLI::App& sub) {
       sub.add_option("--problems", o->problems, "the bank: a file or folder (repeat for more)")
           ->allow_extra_args(false)
           ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  sub.add_option("submissions", o->submissions, "submission files or folders")->required();
+  sub.add_option("submissions", o->submissions,
+                 "submission files or folders, or the zip of a Canvas or Moodle assignment's "
+                 "\"download all submissions\" (with --assignment and --roster)")
+      ->required();
   std::string formats;
   for (const auto& f : grade_formats()) formats += fmt::format("\n  {:<13} {}", f.name, f.summary);
   sub.add_option("--format", o->format, "one of (default: text):" + formats);
