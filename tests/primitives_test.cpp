@@ -52,6 +52,7 @@ constexpr Expected kExpected[] = {
     {"reference long double", 0, 1e-15, Expected::kWhereDoubleDecides},
     {"reference double-double", 0, 1e-15, Expected::kWhereDoubleDecides},
     {"reference MPFR", 0, 1e-15, Expected::kEverywhere},
+    {"static filter", 0, 1e-12, Expected::kWhereDoubleDecides},
     {"certified double", 0, 1e-12, Expected::kWhereDoubleDecides},
     {"adaptive", 0, 1e-12, Expected::kEverywhere},
 };

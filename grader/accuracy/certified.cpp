@@ -50,7 +50,30 @@ std::optional<int> order_at(const AccuracyCase& a, const AccuracyCase& b) {
   return std::nullopt;
 }
 
+template <typename P>
+concept HasFilter = requires(const Vec3d& v, const std::vector<Vec3d>& p, double r,
+                             FilterAnswer& answer) {
+  { P::Ladder::filter(v, v, p, r, answer, 1.0) } -> std::same_as<bool>;
+};
+
 }  // namespace
+
+std::optional<FilterAnswer> filtered_double(const AccuracyCase& c, double bound_scale) {
+  FilterAnswer answer;
+  bool decided = visit_primitive(c.primitive, [&]<typename P>() {
+    if constexpr (HasFilter<P>) {
+      return P::Ladder::filter(c.origin, c.direction, c.points, c.radius, answer, bound_scale);
+    } else {
+      return false;
+    }
+  });
+  if (!decided) return std::nullopt;
+  return answer;
+}
+
+bool has_filter(Primitive primitive) {
+  return visit_primitive(primitive, [&]<typename P>() { return HasFilter<P>; });
+}
 
 std::string_view level_name(Level level) {
   switch (level) {
@@ -62,7 +85,12 @@ std::string_view level_name(Level level) {
   return "?";
 }
 
-Certified certified_double(const AccuracyCase& c) { return certify<double>(c); }
+Certified certified_double(const AccuracyCase& c) {
+  if (std::optional<FilterAnswer> f = filtered_double(c)) {
+    return Certified{true, f->hit, f->t_lo, f->t_hi, f->t};
+  }
+  return certify<double>(c);
+}
 Certified certified_double_double(const AccuracyCase& c) { return certify<DoubleDouble>(c); }
 Certified certified_mpfr(const AccuracyCase& c, int bits) {
   MpfrPrecision precision(bits);
@@ -73,7 +101,11 @@ Adaptive adaptive_nearest(const AccuracyCase& c) {
   auto from = [](Level level, const Certified& x) {
     return Adaptive{level, x.hit, x.t, x.t_lo, x.t_hi};
   };
-  Certified x = certified_double(c);
+  // The static filter's t is the reference double's own.
+  if (std::optional<FilterAnswer> f = filtered_double(c)) {
+    return Adaptive{Level::kDouble, f->hit, f->t, f->t_lo, f->t_hi};
+  }
+  Certified x = certify<double>(c);
   if (x.decided) {
     // The plain double reference is usually the more accurate value; keep it when it lies in
     // the certified enclosure.

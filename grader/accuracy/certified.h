@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "shapes/accuracy_case.h"
+#include "shapes/filter_answer.h"
 
 namespace raygrade {
 
@@ -24,11 +25,23 @@ struct Certified {
   double t = 0;  // the enclosure's midpoint, rounded
 };
 
+// The static filter of the case's primitive (its Ladder::filter, where it has one): in plain
+// double with a forward error bound on every quantity the decision rests on (docs/precision.md),
+// the exact decision and an enclosure of t around the reference double's own t where the bounds
+// allow, std::nullopt otherwise. `bound_scale` multiplies every bound: 1, but in the test that
+// shows a smaller bound is caught.
+std::optional<FilterAnswer> filtered_double(const AccuracyCase& c, double bound_scale = 1);
+// Has the primitive a static filter?
+bool has_filter(Primitive primitive);
+
+// The certified answers. In double the static filter answers first; interval arithmetic runs
+// where it cannot decide.
 Certified certified_double(const AccuracyCase& c);
 Certified certified_double_double(const AccuracyCase& c);
 Certified certified_mpfr(const AccuracyCase& c, int bits);
 
-// The adaptive answer (Shewchuk's plan): the certified double answer when it decides, else
+// The adaptive answer (Shewchuk's plan): the certified double answer (the static filter's, or
+// interval arithmetic's in double) when it decides, else
 // double-double, else MPFR at kMpfrBits, then kMpfrBoundaryBits; when even that cannot decide,
 // the true input lies on the boundary itself (a ray exactly tangent, through an edge, at
 // t = 0) and the level is kExactBoundary, with the decision of the last level.

@@ -56,18 +56,62 @@ struct Reference {
   }
 };
 
+template <typename P>
+concept HasFilter = requires(const Vec3d& v, const std::vector<Vec3d>& p, double r,
+                             FilterAnswer& answer) {
+  { P::Ladder::filter(v, v, p, r, answer, 1.0) } -> std::same_as<bool>;
+};
+
+// The levels that start with the static filter, each instantiated per primitive with the
+// primitive's filter inlined (as filtered_double, certified_double and adaptive_nearest run it,
+// without their dispatch on the primitive); `Then` answers the cases the filter leaves.
+template <typename Then>
+struct FilterFirst {
+  template <typename P>
+  [[gnu::noinline]] static bool on(const AccuracyCase& c, double& t) {
+    if constexpr (HasFilter<P>) {
+      FilterAnswer f;
+      if (P::Ladder::filter(c.origin, c.direction, c.points, c.radius, f, 1.0)) {
+        t = f.t;
+        return f.hit;
+      }
+    }
+    return Then::template on<P>(c, t);
+  }
+};
+
+// What each of them runs where the filter cannot decide.
+struct ThenReference {
+  template <typename P>
+  static bool on(const AccuracyCase& c, double& t) {
+    return P::Ladder::reference(c.origin, c.direction, c.points, c.radius, t);
+  }
+};
+struct ThenCertified {
+  template <typename P>
+  static bool on(const AccuracyCase& c, double& t) {
+    Certified x = certified_double(c);
+    if (!x.hit) return false;
+    t = x.t;
+    return true;
+  }
+};
+struct ThenAdaptive {
+  template <typename P>
+  static bool on(const AccuracyCase& c, double& t) {
+    Adaptive a = adaptive_nearest(c);
+    if (!a.hit) return false;
+    t = a.t;
+    return true;
+  }
+};
+
 template <typename F>
 PerPrimitive per_primitive() {
   return []<std::size_t... I>(std::index_sequence<I...>) {
     return PerPrimitive{&F::template on<LadderPrimitive<I>>...};
   }
   (std::make_index_sequence<kPrimitiveCount>{});
-}
-
-PerPrimitive every_primitive(NearestHit f) {
-  PerPrimitive out;
-  out.fill(f);
-  return out;
 }
 
 }  // namespace
@@ -93,20 +137,17 @@ const std::vector<LadderLevel>& ladder_levels() {
       {"reference double-double", "the same in double-double (about 106 bits)",
        per_primitive<Reference<DoubleDouble>>()},
       {"reference MPFR", "the same in MPFR at 256 bits", per_primitive<Reference<Mpfr>>()},
-      {"certified double", "interval arithmetic in double with outward rounding",
-       every_primitive([](const AccuracyCase& c, double& t) {
-         Certified x = certified_double(c);
-         if (!x.hit) return false;
-         t = x.t;
-         return true;
-       })},
-      {"adaptive", "certified double, then double-double, then MPFR, until decided",
-       every_primitive([](const AccuracyCase& c, double& t) {
-         Adaptive a = adaptive_nearest(c);
-         if (!a.hit) return false;
-         t = a.t;
-         return true;
-       })},
+      {"static filter",
+       "the reference double with a forward error bound on each quantity it decides by: its "
+       "answer is exact where every such quantity lies beyond its bound (sphere, plane, "
+       "triangle); the plain reference double elsewhere",
+       per_primitive<FilterFirst<ThenReference>>()},
+      {"certified double",
+       "the static filter, then interval arithmetic in double with outward rounding where it "
+       "cannot decide",
+       per_primitive<FilterFirst<ThenCertified>>()},
+      {"adaptive", "the static filter, then certified double, double-double, MPFR, until decided",
+       per_primitive<FilterFirst<ThenAdaptive>>()},
   };
   return levels;
 }

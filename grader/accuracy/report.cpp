@@ -135,6 +135,15 @@ AccuracyReport measure_accuracy(const std::vector<Measured>& levels, int random_
       }
     }
     for (auto& row : rows) report.rows.push_back(std::move(row));
+    if (has_filter(p)) {
+      auto decided = [](const std::vector<AccuracyCase>& cases) {
+        return static_cast<int>(std::count_if(cases.begin(), cases.end(), [](const auto& c) {
+          return filtered_double(c).has_value();
+        }));
+      };
+      report.filter_decided_random[p] = decided(random_in);
+      report.filter_decided_hard[p] = decided(hard_in);
+    }
     for (const auto& c : hard_in)
       ++report.adaptive_levels_hard[std::string(level_name(adaptive_nearest(c).level))];
   }

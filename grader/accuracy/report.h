@@ -36,7 +36,9 @@ struct AccuracyReport {
   int random_per_primitive = 0;
   std::map<Primitive, int> hard_per_primitive;
   std::map<std::string, int> adaptive_levels_hard;  // level name → cases of the hard set
-  std::string command;                              // the command that regenerates it
+  // Cases the static filter decides, per primitive that has one, of its random and hard sets.
+  std::map<Primitive, int> filter_decided_random, filter_decided_hard;
+  std::string command;  // the command that regenerates it
   std::optional<long long> stress_rays, stress_misses, spawn_rays, spawn_failures;
 };
 

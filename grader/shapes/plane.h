@@ -6,6 +6,7 @@
 #include "derivation/mistake.h"
 #include "math/robust.h"
 #include "sampling/outcome.h"
+#include "shapes/filter_answer.h"
 #include "shapes/shape.h"
 #include "shapes/surface_point.h"
 
@@ -51,6 +52,13 @@ inline std::optional<T> plane_t(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T
     return plane_t_accurate(o, d, n, p);
   }
 }
+
+// The plane's static filter: plane_t's fast path with its bounds (above), deciding only when
+// both the numerator and the denominator lie farther from zero than their bounds and t is
+// within kFastPathTolerance, so that its t is the reference's own. True with the exact decision
+// and t enclosed in `out`. `bound_scale` multiplies the bounds (see filtered_double).
+bool plane_filter(const Vec3d& o, const Vec3d& d, const Vec3d& n, const Vec3d& p, FilterAnswer& out,
+                  double bound_scale);
 
 struct AccuracyCase;
 class SplitMix;
@@ -127,6 +135,11 @@ struct Plane::Ladder {
     if (!x || !(*x >= T(0))) return false;
     t = *x;
     return true;
+  }
+
+  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double /*r*/,
+                     FilterAnswer& out, double bound_scale) {
+    return plane_filter(o, d, p[0], p[1], out, bound_scale);
   }
 
   template <typename T>

@@ -6,6 +6,7 @@
 
 #include "math/robust.h"
 #include "sampling/outcome.h"
+#include "shapes/filter_answer.h"
 #include "shapes/shape.h"
 #include "shapes/surface_point.h"
 
@@ -345,6 +346,23 @@ struct Sphere::Ladder {
   [[gnu::always_inline]] static bool reference(const Vec3<T>& o, const Vec3<T>& d,
                                                const std::vector<Vec3<T>>& p, const T& r, T& t) {
     return sphere_nearest(o, d, p[0], r, t);
+  }
+
+  // The static filter: the first test of the fast path (sphere_quadratic_fast), whose bounds
+  // make the sign of disc, of c and of b certain. Its t is the reference's own, q/a or c/q:
+  // c is within τ of c*, and q = −(b + sign(b)√disc) within τ + 2^-44 of q* (√disc within τ, b
+  // within 4u|f||d| ≤ 2^-44·|q| since √disc ≥ √(33u/τ)·|f||d|), a within 3u: a quotient error
+  // of at most 2.2τ (docs/precision.md). Its bounds are fixed (`bound_scale` is not applied).
+  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double r,
+                     FilterAnswer& out, double /*bound_scale*/) {
+    Quadratic<double> k;
+    FastPath fast = sphere_quadratic_fast(o, d, p[0], r, k);
+    if (fast == FastPath::kUndecided) return false;
+    out = {};
+    double t = 0;
+    if (fast == FastPath::kMiss || !nearest_root(k, std::sqrt(k.disc), t)) return true;
+    out.hit = true;
+    return enclose_quotient(t, 2.2 * kFastPathTolerance<double>, 1, out);
   }
 
   // a t² + b t + c = 0 with b = 2 d·(o − c), discriminant b² − 4ac, roots (−b ± √Δ)/2a.

@@ -7,6 +7,7 @@
 
 #include "math/robust.h"
 #include "sampling/outcome.h"
+#include "shapes/filter_answer.h"
 #include "shapes/plane.h"
 #include "shapes/shape.h"
 #include "shapes/surface_point.h"
@@ -18,6 +19,9 @@ struct TriangleHit {
   bool hit = false;
   T t{};
   std::array<T, 3> barycentric{};  // weights of a, b, c
+  // For a hit the static filter decided: a bound on the relative errors of t's numerator and
+  // denominator, summed (t = numerator/denominator); 0 from the sheared test.
+  T t_quotient_error{};
 };
 
 // The sheared 2D coordinates of a vertex (x, y) and its unsheared ones (X, Y, Z).
@@ -49,13 +53,84 @@ void snap_edge_functions(T& u, T& v, T& w, const ShearedVertex<T>& a, const Shea
   if (abs(w) <= bound(b, a)) w = T(0);
 }
 
+// The triangle filter's error bound, in units of the unit roundoff u. Each of the filter's
+// quantities is a triple product x·(y × z) of the direction D and the rounded differences
+// e₁ = b − a, e₂ = c − a, s = O − a; each of its six terms carries at most 8 roundings (3
+// differences, 2 products, the cross product's difference, 2 additions of the dot product), so
+// its error is at most γ₈ < 8.001u times the sum of the terms' magnitudes, which is
+// at most the product of the three factors' 1-norms: at most ‖D‖₁·M² for det, U and V, and M³
+// for t's numerator, where M is the largest 1-norm of e₁, e₂ and s. 12 leaves room for the
+// rounding of the norms and of the bound, and for underflow (see filtered_triangle). Derived in
+// docs/precision.md.
+constexpr int kTriangleFilterUlps = 12;
+
+// The triangle's static filter: Möller and Trumbore's formulation (JGT 2(1), 1997) with a
+// forward error bound on each quantity that decides. det = e₁·(D × e₂) (zero when the ray is
+// parallel to the plane), the barycentric numerators U = s·(D × e₂), V = D·(s × e₁) and
+// W = det − U − V (weights of b, c and a times det), and t's numerator e₂·(s × e₁). When det and
+// every numerator the decision rests on lie farther from zero than their bounds, their signs are
+// those of exact arithmetic on the same inputs, so the decision is exact: true with `out` set.
+// t is kept when its relative error is within kFastPathTolerance. Otherwise false: the caller
+// runs the sheared test. A decision it makes is never a miss of a closed triangle the ray meets
+// exactly, so mixing the two keeps a mesh watertight (docs/precision.md). `bound_scale`
+// multiplies every bound: 1 but in the test that shows a smaller bound is caught.
+template <typename T>
+[[gnu::always_inline]] inline bool filtered_triangle(const Vec3<T>& o, const Vec3<T>& d,
+                                                     const Vec3<T>& a, const Vec3<T>& b,
+                                                     const Vec3<T>& c, TriangleHit<T>& out,
+                                                     T bound_scale = T(1)) {
+  using std::abs;
+  auto norm1 = [](const Vec3<T>& v) { return abs(v.x) + abs(v.y) + abs(v.z); };
+  auto larger = [](T x, T y) { return x > y ? x : y; };
+  Vec3<T> e1 = b - a, e2 = c - a, s = o - a;
+  T nd = norm1(d), m = larger(larger(norm1(e1), norm1(e2)), norm1(s));
+  // The bound of det, U and V. Norms at most kFastPathRange (2^254 in double) keep every product
+  // of three finite; a bound at least its cube's inverse keeps the absolute errors of underflow
+  // (at most 2^-1074 an operation) far below the bound's slack.
+  constexpr T kHuge = kFastPathRange<T>, kTiny = T(1) / (kHuge * kHuge * kHuge);
+  const T k = T(kTriangleFilterUlps) * kUnitRoundoff<T> * bound_scale;
+  T bound = k * nd * m * m;
+  if (!((nd <= kHuge) & (m <= kHuge) & (bound >= kTiny))) return false;
+  // Decide the plane: det's sign, then every numerator taken with that sign (an exact flip).
+  Vec3<T> p = cross(d, e2);
+  T det = dot(e1, p);
+  T abs_det = abs(det);
+  if (!(abs_det > bound)) return false;
+  T sign = std::copysign(T(1), det);
+  // Edge tests: a numerator certainly below zero is an exact miss. W's bound adds the two
+  // subtractions' rounding, 2u(|det| + |U| + |V|) ≤ 6u·‖D‖₁·M² < bound, to the three bounds.
+  T u = sign * dot(s, p);
+  if (u < -bound) return true;
+  Vec3<T> q = cross(s, e1);
+  T v = sign * dot(d, q);
+  if (v < -bound) return true;
+  T w = abs_det - u - v;
+  if (w < T(-4) * bound) return true;
+  if (!((u > bound) & (v > bound) & (w > T(4) * bound))) return false;
+  // Compute t: e₂·(s × e₁)/det, kept when both are far from zero next to their bounds.
+  T t_num = dot(e2, q), t_bound = k * m * m * m;
+  constexpr T kTolerance = kFastPathTolerance<T>;
+  if (!((abs(t_num) * kTolerance > t_bound) & (abs_det * kTolerance > bound) &
+        (t_bound >= kTiny))) {
+    return false;
+  }
+  T inv = T(1) / abs_det;
+  out.hit = true;
+  out.t = sign * t_num * inv;
+  out.barycentric = {w * inv, u * inv, v * inv};
+  out.t_quotient_error = t_bound / abs(t_num) + bound / abs_det;
+  return true;
+}
+
 // Watertight ray-triangle test (Woop, Benthin and Wald, JCGT 2(1), 2013): the ray is sheared
 // to the +z axis and the edge functions are evaluated in 2D, so that a ray through an edge or
 // vertex shared by two triangles never misses both. Edge functions that come out exactly zero
-// are recomputed with an FMA difference of products, whose sign is exact.
+// are recomputed with an FMA difference of products, whose sign is exact. Not inlined: it runs
+// only on the rays the filter leaves (see watertight_triangle).
 template <typename T>
-TriangleHit<T> watertight_triangle(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T>& a,
-                                   const Vec3<T>& b, const Vec3<T>& c) {
+[[gnu::noinline]] TriangleHit<T> sheared_triangle(const Vec3<T>& o, const Vec3<T>& d,
+                                                  const Vec3<T>& a, const Vec3<T>& b,
+                                                  const Vec3<T>& c) {
   TriangleHit<T> out;
   int kz = max_dimension(d);
   int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
@@ -115,6 +190,20 @@ TriangleHit<T> watertight_triangle(const Vec3<T>& o, const Vec3<T>& d, const Vec
   return out;
 }
 
+// The reference ray-triangle test: in float and double the static filter (filtered_triangle)
+// answers, and the sheared watertight test runs on the few rays it cannot decide; other number
+// types run the sheared test.
+template <typename T>
+[[gnu::always_inline]] inline TriangleHit<T> watertight_triangle(const Vec3<T>& o, const Vec3<T>& d,
+                                                                 const Vec3<T>& a, const Vec3<T>& b,
+                                                                 const Vec3<T>& c) {
+  if constexpr (kErrorFree<T>) {
+    TriangleHit<T> out;
+    if (filtered_triangle(o, d, a, b, c, out)) return out;
+  }
+  return sheared_triangle(o, d, a, b, c);
+}
+
 class Triangle final : public Shape {
  public:
   // What the accuracy study needs of a triangle (shapes/ladder_primitives.h).
@@ -172,6 +261,18 @@ struct Triangle::Ladder {
     if (!h.hit || !(h.t >= T(0))) return false;
     t = h.t;
     return true;
+  }
+
+  // The static filter: filtered_triangle's exact decision, and its t (the reference's own)
+  // enclosed; a decided hit behind the origin (t < 0, a certain sign) is a miss.
+  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double /*r*/,
+                     FilterAnswer& out, double bound_scale) {
+    TriangleHit<double> h;
+    if (!filtered_triangle(o, d, p[0], p[1], p[2], h, bound_scale)) return false;
+    out = {};
+    if (!h.hit || h.t < 0) return true;
+    out.hit = true;
+    return enclose_quotient(h.t, h.t_quotient_error, 2, out);
   }
 
   // Hit the plane, then test the point against each edge (≥ 0 is inside).
