@@ -59,6 +59,7 @@ void apply_feedback_policy(GradeResult& r, FeedbackPolicy policy) {
     p.feedback = std::move(kept);
   }
   for (auto& m : r.mistakes) {
+    if (m.kind == "bank") continue;  // the bank's own mistake: its message is the lesson
     const MistakeInfo& info = mistake_info(m.id);
     m.message = fmt::format("{}. {}", info.title, info.explanation);
   }

@@ -14,12 +14,18 @@ Runner setup_handout(CLI::App& sub);
 Runner setup_export(CLI::App& sub);
 Runner setup_schema(CLI::App& sub);
 Runner setup_tables(CLI::App& sub);
+Runner setup_report(CLI::App& sub);
+Runner setup_regrade(CLI::App& sub);
 
 const std::vector<Command>& command_table() {
   static const std::vector<Command> table = {
       {"run", "the main job: solve the bank, write worked solutions, grade submissions",
        &setup_run},
       {"grade", "grade submissions, for a person, a gradebook or an LMS (--format)", &setup_grade},
+      {"report", "what a class got wrong, and why: report.html and report.json (--out)",
+       &setup_report},
+      {"regrade", "which students' points or feedback a new bank changes, writing nothing",
+       &setup_regrade},
       {"solve", "print the reference answers (and worked solutions) of problems", &setup_solve},
       {"solutions", "write (or --check) the worked solutions of a bank, one file per problem",
        &setup_solutions},

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/internal_error.h"
+#include "grading/bank_mistakes.h"
 #include "grading/kind_grader.h"
 #include "json/cursor.h"
 
@@ -96,7 +97,10 @@ std::shared_ptr<const KindGrader> make_kind_grader(const Problem& p) {
   return make_fields_grader(p);
 }
 
-Grader::Grader(const Problem& problem) : problem_(&problem), kind_(make_kind_grader(problem)) {}
+Grader::Grader(const Problem& problem) : problem_(&problem), kind_(make_kind_grader(problem)) {
+  auto own = std::make_shared<const BankMistakes>(problem);
+  if (!own->empty()) bank_mistakes_ = std::move(own);
+}
 
 double Grader::max_score() const { return kind_->context().points.total(); }
 
@@ -151,6 +155,7 @@ GradeResult Grader::grade(const nlohmann::json& answer, const GradeOptions& opti
   }
   // Parts the kind did not list (a problem's points may name them) still count in the total.
   r.max_score = std::max(r.max_score, max_score());
+  if (bank_mistakes_) bank_mistakes_->find(answer, r);
   return r;
 }
 

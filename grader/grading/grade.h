@@ -17,6 +17,7 @@ struct GradeOptions {
 };
 
 class KindGrader;
+class BankMistakes;
 
 // Prepares a problem once (reference answer, derivations, mistaken variants, tolerances and
 // points) and grades any number of answers to it.
@@ -42,6 +43,7 @@ class Grader {
  private:
   const Problem* problem_;
   std::shared_ptr<const KindGrader> kind_;
+  std::shared_ptr<const BankMistakes> bank_mistakes_;  // the problem's own "mistakes"
 };
 
 // Grades one answer; prepares the problem each time (use Grader for many answers).

@@ -143,7 +143,7 @@ std::string fill_text(const std::string& text, const ParameterSet& set,
 // Keys whose values are never filled in.
 bool kept_as_is(std::string_view key) {
   return key == "id" || key == "tags" || key == "source" || key == "parameters" ||
-         key == "nice_numbers";
+         key == "nice_numbers" || key == "mistakes";
 }
 
 nlohmann::json fill(const Cursor& c, const ParameterSet& set, const ParameterValues& values,

@@ -15,9 +15,9 @@ std::vector<std::string> Task::conclusion() const {
 
 const std::vector<std::string>& common_problem_keys() {
   static const std::vector<std::string> keys = {
-      "id",        "kind",     "title",       "statement",  "method",
-      "precision", "expected", "tolerance",   "points",     "tests",
-      "tags",      "source",   "conventions", "parameters", "nice_numbers"};
+      "id",          "kind",       "title",        "statement", "method", "precision",
+      "expected",    "tolerance",  "points",       "tests",     "tags",   "source",
+      "conventions", "parameters", "nice_numbers", "mistakes"};
   return keys;
 }
 

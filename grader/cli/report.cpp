@@ -1,0 +1,205 @@
+// raygrade report: what a class got wrong, and why (docs/report.md): report.json, report.html
+// and each student's feedback page in --out.
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "assignments/feedback.h"
+#include "assignments/grading.h"
+#include "assignments/roster.h"
+#include "assignments/variants.h"
+#include "cli/command.h"
+#include "core/atomic_file.h"
+#include "core/escape.h"
+#include "core/parallel.h"
+#include "grading/outputs.h"
+#include "reports/class_report.h"
+
+namespace raygrade::cli {
+// Named rather than anonymous: a unity batch shares one anonymous namespace.
+namespace report_internal {
+
+struct ReportOptions {
+  std::vector<std::string> problems = {"problems"};
+  std::vector<std::string> submissions;
+  std::string assignment;
+  std::string roster;
+  std::string out;
+  unsigned jobs = 0;
+};
+
+// One graded submission with what the report needs besides the grade.
+struct Handed {
+  SubmissionGrade grade;
+  nlohmann::json answers;                          // the submission's "answers"
+  std::shared_ptr<std::vector<Problem>> problems;  // the student's variants (assignment)
+};
+
+// Grades submissions to an assignment, each as its student's variant, with full feedback.
+class AssignmentSource {
+ public:
+  AssignmentSource(const ReportOptions& o, std::vector<Diagnostic>& errors)
+      : spec_(load_assignment(o.assignment)), bank_(load_assignment_bank(spec_)) {
+    errors = bank_.errors;
+    AssignmentGradeOptions options;
+    options.feedback = FeedbackPolicy::kFull;
+    if (!o.roster.empty()) options.roster = load_roster(o.roster);
+    grader_ = std::make_unique<AssignmentGrader>(spec_, bank_.problems, options);
+  }
+  bool complete() const { return bank_.problems.size() == spec_.problems.size(); }
+  std::string title() const { return spec_.title.empty() ? spec_.id : spec_.title; }
+  std::vector<const Problem*> problems() const { return bank_.problems; }
+
+  Handed grade(const std::string& path) const {
+    Handed h;
+    auto file = load_json_file(path, JsonLimits::submission());
+    Cursor root(file);
+    if (!root.is_object()) root.fail("a submission is a JSON object", "type");
+    StudentIdentity who = grader_->identify(root);
+    h.problems = std::make_shared<std::vector<Problem>>(
+        student_problems(spec_, bank_.problems, student_key(who)));
+    Assignment graders(*h.problems);
+    if (!graders.errors().empty()) throw Error(graders.errors().front());
+    h.grade = graders.grade(file);
+    h.grade.identity = who;
+    h.grade.student = who.display();
+    h.grade.score = h.grade.max_score = 0;
+    for (auto& r : h.grade.results) {
+      for (const auto& ap : spec_.problems)
+        if (ap.id == r.problem_id && ap.points) scale_points(r, *ap.points);
+      h.grade.score += r.score;
+      h.grade.max_score += r.max_score;
+    }
+    if (auto a = root.find("answers"); a && a->json().is_object()) h.answers = a->json();
+    return h;
+  }
+
+ private:
+  AssignmentSpec spec_;
+  AssignmentBank bank_;
+  std::unique_ptr<AssignmentGrader> grader_;
+};
+
+// The students of the report, one per student (the last of several submissions), in the
+// order their submissions were listed.
+ClassInput class_input(const std::vector<Handed>& handed,
+                       const std::vector<const Problem*>& problems,
+                       std::map<std::string, const Handed*>& by_student) {
+  ClassInput in;
+  for (const Problem* p : problems) {
+    in.problem_ids.push_back(p->id);
+    in.problem_titles.push_back(p->title);
+  }
+  std::vector<std::string> order;
+  for (const Handed& h : handed) {
+    std::string id = h.grade.identity.id.empty() ? h.grade.student : h.grade.identity.id;
+    if (!by_student.count(id)) order.push_back(id);
+    by_student[id] = &h;
+  }
+  std::set<std::string> names = {"report"};
+  for (const auto& id : order) {
+    const Handed& h = *by_student[id];
+    ClassStudent s{
+        id, h.grade.identity.name, "students/" + unique_file_name(id, names) + ".html", {}};
+    for (std::size_t p = 0; p < problems.size(); ++p) {
+      ClassAnswer a;
+      for (const auto& r : h.grade.results)
+        if (r.problem_id == problems[p]->id) a.result = r;
+      if (a.result.problem_id.empty()) {
+        a.result.problem_id = problems[p]->id;
+        a.result.answered = false;
+      }
+      if (h.answers.contains(problems[p]->id)) a.answer = h.answers[problems[p]->id];
+      a.variant = h.problems ? &(*h.problems)[p] : problems[p];
+      s.answers.push_back(std::move(a));
+    }
+    in.students.push_back(std::move(s));
+  }
+  return in;
+}
+
+int run_report(const ReportOptions& o, bool problems_given) {
+  if (problems_given && !o.assignment.empty()) {
+    fmt::print(stderr, "raygrade report: --problems does not go with --assignment\n");
+    return kExitBadInput;
+  }
+  std::vector<Diagnostic> errors;
+  std::unique_ptr<AssignmentSource> source;
+  Bank bank;
+  std::unique_ptr<Assignment> plain;
+  std::vector<const Problem*> problems;
+  std::string title = "problems";
+  if (!o.assignment.empty()) {
+    source = std::make_unique<AssignmentSource>(o, errors);
+    for (const auto& e : errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
+    if (!source->complete()) return kExitBadInput;
+    problems = source->problems();
+    title = source->title();
+  } else {
+    bank = load_bank(o.problems);
+    errors = bank.errors;
+    for (const auto& e : errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
+    plain = std::make_unique<Assignment>(bank.problems);
+    for (const auto& g : plain->graders()) problems.push_back(&g.problem());
+  }
+  std::vector<Diagnostic> file_errors;
+  std::vector<std::string> files = submission_files(o.submissions, file_errors);
+  for (const auto& e : file_errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
+  unsigned jobs = o.jobs > 0 ? o.jobs : default_jobs();
+  auto graded = parallel_map<std::optional<Handed>>(
+      files.size(), jobs, [&](std::size_t i) -> std::optional<Handed> {
+        try {
+          if (source) return source->grade(files[i]);
+          Handed h{plain->grade_file(files[i]), {}, nullptr};
+          if (!h.grade.gradable) throw Error(*h.grade.fault);
+          auto file = load_json_file(files[i], JsonLimits::submission());
+          if (file->root.contains("answers")) h.answers = file->root["answers"];
+          return h;
+        } catch (const Error& e) {
+          fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
+          return std::nullopt;
+        }
+      });
+  std::vector<Handed> handed;
+  for (auto& g : graded)
+    if (g) handed.push_back(std::move(*g));
+  std::map<std::string, const Handed*> by_student;
+  ClassInput in = class_input(handed, problems, by_student);
+  in.title = title;
+  nlohmann::json report = class_report_json(in, jobs);
+  std::filesystem::path out(o.out);
+  std::filesystem::create_directories(out / "students");
+  const GradeFormat* html = find_grade_format("html");
+  for (const auto& s : in.students)
+    write_file_atomically(out / s.page, html->render(by_student[s.id]->grade, 0), false);
+  write_file_atomically(out / "report.json", report.dump(1) + "\n", false);
+  write_file_atomically(out / "report.html", class_report_html(report), false);
+  flush_folder(o.out);
+  fmt::print(stderr, "Reported {} students on {} problems into {}.\n", in.students.size(),
+             problems.size(), o.out);
+  bool bad = handed.size() != files.size() || !errors.empty() || !file_errors.empty();
+  return bad ? kExitBadInput : kExitOk;
+}
+
+}  // namespace report_internal
+
+Runner setup_report(CLI::App& sub) {
+  using namespace report_internal;  // NOLINT: this file's own functions
+  auto o = std::make_shared<ReportOptions>();
+  auto* problems =
+      sub.add_option("--problems", o->problems, "the bank: a file or folder (repeat for more)")
+          ->allow_extra_args(false)
+          ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  sub.add_option("submissions", o->submissions, "submission files or folders")->required();
+  sub.add_option("--assignment", o->assignment,
+                 "an assignment file: each submission is graded as the variant of its student");
+  sub.add_option("--roster", o->roster, "with --assignment: a roster CSV (id, name, email)");
+  sub.add_option("--out", o->out, "the folder for report.html, report.json and students/")
+      ->required();
+  sub.add_option("-j,--jobs", o->jobs, "threads (default: one per core); the report is the same");
+  return [o, problems] { return run_report(*o, problems->count() > 0); };
+}
+
+}  // namespace raygrade::cli

@@ -1,0 +1,424 @@
+// Single changes to a variant's derivation, matched against wrong answers.
+#include "grading/discover.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <set>
+#include <tuple>
+
+#include "core/error.h"
+#include "derivation/formula.h"
+
+namespace raygrade {
+
+std::string StepChange::text() const {
+  return fmt::format("{} = {} → {} = {}", step, before, step, after);
+}
+
+const char* to_string(Discovery::Verdict v) {
+  switch (v) {
+    case Discovery::Verdict::kExplained: return "explained";
+    case Discovery::Verdict::kAmbiguous: return "ambiguous";
+    case Discovery::Verdict::kNoisy: return "noisy";
+    case Discovery::Verdict::kNone: return "none";
+  }
+  return "none";
+}
+
+// Named rather than anonymous: a unity batch shares one anonymous namespace.
+namespace discover_internal {
+
+// Two numbers of two derivations are the same number: far below any tolerance, above rounding.
+constexpr double kSameNumber = 1e-9;
+
+bool same_number(double a, double b) {
+  return std::abs(a - b) <= kSameNumber * (1 + std::abs(a) + std::abs(b));
+}
+
+// One number of an answer: where it is, and what a derivation step gives it.
+struct Leaf {
+  nlohmann::json::json_pointer path;
+  std::string field;     // the nearest object key above it ("t", "point")
+  int component = -1;    // 0..2 when it is a component of a vector [x, y, z]
+  nlohmann::json value;  // the reference's (a number, string or boolean)
+  double number = NAN;   // the reference's number, when it is one
+  std::string step;      // the step that computes it ("" when none does)
+  std::size_t part = 0;  // the part of the derivation the step is in
+  int occurrence = 0;    // which of the part's steps of that name
+};
+
+bool is_vector3(const nlohmann::json& j) {
+  return j.is_array() && j.size() == 3 && j[0].is_number() && j[1].is_number() && j[2].is_number();
+}
+
+void flatten(const nlohmann::json& j, const nlohmann::json::json_pointer& at,
+             const std::string& field, std::vector<Leaf>& out) {
+  if (j.is_object()) {
+    for (const auto& [k, v] : j.items()) flatten(v, at / k, k, out);
+  } else if (j.is_array()) {
+    bool vector = is_vector3(j);
+    for (std::size_t i = 0; i < j.size(); ++i) {
+      std::size_t before = out.size();
+      flatten(j[i], at / i, field, out);
+      if (vector && out.size() == before + 1) out.back().component = static_cast<int>(i);
+    }
+  } else if (!j.is_null()) {
+    Leaf l;
+    l.path = at;
+    l.field = field;
+    l.value = j;
+    if (j.is_number()) l.number = j.get<double>();
+    out.push_back(std::move(l));
+  }
+}
+
+// A student's number as typed: a JSON number, or a formula of numbers ("9 - sqrt(3)").
+std::optional<double> student_number(const nlohmann::json& j) {
+  if (j.is_number()) return j.get<double>();
+  if (!j.is_string()) return std::nullopt;
+  FormulaParse p = parse_formula(j.get<std::string>());
+  if (!p.ok || p.formula.uses_symbols) return std::nullopt;
+  double v = p.formula.evaluate();
+  return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
+
+// A derivation's step values by (part, name, occurrence).
+using StepValues = std::map<std::tuple<std::size_t, std::string, int>, Value>;
+
+StepValues step_values(const std::vector<SolutionPart>& parts) {
+  StepValues out;
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    std::map<std::string, int> seen;
+    for (const auto& s : parts[p].derivation.steps) out[{p, s.name, seen[s.name]++}] = s.value;
+  }
+  return out;
+}
+
+// The number a derivation gives a leaf: NaN when the step is missing or of another type.
+double leaf_value(const StepValues& values, const Leaf& l) {
+  auto it = values.find({l.part, l.step, l.occurrence});
+  if (it == values.end()) return NAN;
+  const Value& v = it->second;
+  if (l.component >= 0) return v.is_vector() ? v.vector[l.component] : NAN;
+  return v.is_scalar() ? v.scalar : NAN;
+}
+
+// Ties each numeric leaf to the last step whose value is that number (a component: whose
+// vector is the leaf's whole vector).
+void map_leaves(std::vector<Leaf>& leaves, const nlohmann::json& answer,
+                const std::vector<SolutionPart>& parts) {
+  for (auto& l : leaves) {
+    if (!l.value.is_number()) continue;
+    std::optional<Vec3d> whole;
+    if (l.component >= 0) {
+      const auto& arr = answer.at(l.path.parent_pointer());
+      whole = Vec3d{arr[0].get<double>(), arr[1].get<double>(), arr[2].get<double>()};
+    }
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+      std::map<std::string, int> seen;
+      for (const auto& s : parts[p].derivation.steps) {
+        int occ = seen[s.name]++;
+        bool fits = whole ? s.value.is_vector() && same_number(s.value.vector.x, whole->x) &&
+                                same_number(s.value.vector.y, whole->y) &&
+                                same_number(s.value.vector.z, whole->z)
+                          : s.value.is_scalar() && same_number(s.value.scalar, l.number);
+        if (fits && !s.given) {
+          l.step = s.name;
+          l.part = p;
+          l.occurrence = occ;
+        }
+      }
+    }
+  }
+}
+
+// An alternative formula: what is evaluated, and how it is shown.
+struct Alt {
+  E eval;
+  E shown;
+  std::string kind;
+};
+
+E with_arg(const E& e, std::size_t i, const E& a) {
+  auto n = std::make_shared<ExprNode>(e.node());
+  n->args[i] = a;
+  return E(std::shared_ptr<const ExprNode>(std::move(n)));
+}
+
+E with_op(const E& e, Op op) {
+  auto n = std::make_shared<ExprNode>(e.node());
+  n->op = op;
+  return E(std::shared_ptr<const ExprNode>(std::move(n)));
+}
+
+// What the changes of a formula may use: every step's value, and the given vectors.
+struct Context {
+  Env values;
+  std::vector<std::pair<std::string, E>> given_vectors;  // name, symbol
+};
+
+void symbol_alternatives(const E& e, const Context& c, std::vector<Alt>& out) {
+  const ExprNode& n = e.node();
+  auto it = c.values.find(n.name);
+  if (it == c.values.end() || !it->second.is_vector()) return;
+  Vec3d v = it->second.vector;
+  constexpr double kUnit = 1e-9;  // a vector of length 1 needs no normalising
+  if (std::abs(length(v) - 1) > kUnit) {
+    E unit = e / norm(e);
+    out.push_back({unit, unit, "normalise"});
+  }
+  for (const auto& [name, symbol] : c.given_vectors) {
+    if (name != n.name) out.push_back({symbol, symbol, "vector-swap"});
+  }
+  static const char* const kAxes[] = {"x", "y", "z"};
+  std::string shown = to_text(e);
+  for (int k = 0; k < 3; ++k) {
+    if (v[k] == 0) continue;
+    E parts[3], names[3];
+    for (int i = 0; i < 3; ++i) {
+      Vec3d axis{i == 0 ? 1.0 : 0.0, i == 1 ? 1.0 : 0.0, i == 2 ? 1.0 : 0.0};
+      parts[i] = i == k ? E(0) : dot(e, vec(axis));
+      names[i] = i == k ? E(0) : sym("", shown + "_" + kAxes[i]);
+    }
+    out.push_back(
+        {tuple(parts[0], parts[1], parts[2]), tuple(names[0], names[1], names[2]), "component"});
+  }
+}
+
+// The changes at the node `e` itself.
+void local_alternatives(const E& e, const Context& c, std::vector<Alt>& out) {
+  const ExprNode& n = e.node();
+  auto both = [&](const E& x, const char* kind) { out.push_back({x, x, kind}); };
+  const auto& a = n.args;
+  switch (n.op) {
+    case Op::kSymbol: symbol_alternatives(e, c, out); break;
+    case Op::kAdd:
+      both(a[0] - a[1], "sign");
+      both(a[0], "drop-term");
+      both(a[1], "drop-term");
+      break;
+    case Op::kSub:
+      both(a[0] + a[1], "sign");
+      both(a[1] - a[0], "swap");
+      both(a[0], "drop-term");
+      both(-a[1], "drop-term");
+      break;
+    case Op::kNeg: both(a[0], "sign"); break;
+    case Op::kMul:
+      if (a[0].node().op == Op::kNumber) both(a[1], "drop-term");
+      if (a[1].node().op == Op::kNumber) both(a[0], "drop-term");
+      break;
+    case Op::kDiv:
+      both(a[1] / a[0], "swap");
+      both(a[0], a[1].node().op == Op::kNorm ? "normalise" : "drop-term");
+      break;
+    case Op::kCross: both(cross(a[1], a[0]), "swap"); break;
+    case Op::kSquare: both(a[0], "square"); break;
+    case Op::kSqrt: both(a[0], "sqrt"); break;
+    case Op::kMin: both(with_op(e, Op::kMax), "other-root"); break;
+    case Op::kMax: both(with_op(e, Op::kMin), "other-root"); break;
+    case Op::kArccosDegrees: both(e * (std::numbers::pi / 180), "degrees"); break;
+    default: break;
+  }
+}
+
+// Every single change of the formula `e`, anywhere in its tree.
+void alternatives(const E& e, const Context& c, std::vector<Alt>& out) {
+  if (e.empty()) return;
+  local_alternatives(e, c, out);
+  if (e.node().op == Op::kSymbol) return;  // its args are how it is shown
+  for (std::size_t i = 0; i < e.node().args.size(); ++i) {
+    std::vector<Alt> inner;
+    alternatives(e.node().args[i], c, inner);
+    for (auto& x : inner) {
+      out.push_back({with_arg(e, i, x.eval), with_arg(e, i, x.shown), std::move(x.kind)});
+    }
+  }
+}
+
+// Numbers that fit one answer: the changes giving them, and their chance to fit at random.
+struct Prediction {
+  std::vector<double> numbers;  // per leaf (NaN for a leaf with no step)
+  std::vector<StepChange> changes;
+};
+
+}  // namespace discover_internal
+
+struct ChangeSearch::Impl {
+  std::vector<discover_internal::Leaf> leaves;
+  std::vector<double> reference;  // per leaf
+  TolerancePolicy tolerance;
+  std::vector<discover_internal::Prediction> predictions;
+  std::size_t changes = 0;
+
+  double allowed_at(std::size_t i, const std::vector<double>& numbers) const {
+    const discover_internal::Leaf& l = leaves[i];
+    const Tolerance& t = tolerance.for_field(l.field);
+    double scale = std::abs(numbers[i]);
+    if (l.component >= 0) {
+      double s2 = 0;
+      for (std::size_t k = 0; k < leaves.size(); ++k) {
+        if (leaves[k].component >= 0 && leaves[k].path.parent_pointer() == l.path.parent_pointer())
+          s2 += numbers[k] * numbers[k];
+      }
+      scale = std::sqrt(s2);
+    }
+    return allowed_error(numbers[i], scale, t);
+  }
+
+  void add(const StepChange& change, std::vector<double> numbers) {
+    using discover_internal::same_number;
+    bool moved = false;
+    for (std::size_t i = 0; i < numbers.size(); ++i) {
+      if (!leaves[i].step.empty() && !std::isfinite(numbers[i])) return;
+      if (std::isfinite(numbers[i]) && !same_number(numbers[i], reference[i])) moved = true;
+    }
+    if (!moved) return;
+    ++changes;
+    for (std::size_t i = 0; i < numbers.size(); ++i)
+      if (std::isnan(numbers[i])) numbers[i] = reference[i];
+    for (auto& p : predictions) {
+      bool same = true;
+      for (std::size_t i = 0; i < numbers.size() && same; ++i)
+        same = (std::isnan(numbers[i]) && std::isnan(p.numbers[i])) ||
+               same_number(numbers[i], p.numbers[i]);
+      if (same) {
+        p.changes.push_back(change);
+        return;
+      }
+    }
+    predictions.push_back(discover_internal::Prediction{std::move(numbers), {change}});
+  }
+};
+
+ChangeSearch::~ChangeSearch() = default;
+std::size_t ChangeSearch::changes() const { return impl_->changes; }
+
+ChangeSearch::ChangeSearch(const Problem& problem) : impl_(std::make_unique<Impl>()) {
+  using namespace discover_internal;  // NOLINT: this file's own functions
+  Impl& m = *impl_;
+  try {
+    m.tolerance = read_tolerance_policy(problem);
+  } catch (const Error&) {
+    // The grader reports a faulty tolerance; the search uses the defaults.
+  }
+  const Task& task = *problem.task;
+  nlohmann::json answer = task.answer();
+  std::vector<SolutionPart> right = task.derive(problem.method);
+  flatten(answer, nlohmann::json::json_pointer(), "", m.leaves);
+  map_leaves(m.leaves, answer, right);
+  for (const auto& l : m.leaves) m.reference.push_back(l.number);
+  // The steps and formulas to change, once each.
+  Context c;
+  std::vector<const Step*> steps;
+  std::set<std::pair<std::string, std::string>> seen;
+  for (const auto& part : right) {
+    for (const auto& s : part.derivation.steps) {
+      c.values[s.name] = s.value;
+      if (s.given && s.value.is_vector()) c.given_vectors.emplace_back(s.name, s.symbol);
+      if (!s.given && !s.formula.empty() && seen.insert({s.name, to_text(s.formula)}).second)
+        steps.push_back(&s);
+    }
+  }
+  for (const Step* s : steps) {
+    std::string before = to_text(s->formula);
+    std::vector<Alt> alts;
+    alternatives(s->formula, c, alts);
+    alts.push_back({-s->formula, -s->formula, "sign"});
+    for (const Alt& alt : alts) {
+      Overrides o;
+      o.formula = [&](std::string_view step, const E& f) -> std::optional<E> {
+        if (step != s->name || to_text(f) != before) return std::nullopt;
+        return alt.eval;
+      };
+      std::vector<double> numbers;
+      try {
+        StepValues values = step_values(task.derive(problem.method, &o));
+        for (const auto& l : m.leaves)
+          numbers.push_back(l.step.empty() ? NAN : leaf_value(values, l));
+      } catch (const Error&) {
+        continue;  // the change leaves the method's way (no root where one was)
+      } catch (const EvaluationFault&) {
+        continue;  // the change makes no sense here (a vector where a number was)
+      }
+      m.add(StepChange{s->name, alt.kind, before, to_text(alt.shown)}, std::move(numbers));
+    }
+  }
+}
+
+Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
+  using namespace discover_internal;  // NOLINT: this file's own functions
+  const Impl& m = *impl_;
+  Discovery d;
+  std::vector<double> given(m.leaves.size(), NAN);
+  bool wrong = false, compared = false;
+  for (std::size_t i = 0; i < m.leaves.size(); ++i) {
+    const Leaf& l = m.leaves[i];
+    if (!answer.contains(l.path)) continue;
+    const nlohmann::json& s = answer.at(l.path);
+    if (!l.value.is_number()) {
+      if (s != l.value) return d;  // a word or a verdict no change of a number explains
+      continue;
+    }
+    std::optional<double> x = student_number(s);
+    if (!x) return d;
+    given[i] = *x;
+    compared = true;
+    if (std::abs(*x - m.reference[i]) > m.allowed_at(i, m.reference)) {
+      if (l.step.empty()) return d;  // a number no step computes
+      wrong = true;
+    }
+  }
+  if (!compared || !wrong) return d;
+  // The changed answers that fit, told apart by the numbers the student gave alone; and the
+  // chance that a random answer of those numbers fits some changed answer.
+  std::vector<const Prediction*> fits;
+  std::size_t distinct = 0;
+  std::vector<std::vector<double>> seen(1);  // the reference's numbers fit no wrong answer
+  for (std::size_t i = 0; i < given.size(); ++i)
+    if (!std::isnan(given[i])) seen[0].push_back(m.reference[i]);
+  for (const auto& p : m.predictions) {
+    std::vector<double> on_given;
+    double chance = 1;
+    bool fit = true;
+    for (std::size_t i = 0; i < given.size(); ++i) {
+      if (std::isnan(given[i])) continue;
+      double allowed = m.allowed_at(i, p.numbers);
+      on_given.push_back(p.numbers[i]);
+      chance *= std::min(1.0, allowed / std::max(1.0, std::abs(m.reference[i])));
+      fit = fit && std::abs(given[i] - p.numbers[i]) <= allowed;
+    }
+    bool repeated = std::any_of(seen.begin(), seen.end(), [&](const std::vector<double>& q) {
+      for (std::size_t k = 0; k < q.size(); ++k)
+        if (!same_number(q[k], on_given[k])) return false;
+      return true;
+    });
+    if (repeated) {
+      if (fit) fits.push_back(&p);
+      continue;
+    }
+    seen.push_back(on_given);
+    d.random_fit += chance;
+    if (fit) {
+      fits.push_back(&p);
+      ++distinct;
+    }
+  }
+  if (fits.empty()) return d;
+  d.fitting = distinct;
+  if (d.random_fit > kMaxRandomFit) {
+    d.verdict = Discovery::Verdict::kNoisy;
+  } else if (distinct > 1) {
+    d.verdict = Discovery::Verdict::kAmbiguous;
+  } else {
+    d.verdict = Discovery::Verdict::kExplained;
+    for (const Prediction* p : fits)
+      d.changes.insert(d.changes.end(), p->changes.begin(), p->changes.end());
+  }
+  return d;
+}
+
+}  // namespace raygrade

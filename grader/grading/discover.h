@@ -1,0 +1,74 @@
+// Discovering mistakes nobody named: single changes to a variant's derivation (a sign flipped,
+// a term dropped, operands swapped, r for r², ...) whose numbers reproduce a wrong answer that
+// no named mistake explains, with a guard against explaining random numbers.
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "grading/tolerance.h"
+#include "problems/problem.h"
+
+namespace raygrade {
+
+// The share of random answers that the changes of one variant may fit between them before no
+// fit on that variant is claimed. Random here means every number drawn uniformly within
+// max(1, |reference|) of the reference; the acceptance test of docs/report.md asks that at most
+// 5% of such answers be claimed, and 2% leaves room for answers that are partly right.
+constexpr double kMaxRandomFit = 0.02;
+
+// One change to one step of a derivation.
+struct StepChange {
+  std::string step;    // the step changed ("b")
+  std::string kind;    // sign, drop-term, swap, square, sqrt, normalise, other-root, degrees,
+                       // vector-swap, component
+  std::string before;  // the step's formula as the worked solution writes it ("2·(D · f)")
+  std::string after;   // the changed formula ("2·(D · C)")
+  // "b = 2·(D · f) → b = 2·(D · C)"
+  std::string text() const;
+  // The same for every variant of a problem: the step and its changed formula in symbols.
+  std::string key() const { return step + " = " + after; }
+};
+
+// What the search made of one wrong answer.
+struct Discovery {
+  enum class Verdict {
+    kExplained,  // exactly one change (or several that agree on every number) fits
+    kAmbiguous,  // changes that give different numbers fit: none is claimed
+    kNoisy,      // this variant's changes fit too many random answers: none is claimed
+    kNone,       // no single change fits
+  };
+  Verdict verdict = Verdict::kNone;
+  // kExplained: the changes that fit, all giving the same numbers (the first is the simplest).
+  std::vector<StepChange> changes;
+  std::size_t fitting = 0;  // how many different answers fitted, on the numbers given
+  // The chance that random numbers in place of the student's fit some change: each number
+  // drawn uniformly within max(1, |reference|) of the reference.
+  double random_fit = 0;
+};
+
+const char* to_string(Discovery::Verdict v);
+
+// The changed derivations of one variant, computed once and matched against any number of
+// answers. Safe to share between threads once built.
+class ChangeSearch {
+ public:
+  // Derives `problem` by its default method, maps each number of the reference answer to the
+  // step that computes it, and derives again with every single change.
+  explicit ChangeSearch(const Problem& problem);
+  ~ChangeSearch();
+
+  // Which change explains `answer` (in the solver's shape). An answer with no number to
+  // compare, or right in every number compared, is kNone.
+  Discovery explain(const nlohmann::json& answer) const;
+
+  std::size_t changes() const;  // changes tried that moved some number of the answer
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace raygrade
