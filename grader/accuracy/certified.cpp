@@ -50,18 +50,12 @@ std::optional<int> order_at(const AccuracyCase& a, const AccuracyCase& b) {
   return std::nullopt;
 }
 
-template <typename P>
-concept HasFilter = requires(const Vec3d& v, const std::vector<Vec3d>& p, double r,
-                             FilterAnswer& answer) {
-  { P::Ladder::filter(v, v, p, r, answer, 1.0) } -> std::same_as<bool>;
-};
-
 }  // namespace
 
 std::optional<FilterAnswer> filtered_double(const AccuracyCase& c, double bound_scale) {
   FilterAnswer answer;
   bool decided = visit_primitive(c.primitive, [&]<typename P>() {
-    if constexpr (HasFilter<P>) {
+    if constexpr (HasStaticFilter<P>) {
       return P::Ladder::filter(c.origin, c.direction, c.points, c.radius, answer, bound_scale);
     } else {
       return false;
@@ -72,7 +66,7 @@ std::optional<FilterAnswer> filtered_double(const AccuracyCase& c, double bound_
 }
 
 bool has_filter(Primitive primitive) {
-  return visit_primitive(primitive, [&]<typename P>() { return HasFilter<P>; });
+  return visit_primitive(primitive, [&]<typename P>() { return HasStaticFilter<P>; });
 }
 
 std::string_view level_name(Level level) {

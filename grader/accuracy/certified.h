@@ -3,8 +3,10 @@
 // up the ladder (double, double-double, MPFR) until it is; MPFR ground truth.
 #pragma once
 
+#include <concepts>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "shapes/accuracy_case.h"
 #include "shapes/filter_answer.h"
@@ -33,6 +35,12 @@ struct Certified {
 std::optional<FilterAnswer> filtered_double(const AccuracyCase& c, double bound_scale = 1);
 // Has the primitive a static filter?
 bool has_filter(Primitive primitive);
+// The same, at compile time: the primitive's Ladder has a static filter.
+template <typename P>
+concept HasStaticFilter = requires(const Vec3d& v, const std::vector<Vec3d>& p, double r,
+                                   FilterAnswer& answer) {
+  { P::Ladder::filter(v, v, p, r, answer, 1.0) } -> std::same_as<bool>;
+};
 
 // The certified answers. In double the static filter answers first; interval arithmetic runs
 // where it cannot decide.

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "accuracy/certified.h"
 #include "accuracy/formulations.h"
 #include "math/interval.h"
 
@@ -56,12 +57,6 @@ struct Reference {
   }
 };
 
-template <typename P>
-concept HasFilter = requires(const Vec3d& v, const std::vector<Vec3d>& p, double r,
-                             FilterAnswer& answer) {
-  { P::Ladder::filter(v, v, p, r, answer, 1.0) } -> std::same_as<bool>;
-};
-
 // The levels that start with the static filter, each instantiated per primitive with the
 // primitive's filter inlined (as filtered_double, certified_double and adaptive_nearest run it,
 // without their dispatch on the primitive); `Then` answers the cases the filter leaves.
@@ -69,7 +64,7 @@ template <typename Then>
 struct FilterFirst {
   template <typename P>
   [[gnu::noinline]] static bool on(const AccuracyCase& c, double& t) {
-    if constexpr (HasFilter<P>) {
+    if constexpr (HasStaticFilter<P>) {
       FilterAnswer f;
       if (P::Ladder::filter(c.origin, c.direction, c.points, c.radius, f, 1.0)) {
         t = f.t;
