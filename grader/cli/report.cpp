@@ -120,6 +120,20 @@ ClassInput class_input(const std::vector<Handed>& handed,
   return in;
 }
 
+// The roster's students whom no graded submission is from, in the roster's order. A submission
+// that could not be read counts for nobody: its student is listed too, and the exit code says
+// that a file was left out.
+std::vector<AbsentStudent> without_submission(const std::vector<StudentIdentity>& roster,
+                                              const std::vector<Handed>& handed) {
+  std::set<const StudentIdentity*> handed_in;
+  for (const Handed& h : handed)
+    if (const StudentIdentity* e = find_on_roster(roster, h.grade.identity)) handed_in.insert(e);
+  std::vector<AbsentStudent> out;
+  for (const auto& e : roster)
+    if (!handed_in.count(&e)) out.push_back({e.id, e.name});
+  return out;
+}
+
 int run_report(const ReportOptions& o, bool problems_given) {
   if (problems_given && !o.assignment.empty()) {
     fmt::print(stderr, "raygrade report: --problems does not go with --assignment\n");
@@ -168,6 +182,7 @@ int run_report(const ReportOptions& o, bool problems_given) {
   std::map<std::string, const Handed*> by_student;
   ClassInput in = class_input(handed, problems, by_student);
   in.title = title;
+  if (!o.roster.empty()) in.no_submission = without_submission(load_roster(o.roster), handed);
   nlohmann::json report = class_report_json(in, jobs);
   std::filesystem::path out(o.out);
   std::filesystem::create_directories(out / "students");
@@ -179,6 +194,8 @@ int run_report(const ReportOptions& o, bool problems_given) {
   flush_folder(o.out);
   fmt::print(stderr, "Reported {} students on {} problems into {}.\n", in.students.size(),
              problems.size(), o.out);
+  if (!o.roster.empty())
+    fmt::print(stderr, "No submission from {} students of the roster.\n", in.no_submission.size());
   bool bad = handed.size() != files.size() || !errors.empty() || !file_errors.empty();
   return bad ? kExitBadInput : kExitOk;
 }
@@ -195,7 +212,9 @@ Runner setup_report(CLI::App& sub) {
   sub.add_option("submissions", o->submissions, "submission files or folders")->required();
   sub.add_option("--assignment", o->assignment,
                  "an assignment file: each submission is graded as the variant of its student");
-  sub.add_option("--roster", o->roster, "with --assignment: a roster CSV (id, name, email)");
+  sub.add_option("--roster", o->roster,
+                 "a roster CSV (id, name, email): its students who handed in nothing are listed "
+                 "apart; with --assignment, every student must be on it");
   sub.add_option("--out", o->out, "the folder for report.html, report.json and students/")
       ->required();
   sub.add_option("-j,--jobs", o->jobs, "threads (default: one per core); the report is the same");

@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "derivation/formula.h"
+#include "kinds/derive.h"
 
 namespace raygrade {
 
@@ -75,13 +76,15 @@ void flatten(const nlohmann::json& j, const nlohmann::json::json_pointer& at,
   }
 }
 
-// A student's number as typed: a JSON number, or a formula of numbers ("9 - sqrt(3)").
-std::optional<double> student_number(const nlohmann::json& j) {
+// A student's number as typed: a JSON number, or a formula of numbers ("9 - sqrt(3)"); with
+// `symbols`, a formula in them too ("px^2 + py^2 - r^2"), at `values`.
+std::optional<double> student_number(const nlohmann::json& j, const SymbolTable* symbols,
+                                     const std::vector<double>& values) {
   if (j.is_number()) return j.get<double>();
   if (!j.is_string()) return std::nullopt;
-  FormulaParse p = parse_formula(j.get<std::string>());
-  if (!p.ok || p.formula.uses_symbols) return std::nullopt;
-  double v = p.formula.evaluate();
+  FormulaParse p = parse_formula(j.get<std::string>(), symbols);
+  if (!p.ok || (p.formula.uses_symbols && !symbols)) return std::nullopt;
+  double v = p.formula.evaluate(values);
   return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
 }
 
@@ -108,10 +111,26 @@ double leaf_value(const StepValues& values, const Leaf& l) {
 
 // Ties each numeric leaf to the last step whose value is that number (a component: whose
 // vector is the leaf's whole vector).
+// With `by_name`, each leaf is tied to the last step named as its field instead (a formula's
+// value may be another step's too).
 void map_leaves(std::vector<Leaf>& leaves, const nlohmann::json& answer,
-                const std::vector<SolutionPart>& parts) {
+                const std::vector<SolutionPart>& parts, bool by_name) {
   for (auto& l : leaves) {
     if (!l.value.is_number()) continue;
+    if (by_name) {
+      for (std::size_t p = 0; p < parts.size(); ++p) {
+        std::map<std::string, int> seen;
+        for (const auto& s : parts[p].derivation.steps) {
+          int occ = seen[s.name]++;
+          if (s.name == l.field && !s.given && s.value.is_scalar()) {
+            l.step = s.name;
+            l.part = p;
+            l.occurrence = occ;
+          }
+        }
+      }
+      continue;
+    }
     std::optional<Vec3d> whole;
     if (l.component >= 0) {
       const auto& arr = answer.at(l.path.parent_pointer());
@@ -249,7 +268,10 @@ struct Prediction {
 
 struct ChangeSearch::Impl {
   std::vector<discover_internal::Leaf> leaves;
-  std::vector<double> reference;  // per leaf
+  std::vector<double> reference;      // per leaf
+  std::vector<bool> computed;         // per leaf: some method's step computes it
+  SymbolTable symbols;                // a derive problem's symbols ("px", also "p_x")
+  std::vector<double> symbol_values;  // their values in the problem's own numbers
   TolerancePolicy tolerance;
   std::vector<discover_internal::Prediction> predictions;
   std::size_t changes = 0;
@@ -269,11 +291,13 @@ struct ChangeSearch::Impl {
     return allowed_error(numbers[i], scale, t);
   }
 
-  void add(const StepChange& change, std::vector<double> numbers) {
+  // `mapped`: the leaves as the change's method computes them.
+  void add(const StepChange& change, const std::vector<discover_internal::Leaf>& mapped,
+           std::vector<double> numbers) {
     using discover_internal::same_number;
     bool moved = false;
     for (std::size_t i = 0; i < numbers.size(); ++i) {
-      if (!leaves[i].step.empty() && !std::isfinite(numbers[i])) return;
+      if (!mapped[i].step.empty() && !std::isfinite(numbers[i])) return;
       if (std::isfinite(numbers[i]) && !same_number(numbers[i], reference[i])) moved = true;
     }
     if (!moved) return;
@@ -306,47 +330,87 @@ ChangeSearch::ChangeSearch(const Problem& problem) : impl_(std::make_unique<Impl
     // The grader reports a faulty tolerance; the search uses the defaults.
   }
   const Task& task = *problem.task;
+  // The problem's method first: its derivation must work (an Error here is the caller's); then
+  // the kind's others, each skipped when it cannot be worked for these numbers.
+  std::vector<std::string> methods = task.methods();
+  std::string first = problem.method.empty() && !methods.empty() ? methods.front() : problem.method;
+  std::erase(methods, first);
+  methods.insert(methods.begin(), first);
+  if (methods.size() > kMaxSearchedMethods) methods.resize(kMaxSearchedMethods);
   nlohmann::json answer = task.answer();
-  std::vector<SolutionPart> right = task.derive(problem.method);
+  // A derive problem is answered by formulas in its symbols. A change alters a quantity's
+  // formula, so each formula is compared by its value at the problem's own numbers: the value
+  // of the quantity's step, and of the student's formula with the symbols at those numbers.
+  const auto* derive = dynamic_cast<const DeriveTask*>(&task);
+  if (derive) {
+    for (const auto& s : derive->symbols()) {
+      std::vector<std::string> aliases;
+      if (s.display != s.name) aliases.push_back(s.display);
+      m.symbols.add(s.name, aliases);
+      m.symbol_values.push_back(s.example);
+    }
+    StepValues values = step_values(task.derive(first));
+    for (const auto& q : derive->quantities()) {
+      for (const auto& [at, v] : values)
+        if (std::get<1>(at) == q.name && v.is_scalar()) answer[q.name] = v.scalar;
+    }
+  }
   flatten(answer, nlohmann::json::json_pointer(), "", m.leaves);
-  map_leaves(m.leaves, answer, right);
   for (const auto& l : m.leaves) m.reference.push_back(l.number);
-  // The steps and formulas to change, once each.
-  Context c;
-  std::vector<const Step*> steps;
-  std::set<std::pair<std::string, std::string>> seen;
-  for (const auto& part : right) {
-    for (const auto& s : part.derivation.steps) {
-      c.values[s.name] = s.value;
-      if (s.given && s.value.is_vector()) c.given_vectors.emplace_back(s.name, s.symbol);
-      if (!s.given && !s.formula.empty() && seen.insert({s.name, to_text(s.formula)}).second)
-        steps.push_back(&s);
+  std::vector<bool> computed(m.leaves.size(), false);
+  for (std::size_t k = 0; k < methods.size(); ++k) {
+    const std::string& method = methods[k];
+    std::vector<SolutionPart> right;
+    try {
+      right = task.derive(method);
+    } catch (const Error&) {
+      if (k == 0) throw;
+      continue;
     }
-  }
-  for (const Step* s : steps) {
-    std::string before = to_text(s->formula);
-    std::vector<Alt> alts;
-    alternatives(s->formula, c, alts);
-    alts.push_back({-s->formula, -s->formula, "sign"});
-    for (const Alt& alt : alts) {
-      Overrides o;
-      o.formula = [&](std::string_view step, const E& f) -> std::optional<E> {
-        if (step != s->name || to_text(f) != before) return std::nullopt;
-        return alt.eval;
-      };
-      std::vector<double> numbers;
-      try {
-        StepValues values = step_values(task.derive(problem.method, &o));
-        for (const auto& l : m.leaves)
-          numbers.push_back(l.step.empty() ? NAN : leaf_value(values, l));
-      } catch (const Error&) {
-        continue;  // the change leaves the method's way (no root where one was)
-      } catch (const EvaluationFault&) {
-        continue;  // the change makes no sense here (a vector where a number was)
+    std::vector<Leaf> mapped = m.leaves;
+    map_leaves(mapped, answer, right, derive != nullptr);
+    for (std::size_t i = 0; i < mapped.size(); ++i)
+      computed[i] = computed[i] || !mapped[i].step.empty();
+    // The steps and formulas to change, once each.
+    Context c;
+    std::vector<const Step*> steps;
+    std::set<std::pair<std::string, std::string>> seen;
+    for (const auto& part : right) {
+      for (const auto& s : part.derivation.steps) {
+        c.values[s.name] = s.value;
+        if (s.given && s.value.is_vector()) c.given_vectors.emplace_back(s.name, s.symbol);
+        if (!s.given && !s.formula.empty() && seen.insert({s.name, to_text(s.formula)}).second)
+          steps.push_back(&s);
       }
-      m.add(StepChange{s->name, alt.kind, before, to_text(alt.shown)}, std::move(numbers));
+    }
+    for (const Step* s : steps) {
+      std::string before = to_text(s->formula);
+      std::vector<Alt> alts;
+      alternatives(s->formula, c, alts);
+      alts.push_back({-s->formula, -s->formula, "sign"});
+      for (const Alt& alt : alts) {
+        Overrides o;
+        o.formula = [&](std::string_view step, const E& f) -> std::optional<E> {
+          if (step != s->name || to_text(f) != before) return std::nullopt;
+          return alt.eval;
+        };
+        std::vector<double> numbers;
+        try {
+          StepValues values = step_values(task.derive(method, &o));
+          for (const auto& l : mapped)
+            numbers.push_back(l.step.empty() ? NAN : leaf_value(values, l));
+        } catch (const Error&) {
+          continue;  // the change leaves the method's way (no root where one was)
+        } catch (const EvaluationFault&) {
+          continue;  // the change makes no sense here (a vector where a number was)
+        }
+        m.add(StepChange{method, s->name, alt.kind, before, to_text(alt.shown)}, mapped,
+              std::move(numbers));
+      }
     }
   }
+  // A number some method computes can be explained; one that none computes cannot.
+  for (std::size_t i = 0; i < m.leaves.size(); ++i) m.computed.push_back(computed[i]);
 }
 
 Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
@@ -363,12 +427,13 @@ Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
       if (s != l.value) return d;  // a word or a verdict no change of a number explains
       continue;
     }
-    std::optional<double> x = student_number(s);
+    std::optional<double> x =
+        student_number(s, m.symbol_values.empty() ? nullptr : &m.symbols, m.symbol_values);
     if (!x) return d;
     given[i] = *x;
     compared = true;
     if (std::abs(*x - m.reference[i]) > m.allowed_at(i, m.reference)) {
-      if (l.step.empty()) return d;  // a number no step computes
+      if (!m.computed[i]) return d;  // a number no step computes
       wrong = true;
     }
   }

@@ -13,6 +13,10 @@
 
 namespace raygrade {
 
+// The methods of a problem whose derivations are searched, the default first: a student may
+// have worked by any of them, and the search's time grows with each.
+constexpr std::size_t kMaxSearchedMethods = 4;
+
 // The share of random answers that the changes of one variant may fit between them before no
 // fit on that variant is claimed. Random here means every number drawn uniformly within
 // max(1, |reference|) of the reference; the acceptance test of docs/report.md asks that at most
@@ -21,6 +25,7 @@ constexpr double kMaxRandomFit = 0.02;
 
 // One change to one step of a derivation.
 struct StepChange {
+  std::string method;  // the derivation's method ("algebraic")
   std::string step;    // the step changed ("b")
   std::string kind;    // sign, drop-term, swap, square, sqrt, normalise, other-root, degrees,
                        // vector-swap, component
@@ -55,8 +60,9 @@ const char* to_string(Discovery::Verdict v);
 // answers. Safe to share between threads once built.
 class ChangeSearch {
  public:
-  // Derives `problem` by its default method, maps each number of the reference answer to the
-  // step that computes it, and derives again with every single change.
+  // Derives `problem` by its default method and by each other method of its kind (at most
+  // kMaxSearchedMethods in all), maps each number of the reference answer to the step that
+  // computes it in each, and derives again with every single change of each.
   explicit ChangeSearch(const Problem& problem);
   ~ChangeSearch();
 

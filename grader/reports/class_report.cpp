@@ -251,8 +251,11 @@ json groups_json(const ClassInput& in, std::size_t p, unsigned jobs) {
       json equivalent = json::array();
       for (std::size_t k = 1; k < first.discovery.changes.size(); ++k)
         equivalent.push_back(first.discovery.changes[k].text());
-      g["discovered"] = {
-          {"step", c.step}, {"change", c.text()}, {"kind", c.kind}, {"equivalent", equivalent}};
+      g["discovered"] = {{"method", c.method},
+                         {"step", c.step},
+                         {"change", c.text()},
+                         {"kind", c.kind},
+                         {"equivalent", equivalent}};
     } else {
       g["note"] = unexplained_note(key);
     }
@@ -288,6 +291,7 @@ json problem_json(const ClassInput& in, std::size_t p, unsigned jobs) {
   return {{"id", in.problem_ids[p]},
           {"title", p < in.problem_titles.size() ? in.problem_titles[p] : in.problem_ids[p]},
           {"students", answers.size()},
+          {"no_submission", in.no_submission.size()},
           {"max_points", rounded(max_points)},
           {"mean", rounded(sum / n)},
           {"histogram", histogram(fractions)},
@@ -309,7 +313,12 @@ nlohmann::json class_report_json(const ClassInput& input, unsigned jobs) {
   json students = json::array();
   for (const auto& s : input.students)
     students.push_back({{"id", s.id}, {"name", s.name}, {"page", s.page}});
-  return {{"title", input.title}, {"problems", problems}, {"students", students}};
+  json absent = json::array();
+  for (const auto& s : input.no_submission) absent.push_back({{"id", s.id}, {"name", s.name}});
+  return {{"title", input.title},
+          {"problems", problems},
+          {"students", students},
+          {"no_submission", absent}};
 }
 
 }  // namespace raygrade

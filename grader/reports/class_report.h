@@ -35,11 +35,20 @@ struct ClassStudent {
   std::vector<ClassAnswer> answers;  // one per problem, in the problems' order
 };
 
+// A roster student who handed in nothing.
+struct AbsentStudent {
+  std::string id;
+  std::string name;  // may be empty
+};
+
 struct ClassInput {
   std::string title;
   std::vector<std::string> problem_ids;
   std::vector<std::string> problem_titles;
   std::vector<ClassStudent> students;
+  // Listed apart, in the roster's order, and left out of every number of the problems: a
+  // missing submission says nothing about what a class got wrong.
+  std::vector<AbsentStudent> no_submission;
 };
 
 // The report as JSON (the layout of docs/report.md). `jobs` threads search for changes.

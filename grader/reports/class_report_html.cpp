@@ -141,21 +141,41 @@ std::string fairness_table(const json& r, const std::string& at) {
   return out + "</tbody></table>";
 }
 
+// The roster's students who handed in nothing, apart from the numbers (docs/report.md).
+std::string absent_note(const json& r, const std::string& at) {
+  if (r.at(json::json_pointer(at)).value("no_submission", 0) == 0) return "";
+  return fmt::format(" No submission from {} more on the roster (not counted above).",
+                     num(r, at + "/no_submission"));
+}
+
+std::string absent_section(const json& r) {
+  json absent = r.value("no_submission", json::array());
+  if (absent.empty()) return "";
+  std::string items;
+  for (const auto& s : absent) {
+    std::string name = s["name"].get<std::string>();
+    items += fmt::format("<li>{}{}</li>", text(s["id"].get<std::string>()),
+                         name.empty() ? "" : " (" + text(name) + ")");
+  }
+  return fmt::format("<section id=\"no-submission\"><h2>No submission</h2><ul>{}</ul></section>",
+                     items);
+}
+
 std::string problem_section(const json& r, std::size_t i) {
   std::string at = fmt::format("/problems/{}", i);
   const json& p = r["problems"][i];
   return fmt::format(
       "<section id=\"{}\"><h2>{}</h2><p>{} {}, mean {} of {} points; discrimination "
-      "(point-biserial against the rest) {}.</p>"
+      "(point-biserial against the rest) {}.{}</p>"
       "<table><thead><tr><th>Right</th><th>Partly</th><th>Wrong</th><th>Blank</th><th>Scores"
       "</th></tr></thead><tbody><tr>{}<td>{}</td></tr></tbody></table>"
       "<h3>Parts</h3>{}<h3>Named mistakes</h3>{}<h3>Wrong answers, grouped</h3>{}"
       "<h3>Fairness of variants</h3>{}</section>",
       text(p["id"].get<std::string>()), text(p["title"].get<std::string>()),
       num(r, at + "/students"), p["students"] == 1 ? "student" : "students", num(r, at + "/mean"),
-      num(r, at + "/max_points"), num(r, at + "/discrimination"), shares_cells(r, at),
-      histogram_svg(r, at + "/histogram"), parts_table(r, at), mistakes_list(r, at),
-      groups_list(r, at), fairness_table(r, at));
+      num(r, at + "/max_points"), num(r, at + "/discrimination"), absent_note(r, at),
+      shares_cells(r, at), histogram_svg(r, at + "/histogram"), parts_table(r, at),
+      mistakes_list(r, at), groups_list(r, at), fairness_table(r, at));
 }
 
 }  // namespace class_report_html_internal
@@ -165,6 +185,7 @@ std::string class_report_html(const nlohmann::json& report) {
   std::string title = text(report["title"].get<std::string>());
   std::string body;
   for (std::size_t i = 0; i < report["problems"].size(); ++i) body += problem_section(report, i);
+  body += absent_section(report);
   std::string links;
   for (const auto& s : report["students"]) {
     std::string id = s["id"].get<std::string>(), page = s["page"].get<std::string>();
