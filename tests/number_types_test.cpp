@@ -1,6 +1,9 @@
 // DoubleDouble, Mpfr and Interval against values derived by hand.
 #include <gtest/gtest.h>
 
+#include <random>
+#include <vector>
+
 #include "math/double_double.h"
 #include "math/interval.h"
 #include "math/mpfr_number.h"
@@ -20,6 +23,30 @@ TEST(DoubleDouble, DivisionHasTheExactTail) {
   DoubleDouble third = DoubleDouble(1.0) / DoubleDouble(3.0);
   EXPECT_EQ(third.hi, 6004799503160661.0 * 0x1p-54);
   EXPECT_NEAR(third.lo, 0x1p-54 / 3, 1e-32);
+}
+
+// −x/x comes back as −1 exactly. Without the division's remainder step, a·(1/b) kept the
+// reciprocal's error, and these three (found by a search over random x) came out as
+// −1 + 2^-107, −1 + 2^-105 and −1 + 2^-105, as about half of all x did: the error that put a
+// cone's apex (t = 1 exactly) on the wrong nappe.
+TEST(DoubleDouble, ExactQuotientsAreExact) {
+  std::vector<DoubleDouble> xs = {{0x1.66d1381f32394p-1, 0x1.f625721ad31cp-55},
+                                  {0x1.06beb02c637aap+0, 0x1.b0543142aae37p-54},
+                                  {0x1.34c4d1505a09bp+0, 0x1.f26205056f3dp-54}};
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> hi(0.5, 2), lo(-1, 1);
+  for (int i = 0; i < 10000; ++i) {
+    double h = hi(rng);
+    DoubleDouble x;
+    fast_two_sum(h, lo(rng) * 0x1p-53 * h, x.hi, x.lo);
+    xs.push_back(x);
+  }
+  int inexact = 0;
+  for (const DoubleDouble& x : xs) {
+    DoubleDouble q = -x / x;
+    if (q.hi != -1.0 || q.lo != 0.0) ++inexact;
+  }
+  EXPECT_EQ(inexact, 0) << "of " << xs.size();
 }
 
 TEST(DoubleDouble, SquareRootSquaresBackToTwo) {

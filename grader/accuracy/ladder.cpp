@@ -135,7 +135,7 @@ const std::vector<LadderLevel>& ladder_levels() {
       {"static filter",
        "the reference double with a forward error bound on each quantity it decides by: its "
        "answer is exact where every such quantity lies beyond its bound (sphere, plane, "
-       "triangle); the plain reference double elsewhere",
+       "triangle, polygon, box, disk); the plain reference double elsewhere",
        per_primitive<FilterFirst<ThenReference>>()},
       {"certified double",
        "the static filter, then interval arithmetic in double with outward rounding where it "

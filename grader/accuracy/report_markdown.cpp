@@ -182,22 +182,21 @@ std::string render_accuracy_markdown(const AccuracyReport& r, const std::string&
       err(max_error(r, "reference double-double", true)),
       err(max_error(r, "reference MPFR", true)));
   md +=
-      "- **Where double-double decides wrongly.** Double-double has double's exponent range, "
-      "and its division is within 15u² rather than correctly rounded. The cylinder's wrong "
-      "cases (extreme-scale-4 and extreme-scale-22, direction components near 1e-165 and "
-      "1e-234) and the sphere's (extreme-scale-42, near 1e-245) are underflow: a = |d⊥|² (d·d "
-      "for the sphere) falls below 2^-1074, so the cylinder takes the ray for one parallel to "
-      "its axis and reports a miss, and the sphere divides by zero and reports t = NaN. The "
-      "double, float and long double references scale such a direction by a power of two "
-      "before squaring it (kRescaleExponent); that step sits behind kErrorFree, which "
-      "double-double does not satisfy. The cone's (cone-apex-0 and cone-apex-4) are rays "
-      "through the apex at exactly t = 1: the quarter discriminant is exactly 0 and t = "
-      "−(b/2)/a with b/2 = −a exactly, but double-double's a·(1/b) gives 1 − 2^-106, and the "
-      "side test s = γ + tα, exactly 0 at the apex, takes the sign of that error and puts the "
-      "hit on the other nappe. Both are faults of the double-double level, not of the "
-      "formulations, which MPFR evaluates right: scaling the direction for every number type, "
-      "and a division with a remainder step (q₁ = a/b, then q₁ + (a − q₁·b)/b), which returns "
-      "an exact quotient exactly, remove them.\n";
+      "- **Where double-double decides wrongly.** Double-double has double's exponent range. "
+      "The cylinder's wrong cases (extreme-scale-4 and extreme-scale-22, direction components "
+      "near 1e-165 and 1e-234) and the sphere's (extreme-scale-42, near 1e-245) are underflow: "
+      "a = |d⊥|² (d·d for the sphere) falls below 2^-1074, so the cylinder takes the ray for "
+      "one parallel to its axis and reports a miss, and the sphere divides by zero and reports "
+      "t = NaN. The double, float and long double references scale such a direction by a power "
+      "of two before squaring it (kRescaleExponent); that step sits behind kErrorFree, which "
+      "double-double does not satisfy, and scaling the direction for every number type (the "
+      "intervals and MPFR too) would remove them. The cone's two (cone-apex-0 and "
+      "cone-apex-4, rays through the apex at exactly t = 1, where the quarter discriminant is "
+      "exactly 0 and t = −(b/2)/a with b/2 = −a exactly) came from the division: a·(1/b) gave "
+      "1 − 2^-106, and the side test s = γ + tα, exactly 0 at the apex, took the sign of that "
+      "error and put the hit on the other nappe. The division now takes one remainder step "
+      "(q₁ = a·(1/b), then q₁ + (a − q₁·b)·(1/b)), which returns an exact quotient exactly, "
+      "and the cone's double-double decides every hard case right.\n";
   std::vector<std::string> used;
   for (const auto& [name, n] : r.adaptive_levels_hard)
     used.push_back(fmt::format("{} {}", name, n));

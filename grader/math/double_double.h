@@ -28,7 +28,8 @@ inline void two_prod(double a, double b, double& p, double& e) {
 
 // The algorithms are those of Joldes, Muller and Popescu, "Tight and rigorous error bounds for
 // basic building blocks of double-word arithmetic" (ACM TOMS 44(2), 2017): relative error at
-// most 3u² for +, 7u² for ×, 15u² for ÷ (u = 2^-53), barring underflow and overflow.
+// most 3u² for +, 7u² for ×, 15u² for ÷ (u = 2^-53; the remainder step of ÷ keeps that
+// bound), barring underflow and overflow.
 struct DoubleDouble {
   double hi = 0, lo = 0;
 
@@ -71,7 +72,16 @@ struct DoubleDouble {
     fast_two_sum(rh, rl, e.hi, e.lo);
     DoubleDouble d = e * DoubleDouble(th);
     DoubleDouble m = d + DoubleDouble(th);  // 1/b
-    return a * m;
+    // One remainder step from the quotient's leading double q₁: q₁ + (a − q₁·b)·(1/b). Without
+    // it a·(1/b) kept the reciprocal's error, and −x/x came out as −1 ± 2^-106 for about half
+    // of all x, which put a cone's apex (t = 1 there exactly) on the wrong nappe. When the true
+    // quotient is q₁ and q₁·b is exact (q₁ = ±1, a power of two), the remainder is exactly 0
+    // and the quotient comes back exactly. Otherwise what is left of the error is the rounding
+    // of q₁·b (7u² of a) and of the final sum (3u²), with terms of order u³: within 15u².
+    DoubleDouble q = a * m;
+    double q1 = q.hi;
+    DoubleDouble r = a - b * DoubleDouble(q1);
+    return DoubleDouble(q1) + r * m;
   }
   DoubleDouble& operator+=(DoubleDouble b) { return *this = *this + b; }
   DoubleDouble& operator-=(DoubleDouble b) { return *this = *this - b; }

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "sampling/outcome.h"
+#include "shapes/filter_answer.h"
 #include "shapes/shape.h"
 #include "shapes/sphere.h"
 #include "shapes/surface_point.h"
@@ -46,6 +47,71 @@ template <typename T>
   }
   s.hit = s.t_enter <= s.t_exit;
   return s;
+}
+
+// The box's static filter: slab_interval's slab ends, and every comparison the decision rests
+// on (the slabs' entries with one another, their exits with one another, entry against exit,
+// and the signs of entry and exit) decided only when the two values lie farther apart than their
+// bounds (docs/precision.md). True with the exact decision and t (the reference's own) enclosed
+// in `out`. `bound_scale` multiplies the bounds (see filtered_double). A slab end
+// t = (b − o)/d is exact when b = o (b − o is then exactly zero), and otherwise, when it is
+// normal and finite, t*(1 + α)(1 + β) with |α|, |β| ≤ u (the difference is exact where it
+// underflows; the quotient does not underflow): |t − t*| ≤ 2.01u|t|, and t has the sign of t*.
+// Two exact values x* < y* are certain when the computed y − x exceeds 4u(|x| + |y|), which
+// covers both errors and the rounding of the test. Every pair of entries, and of exits, must be
+// certain, so that the maximum and the minimum are the exact ones (and the ground truth, which
+// compares them, is decided). A zero direction component makes its slab all or nothing, exactly.
+[[gnu::always_inline]] inline bool box_filter(const Vec3d& o, const Vec3d& d, const Vec3d& lo,
+                                              const Vec3d& hi, FilterAnswer& out,
+                                              double bound_scale) {
+  constexpr double u = kUnitRoundoff<double>;
+  const double k = 4 * u * bound_scale;
+  auto certain_less = [&](double x, double y) { return y - x > k * (std::abs(x) + std::abs(y)); };
+  auto end = [](double bound, double origin, double direction, double& t) {
+    double difference = bound - origin;
+    t = difference / direction;
+    return difference == 0 || (std::abs(t) >= kQuotientFloor && std::abs(t) <= 1 / kQuotientFloor);
+  };
+  double near[3], far[3];
+  int count = 0;
+  bool outside = false;
+  for (int i = 0; i < 3; ++i) {
+    if (d[i] == 0) {
+      outside |= o[i] < lo[i] || o[i] > hi[i];
+      continue;
+    }
+    double t_low = 0, t_high = 0;
+    bool low_in_range = end(lo[i], o[i], d[i], t_low);
+    bool high_in_range = end(hi[i], o[i], d[i], t_high);
+    if (!(low_in_range && high_in_range)) return false;
+    bool backward = d[i] < 0;
+    near[count] = backward ? t_high : t_low;
+    far[count] = backward ? t_low : t_high;
+    ++count;
+  }
+  if (count == 0) return false;
+  double enter = near[0], leave = far[0];
+  for (int i = 1; i < count; ++i) {
+    for (int j = 0; j < i; ++j) {
+      bool apart = (certain_less(near[i], near[j]) || certain_less(near[j], near[i])) &&
+                   (certain_less(far[i], far[j]) || certain_less(far[j], far[i]));
+      if (!apart) return false;
+    }
+    enter = std::max(enter, near[i]);
+    leave = std::min(leave, far[i]);
+  }
+  out = {};
+  if (outside) return true;
+  if (certain_less(leave, enter)) return true;  // the slabs do not overlap: a miss
+  if (!certain_less(enter, leave)) return false;
+  double t = enter >= 0 ? enter : leave;
+  if (!(t >= 0)) return true;  // the box lies behind the origin
+  out.hit = true;
+  if (t == 0) {
+    out.t = out.t_lo = out.t_hi = t;  // the origin on a face: exactly 0
+    return true;
+  }
+  return enclose_quotient(t, 2 * u * bound_scale, 1, out);
 }
 
 class Box final : public Shape {
@@ -100,6 +166,11 @@ struct Box::Ladder {
                                                T& t) {
     SlabInterval<T> s = slab_interval(o, d, p[0], p[1]);
     return s.hit && nearest_root(Roots<T>{2, s.t_enter, s.t_exit}, t);
+  }
+
+  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double /*r*/,
+                     FilterAnswer& out, double bound_scale) {
+    return box_filter(o, d, p[0], p[1], out, bound_scale);
   }
 
   // The slab method with plain divisions (a zero direction component gives ±∞, and NaN when

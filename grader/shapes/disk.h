@@ -6,6 +6,7 @@
 
 #include "math/robust.h"
 #include "sampling/outcome.h"
+#include "shapes/filter_answer.h"
 #include "shapes/plane.h"
 #include "shapes/shape.h"
 #include "shapes/surface_point.h"
@@ -23,6 +24,47 @@ bool disk_inside(const Vec3<T>& p, const Vec3<T>& center, const T& r) {
   T r2 = r * r;
   if constexpr (kErrorFree<T>) r2 = r2 * (T(1) + T(16) * std::numeric_limits<T>::epsilon());
   return dot(f, f) <= r2;
+}
+
+// The disk's static filter: plane_filter's decision and enclosure of t, then the rim test
+// |P − C|² ≤ r² at P = O + tD as the reference computes it, decided when |P − C|² lies farther
+// from r² than a bound that takes in the enclosure's width and every rounding
+// (docs/precision.md). True with the exact decision and t (the reference's own) enclosed in
+// `out`. `bound_scale` multiplies the bounds (see filtered_double).
+// With t̂ the plane's t and δ = t_hi − t_lo ≥ |t̂ − t*| (t* the exact t), each component
+// g_i = (o_i + t̂·d_i) − c_i, rounded three times, is within 2u(|g_i| + |s_i| + |m_i|) + 2δ|d_i|
+// of the exact o_i + t*·d_i − c_i (m_i = t̂·d_i and s_i = o_i + m_i as rounded; 1.01u each would
+// do, the rest covers the bound's own rounding). Then |S − S*| ≤ 4u·S + Σ e_i(2|g_i| + e_i) for
+// S = Σ g_i² (its rounding, γ₃, and the components'), and |r² − r*²| ≤ 2u·r²: the rim test is
+// decided when |S − r²| exceeds their sum by a thousandth (the bound's evaluation rounds fewer
+// than 20 times). r² in [2^-900, 2^900] and finite sums keep the products normal or the
+// underflow's absolute errors (2^-1075 each) far inside the slack u·r² ≥ 2^-953.
+[[gnu::always_inline]] inline bool disk_filter(const Vec3d& o, const Vec3d& d, const Vec3d& center,
+                                               const Vec3d& normal, double r, FilterAnswer& out,
+                                               double bound_scale) {
+  constexpr double u = kUnitRoundoff<double>;
+  FilterAnswer plane;
+  if (!plane_filter(o, d, normal, center, plane, bound_scale)) return false;
+  if (!plane.hit) {
+    out = {};
+    return true;  // behind the origin: a certain miss
+  }
+  double rr = r * r;
+  if (!(rr >= kQuotientFloor && rr <= 1 / kQuotientFloor)) return false;
+  double t = plane.t, width = plane.t_hi - plane.t_lo;
+  double s = 0, error = 0;
+  for (int i = 0; i < 3; ++i) {
+    double m = t * d[i], sum = o[i] + m, g = sum - center[i];
+    double e = 2 * u * (std::abs(g) + std::abs(sum) + std::abs(m)) + 2 * width * std::abs(d[i]);
+    s += g * g;
+    error += e * (2 * std::abs(g) + e);
+  }
+  error = 1.001 * (error + 4 * u * s + 2 * u * rr) * bound_scale;
+  if (!(std::isfinite(s) && std::isfinite(error))) return false;
+  double gap = s - rr;
+  if (!(std::abs(gap) > error)) return false;
+  out = gap < 0 ? plane : FilterAnswer{};
+  return true;
 }
 
 struct AccuracyCase;
@@ -86,6 +128,11 @@ struct Disk::Ladder {
     if (!x || !(*x >= T(0)) || !disk_inside(o + *x * d, p[0], r)) return false;
     t = *x;
     return true;
+  }
+
+  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double r,
+                     FilterAnswer& out, double bound_scale) {
+    return disk_filter(o, d, p[0], p[1], r, out, bound_scale);
   }
 
   // t = n·(c − o) / n·d, then |P − C| ≤ r with a square root.

@@ -292,34 +292,4 @@ const std::vector<PrimitiveMistake>& Plane::mistakes() {
   return m;
 }
 
-// The plane's static filter: the bounds of plane_t's fast path, |den − den*| ≤ 4u·Σ|n_i d_i|
-// and |num − num*| ≤ 5u·Σ|n_i f_i| (docs/precision.md). The magnitudes must be at least
-// kQuotientFloor, so that products that underflow (an absolute error of at most 2^-1075 each)
-// stay far inside the bounds' slack, and finite.
-bool plane_filter(const Vec3d& o, const Vec3d& d, const Vec3d& n, const Vec3d& p, FilterAnswer& out,
-                  double bound_scale) {
-  constexpr double u = kUnitRoundoff<double>;
-  Vec3d f = p - o;
-  double nd_x = n.x * d.x, nd_y = n.y * d.y, nd_z = n.z * d.z;
-  double nf_x = n.x * f.x, nf_y = n.y * f.y, nf_z = n.z * f.z;
-  double den = nd_x + nd_y + nd_z, num = nf_x + nf_y + nf_z;
-  double den_size = std::abs(nd_x) + std::abs(nd_y) + std::abs(nd_z);
-  double num_size = std::abs(nf_x) + std::abs(nf_y) + std::abs(nf_z);
-  if (!(den_size >= kQuotientFloor && num_size >= kQuotientFloor && std::isfinite(den_size) &&
-        std::isfinite(num_size))) {
-    return false;
-  }
-  double den_error = 4 * u * den_size * bound_scale, num_error = 5 * u * num_size * bound_scale;
-  double size = std::abs(num) * std::abs(den);
-  // Decide as the fast path does, so that t is the reference's own.
-  if (!(num_error * std::abs(den) + den_error * std::abs(num) < kFastPathTolerance<double> * size &&
-        size >= 1 / kFastPathRange<double>)) {
-    return false;
-  }
-  out = {};
-  if ((num < 0) != (den < 0)) return true;  // t < 0, a certain sign: a miss
-  out.hit = true;
-  return enclose_quotient(num / den, num_error / std::abs(num) + den_error / std::abs(den), 1, out);
-}
-
 }  // namespace raygrade

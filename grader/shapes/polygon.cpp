@@ -12,6 +12,7 @@
 #include "shapes/describe.h"
 #include "shapes/flat.h"
 #include "shapes/plane.h"
+#include "shapes/triangle.h"
 
 namespace raygrade {
 namespace {
@@ -31,6 +32,85 @@ bool is_convex(const std::vector<Vec3d>& v, const Vec3d& n) {
 }
 
 }  // namespace
+
+// The polygon's static filter (docs/precision.md, "Static filters").
+// - Newell's normal: each of its k terms rounds three times and their sum k − 1 times, so each
+//   component is within γ_(k+2) of the sum of its terms' magnitudes; (k + 4)u covers that, the
+//   rounding of the sum of magnitudes, and k·2^-1074 the terms that underflow.
+// - The sheared test's signs, without its divisions: with w = v − O, the sheared y of a vertex
+//   is (d_z·w_y − d_y·w_z)/d_z and an edge function times d_z² is d_z·(D·(w_a × w_b)) in the
+//   frame (x, y, z), which swapping x and y for d_z < 0 makes D·(w_a × w_b) with the sign of
+//   d_z removed. d_z·w_y − d_y·w_z rounds three times from exact inputs (w, the products, the
+//   difference): within 4u·‖D‖₁·M, M the largest 1-norm of the rounded w; the triple product is
+//   the triangle's, within kTriangleFilterUlps·u·‖D‖₁·M², with the same range.
+bool polygon_filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& v, FilterAnswer& out,
+                    double bound_scale) {
+  constexpr double u = kUnitRoundoff<double>;
+  constexpr std::size_t kMaxVertices = std::size_t(1) << 20;  // keeps k·u far below 1
+  const std::size_t k = v.size();
+  if (k < 3 || k > kMaxVertices) return false;
+  // Newell's normal as newell_normal_of computes it, with the magnitudes of its terms.
+  Vec3d n{}, terms{};
+  for (std::size_t i = 0; i < k; ++i) {
+    const Vec3d& a = v[i];
+    const Vec3d& b = i + 1 < k ? v[i + 1] : v[0];
+    double x = (a.y - b.y) * (a.z + b.z), y = (a.z - b.z) * (a.x + b.x),
+           z = (a.x - b.x) * (a.y + b.y);
+    n.x += x;
+    n.y += y;
+    n.z += z;
+    terms.x += std::abs(x);
+    terms.y += std::abs(y);
+    terms.z += std::abs(z);
+  }
+  const double n_ulps = (static_cast<double>(k) + 4) * u, n_underflow = k * 0x1p-1074;
+  Vec3d n_error{n_ulps * terms.x + n_underflow, n_ulps * terms.y + n_underflow,
+                n_ulps * terms.z + n_underflow};
+  FilterAnswer plane;
+  if (!plane_filter(o, d, n, v[0], plane, bound_scale, n_error)) return false;
+  if (!plane.hit) {
+    out = {};
+    return true;  // parallel or behind the origin, certainly: a miss
+  }
+  // The sheared frame of watertight_polygon.
+  int kz = max_dimension(d);
+  int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+  if (d[kz] < 0) std::swap(kx, ky);
+  const bool flip = d[kz] < 0;
+  auto norm1 = [](const Vec3d& w) { return std::abs(w.x) + std::abs(w.y) + std::abs(w.z); };
+  double m = 0;
+  for (const Vec3d& vertex : v) m = std::max(m, norm1(vertex - o));
+  const double nd = norm1(d);
+  constexpr double kHuge = kFastPathRange<double>, kTiny = 1 / (kHuge * kHuge * kHuge);
+  const double y_bound = 4 * u * nd * m * bound_scale;
+  const double edge_bound = kTriangleFilterUlps * u * nd * m * m * bound_scale;
+  if (!((nd <= kHuge) & (m <= kHuge) & (y_bound >= kTiny) & (edge_bound >= kTiny))) return false;
+  // Is the sheared y of w above zero, certainly? Undecided when within its bound.
+  auto up = [&](const Vec3d& w, bool& certain) {
+    double y = d[kz] * w[ky] - d[ky] * w[kz];
+    certain = std::abs(y) > y_bound;
+    return (y > 0) != flip;
+  };
+  const Vec3d first = v[0] - o;
+  Vec3d a = first;
+  bool certain = true, a_certain = true;
+  bool a_up = up(a, a_certain);
+  bool inside = false;
+  for (std::size_t i = 0; i < k; ++i) {
+    const Vec3d b = i + 1 < k ? v[i + 1] - o : first;
+    bool b_certain = true;
+    bool b_up = up(b, b_certain);
+    double e = dot(d, cross(a, b));
+    certain &= a_certain & (std::abs(e) > edge_bound);
+    inside ^= (a_up != b_up) & ((e > 0) == b_up);
+    a = b;
+    a_up = b_up;
+    a_certain = b_certain;
+  }
+  if (!certain) return false;
+  out = inside ? plane : FilterAnswer{};
+  return true;
+}
 
 Polygon::Polygon(std::vector<Vec3d> vertices)
     : v_(std::move(vertices)),

@@ -5,6 +5,7 @@
 
 #include "math/robust.h"
 #include "sampling/outcome.h"
+#include "shapes/filter_answer.h"
 #include "shapes/flat.h"
 #include "shapes/plane.h"
 #include "shapes/shape.h"
@@ -51,6 +52,15 @@ bool watertight_polygon(const Vec3<T>& o, const Vec3<T>& d, const std::vector<Ve
   }
   return inside;
 }
+
+// The polygon's static filter: plane_filter's decision and enclosure of t with the rounding of
+// Newell's normal added to its bounds, then watertight_polygon's crossing count from the exact
+// signs of every sheared vertex's y and every edge function, each taken from a product of the
+// direction with the vertices' offsets from the origin whose bound it exceeds
+// (docs/precision.md). True with the exact decision and t (the reference's own) enclosed in
+// `out`. `bound_scale` multiplies the bounds (see filtered_double).
+bool polygon_filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& v, FilterAnswer& out,
+                    double bound_scale);
 
 class Polygon final : public Shape {
  public:
@@ -111,6 +121,11 @@ struct Polygon::Ladder {
     if (!x || !(*x >= T(0)) || !watertight_polygon(o, d, p)) return false;
     t = *x;
     return true;
+  }
+
+  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double /*r*/,
+                     FilterAnswer& out, double bound_scale) {
+    return polygon_filter(o, d, p, out, bound_scale);
   }
 
   // Hit the plane of the first three vertices, then count crossings of a ray along +u in the
