@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Installs the browser libraries (web/vendor/package.json: three.js, esbuild, axe-core) from the
-# npm registry at the versions its lock file pins, into web/vendor/node_modules. Does nothing
-# when they are there already at those versions.
+# Installs the browser libraries (web/vendor/package.json: three.js, esbuild, axe-core,
+# scorm-again) from the npm registry at the versions its lock file pins, into
+# web/vendor/node_modules. Does nothing when they are there already at those versions.
 set -euo pipefail
 cd "$(dirname "$0")/../web/vendor"
 if ! command -v npm >/dev/null; then

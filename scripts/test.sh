@@ -21,8 +21,9 @@ step "install" env RAYGRADE_EXTRA="${RAYGRADE_EXTRA:-} browser" bash scripts/ins
 step "web libraries" bash scripts/fetch-web-libs.sh
 step "configure release" cmake --preset release >/dev/null
 step "build release" cmake --build --preset release
-# The accessibility audit waits for the web build: it covers the practice page too.
-step "test release" ctest --preset release -E axe_in_browser
+# The accessibility audit and the SCORM package's test wait for the web build: both need the
+# practice page's raygrade.js.
+step "test release" ctest --preset release -E "axe_in_browser|scorm_in_browser"
 # The browser build (docs/web.md): raygrade.js against the native binary, byte for byte, on the
 # whole bank, the sample submissions and the hard cases; then a practice page in headless
 # Chromium, from file:// (screenshots in build/web/practice-check).
@@ -44,6 +45,8 @@ web_test() {
 step "test web" web_test
 step "practice page" /usr/bin/python3 tests/practice_in_browser.py build/release/grader/raygrade \
   build/web/web/raygrade.js assignments/homework-rays.json build/web/practice-check
+# The SCORM package under scorm-again's LMS API, SCORM 1.2 and 2004 (docs/assignments.md).
+step "scorm" ctest --preset release -R scorm_in_browser --output-on-failure
 # axe-core over the handout, practice, worked-solution and feedback pages (docs/web.md).
 step "accessibility" ctest --preset release -R axe_in_browser --output-on-failure
 # The static binary the LMS exports ship (a second build of the library, without tests): the

@@ -171,6 +171,10 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
     data["practice"] = {{"assignment", practice->assignment},
                         {"files", files},
                         {"unlock_after", kPracticeUnlockAfter}};
+    // A submission names its student; on a generic page of an assignment whose numbers are
+    // the same for everyone, the page grades as a stand-in, whose numbers are those numbers.
+    if (!student && !spec.per_student) data["practice"]["stand_in"] = {{"id", "practice"}};
+    if (!practice->scorm.empty()) data["practice"]["scorm"] = practice->scorm;
     // raygrade.js in a <script> element: nothing in it may close the element.
     if (practice->grader_js.find("</") != std::string::npos) {
       throw Error(Diagnostic{"", "", 0, 0, Severity::kError,
@@ -187,6 +191,17 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
                      "</style>\n<script type=\"module\">" + std::string(kSceneViewScript) +
                      "</script>\n";
   }
+  // The LMS's side runs first: the page's own script asks it for the answers to resume.
+  std::string lms_script;
+  std::string kept =
+      "Your answers are kept in this browser; when you are done, download "
+      "<code>answers.json</code> and hand it in.";
+  if (practice && !practice->scorm.empty()) {
+    lms_script = "<script>" + std::string(kScormScript) + "</script>\n";
+    kept =
+        "Your answers are kept in this browser and, when the page is opened from your course's "
+        "site, by the site too; each Check sends it your score on the whole assignment.";
+  }
   std::string who = student ? student->display() : "";
   std::string title = spec.title + (who.empty() ? "" : " — " + who);
   out.html = fmt::format(
@@ -197,17 +212,16 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
       "<title>{}</title>\n<style>{}</style>\n</head>\n<body>\n<header>\n<h1>{}</h1>\n{}{}"
       "<p>Type each answer as a number or as you would write it: <code>9 - sqrt(3)</code>, "
       "<code>2√2</code>, <code>1/3</code>, <code>pi/4</code>. Each input says at once whether "
-      "it can be read; it does not say whether it is right. Your answers are kept in this "
-      "browser; when you are done, download <code>answers.json</code> and hand it in.</p>\n"
+      "it can be read; it does not say whether it is right. {}</p>\n"
       "</header>\n<main>\n{}<div id=\"actions\"><button type=\"button\" id=\"download\">Download "
       "answers.json</button><button type=\"button\" id=\"clear\">Clear my answers</button> "
       "<span id=\"saved\" class=\"muted\"></span></div>\n</main>\n"
-      "<script type=\"application/json\" id=\"handout-data\">{}</script>\n{}<script>{}</script>\n"
+      "<script type=\"application/json\" id=\"handout-data\">{}</script>\n{}{}<script>{}</script>\n"
       "</body>\n</html>\n",
       practice ? " 'wasm-unsafe-eval'" : "", html_escape(title), kHandoutStyle,
       html_escape(spec.title),
       who.empty() ? "" : fmt::format("<p class=\"student\">For {}</p>\n", html_escape(who)),
-      due_html(spec), sections, script_json(data), grader_script, kHandoutScript);
+      due_html(spec), kept, sections, script_json(data), grader_script, lms_script, kHandoutScript);
   out.template_json = json::object();
   if (student) out.template_json["student"] = identity_json(*student);
   out.template_json["answers"] = answers;

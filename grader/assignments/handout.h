@@ -25,6 +25,9 @@ struct PracticeAssets {
   std::string grader_js;                                   // raygrade.js
   std::string assignment;                                  // the assignment's name among `files`
   std::vector<std::pair<std::string, std::string>> files;  // name, text
+  // "1.2" or "2004": the page is a SCORM package's and reports to the LMS around it
+  // (scorm_page.js); empty: it talks to nobody.
+  std::string scorm;
 };
 
 // The assets of `spec`'s practice pages. Throws Error when a file cannot be read, or when its

@@ -1,10 +1,16 @@
 // The handout page: answer inputs built from each problem's form, typed numbers read as the
 // grader reads them, progress kept in the browser, and answers.json downloaded in the
-// submission format. Nothing is sent anywhere.
+// submission format. Nothing is sent anywhere, but to the LMS of a SCORM package
+// (scorm_page.js).
 "use strict";
 (function () {
   const data = JSON.parse(document.getElementById("handout-data").textContent);
-  const storageKey = "raygrade:" + data.assignment.id + ":" + (data.student.key || "");
+  // The LMS around a SCORM package's page, or null. One package serves a whole class, so in
+  // an LMS the browser's copy is the learner's own: two students on one computer do not see
+  // each other's answers.
+  const lms = window.raygradeLms || null;
+  const storageKey = "raygrade:" + data.assignment.id + ":" + (data.student.key || "") +
+    (lms ? ":lms:" + lms.learner : "");
 
   // --- Typed numbers and formulas, read with the grammar of the grader (docs/submission-format.md)
   const GLYPHS = {"\u2212": "-", "\u00b7": "*", "\u22c5": "*", "\u00d7": "*", "\u00f7": "/",
@@ -583,17 +589,21 @@
     for (const p of problems) for (const {f, made} of p.fields) if (made.rows) counts[p.id + "." + f.key] = made.rows.length;
     return counts;
   }
+  let practiceProgress = null;  // practice(): the attempts and scores, for the LMS's copy
   function save() {
     const values = {};
     for (const i of inputs) values[i.name] = i.type === "checkbox" ? i.checked : i.value;
     const trees = {};
     for (const p of problems) p.fields.forEach(({made}, i) => { if (made.state) trees[p.id + "." + i] = made.state(); });
-    try { localStorage.setItem(storageKey, JSON.stringify({values: values, rows: rowCounts(), trees: trees})); } catch (e) { /* storage off */ }
-    document.getElementById("saved").textContent = "Saved in this browser.";
+    const state = {values: values, rows: rowCounts(), trees: trees};
+    try { localStorage.setItem(storageKey, JSON.stringify(state)); } catch (e) { /* storage off */ }
+    document.getElementById("saved").textContent =
+      lms ? lms.save(state, practiceProgress ? practiceProgress() : {}) : "Saved in this browser.";
   }
   function restore() {
-    let state = null;
-    try { state = JSON.parse(localStorage.getItem(storageKey) || "null"); } catch (e) { state = null; }
+    // The LMS's copy first: it follows the student to another computer.
+    let state = lms && lms.resumed;
+    if (!state) try { state = JSON.parse(localStorage.getItem(storageKey) || "null"); } catch (e) { state = null; }
     if (!state) return;
     for (const p of problems) for (const {f, made} of p.fields) {
       const n = state.rows && state.rows[p.id + "." + f.key];
@@ -621,6 +631,7 @@
   });
   document.getElementById("clear").addEventListener("click", () => {
     if (!confirm("Clear every answer on this page?")) return;
+    if (lms) lms.clear();
     try { localStorage.removeItem(storageKey); localStorage.removeItem(storageKey + ":practice"); } catch (e) { /* storage off */ }
     location.reload();
   });
@@ -629,9 +640,14 @@
   // assignment's feedback policy; attempts and results kept in this browser (docs/web.md).
   function practice() {
     const setup = data.practice;
+    // Who the grader grades: the page's student, else (a generic page of an assignment whose
+    // numbers are everyone's) a stand-in, since a submission must name someone.
+    const student = data.student.identity || setup.stand_in || null;
     const progressKey = storageKey + ":practice";
     let progress = {};
     try { progress = JSON.parse(localStorage.getItem(progressKey) || "{}") || {}; } catch (e) { progress = {}; }
+    if (lms && lms.resumed) progress = lms.resumed.progress;
+    practiceProgress = () => progress;
     const keep = () => { try { localStorage.setItem(progressKey, JSON.stringify(progress)); } catch (e) { /* storage off */ } };
     const views = {};
     let grader = null;
@@ -654,7 +670,11 @@
       const p = progress[id];
       view.attempts.textContent = "Attempts: " + p.attempts + (p.full ? " \u2014 full marks" : "");
       view.feedback.textContent = "";
-      if (!result) return;
+      // Progress resumed from an LMS carries no feedback, but still unlocks the solution.
+      if (!result) {
+        if (p.full || p.attempts >= setup.unlock_after) showSolution(id, view);
+        return;
+      }
       const full = result.score >= result.max_score;
       view.feedback.className = "practice-feedback " + (full ? "right" : "wrong");
       view.feedback.appendChild(el("p", {class: "score", text: "Score: " + pts(result.score) + " / " + pts(result.max_score)}));
@@ -679,7 +699,7 @@
     function checkProblem(id) {
       const answer = answers()[id];
       const submission = {answers: {}};
-      if (data.student.identity) submission.student = data.student.identity;
+      if (student) submission.student = student;
       if (answer) submission.answers[id] = answer;
       const start = performance.now();
       // The files never change while the page is open: the assignment is read once.
@@ -699,8 +719,24 @@
       p.attempts += 1;
       p.full = p.full || (result && result.answered && result.score >= result.max_score);
       p.last = result;
+      p.score = result ? result.score : 0;
+      p.max = result ? result.max_score : 0;
       keep();
       render(id, result);
+      if (lms) report(graded.problems);
+    }
+    // The LMS gets the score on the whole assignment: each problem's last Check, 0 for a
+    // problem not checked yet; passed when every problem's last Check earned all its points.
+    function report(results) {
+      let points = 0, maxPoints = 0, passed = results.length > 0;
+      for (const r of results) {
+        const p = progress[r.problem];
+        maxPoints += r.max_score;
+        points += p ? p.score || 0 : 0;
+        if (!p || !(p.max > 0 ? p.score >= p.max : p.attempts > 0)) passed = false;
+      }
+      save();
+      lms.report(points, maxPoints, passed);
     }
     for (const p of data.problems) {
       const section = document.getElementById("problem-" + p.index);
@@ -719,7 +755,8 @@
       timing.readyMs = performance.now() - start;
       // From the start of the navigation to the page (performance's time origin) to Check.
       timing.readyAfterNavigationMs = performance.now();
-      status.textContent = "The grader runs in this page; nothing is sent anywhere.";
+      status.textContent = lms ? "The grader runs in this page; each Check sends your score to your course's site."
+                               : "The grader runs in this page; nothing is sent anywhere.";
       for (const id of Object.keys(views)) {
         views[id].button.removeAttribute("disabled");
         if (progress[id]) render(id, progress[id].last);
@@ -729,7 +766,7 @@
       // first Check costs the grading alone (and the module's code is compiled by then).
       setTimeout(() => {
         const warm = performance.now();
-        const empty = data.student.identity ? {student: data.student.identity, answers: {}} : {answers: {}};
+        const empty = student ? {student: student, answers: {}} : {answers: {}};
         grader.gradeAssignment(setup.files, setup.assignment, JSON.stringify(empty), {cacheKey: "page"});
         timing.warmUpMs = performance.now() - warm;
       }, 0);

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <set>
 
+#include "assignments/quiz_export.h"
 #include "assignments/roster.h"
 #include "core/atomic_file.h"
 #include "core/escape.h"
@@ -237,10 +238,22 @@ const std::vector<LmsExport>& lms_exports() {
       {"gradescope", "Gradescope",
        "the autograder zip of a programming assignment (setup.sh, run_autograder, raygrade, the "
        "assignment and its bank)",
-       true, &gradescope_package},
+       true, true, &gradescope_package},
       {"prairielearn", "PrairieLearn",
-       "one question per problem, with raygrade in serverFilesCourse", false,
+       "one question per problem, with raygrade in serverFilesCourse", false, true,
        &prairielearn_package},
+      {"scorm", "SCORM",
+       "the practice page as a SCORM package for any LMS (Moodle, Canvas, Blackboard): graded in "
+       "the student's browser, the score sent to the LMS",
+       false, false, &scorm_package, true},
+      {"canvas", "Canvas",
+       "a QTI 1.2 package of Classic Quizzes formula questions, one per number asked, with "
+       "raygrade's variants and reference answers as the variable sets",
+       true, false, &canvas_package},
+      {"moodle", "Moodle",
+       "Moodle XML: a calculated question per number asked, with raygrade's variants and "
+       "reference answers as the dataset items, and the worked solution as general feedback",
+       true, false, &moodle_package},
   };
   return table;
 }

@@ -63,8 +63,11 @@ std::vector<ZipEntry> prairielearn_course(const AssignmentSpec& spec,
 struct LmsExportInput {
   const AssignmentSpec* spec = nullptr;
   const AssignmentBank* bank = nullptr;
-  std::filesystem::path binary;  // the static raygrade to ship
+  std::filesystem::path binary;  // the static raygrade to ship; empty when the platform takes none
   std::string roster;            // a roster CSV, for the platforms that take one
+  std::filesystem::path grader_js;  // raygrade.js, for the platforms that take it
+  std::string scorm_version;        // SCORM: "1.2" or "2004"
+  int sets = 0;  // quizzes: how many sets of numbers (0: the default, 20); a roster sets them
 };
 
 // One export: the files to write, as paths under the --out folder, and what to tell the
@@ -81,12 +84,25 @@ struct LmsExport {
   std::string_view title;  // in sentences: "Gradescope"
   std::string_view summary;
   bool takes_roster = false;
+  bool ships_binary = true;  // the package carries a static raygrade (LmsExportInput::binary)
   // Throws Error when a file cannot be read or the input is faulty; `out` is the folder the
   // files go to, for the sentence that says so.
   LmsPackage (*make)(const LmsExportInput& in, const std::string& out);
+  // The package carries the practice page, which grades with raygrade.js in the student's
+  // browser (LmsExportInput::grader_js).
+  bool takes_grader_js = false;
 };
 const std::vector<LmsExport>& lms_exports();
 const LmsExport* find_lms_export(std::string_view name);
+
+// The SCORM versions `raygrade export scorm` writes: "1.2" and "2004" (4th edition).
+const std::vector<std::string>& scorm_versions();
+
+// A SCORM package (docs/assignments.md, "SCORM"): imsmanifest.xml and index.html, the generic
+// practice page of the assignment, which reports to the LMS. Throws Error when the assignment
+// gives each student their own numbers (one package serves the whole class), or when
+// raygrade.js or a file of the bank cannot be read.
+LmsPackage scorm_package(const LmsExportInput& in, const std::string& out);
 
 // Writes the entries under `folder` (executables with mode 0755).
 void write_entries(const std::filesystem::path& folder, const std::vector<ZipEntry>& entries);

@@ -15,7 +15,10 @@ struct ExportOptions {
   std::string assignment;
   std::string out;
   std::string binary;
-  std::string roster;  // Gradescope: the class roster, which ties accounts to student ids
+  std::string roster;     // Gradescope: the class roster, which ties accounts to student ids
+  std::string grader_js;  // SCORM: raygrade.js, which grades in the student's browser
+  std::string scorm;      // SCORM: the version, "1.2" or "2004"
+  int sets = 0;           // Canvas and Moodle: how many sets of numbers
 };
 
 // The platforms' names, for help and errors: "gradescope, prairielearn".
@@ -36,8 +39,48 @@ int run_export(const ExportOptions& o) {
     fmt::print(stderr, "raygrade export: {} takes no --roster\n", platform->name);
     return kExitBadInput;
   }
+  if (!o.grader_js.empty() && !platform->takes_grader_js) {
+    fmt::print(stderr,
+               "raygrade export: {} takes no --grader-js (it runs no grader in the browser)\n",
+               platform->name);
+    return kExitBadInput;
+  }
+  if (o.sets != 0 && platform->name != "canvas" && platform->name != "moodle") {
+    fmt::print(stderr, "raygrade export: {} takes no --sets\n", platform->name);
+    return kExitBadInput;
+  }
+  if (!o.scorm.empty() && platform->name != "scorm") {
+    fmt::print(stderr, "raygrade export: {} takes no --scorm (the SCORM version)\n",
+               platform->name);
+    return kExitBadInput;
+  }
+  if (platform->takes_grader_js) {
+    // Checked first, so that a missing raygrade.js is named before the assignment is read.
+    std::error_code ec;
+    if (o.grader_js.empty()) {
+      fmt::print(stderr,
+                 "raygrade export: {} needs --grader-js FILE, the web build's raygrade.js "
+                 "(scripts/build-web.sh builds build/web/web/raygrade.js)\n",
+                 platform->name);
+      return kExitBadInput;
+    }
+    if (!std::filesystem::is_regular_file(o.grader_js, ec)) {
+      fmt::print(stderr,
+                 "raygrade export: {}: {} (--grader-js; scripts/build-web.sh builds "
+                 "build/web/web/raygrade.js)\n",
+                 o.grader_js,
+                 std::filesystem::exists(o.grader_js, ec) ? "not a file" : "no such file");
+      return kExitBadInput;
+    }
+  }
   std::filesystem::path binary;
-  if (!o.binary.empty()) {
+  if (!platform->ships_binary) {
+    if (!o.binary.empty()) {
+      fmt::print(stderr, "raygrade export: {} takes no --binary (it runs no raygrade)\n",
+                 platform->name);
+      return kExitBadInput;
+    }
+  } else if (!o.binary.empty()) {
     binary = o.binary;
     if (!is_static_executable(binary)) {
       fmt::print(stderr,
@@ -66,7 +109,9 @@ int run_export(const ExportOptions& o) {
       for (const auto& e : bank.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
       return kExitBadInput;
     }
-    LmsPackage package = platform->make({&spec, &bank, binary, o.roster}, o.out);
+    LmsPackage package = platform->make(
+        {&spec, &bank, binary, o.roster, o.grader_js, o.scorm.empty() ? "1.2" : o.scorm, o.sets},
+        o.out);
     write_entries(o.out, package.files);
     fmt::print(stderr, "{}\n", package.next_step);
   } catch (const Error& e) {
@@ -91,6 +136,15 @@ Runner setup_export(CLI::App& sub) {
   sub.add_option("--roster", o->roster,
                  "gradescope: the roster CSV the handouts were written from (id, name, email); "
                  "needed when each student has their own numbers");
+  sub.add_option("--grader-js", o->grader_js,
+                 "scorm: raygrade.js of the web build (scripts/build-web.sh), which grades the "
+                 "practice page in the student's browser");
+  sub.add_option("--scorm", o->scorm, "scorm: the SCORM version (default 1.2; 2004 is 4th edition)")
+      ->check(CLI::IsMember(scorm_versions()));
+  sub.add_option("--sets", o->sets,
+                 "canvas, moodle: how many sets of numbers each question draws from (default 20; "
+                 "Canvas takes at most 200, Moodle 100); with --roster, one per student")
+      ->check(CLI::Range(1, 200));
   return [o] { return run_export(*o); };
 }
 

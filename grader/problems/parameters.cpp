@@ -120,22 +120,9 @@ std::string fill_text(const std::string& text, const ParameterSet& set,
                       const ParameterValues& values, const Cursor& at,
                       std::set<std::string>* used) {
   std::string out;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    char c = text[i];
-    if ((c == '{' || c == '}') && i + 1 < text.size() && text[i + 1] == c) {
-      out += c;
-      ++i;
-    } else if (c == '{') {
-      std::size_t close = text.find('}', i);
-      if (close == std::string::npos) at.fail("a '{' without its '}' (write '{{' for a brace)");
-      out += parameter_text(
-          evaluate(std::string_view(text).substr(i + 1, close - i - 1), set, values, at, used));
-      i = close;
-    } else if (c == '}') {
-      at.fail("a '}' without its '{' (write '}}' for a brace)");
-    } else {
-      out += c;
-    }
+  for (const TextPiece& piece : split_text(text, at)) {
+    out +=
+        piece.expression ? parameter_text(evaluate(piece.text, set, values, at, used)) : piece.text;
   }
   return out;
 }
@@ -335,6 +322,36 @@ ParameterSet read_parameters(const Cursor& problem) {
     }
   }
   return set;
+}
+
+std::vector<TextPiece> split_text(const std::string& text, const Cursor& at) {
+  std::vector<TextPiece> pieces;
+  std::string literal;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    if ((c == '{' || c == '}') && i + 1 < text.size() && text[i + 1] == c) {
+      literal += c;
+      ++i;
+    } else if (c == '{') {
+      std::size_t close = text.find('}', i);
+      if (close == std::string::npos) at.fail("a '{' without its '}' (write '{{' for a brace)");
+      if (!literal.empty()) pieces.push_back({false, std::move(literal)});
+      literal.clear();
+      pieces.push_back({true, text.substr(i + 1, close - i - 1)});
+      i = close;
+    } else if (c == '}') {
+      at.fail("a '}' without its '{' (write '}}' for a brace)");
+    } else {
+      literal += c;
+    }
+  }
+  if (!literal.empty()) pieces.push_back({false, std::move(literal)});
+  return pieces;
+}
+
+nlohmann::json evaluate_expression(std::string_view expr, const ParameterSet& set,
+                                   const ParameterValues& values, const Cursor& at) {
+  return evaluate(expr, set, values, at, nullptr);
 }
 
 nlohmann::json instantiate(const Cursor& problem, const ParameterSet& set,

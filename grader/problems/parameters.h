@@ -61,6 +61,20 @@ ParameterSet read_parameters(const Cursor& problem);
 nlohmann::json instantiate(const Cursor& problem, const ParameterSet& set,
                            const ParameterValues& values);
 
+// A title or statement split at its "{expression}"s, in order: the text between them (with
+// "{{" and "}}" read as braces) and the expressions (without their braces). Throws Error at
+// `at` when a brace is unmatched.
+struct TextPiece {
+  bool expression = false;
+  std::string text;
+};
+std::vector<TextPiece> split_text(const std::string& text, const Cursor& at);
+
+// One expression of a text ("r", "2*r + 1", or a vector parameter's name) for a set of values:
+// a number, or the vector [x, y, z]. Throws Error at `at` when it does not read or evaluate.
+nlohmann::json evaluate_expression(std::string_view expr, const ParameterSet& set,
+                                   const ParameterValues& values, const Cursor& at);
+
 // Whether every number under the answer's `fields` keys has at most `decimals` decimals.
 bool has_nice_numbers(const nlohmann::json& answer, const NiceNumbers& nice);
 
