@@ -27,6 +27,7 @@
 namespace raygrade {
 namespace {
 
+using testing::read_text;
 using testing::TempDir;
 using testing::write_text;
 
@@ -155,8 +156,58 @@ TEST(Assignment, EachStudentIsGradedAgainstTheirOwnNumbers) {
   EXPECT_LT(alan.score, 15);
   SubmissionGrade nobody = grader.grade_file((dir.path() / "nobody.json").string());
   EXPECT_FALSE(nobody.gradable);
+  ASSERT_TRUE(nobody.fault);
   EXPECT_EQ(nobody.fault->code, "no-student");
   EXPECT_NE(nobody.fault->message.find("names no student"), std::string::npos);
+  EXPECT_NE(nobody.fault->message.find("each student of 'homework-rays' has their own numbers"),
+            std::string::npos)
+      << nobody.fault->message;
+}
+
+// An assignment whose numbers are everyone's: with "per_student": false, or drawing per student
+// only problems without parameters. A submission that names nobody is graded against the
+// generic set, under its file's name; with a roster it must still name its student, and the
+// refusal does not speak of numbers of one's own.
+TEST(Assignment, WithoutPerStudentNumbersASubmissionNeedNotNameItsStudent) {
+  TempDir dir("generic");
+  const std::string bank = std::string(RAYGRADE_SOURCE_DIR) + "/problems";
+  write_text(dir.path() / "same.json", R"({"assignment": "same", "bank": ")" + bank +
+                                           R"(", "variants": {"per_student": false},
+                 "problems": [{"id": "variant-sphere", "points": 3}, "sphere-hit"]})");
+  write_text(dir.path() / "fixed.json",
+             R"({"assignment": "fixed", "bank": ")" + bank +
+                 R"(", "variants": {"per_student": true}, "problems": ["sphere-hit"]})");
+  for (const char* name : {"same.json", "fixed.json"}) {
+    SCOPED_TRACE(name);
+    AssignmentSpec spec = load_assignment((dir.path() / name).string());
+    AssignmentBank problems = load_assignment_bank(spec);
+    ASSERT_TRUE(problems.errors.empty());
+    EXPECT_FALSE(has_per_student_numbers(spec, problems.problems));
+    write_text(dir.path() / "answers.json", submission("", right_answers(spec, problems, "")));
+    AssignmentGrader grader(spec, problems.problems, AssignmentGradeOptions{});
+    SubmissionGrade g = grader.grade_file((dir.path() / "answers.json").string());
+    ASSERT_TRUE(g.gradable) << format_diagnostic(*g.fault);
+    EXPECT_GT(g.max_score, 0);
+    EXPECT_DOUBLE_EQ(g.score, g.max_score);
+    EXPECT_TRUE(g.identity.empty());
+    EXPECT_EQ(g.student, "answers");
+    // A roster says who may hand in: a file that names nobody is refused, for that reason.
+    AssignmentGradeOptions with_roster;
+    with_roster.roster = {StudentIdentity{"Ada", "s001", ""}};
+    AssignmentGrader rostered(spec, problems.problems, with_roster);
+    SubmissionGrade refused = rostered.grade_file((dir.path() / "answers.json").string());
+    EXPECT_FALSE(refused.gradable);
+    ASSERT_TRUE(refused.fault);
+    EXPECT_EQ(refused.fault->code, "no-student");
+    EXPECT_NE(refused.fault->message.find("only the roster's students"), std::string::npos)
+        << refused.fault->message;
+    EXPECT_EQ(refused.fault->message.find("own numbers"), std::string::npos)
+        << refused.fault->message;
+  }
+  // The example draws per student, and its problems have parameters: its numbers are each
+  // student's own.
+  AssignmentSpec example = load_assignment(kExample);
+  EXPECT_TRUE(has_per_student_numbers(example, load_assignment_bank(example).problems));
 }
 
 TEST(Assignment, TheRosterNamesTheStudents) {
@@ -791,6 +842,54 @@ TEST(Assignment, APracticePageCarriesTheGraderAndTheBank) {
   // A script that could close its element is refused, not written.
   assets.grader_js = "var s = '</script>';";
   EXPECT_THROW(make_handout(spec, problems, &who, &assets), Error);
+}
+
+// A bank named by an absolute path: the page's copy of the assignment names it relative to
+// the assignment, as the page names the bank's files, so that the page's grader (which reads
+// the files from a folder of their own) finds every problem. A generic page of an assignment
+// whose numbers are everyone's names no student, not even a stand-in.
+TEST(Assignment, APracticePageCarriesABankNamedByAnAbsolutePath) {
+  namespace fs = std::filesystem;
+  TempDir dir("absolute-bank");
+  const std::string bank = std::string(RAYGRADE_SOURCE_DIR) + "/problems";
+  fs::create_directories(dir.path() / "course" / "week1");
+  const fs::path file = dir.path() / "course" / "week1" / "practice.json";
+  write_text(file, R"({"assignment": "practice", "bank": [")" + bank +
+                       R"("], "variants": {"per_student": false},
+                       "problems": ["variant-sphere", "sphere-hit"]})");
+  AssignmentSpec spec = load_assignment(file.string());
+  AssignmentBank problems = load_assignment_bank(spec);
+  ASSERT_TRUE(problems.errors.empty());
+  PracticeAssets assets = practice_assets(spec, "function createRaygrade() {}");
+  // The page's files, written where the page's grader would find them.
+  TempDir page("absolute-bank-page");
+  std::string assignment_text;
+  for (const auto& [name, text] : assets.files) {
+    ASSERT_FALSE(fs::path(name).is_absolute()) << name;
+    fs::create_directories((page.path() / name).parent_path());
+    write_text(page.path() / name, text);
+    if (name == assets.assignment) assignment_text = text;
+  }
+  EXPECT_EQ(assignment_text.find("\"" + bank), std::string::npos) << assignment_text;
+  AssignmentSpec in_page = load_assignment((page.path() / assets.assignment).string());
+  EXPECT_EQ(in_page.id, "practice");
+  EXPECT_FALSE(in_page.per_student);
+  AssignmentBank found = load_assignment_bank(in_page);
+  EXPECT_TRUE(found.errors.empty()) << format_diagnostic(found.errors.front());
+  ASSERT_EQ(found.problems.size(), 2u);
+  EXPECT_EQ(found.problems[0]->id, "variant-sphere");
+  EXPECT_EQ(found.problems[1]->id, "sphere-hit");
+  Handout generic =
+      make_handout(spec, student_problems(spec, problems.problems, ""), nullptr, &assets);
+  EXPECT_NE(generic.html.find("<script>function createRaygrade() {}</script>"), std::string::npos);
+  EXPECT_EQ(generic.html.find("stand_in"), std::string::npos);
+  // A bank named relative to the assignment travels as it was written.
+  write_text(file, R"({"assignment": "practice", "bank": "../../problems",
+                       "problems": ["sphere-hit"]})");
+  fs::create_directories(dir.path() / "problems");
+  fs::copy_file(bank + "/sphere.json", dir.path() / "problems" / "sphere.json");
+  PracticeAssets relative = practice_assets(load_assignment(file.string()), "");
+  EXPECT_EQ(relative.files.front().second, read_text(file));
 }
 
 }  // namespace

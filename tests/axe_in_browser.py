@@ -36,7 +36,8 @@ import time
 import zoneinfo
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from chromium import FLAGS, SKIPPED, require_chromium  # noqa: E402
+from checks import check, failures  # noqa: E402
+from chromium import FLAGS, SKIPPED, require_chromium, wait_for  # noqa: E402
 
 try:
     from selenium import webdriver
@@ -78,15 +79,8 @@ axe.run(document, {resultTypes: ['violations'], runOnly: {type: 'tag', values: t
                      mains: document.querySelectorAll('main').length, version: axe.version}),
         (e) => done({error: String(e)}));
 """
-failures = []
 audited = []
 versions = set()
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
 
 
 def run(*args, statuses=(0,)):
@@ -94,17 +88,6 @@ def run(*args, statuses=(0,)):
     check(r.returncode in statuses,
           f"raygrade {' '.join(args)} exited {r.returncode}: {r.stderr}")
     return r
-
-
-def wait_for(driver, script, seconds=120):
-    """Polls a JavaScript expression until it is truthy; returns its value (None on timeout)."""
-    end = time.time() + seconds
-    while time.time() < end:
-        value = driver.execute_script("return " + script)
-        if value:
-            return value
-        time.sleep(0.05)
-    return None
 
 
 def audit(driver, axe_source, name):
@@ -239,7 +222,7 @@ def audit_handout(driver, axe_source, page):
 
 def audit_practice(driver, axe_source, page):
     open_page(driver, page)
-    ready = wait_for(driver, "window.raygradePractice && window.raygradePractice.ready")
+    ready = wait_for(driver, "window.raygradePractice && window.raygradePractice.ready", 120)
     check(ready, "the practice page's grader never became ready")
     if not ready:
         return

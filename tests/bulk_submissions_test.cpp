@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "roster_fixture.h"
 #include "run_binary.h"
 
 namespace raygrade {
@@ -24,31 +25,25 @@ using testing::run_shell;
 using testing::TempDir;
 using testing::write_text;
 
-// The ray (0,0,0) + t (1,0,0) meets the unit sphere at (2,0,0) at t = 1 and 3, and the plane
-// x = 2 at t = 2: 2 points for the sphere, 3 for the plane.
-constexpr const char* kBank = R"({"problems": [
-  {"id": "sphere-1", "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
-   "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}},
-  {"id": "plane-1", "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
-   "object": {"type": "plane", "point": [2, 0, 0], "normal": [-1, 0, 0]}}]})";
-constexpr const char* kSphere = R"("sphere-1": {"hits": [{"t": 1, "point": [1, 0, 0]},
-                                                        {"t": 3, "point": [3, 0, 0]}]})";
-constexpr const char* kPlane = R"("plane-1": {"hits": [{"t": 2, "point": [2, 0, 0]}]})";
+using testing::kClassPlane;
+using testing::kClassSphere;
 
-struct Student {
-  std::string id, name, email, canvas_id, canvas_name, participant, answers;
+// A student of the class, as Canvas and Moodle name them, with the answers handed in.
+struct Student : testing::FixtureStudent {
+  std::string canvas_id, canvas_name, participant, answers;
   double points;  // by hand: 2 for the sphere, 3 for the plane, nothing for no answer
 };
 
 std::vector<Student> six() {
-  auto both = fmt::format("{}, {}", kSphere, kPlane);
+  auto both = fmt::format("{}, {}", kClassSphere, kClassPlane);
+  auto c = testing::class_students();
   return {
-      {"s1", "Ada Lovelace", "ada@example.edu", "1001", "lovelaceada", "101", both, 5},
-      {"s2", "Alan Turing", "alan@example.edu", "1002", "turingalan", "102", kSphere, 2},
-      {"s3", "Grace Hopper", "grace@example.edu", "1003", "hoppergrace", "103", kPlane, 3},
-      {"s4", "Edsger Dijkstra", "edsger@example.edu", "1004", "dijkstraedsger", "104", both, 5},
-      {"s5", "Barbara Liskov", "barbara@example.edu", "1005", "liskovbarbara", "105", kPlane, 3},
-      {"s6", "Donald Knuth", "don@example.edu", "1006", "knuthdonald", "106", "", 0},
+      {c[0], "1001", "lovelaceada", "101", both, 5},
+      {c[1], "1002", "turingalan", "102", kClassSphere, 2},
+      {c[2], "1003", "hoppergrace", "103", kClassPlane, 3},
+      {c[3], "1004", "dijkstraedsger", "104", both, 5},
+      {c[4], "1005", "liskovbarbara", "105", kClassPlane, 3},
+      {c[5], "1006", "knuthdonald", "106", "", 0},
   };
 }
 
@@ -79,16 +74,13 @@ std::map<std::string, std::string> totals(const std::string& csv) {
 class BulkSubmissions : public ::testing::Test {
  protected:
   void SetUp() override {
-    write_text(dir_.path() / "bank.json", kBank);
-    write_text(dir_.path() / "hw.json", R"({"assignment": "hw", "bank": "bank.json",
-      "problems": [{"id": "sphere-1", "points": 2}, {"id": "plane-1", "points": 3}]})");
-    std::string roster = "id,name,email\n", canvas_roster = "id,name,email,canvas_id\n";
+    testing::write_class_assignment(dir_.path());
+    std::string canvas_roster = "id,name,email,canvas_id\n";
     std::string worksheet =
         "Identifier,Full name,Email address,Status,Grade,Maximum Grade,Last modified "
         "(grade)\n";
     fs::create_directories(dir_.path() / "subs");
     for (const auto& s : students_) {
-      roster += fmt::format("{},{},{}\n", s.id, s.name, s.email);
       canvas_roster += fmt::format("{},{},{},{}\n", s.id, s.name, s.email, s.canvas_id);
       worksheet +=
           fmt::format("Participant {},{},{},Submitted,,5.00,-\n", s.participant, s.name, s.email);
@@ -96,7 +88,7 @@ class BulkSubmissions : public ::testing::Test {
           dir_.path() / "subs" / (s.id + ".json"),
           fmt::format(R"({{"student": {{"id": "{}"}}, "answers": {{{}}}}})", s.id, s.answers));
     }
-    write_text(dir_.path() / "roster.csv", roster);
+    write_text(dir_.path() / "roster.csv", testing::class_roster_csv());
     write_text(dir_.path() / "roster-canvas.csv", canvas_roster);
     write_text(dir_.path() / "worksheet.csv", worksheet);
     write_text(dir_.path() / "notes.txt", "not a submission\n");

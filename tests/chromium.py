@@ -84,3 +84,14 @@ def wait_for_file(folder, name, seconds=30):
             return path
         time.sleep(0.2)
     return None
+
+
+def wait_for(driver, script, seconds=60):
+    """Polls a JavaScript expression until it is truthy; returns its value (None on timeout)."""
+    end = time.time() + seconds
+    while time.time() < end:
+        value = driver.execute_script("return " + script)
+        if value:
+            return value
+        time.sleep(0.05)
+    return None

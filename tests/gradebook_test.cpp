@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "roster_fixture.h"
 #include "run_binary.h"
 
 namespace raygrade {
@@ -20,14 +21,8 @@ using testing::write_text;
 
 const fs::path kData = fs::path(RAYGRADE_SOURCE_DIR) / "tests/data/gradebook";
 
-constexpr const char* kBank = R"({"problems": [
-  {"id": "sphere-1", "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
-   "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}},
-  {"id": "plane-1", "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
-   "object": {"type": "plane", "point": [2, 0, 0], "normal": [-1, 0, 0]}}]})";
-constexpr const char* kSphere = R"("sphere-1": {"hits": [{"t": 1, "point": [1, 0, 0]},
-                                                       {"t": 3, "point": [3, 0, 0]}]})";
-constexpr const char* kPlane = R"("plane-1": {"hits": [{"t": 2, "point": [2, 0, 0]}]})";
+using testing::kClassPlane;
+using testing::kClassSphere;
 
 std::string handed(const std::string& student, const std::string& answers,
                    const std::string& submitted = "") {
@@ -39,20 +34,18 @@ std::string handed(const std::string& student, const std::string& answers,
 class Gradebook : public ::testing::Test {
  protected:
   void SetUp() override {
-    write_text(dir_.path() / "bank.json", kBank);
-    write_text(dir_.path() / "hw.json", R"({"assignment": "hw", "bank": "bank.json",
-      "title": "Rays, spheres and planes",
-      "problems": [{"id": "sphere-1", "points": 2}, {"id": "plane-1", "points": 3}]})");
+    testing::write_class_assignment(dir_.path(), "Rays, spheres and planes");
     fs::copy(kData / "roster.csv", dir_.path() / "roster.csv");
     fs::path subs = dir_.path() / "subs";
     fs::create_directories(subs);
-    std::string both = fmt::format("{}, {}", kSphere, kPlane);
+    std::string both = fmt::format("{}, {}", kClassSphere, kClassPlane);
     write_text(subs / "ada.json", handed(R"({"id": "s1"})", both));
     write_text(subs / "alan-1.json", handed(R"({"id": "s2"})", both, "2026-11-20T10:00:00Z"));
-    write_text(subs / "alan-2.json", handed(R"({"id": "s2"})", kSphere, "2026-11-21T10:00:00Z"));
+    write_text(subs / "alan-2.json",
+               handed(R"({"id": "s2"})", kClassSphere, "2026-11-21T10:00:00Z"));
     write_text(subs / "grace.json",
                handed(R"({"email": "grace@example.edu"})",
-                      fmt::format(R"({}, "plane-1": {{"hits": [{{"t": ""}}]}})", kSphere)));
+                      fmt::format(R"({}, "plane-1": {{"hits": [{{"t": ""}}]}})", kClassSphere)));
     write_text(subs / "barbara.json", handed(R"({"id": "s5", "email": "ada@example.edu"})", both));
     write_text(subs / "don.json", handed(R"("Donald Knuth")", both));
   }
@@ -84,6 +77,11 @@ class Gradebook : public ::testing::Test {
   }
   TempDir dir_{"gradebook"};
 };
+
+// The roster in the test data is the fixture's (tests/roster_fixture.h), which other tests write.
+TEST(GradebookData, TheRosterIsTheFixtures) {
+  EXPECT_EQ(read_text(kData / "roster.csv"), testing::class_roster_csv());
+}
 
 TEST_F(Gradebook, OneRowPerRosterStudentWithTheLatestSubmission) {
   auto r = grade("--now 2026-12-01T00:00:00Z");

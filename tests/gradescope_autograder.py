@@ -18,6 +18,8 @@ import sys
 import tempfile
 import zipfile
 
+from checks import check, failures
+
 # Gradescope's autograder specification: the keys of results.json and of each test.
 TOP_KEYS = {"score", "execution_time", "output", "output_format", "test_output_format",
             "test_name_format", "visibility", "stdout_visibility", "extra_data", "tests",
@@ -38,13 +40,6 @@ ROSTER = ("id,name,email\n"
           f"{STUDENT['id']},{STUDENT['name']},{STUDENT['email']}\n"
           f"{OTHER['id']},{OTHER['name']},{OTHER['email']}\n"
           "s003,Alan Turing,alan@example.edu\n")
-
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
 
 
 def metadata(email, name, due="2026-12-04T23:59:00.000000+00:00", extension=None):
@@ -322,8 +317,6 @@ def main(raygrade, assignment, static=None):
                   f"{policy}: a test shown later")
             check(not leaked(r, wrong_values),
                   f"{policy}: results.json shows {sorted(leaked(r, wrong_values))}")
-    for f in failures:
-        print("FAIL:", f)
     print(f"gradescope_autograder: {len(failures)} failures")
     return 1 if failures else 0
 

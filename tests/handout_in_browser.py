@@ -19,6 +19,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, failures  # noqa: E402
 from chromium import SKIPPED, click, require_chromium, selenium_chromium, wait_for_file  # noqa: E402
 
 try:
@@ -30,13 +31,6 @@ except ImportError:
 
 RAYGRADE, ASSIGNMENT, OUT = sys.argv[1:4]
 ROSTER = "id,name,email\ns001,Ada Lovelace,ada@example.edu\ns002,Alan Turing,alan@example.edu\n"
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
 
 
 def run(*args):

@@ -7,7 +7,9 @@ belongs, presses Check and sees that mistake named, with no full marks and no wo
 yet; then types the right c, presses Check and sees full marks (2 / 2, the points the
 assignment gives) and the worked solution. Attempts are counted, and a reload keeps them. The
 formulas are the textbook's (a = v_x² + v_y², b = 2(p_x v_x + p_y v_y), c = p_x² + p_y² − r²
-for x² + y² = r²). Prints the grader's load time and the time of each Check (not asserted).
+for x² + y² = r²). Then the generic page (no student) of an assignment of that problem whose
+numbers are everyone's, its bank named by an absolute path, grades the right answers to full
+marks. Prints the grader's load time and the time of each Check (not asserted).
 Screenshots land in OUT.
 
 Usage: practice_in_browser.py RAYGRADE RAYGRADE_JS ASSIGNMENT OUT
@@ -21,7 +23,8 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from chromium import FLAGS, SKIPPED, require_chromium  # noqa: E402
+from checks import check, failures  # noqa: E402
+from chromium import FLAGS, SKIPPED, require_chromium, wait_for  # noqa: E402
 
 try:
     from selenium import webdriver
@@ -34,24 +37,66 @@ except ImportError:
 RAYGRADE, RAYGRADE_JS, ASSIGNMENT, OUT = sys.argv[1:5]
 PROBLEM = "seed000-cylinder-derive-origin"
 RIGHT = {"a": "v_x^2 + v_y^2", "b": "2(p_x v_x + p_y v_y)", "c": "p_x^2 + p_y^2 - r^2"}
-failures = []
 
 
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
+def problem_section(driver):
+    """The section of PROBLEM on the page, and its inputs' names by the form's keys."""
+    data = json.loads(driver.find_element(By.ID, "handout-data").get_attribute("textContent"))
+    problem = next(p for p in data["problems"] if p["id"] == PROBLEM)
+    section = driver.find_element(By.ID, f"problem-{problem['index']}")
+    return section, {f["key"]: f"{PROBLEM}.{i}" for i, f in enumerate(problem["form"]["fields"])}
 
 
-def wait_for(driver, script, seconds=60):
-    """Polls a JavaScript expression until it is truthy; returns its value (None on timeout)."""
-    end = time.time() + seconds
-    while time.time() < end:
-        value = driver.execute_script("return " + script)
-        if value:
-            return value
-        time.sleep(0.05)
-    return None
+def type_into(driver, names, answers):
+    for key, text in answers.items():
+        box = driver.find_element(By.NAME, names[key])
+        driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", box)
+        box.clear()
+        box.send_keys(text)
+
+
+def press_check_of(driver, section):
+    """Presses the section's Check; returns the time the grading took in the page."""
+    button = section.find_element(By.CSS_SELECTOR, "button.check")
+    driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", button)
+    button.click()
+    return driver.execute_script("return window.raygradePractice.timing.lastCheckMs")
+
+
+def generic_page(driver):
+    """The generic page (no --student) of an assignment whose numbers are everyone's, with its
+    bank named by an absolute path: the page names no student, and a Check grades the answers
+    against the generic set."""
+    with open(ASSIGNMENT) as f:
+        bank = json.load(f)["bank"]
+    folder = os.path.dirname(os.path.abspath(ASSIGNMENT))
+    banks = [os.path.normpath(os.path.join(folder, b))
+             for b in ([bank] if isinstance(bank, str) else bank)]
+    work = os.path.join(OUT, "generic")
+    os.makedirs(work)
+    same = os.path.join(work, "same.json")
+    with open(same, "w") as f:
+        json.dump({"assignment": "same", "bank": banks, "variants": {"per_student": False},
+                   "problems": [{"id": PROBLEM, "points": 2}]}, f)
+    page = os.path.join(work, "page")
+    r = subprocess.run([RAYGRADE, "handout", same, "--out", page, "--practice",
+                        "--grader-js", RAYGRADE_JS], capture_output=True, text=True, timeout=300)
+    if not check(r.returncode == 0, f"handout --practice of the generic page failed: {r.stderr}"):
+        return
+    driver.get("file://" + os.path.abspath(os.path.join(page, "index.html")))
+    if not check(wait_for(driver, "window.raygradePractice && window.raygradePractice.ready"),
+                 "the generic page's grader never became ready"):
+        return
+    data = json.loads(driver.find_element(By.ID, "handout-data").get_attribute("textContent"))
+    check(data["student"]["identity"] is None and "stand_in" not in data["practice"],
+          f"the generic page names a student: {data['student']}, {sorted(data['practice'])}")
+    section, names = problem_section(driver)
+    type_into(driver, names, RIGHT)
+    press_check_of(driver, section)
+    scores = section.find_elements(By.CSS_SELECTOR, ".score")
+    check(scores and scores[0].text == "Score: 2 / 2",
+          f"the generic page's Check does not grade the right answers: {section.text}")
+    driver.save_screenshot(os.path.join(OUT, "practice-generic.png"))
 
 
 def main():
@@ -99,23 +144,13 @@ def main():
               f"{timing['readyMs']:.0f} ms after its script started the grader")
         warm = wait_for(driver, "window.raygradePractice.timing.warmUpMs")
         print(f"assignment read and variants drawn (after ready, before the first Check): {warm:.0f} ms")
-        data = json.loads(driver.find_element(By.ID, "handout-data").get_attribute("textContent"))
-        problem = next(p for p in data["problems"] if p["id"] == PROBLEM)
-        section = driver.find_element(By.ID, f"problem-{problem['index']}")
-        names = {f["key"]: f"{PROBLEM}.{i}" for i, f in enumerate(problem["form"]["fields"])}
+        section, names = problem_section(driver)
 
         def type_answers(answers):
-            for key, text in answers.items():
-                box = driver.find_element(By.NAME, names[key])
-                driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", box)
-                box.clear()
-                box.send_keys(text)
+            type_into(driver, names, answers)
 
         def press_check():
-            button = section.find_element(By.CSS_SELECTOR, "button.check")
-            driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", button)
-            button.click()
-            return driver.execute_script("return window.raygradePractice.timing.lastCheckMs")
+            return press_check_of(driver, section)
 
         # A wrong c: r where r² belongs.
         type_answers({**RIGHT, "c": "p_x^2 + p_y^2 - r"})
@@ -153,10 +188,12 @@ def main():
         # A reload keeps the attempts and the unlocked solution.
         driver.refresh()
         wait_for(driver, "window.raygradePractice && window.raygradePractice.ready")
-        section = driver.find_element(By.ID, f"problem-{problem['index']}")
+        section, _ = problem_section(driver)
         check("Attempts: 2 — full marks" in section.text, "the attempts are lost on reload")
         check(len(section.find_elements(By.CSS_SELECTOR, "iframe.solution")) == 1,
               "the worked solution is locked again after a reload")
+
+        generic_page(driver)
     finally:
         driver.quit()
         shutil.rmtree(profile, ignore_errors=True)

@@ -33,6 +33,8 @@ except ImportError:
     sys.exit("prairielearn_export: the python3 module jsonschema is missing "
              "(Debian package python3-jsonschema; run scripts/install-deps.sh)")
 
+from checks import check, failures  # noqa: E402
+
 HERE = pathlib.Path(__file__).resolve().parent
 SCHEMA = HERE / "data" / "prairielearn-infoQuestion.schema.json"
 SEEDS = [7, 1234567, 2**31 - 1]
@@ -41,14 +43,6 @@ SEEDS = [7, 1234567, 2**31 - 1]
 GENERATE_KEYS = {"params", "correct_answers"}
 PARSE_KEYS = {"params", "correct_answers", "submitted_answers", "format_errors", "feedback"}
 GRADE_KEYS = PARSE_KEYS | {"partial_scores", "score"}
-
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-    return ok
 
 
 class Elements(html.parser.HTMLParser):
@@ -388,8 +382,6 @@ def main(raygrade, assignment, static=None):
             got = camera["answer"]["ray"]["direction"]
             check(all(math.isclose(a, b, abs_tol=1e-12) for a, b in zip(got, want)),
                   f"camera seed {seed}: direction {got}, by hand {want}")
-    for f in failures:
-        print("FAIL:", f)
     print(f"prairielearn_export: {len(failures)} failures")
     return 1 if failures else 0
 

@@ -15,7 +15,8 @@ Exports assignments/homework-rays.json for the three students of assignments/ros
   * the tolerance is the problem's: raygrade's default relative 0.1% for a number of its own,
     and the absolute 1e-6 + 0.1% of the vector's length for a component (the same in every
     set, as for unit normals, or the strictest of the sets);
-- checks the Moodle file's worked solution (general feedback) uses only datasets it defines.
+- checks the Moodle file's worked solution (general feedback) uses only datasets it defines;
+- checks that each export's summary names what the questions cannot carry.
 """
 import csv
 import json
@@ -29,14 +30,9 @@ import tempfile
 import xml.etree.ElementTree as ET
 import zipfile
 
+from checks import check, failures
+
 QTI = "{http://www.imsglobal.org/xsd/ims_qtiasiv1p2}"
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
 
 
 def run(*args):
@@ -99,8 +95,18 @@ def main():
     schemas = os.environ.get("RAYGRADE_SCHEMAS", os.path.join(repo, "..", "shared", "schemas"))
     work = tempfile.mkdtemp(prefix="raygrade-quiz-")
     try:
-        run(raygrade, "export", "canvas", assignment, "--roster", roster, "--out", work + "/canvas")
-        run(raygrade, "export", "moodle", assignment, "--roster", roster, "--out", work + "/moodle")
+        exports = [run(raygrade, "export", platform, assignment, "--roster", roster, "--out",
+                       f"{work}/{platform}") for platform in ("canvas", "moodle")]
+        # The summary on standard error names what the questions cannot carry, each once, with
+        # the problems it concerns.
+        for r in exports:
+            summary = r.stderr
+            for lost in ["not carried: named-mistake feedback: the platform grades each number "
+                         "alone (every problem asked)",
+                         "not carried: raygrade takes the hits in any order, the quiz asks them "
+                         "in order of t (variant-sphere"]:
+                check(summary.count(lost) == 1, f"{r.args[2]}'s summary does not say once "
+                      f"{lost!r}:\n{summary}")
 
         bank = {}
         for root, _, files in os.walk(os.path.join(repo, "problems")):

@@ -30,6 +30,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, failures  # noqa: E402
 from chromium import FLAGS, SKIPPED, require_chromium  # noqa: E402
 
 try:
@@ -61,14 +62,6 @@ MIN_COLOURS = 3
 # WebGL in software: Chromium's flags for SwiftShader without a GPU.
 WEBGL_FLAGS = ["--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
                "--ignore-gpu-blocklist", "--force-device-scale-factor=1"]
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
-    return ok
 
 
 def run(*args):

@@ -30,7 +30,8 @@ import time
 import zipfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from chromium import SKIPPED, click, require_chromium, selenium_chromium  # noqa: E402
+from checks import check, failures  # noqa: E402
+from chromium import SKIPPED, click, require_chromium, selenium_chromium, wait_for  # noqa: E402
 
 try:
     from selenium.webdriver.common.by import By
@@ -40,24 +41,6 @@ except ImportError:
 
 RAYGRADE, RAYGRADE_JS, REPOSITORY, SCORM_AGAIN, OUT = sys.argv[1:6]
 PROBLEMS = [("variant-plane", 2), ("seed000-cylinder-derive-origin", 2)]
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
-
-
-def wait_for(driver, script, seconds=60):
-    """Polls a JavaScript expression until it is truthy; returns its value (None on timeout)."""
-    end = time.time() + seconds
-    while time.time() < end:
-        value = driver.execute_script("return " + script)
-        if value:
-            return value
-        time.sleep(0.05)
-    return None
 
 
 def export(assignment, out, version):

@@ -30,6 +30,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, failures  # noqa: E402
 from chromium import SKIPPED, click, require_chromium, selenium_chromium, wait_for_file  # noqa: E402
 
 try:
@@ -42,7 +43,6 @@ except ImportError:
 RAYGRADE, ASSIGNMENT, OUT = (os.path.abspath(a) for a in sys.argv[1:4])
 PROBLEM = "seed001-ray-tree"
 ROSTER = "id,name,email\ns001,Ada Lovelace,ada@example.edu\n"
-failures = []
 
 # The seed's tree, point by point, as the form asks for it: where the ray comes from (the eye,
 # or ("R" or "T", the number of an earlier point)), the object it meets, the shadow ray toward
@@ -66,13 +66,6 @@ WRONG = [
 FROM_TEXT = {"R": "the reflection at I{}", "T": "the refraction at I{}"}
 LIGHT_TEXT = {"lit": "reaches the light (lit)", "shadow": "is blocked (in shadow)",
               "away": "the surface faces away"}
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
-    return ok
 
 
 def run(*args, cwd=None):

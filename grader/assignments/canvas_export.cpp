@@ -14,6 +14,9 @@
 #include <cmath>
 #include <pugixml.hpp>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "assignments/quiz_export.h"
 #include "core/escape.h"
@@ -180,8 +183,9 @@ std::string canvas_assessment_xml(const Quiz& quiz, const std::string& ident) {
   return canvas_xml_text(doc);
 }
 
-std::string canvas_manifest_xml(const std::string& ident, const std::string& title,
-                                const std::string& href) {
+// The package's manifest: the assessment as its one resource, and no organization (Canvas
+// takes the quiz's title from the assessment).
+std::string canvas_manifest_xml(const std::string& ident, const std::string& href) {
   pugi::xml_document doc;
   pugi::xml_node decl = doc.append_child(pugi::node_declaration);
   decl.append_attribute("version") = "1.0";
@@ -192,14 +196,12 @@ std::string canvas_manifest_xml(const std::string& ident, const std::string& tit
   manifest.append_attribute("xmlns:xsi") = kXsi;
   manifest.append_attribute("xsi:schemaLocation") =
       fmt::format("{} {}", kCpNamespace, kCpSchema).c_str();
-  pugi::xml_node organizations = manifest.append_child("organizations");
-  (void)organizations;
+  manifest.append_child("organizations");
   pugi::xml_node resource = manifest.append_child("resources").append_child("resource");
   resource.append_attribute("identifier") = ident.c_str();
   resource.append_attribute("type") = "imsqti_xmlv1p2";
   resource.append_attribute("href") = href.c_str();
   resource.append_child("file").append_attribute("href") = href.c_str();
-  (void)title;
   return canvas_xml_text(doc);
 }
 
@@ -209,7 +211,7 @@ std::vector<ZipEntry> canvas_qti_files(const Quiz& quiz) {
   // An XML ident is a name: letters first, no spaces.
   std::string ident = "raygrade-" + safe_file_name(quiz.id);
   std::string href = ident + "/" + ident + ".xml";
-  return {{"imsmanifest.xml", canvas_manifest_xml(ident, quiz.title, href), false},
+  return {{"imsmanifest.xml", canvas_manifest_xml(ident, href), false},
           {href, canvas_assessment_xml(quiz, ident), false}};
 }
 
@@ -236,6 +238,25 @@ std::string quiz_summary(const Quiz& quiz, int max_sets) {
                   quiz.problems.size(), std::min<std::size_t>(sets, max_sets));
   if (cut) out += fmt::format(" (the platform takes at most {}; the first are kept)", max_sets);
   for (const std::string& n : quiz.notes) out += "; " + n;
+  // What the questions cannot carry: each sentence once, with the problems it concerns.
+  std::vector<std::pair<std::string, std::vector<std::string>>> lost;
+  for (const QuizProblem& q : quiz.problems) {
+    for (const std::string& sentence : q.lost) {
+      auto it = std::find_if(lost.begin(), lost.end(),
+                             [&](const auto& l) { return l.first == sentence; });
+      if (it == lost.end()) it = lost.insert(lost.end(), {sentence, {}});
+      if (it->second.empty() || it->second.back() != q.id) it->second.push_back(q.id);
+    }
+  }
+  for (const auto& [sentence, ids] : lost) {
+    std::string which;
+    if (ids.size() == quiz.problems.size() && ids.size() > 1) {
+      which = "every problem asked";
+    } else {
+      for (const std::string& id : ids) which += (which.empty() ? "" : ", ") + id;
+    }
+    out += fmt::format("; not carried: {} ({})", sentence, which);
+  }
   return out;
 }
 

@@ -24,12 +24,13 @@ AssignmentGrader::AssignmentGrader(const AssignmentSpec& spec, std::vector<const
                                    AssignmentGradeOptions options)
     : spec_(spec), problems_(std::move(problems)), options_(std::move(options)) {
   for (const auto* p : problems_) ids_.push_back(p->id);
+  per_student_numbers_ = has_per_student_numbers(spec_, problems_);
 }
 
 AssignmentGrader::~AssignmentGrader() = default;
 
 std::shared_ptr<const AssignmentGrader::Student> AssignmentGrader::student(const std::string& key) {
-  std::string k = spec_.per_student ? key : "";
+  std::string k = per_student_numbers_ ? key : "";
   {
     std::lock_guard lock(students_mutex_);
     auto it = students_.find(k);
@@ -87,9 +88,14 @@ StudentIdentity AssignmentGrader::identify(const Cursor& root) const {
   std::optional<StudentIdentity> claimed = read_student(root);
   if (!options_.uploaders.empty()) return identify_uploader(root, claimed);
   if (!claimed) {
+    // Numbers that are the same for everyone are graded without a name (the generic set),
+    // unless a roster says who may hand in.
+    if (!per_student_numbers_ && options_.roster.empty()) return StudentIdentity{};
     root.fail(fmt::format("the submission names no student: add \"student\": {{\"id\": "
-                          "\"...\"}} (each student of '{}' has their own numbers)",
-                          spec_.id),
+                          "\"...\"}} ({})",
+                          per_student_numbers_
+                              ? fmt::format("each student of '{}' has their own numbers", spec_.id)
+                              : "only the roster's students may hand in"),
               "no-student");
   }
   if (options_.roster.empty()) return *claimed;
@@ -110,7 +116,7 @@ StudentIdentity AssignmentGrader::identify_uploader(
   };
   if (options_.roster.empty()) {
     // No roster: an account cannot be tied to a student id, so nothing may depend on one.
-    if (spec_.per_student) {
+    if (per_student_numbers_) {
       root.fail(fmt::format("this autograder has no roster, so it cannot tell which student's "
                             "numbers the account {} was given; please tell your instructor "
                             "(raygrade export gradescope --roster)",

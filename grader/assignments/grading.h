@@ -37,9 +37,10 @@ class AssignmentGrader {
                    AssignmentGradeOptions options);
   ~AssignmentGrader();
 
-  // Grades one file; safe to call from several threads at once. A submission that names no student,
-  // or a student not on the roster, is rejected with the reason; so is one whose variant cannot be
-  // drawn.
+  // Grades one file; safe to call from several threads at once. A submission that names no student
+  // is graded against the generic set when every student's numbers are the same and there is no
+  // roster; else it is rejected with the reason, as is one that names a student not on the
+  // roster, or one whose variant cannot be drawn.
   SubmissionGrade grade_file(const std::string& path);
 
   // Grades a submission handed in through a learning platform (a file of its bulk download):
@@ -49,9 +50,10 @@ class AssignmentGrader {
                                   const StudentIdentity& owner, std::string_view platform);
 
   // The student a submission is from: the uploader when there are uploaders, else the one it
-  // names, completed from the roster. Throws Error when it names nobody, someone not on the
-  // roster, a name two students share, fields that name different students, or someone other
-  // than the uploader.
+  // names, completed from the roster; nobody (an empty identity) when it names nobody and
+  // nobody needs naming (no per-student numbers, no roster). Throws Error when it names nobody
+  // and must name someone, someone not on the roster, a name two students share, fields that
+  // name different students, or someone other than the uploader.
   StudentIdentity identify(const Cursor& root) const;
 
   const std::vector<std::string>& problem_ids() const { return ids_; }
@@ -70,6 +72,7 @@ class AssignmentGrader {
   std::vector<const Problem*> problems_;
   AssignmentGradeOptions options_;
   std::vector<std::string> ids_;
+  bool per_student_numbers_ = false;  // has_per_student_numbers: students' numbers differ
   std::mutex students_mutex_;
   // The students drawn most recently, at most kCachedStudents, by key; recent_ orders the keys
   // from the most recently used.

@@ -47,6 +47,36 @@ std::string due_html(const AssignmentSpec& spec) {
                      iso_utc_time(*spec.due), html_escape(utc_time_text(*spec.due)));
 }
 
+// The assignment's text as the page reads it. A bank named by an absolute path would point
+// outside the page's in-memory file system: such names are given relative to the assignment,
+// as the page names the bank's files. Otherwise the text is the file's, byte for byte.
+std::string page_assignment_text(const AssignmentSpec& spec, const std::string& text,
+                                 const std::filesystem::path& home) {
+  namespace fs = std::filesystem;
+  auto doc = nlohmann::ordered_json::parse(text);
+  bool absolute = false;
+  auto page_name = [&](nlohmann::ordered_json& name) {
+    fs::path written(name.get<std::string>());
+    if (!written.is_absolute()) return;
+    absolute = true;
+    fs::path r = written.lexically_normal().lexically_relative(home);
+    if (r.empty()) {
+      throw Error(
+          Diagnostic{spec.file, "/bank", 0, 0, Severity::kError,
+                     "the bank '" + written.string() + "' has no name relative to the assignment",
+                     "practice-bank"});
+    }
+    name = r.generic_string();
+  };
+  nlohmann::ordered_json& bank = doc["bank"];
+  if (bank.is_string()) {
+    page_name(bank);
+  } else {
+    for (auto& b : bank) page_name(b);
+  }
+  return absolute ? doc.dump(2) + "\n" : text;
+}
+
 }  // namespace
 
 std::string statement_figure_svg(const Problem& p) {
@@ -117,7 +147,7 @@ PracticeAssets practice_assets(const AssignmentSpec& spec, std::string grader_js
   for (std::size_t k = 0; k < depth; ++k) folder /= fmt::format("d{}", k + 1);
   auto read = [](const std::string& file) { return load_json_file(file)->text; };
   out.assignment = (folder / fs::path(spec.file).filename()).generic_string();
-  out.files.emplace_back(out.assignment, read(spec.file));
+  out.files.emplace_back(out.assignment, page_assignment_text(spec, read(spec.file), home));
   for (std::size_t i = 0; i < bank_files.size(); ++i) {
     out.files.emplace_back((folder / relative[i]).lexically_normal().generic_string(),
                            read(bank_files[i]));
@@ -171,9 +201,6 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
     data["practice"] = {{"assignment", practice->assignment},
                         {"files", files},
                         {"unlock_after", kPracticeUnlockAfter}};
-    // A submission names its student; on a generic page of an assignment whose numbers are
-    // the same for everyone, the page grades as a stand-in, whose numbers are those numbers.
-    if (!student && !spec.per_student) data["practice"]["stand_in"] = {{"id", "practice"}};
     if (!practice->scorm.empty()) data["practice"]["scorm"] = practice->scorm;
     // raygrade.js in a <script> element: nothing in it may close the element.
     if (practice->grader_js.find("</") != std::string::npos) {

@@ -20,7 +20,8 @@ struct Handout {
 
 // What a practice page carries besides the handout: raygrade.js, and the files its grader
 // reads (the assignment and every file of its bank), named so that the bank's paths relative
-// to the assignment still hold in the page's in-memory file system (docs/web.md).
+// to the assignment still hold in the page's in-memory file system (docs/web.md); a bank named
+// by an absolute path is named relative to the assignment in the page's copy of it.
 struct PracticeAssets {
   std::string grader_js;                                   // raygrade.js
   std::string assignment;                                  // the assignment's name among `files`

@@ -640,13 +640,13 @@
   // assignment's feedback policy; attempts and results kept in this browser (docs/web.md).
   function practice() {
     const setup = data.practice;
-    // Who the grader grades: the page's student, else (a generic page of an assignment whose
-    // numbers are everyone's) a stand-in, since a submission must name someone.
-    const student = data.student.identity || setup.stand_in || null;
+    // Who the grader grades: the page's student; a generic page names nobody, which the grader
+    // takes as the generic set when the numbers are everyone's.
+    const student = data.student.identity || null;
     const progressKey = storageKey + ":practice";
     let progress = {};
     try { progress = JSON.parse(localStorage.getItem(progressKey) || "{}") || {}; } catch (e) { progress = {}; }
-    if (lms && lms.resumed) progress = lms.resumed.progress;
+    if (lms && lms.resumed) progress = lms.resumed.progress || {};
     practiceProgress = () => progress;
     const keep = () => { try { localStorage.setItem(progressKey, JSON.stringify(progress)); } catch (e) { /* storage off */ } };
     const views = {};

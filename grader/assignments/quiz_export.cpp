@@ -150,7 +150,7 @@ std::vector<Asked> asked_numbers(const json& form, const std::vector<json>& answ
         }
       }
       if (count > 1 || f.value("label", "").find("any order") != std::string::npos) {
-        lost.push_back("raygrade takes the hits in any order; the quiz asks them in order of t");
+        lost.push_back("raygrade takes the hits in any order, the quiz asks them in order of t");
       }
     } else if (type == "rows") {
       // Each row is the answer's item whose fixed keys are the row's.
@@ -199,7 +199,6 @@ QuizTolerance tolerance_of(const Tolerance& t, const std::vector<double>& answer
   if (relative) {
     q.kind = QuizTolerance::Kind::kRelative;
     q.value = t.rtol;
-    q.exact = t.atol == 0;
     return q;
   }
   std::vector<double> allowed;
@@ -213,7 +212,6 @@ QuizTolerance tolerance_of(const Tolerance& t, const std::vector<double>& answer
   // of the value, so lowering it by 1e-11 first keeps the rounded value below.
   q.value = std::stod(fmt::format("{:.12g}", *lo));
   if (q.value > *lo) q.value = std::stod(fmt::format("{:.12g}", *lo * (1 - 1e-11)));
-  q.exact = *hi - *lo <= 1e-12 * *hi;
   return q;
 }
 

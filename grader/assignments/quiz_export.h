@@ -24,7 +24,7 @@ struct QuizVariable {
 };
 
 // How close an answer must be. kRelative: |x − a| ≤ value·|a|; kAbsolute: |x − a| ≤ value.
-// `exact` says whether this is raygrade's own rule for every set. A relative tolerance keeps
+// A relative tolerance keeps
 // raygrade's relative part and leaves out its absolute floor (1e-6 by default), which matters
 // only near zero; where the platform cannot say raygrade's rule (a vector's component, whose
 // relative tolerance refers to the vector's length; significant figures), the quiz takes the
@@ -33,7 +33,6 @@ struct QuizTolerance {
   enum class Kind { kRelative, kAbsolute };
   Kind kind = Kind::kRelative;
   double value = 0;
-  bool exact = true;
   std::string rule;  // raygrade's rule, in words: "relative 0.1%"
 };
 
@@ -73,7 +72,7 @@ struct QuizProblem {
   // variables of their own, so that each set's solution shows that set's numbers.
   std::vector<QuizStep> steps;
   std::vector<QuizVariable> step_variables;
-  std::vector<std::string> lost;  // what the quiz cannot carry, in sentences
+  std::vector<std::string> lost;  // what the quiz cannot carry, in sentences (in the summary)
 };
 
 struct Quiz {
@@ -108,7 +107,8 @@ constexpr int kMoodleMaxSets = 100;
 std::vector<ZipEntry> canvas_qti_files(const Quiz& quiz);
 // Which variant each set is: "problem,set,variant" (the key raygrade solve --student takes).
 std::string quiz_sets_csv(const Quiz& quiz);
-// One sentence: how many questions and sets, and what was left out.
+// One sentence: how many questions and sets, what was left out, and what the questions cannot
+// carry (each problem's `lost`, each once, with the problems it concerns).
 std::string quiz_summary(const Quiz& quiz, int max_sets);
 std::string moodle_xml(const Quiz& quiz);
 

@@ -128,6 +128,16 @@ std::vector<Problem> student_problems(const AssignmentSpec& spec,
   return out;
 }
 
+bool has_per_student_numbers(const AssignmentSpec& spec,
+                             const std::vector<const Problem*>& bank_problems) {
+  if (!spec.per_student) return false;
+  for (std::size_t i = 0; i < bank_problems.size() && i < spec.problems.size(); ++i) {
+    const Problem& base = *bank_problems[i];
+    if (spec.problems[i].variants && base.parameters && !base.parameters->empty()) return true;
+  }
+  return false;
+}
+
 Bank student_bank(const AssignmentSpec& spec, const std::string& student) {
   AssignmentBank from = load_assignment_bank(spec);
   Bank out;

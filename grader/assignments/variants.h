@@ -47,6 +47,11 @@ std::vector<Problem> student_problems(const AssignmentSpec& spec,
                                       const std::vector<const Problem*>& bank_problems,
                                       const std::string& student);
 
+// Whether students' numbers differ: the assignment draws per student, and some problem it
+// draws for has parameters to draw. Without, every student's problems are the generic set's.
+bool has_per_student_numbers(const AssignmentSpec& spec,
+                             const std::vector<const Problem*>& bank_problems);
+
 // What `raygrade solve ASSIGNMENT --student KEY` solves: load_assignment_bank, then
 // student_problems; no problems when an id of the assignment is missing from its bank (the
 // errors say which).

@@ -64,7 +64,8 @@ class AssignmentSource {
     if (!graders.errors().empty()) throw Error(graders.errors().front());
     h.grade = graders.grade(file);
     h.grade.identity = who;
-    h.grade.student = who.display();
+    // A submission that names nobody (numbers that are everyone's) is its file.
+    h.grade.student = who.empty() ? std::filesystem::path(path).stem().string() : who.display();
     h.grade.score = h.grade.max_score = 0;
     for (auto& r : h.grade.results) {
       for (const auto& ap : spec_.problems)
