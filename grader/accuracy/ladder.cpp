@@ -134,8 +134,8 @@ const std::vector<LadderLevel>& ladder_levels() {
       {"reference MPFR", "the same in MPFR at 256 bits", per_primitive<Reference<Mpfr>>()},
       {"static filter",
        "the reference double with a forward error bound on each quantity it decides by: its "
-       "answer is exact where every such quantity lies beyond its bound (sphere, plane, "
-       "triangle, polygon, box, disk); the plain reference double elsewhere",
+       "answer is exact where every such quantity lies beyond its bound (every primitive has "
+       "one); the plain reference double where it cannot decide",
        per_primitive<FilterFirst<ThenReference>>()},
       {"certified double",
        "the static filter, then interval arithmetic in double with outward rounding where it "

@@ -181,22 +181,23 @@ std::string render_accuracy_markdown(const AccuracyReport& r, const std::string&
       err(max_error(r, "reference long double", true)),
       err(max_error(r, "reference double-double", true)),
       err(max_error(r, "reference MPFR", true)));
-  md +=
-      "- **Where double-double decides wrongly.** Double-double has double's exponent range. "
-      "The cylinder's wrong cases (extreme-scale-4 and extreme-scale-22, direction components "
-      "near 1e-165 and 1e-234) and the sphere's (extreme-scale-42, near 1e-245) are underflow: "
-      "a = |d⊥|² (d·d for the sphere) falls below 2^-1074, so the cylinder takes the ray for "
-      "one parallel to its axis and reports a miss, and the sphere divides by zero and reports "
-      "t = NaN. The double, float and long double references scale such a direction by a power "
-      "of two before squaring it (kRescaleExponent); that step sits behind kErrorFree, which "
-      "double-double does not satisfy, and scaling the direction for every number type (the "
-      "intervals and MPFR too) would remove them. The cone's two (cone-apex-0 and "
-      "cone-apex-4, rays through the apex at exactly t = 1, where the quarter discriminant is "
-      "exactly 0 and t = −(b/2)/a with b/2 = −a exactly) came from the division: a·(1/b) gave "
-      "1 − 2^-106, and the side test s = γ + tα, exactly 0 at the apex, took the sign of that "
-      "error and put the hit on the other nappe. The division now takes one remainder step "
-      "(q₁ = a·(1/b), then q₁ + (a − q₁·b)·(1/b)), which returns an exact quotient exactly, "
-      "and the cone's double-double decides every hard case right.\n";
+  md += fmt::format(
+      "- **Where double-double decided wrongly, and why no longer.** Double-double has "
+      "double's exponent range. Three hard cases, the cylinder's extreme-scale-4 and "
+      "extreme-scale-22 (direction components near 1e-165 and 1e-234) and the sphere's "
+      "extreme-scale-42 (near 1e-245), were underflow: a = |d⊥|² (d·d for the sphere) fell "
+      "below 2^-1074, so the cylinder took the ray for one parallel to its axis and reported a "
+      "miss, and the sphere divided by zero. The floating types' references scaled such a "
+      "direction by a power of two before squaring it (kRescaleExponent), and now every number "
+      "type that scales by powers of two exactly does (ScalesByPowersOfTwo), double-double "
+      "among them. The cone's two (cone-apex-0 and cone-apex-4, rays through the apex at "
+      "exactly t = 1, where the quarter discriminant is exactly 0 and t = −(b/2)/a with "
+      "b/2 = −a exactly) came from the division: a·(1/b) gave 1 − 2^-106, and the side test "
+      "s = γ + tα, exactly 0 at the apex, took the sign of that error and put the hit on the "
+      "other nappe. The division now takes one remainder step (q₁ = a·(1/b), then "
+      "q₁ + (a − q₁·b)·(1/b)), which returns an exact quotient exactly. Reference double-double "
+      "now makes {} wrong decisions on the hard set.\n",
+      wrong_total(r, "reference double-double", true));
   std::vector<std::string> used;
   for (const auto& [name, n] : r.adaptive_levels_hard)
     used.push_back(fmt::format("{} {}", name, n));
@@ -212,8 +213,9 @@ std::string render_accuracy_markdown(const AccuracyReport& r, const std::string&
   md += fmt::format(
       "- **static filter** (the reference double with a forward error bound on every quantity "
       "its decision rests on, docs/precision.md; the first step of the certified and adaptive "
-      "levels) decides {}; where it decides, its answer is exact and its t is the reference's "
-      "own. Cost relative to reference double: {} on random rays.\n",
+      "levels) decides {}; where it decides, its answer is exact, and its t is the reference's "
+      "own but for the cylinder and the capsule, whose filters compute the side from the axis "
+      "as given, without normalizing it. Cost relative to reference double: {} on random rays.\n",
       shares.empty() ? std::string("nothing") : fmt::format("{}", fmt::join(shares, "; ")),
       ratios(r, "static filter", "reference double"));
   md += fmt::format(
@@ -252,8 +254,7 @@ std::string render_accuracy_markdown(const AccuracyReport& r, const std::string&
       "of t and the decisions double cannot make, at a price that grows quickly: long double "
       "and double-double cost {} and {} times the reference, MPFR {} times. The adaptive answer "
       "pays for them only when it must: on ordinary rays it costs {} times the reference (the "
-      "static filter where the primitive has one, else the certified double evaluation, which "
-      "nearly always decides), on the hard set {} times, "
+      "static filter, which decides nearly all of them), on the hard set {} times, "
       "and it is right on every case. So raygrade answers in double with the stable "
       "formulations, and checks the decision with the adaptive ladder, recording in each "
       "solution the level it needed.\n\n",

@@ -114,4 +114,14 @@ inline DoubleDouble sqrt(DoubleDouble a) {
 
 inline bool isfinite(DoubleDouble a) { return std::isfinite(a.hi) && std::isfinite(a.lo); }
 
+// The exponent of the leading part, and a·2^k, exact barring underflow of either part: what
+// the sphere's and the cylinder's rescaling of an extreme direction needs (math/robust.h).
+inline int ilogb(DoubleDouble a) { return std::ilogb(a.hi); }
+inline DoubleDouble ldexp(DoubleDouble a, int k) {
+  DoubleDouble out;
+  out.hi = std::ldexp(a.hi, k);
+  out.lo = std::ldexp(a.lo, k);
+  return out;
+}
+
 }  // namespace raygrade

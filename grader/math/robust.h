@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <concepts>
 #include <limits>
 
 #include "math/vec3.h"
@@ -143,17 +144,26 @@ void difference_exact(const Vec3<T>& o, const Vec3<T>& c, Vec3<T>& hi, Vec3<T>& 
 // zero or not finite.
 template <typename T>
 int scale_exponent(const Vec3<T>& v) {
-  using std::abs;
+  using std::abs, std::ilogb, std::isfinite;
   T m = std::max({abs(v.x), abs(v.y), abs(v.z)});
-  if (!(m > T(0)) || !std::isfinite(m)) return 0;
-  return std::ilogb(m);
+  if (!(m > T(0)) || !isfinite(m)) return 0;
+  return ilogb(m);
 }
 
 // v·2^k, exact barring underflow.
 template <typename T>
 Vec3<T> scaled_by_power_of_two(const Vec3<T>& v, int k) {
-  return {std::ldexp(v.x, k), std::ldexp(v.y, k), std::ldexp(v.z, k)};
+  using std::ldexp;
+  return {ldexp(v.x, k), ldexp(v.y, k), ldexp(v.z, k)};
 }
+
+// Number types whose values scale by a power of two exactly (barring underflow): the floating
+// types, and double-double (math/double_double.h), whose exponent range is double's.
+template <typename T>
+concept ScalesByPowersOfTwo = kErrorFree<T> || requires(const T& x) {
+  { ilogb(x) } -> std::same_as<int>;
+  { ldexp(x, 0) } -> std::same_as<T>;
+};
 
 // |v|, also where |v|² overflows or underflows (a direction of 1e-170): then computed for v
 // scaled by a power of two, exactly, and scaled back. Where |v|² is a normal number, the plain
@@ -167,7 +177,9 @@ inline double length_at_any_scale(const Vec3<double>& v) {
 }
 
 // The compensated paths of the sphere and the cylinder scale a direction whose largest
-// component is beyond 2^±kRescaleExponent into [1, 2) by a power of two, and the roots back:
+// component is beyond 2^±kRescaleExponent into [1, 2) by a power of two, and the roots back, in
+// every number type that ScalesByPowersOfTwo (double-double too, whose exponent range is
+// double's):
 // the squares and products of up to four magnitudes in their formulas then neither overflow nor
 // underflow, at any direction scale where a double holds t.
 constexpr int kRescaleExponent = 64;
@@ -175,8 +187,9 @@ constexpr int kRescaleExponent = 64;
 // The roots of a quadratic for the direction d·2^-k, scaled back to the direction d (t·2^-k).
 template <typename Roots>
 Roots roots_scaled_back(Roots r, int k) {
-  r.t0 = std::ldexp(r.t0, -k);
-  r.t1 = std::ldexp(r.t1, -k);
+  using std::ldexp;
+  r.t0 = ldexp(r.t0, -k);
+  r.t1 = ldexp(r.t1, -k);
   return r;
 }
 

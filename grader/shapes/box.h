@@ -67,38 +67,62 @@ template <typename T>
   constexpr double u = kUnitRoundoff<double>;
   const double k = 4 * u * bound_scale;
   auto certain_less = [&](double x, double y) { return y - x > k * (std::abs(x) + std::abs(y)); };
-  auto end = [](double bound, double origin, double direction, double& t) {
-    double difference = bound - origin;
-    t = difference / direction;
-    return difference == 0 || (std::abs(t) >= kQuotientFloor && std::abs(t) <= 1 / kQuotientFloor);
+  // x* ≠ y* certain, one way or the other: |y − x| is the same for both (fl(x − y) = −fl(y − x)).
+  // The magnitudes come with the values (the range test below takes them anyway).
+  auto certain_apart = [&](double x, double y, double x_m, double y_m) {
+    return std::abs(y - x) > k * (x_m + y_m);
   };
-  double near[3], far[3];
+  auto in_range = [](double difference, double t_m) {
+    return difference == 0 || (t_m >= kQuotientFloor && t_m <= 1 / kQuotientFloor);
+  };
+  double near[3], far[3], near_m[3], far_m[3];
   int count = 0;
-  bool outside = false;
-  for (int i = 0; i < 3; ++i) {
-    if (d[i] == 0) {
-      outside |= o[i] < lo[i] || o[i] > hi[i];
-      continue;
-    }
-    double t_low = 0, t_high = 0;
-    bool low_in_range = end(lo[i], o[i], d[i], t_low);
-    bool high_in_range = end(hi[i], o[i], d[i], t_high);
-    if (!(low_in_range && high_in_range)) return false;
+  bool outside = false, ends_in_range = true;
+  auto slab = [&](int i, int j) {
+    // Selections and accumulated tests rather than branches, as in slab_interval.
+    double low = lo[i] - o[i], high = hi[i] - o[i];
+    double t_low = low / d[i], t_high = high / d[i];
+    double low_m = std::abs(t_low), high_m = std::abs(t_high);
+    ends_in_range &= in_range(low, low_m) & in_range(high, high_m);
     bool backward = d[i] < 0;
-    near[count] = backward ? t_high : t_low;
-    far[count] = backward ? t_low : t_high;
-    ++count;
-  }
-  if (count == 0) return false;
-  double enter = near[0], leave = far[0];
-  for (int i = 1; i < count; ++i) {
-    for (int j = 0; j < i; ++j) {
-      bool apart = (certain_less(near[i], near[j]) || certain_less(near[j], near[i])) &&
-                   (certain_less(far[i], far[j]) || certain_less(far[j], far[i]));
-      if (!apart) return false;
+    near[j] = backward ? t_high : t_low;
+    far[j] = backward ? t_low : t_high;
+    near_m[j] = backward ? high_m : low_m;
+    far_m[j] = backward ? low_m : high_m;
+  };
+  auto pair_apart = [&](int i, int j) {
+    return certain_apart(near[i], near[j], near_m[i], near_m[j]) &
+           certain_apart(far[i], far[j], far_m[i], far_m[j]);
+  };
+  double enter = 0, leave = 0;
+  if ((d.x != 0) & (d.y != 0) & (d.z != 0)) {
+    // Every slab bounds the ray (nearly every ray): three of each, in registers.
+    slab(0, 0);
+    slab(1, 1);
+    slab(2, 2);
+    bool apart = pair_apart(0, 1) & pair_apart(0, 2) & pair_apart(1, 2);
+    if (!(ends_in_range & apart)) return false;
+    enter = std::max({near[0], near[1], near[2]});
+    leave = std::min({far[0], far[1], far[2]});
+  } else {
+    for (int i = 0; i < 3; ++i) {
+      if (d[i] == 0) {
+        outside |= o[i] < lo[i] || o[i] > hi[i];
+        continue;
+      }
+      slab(i, count);
+      ++count;
     }
-    enter = std::max(enter, near[i]);
-    leave = std::min(leave, far[i]);
+    if (!ends_in_range || count == 0) return false;
+    enter = near[0];
+    leave = far[0];
+    bool apart = true;
+    for (int i = 1; i < count; ++i) {
+      for (int j = 0; j < i; ++j) apart &= pair_apart(i, j);
+      enter = std::max(enter, near[i]);
+      leave = std::min(leave, far[i]);
+    }
+    if (!apart) return false;
   }
   out = {};
   if (outside) return true;

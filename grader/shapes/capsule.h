@@ -76,6 +76,26 @@ Roots<T> naive_quadratic_roots(T a, T b, T c) {
 // The hits are the side's (the cylinder of radius r around ab, where the height s along the
 // axis from a lies in [0, h], h = |b − a|) and the end spheres' (around a where s ≤ 0, around b
 // where s ≥ h). A hit on the rim between the side and an end is found by both and listed once.
+// The sign of the exact height ((o − e) + t·d)·u of an enclosed root r above the end e, for the
+// static filter, with u the rounded b − a standing for the exact one: 1 or −1 when certain, 0
+// when not. Each component g = (o − e) + t·d, rounded three times, is within
+// u·(|o − e| + |t·d| + |g|) + width·|d| of the exact one at the exact t, u's within u·|u|, and the
+// products and their sum round within 3u·|g·u| more: the bound sums
+// |u|·(u·(|o − e| + |t·d|) + 5u·|g| + width·|d|), 1.01 covering its own rounding.
+[[gnu::always_inline]] inline int capsule_height_sign(const Vec3d& o, const Vec3d& d,
+                                                      const FilterAnswer& r, const Vec3d& end,
+                                                      const Vec3d& axis, double bound_scale) {
+  using std::abs;
+  constexpr double u = kUnitRoundoff<double>;
+  double width = enclosure_width(r), h = 0, error = 0;
+  for (int i = 0; i < 3; ++i) {
+    double oe = o[i] - end[i], m = r.t * d[i], g = oe + m;
+    h += g * axis[i];
+    error += abs(axis[i]) * (u * (abs(oe) + abs(m)) + 5 * u * abs(g) + width * abs(d[i]));
+  }
+  return certain_sign(h, (1.01 * error + kFilterUnderflowSlack) * bound_scale);
+}
+
 class Capsule final : public Shape {
  public:
   // What the accuracy study needs of a capsule (shapes/ladder_primitives.h).
@@ -138,6 +158,48 @@ struct Capsule::Ladder {
     return capsule_nearest(
         o, d, p[0], p[1], [&] { return cylinder_side_roots(o, d, p[0], axis, r); },
         [&](int end) { return sphere_roots(o, d, p[end], r); }, t);
+  }
+
+  // The static filter: the side's roots from cylinder_side_bounded with the axis b − a, and each
+  // end sphere's from the sphere's fast path (whose quotients are within 2.2τ, as its own filter
+  // takes them), each root enclosed, certainly on its part or not (capsule_height_sign), the
+  // nearest kept at t > 0.
+  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double r,
+                     FilterAnswer& out, double bound_scale) {
+    Vec3d u = p[1] - p[0];
+    BoundedQuadratic k;
+    EnclosedRoots side;
+    if (!cylinder_side_bounded(o, d, p[0], u, r, bound_scale, k) || !enclose_roots(k, side))
+      return false;
+    NearestKept nearest;
+    for (int i = 0; i < side.count; ++i) {
+      const FilterAnswer& root = side.root[i];
+      if (root.t_hi < 0) continue;
+      int above_a = capsule_height_sign(o, d, root, p[0], u, bound_scale);
+      int above_b = capsule_height_sign(o, d, root, p[1], u, bound_scale);
+      if (above_a == 0 || above_b == 0) return false;
+      if (above_a > 0 && above_b < 0 && !nearest.keep(root)) return false;
+    }
+    for (int end = 0; end < 2; ++end) {
+      Quadratic<double> sphere;
+      FastPath fast = sphere_quadratic_fast(o, d, p[end], r, sphere);
+      if (fast == FastPath::kUndecided) return false;
+      if (fast == FastPath::kMiss) continue;
+      double q = stable_q(sphere, std::sqrt(sphere.disc));
+      FilterAnswer roots[2];
+      if (!enclose_quotient(sphere.c / q, 2.2 * kFastPathTolerance<double>, 1, roots[0]) ||
+          !enclose_quotient(q / sphere.a, 2.2 * kFastPathTolerance<double>, 1, roots[1])) {
+        return false;
+      }
+      for (const FilterAnswer& root : roots) {
+        if (root.t_hi < 0) continue;
+        int above = capsule_height_sign(o, d, root, p[end], u, bound_scale);
+        if (above == 0) return false;
+        if ((end == 0 ? above < 0 : above > 0) && !nearest.keep(root)) return false;
+      }
+    }
+    out = nearest.nearest;
+    return true;
   }
 
   // The textbook quadratics: the side's on the components across the unit axis, each end's

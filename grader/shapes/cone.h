@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "sampling/outcome.h"
+#include "shapes/filter_roots.h"
 #include "shapes/round.h"
 #include "shapes/shape.h"
 #include "shapes/sphere.h"
@@ -85,6 +86,71 @@ template <typename T>
 bool cone_on_side(const ConeSide<T>& k, const T& t) {
   T s = k.gamma + t * k.alpha;
   return s >= -k.vv && s <= T(0);
+}
+
+// The cone side's quadratic for the static filter (docs/precision.md, "Static filters"):
+// cone_side's own coefficients in double, with the bound γ_n·(the same polynomial on magnitudes)
+// on each, n the most roundings on a path from an input to it (cylinder_side_bounded). g = O − A
+// and v = A − B, rounded differences, count one rounding each: a has n = 16, b/2 17, c 18 and
+// Δ'/(v·v)² 23; the bounds take (n + 1)·u. The root scale is v·v, within 6u of the exact one.
+// The side's own test, −v·v ≤ γ + tα ≤ 0 at a root, needs γ and α: their bounds go in
+// `gamma_error` and `alpha_error`. False when a vector's 1-norm or the radius lies beyond
+// kFilterInputLimit.
+[[gnu::always_inline]] inline bool cone_side_bounded(const Vec3d& o, const Vec3d& d,
+                                                     const Vec3d& apex, const Vec3d& v, double r,
+                                                     double bound_scale, ConeSide<double>& side,
+                                                     BoundedQuadratic& k, double& gamma_error,
+                                                     double& alpha_error) {
+  using std::abs;
+  constexpr double u = kUnitRoundoff<double>;
+  side = cone_side(o, d, apex, v, r);
+  const Vec3d& g = side.g;
+  // Magnitudes: of D × v and g × v by 1-norms; of m = D × g component by component, since D and
+  // g are nearly parallel for a ray aimed at the cone from afar, where the 1-norms would
+  // overstate the discriminant's error most.
+  Vec3d v_m{abs(v.x), abs(v.y), abs(v.z)}, d_m{abs(d.x), abs(d.y), abs(d.z)},
+      g_m{abs(g.x), abs(g.y), abs(g.z)};
+  double n_d = d_m.x + d_m.y + d_m.z, n_v = v_m.x + v_m.y + v_m.z, n_g = g_m.x + g_m.y + g_m.z;
+  if (!within_filter_limit(n_d, n_v, n_g, r)) return false;
+  double dv_m = n_d * n_v, gv_m = n_g * n_v;
+  Vec3d m_v{d_m.y * g_m.z + d_m.z * g_m.y, d_m.z * g_m.x + d_m.x * g_m.z,
+            d_m.x * g_m.y + d_m.y * g_m.x};
+  double mm_m = dot_fused(m_v, m_v), mv_m = dot_fused(m_v, v_m);
+  double alpha_m = dv_m, gamma_m = gv_m;  // the magnitudes of D·v and g·v, by 1-norms too
+  double vv = side.vv, rr = r * r;
+  double slack = kFilterUnderflowSlack;
+  k.a = side.a;
+  k.b = side.half_b;
+  k.c = side.c;
+  k.disc = side.disc;
+  k.scale = vv;
+  k.a_error = (17 * u * (vv * (dv_m * dv_m) + rr * (alpha_m * alpha_m)) + slack) * bound_scale;
+  k.b_error = (18 * u * (vv * (gv_m * dv_m) + rr * (gamma_m * alpha_m)) + slack) * bound_scale;
+  k.c_error = (19 * u * (vv * (gv_m * gv_m) + rr * (gamma_m * gamma_m)) + slack) * bound_scale;
+  k.disc_error = (24 * u * (rr * vv * mm_m + (vv + rr) * (mv_m * mv_m)) + slack) * bound_scale;
+  gamma_error = (6 * u * gamma_m + slack) * bound_scale;
+  alpha_error = (5 * u * alpha_m + slack) * bound_scale;
+  return true;
+}
+
+// Is the enclosed root r on the cone, −v·v ≤ γ + tα ≤ 0 for its exact t and the exact γ, α and
+// v·v? 1 or −1 when certain (on it or not), 0 when not. s = γ + tα at r.t is within
+// |γ − γ*| + width·|α| + (|t| + width)·|α − α*| of the exact one, and two roundings
+// (u·(|tα| + |s|)); s + v·v adds 6u·v·v and one rounding. 1.01 covers the bound's own rounding.
+[[gnu::always_inline]] inline int cone_root_on_side(const ConeSide<double>& side,
+                                                    const FilterAnswer& r, double gamma_error,
+                                                    double alpha_error, double bound_scale) {
+  using std::abs;
+  constexpr double u = kUnitRoundoff<double>;
+  double width = enclosure_width(r), ta = r.t * side.alpha, s = side.gamma + ta;
+  double s_error = 1.01 * (gamma_error + width * abs(side.alpha) +
+                           (abs(r.t) + width) * alpha_error + u * bound_scale * (abs(ta) + abs(s)));
+  double low = s + side.vv;
+  double low_error = s_error + 1.01 * u * bound_scale * (6 * side.vv + abs(low));
+  int top = certain_sign(s, s_error), bottom = certain_sign(low, low_error);
+  if (top > 0 || bottom < 0) return -1;
+  if (top < 0 && bottom > 0) return 1;
+  return 0;
 }
 
 class Cone final : public Shape {
@@ -167,6 +233,35 @@ struct Cone::Ladder {
       }
     }
     return false;
+  }
+
+  // The static filter: cone_side_bounded's quadratic, its roots enclosed (enclose_roots), each
+  // certainly on the cone or not (cone_root_on_side), the nearest kept at t > 0. Its t is the
+  // reference's own (the same coefficients, root and quotients).
+  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double r,
+                     FilterAnswer& out, double bound_scale) {
+    ConeSide<double> side;
+    BoundedQuadratic k;
+    EnclosedRoots roots;
+    double gamma_error = 0, alpha_error = 0;
+    if (!cone_side_bounded(o, d, p[1], Vec3d(p[1] - p[0]), r, bound_scale, side, k, gamma_error,
+                           alpha_error) ||
+        !enclose_roots(k, roots)) {
+      return false;
+    }
+    // The roots in the order of their t, as the reference takes them: it stops at the first
+    // kept, and so does the filter when that one lies certainly before the other.
+    NearestKept nearest;
+    bool swapped = roots.count == 2 && roots.root[1].t < roots.root[0].t;
+    for (int i = 0; i < roots.count; ++i) {
+      const FilterAnswer& root = roots.root[swapped ? 1 - i : i];
+      if (root.t_hi < 0) continue;
+      if (nearest.nearest.hit && nearest.nearest.t_hi < root.t_lo) break;
+      int on = cone_root_on_side(side, root, gamma_error, alpha_error, bound_scale);
+      if (on == 0 || (on > 0 && !nearest.keep(root))) return false;
+    }
+    out = nearest.nearest;
+    return true;
   }
 
   // The textbook cone: from the apex A along ĉ = (B − A)/h, with cos²θ = h²/(h² + r²) and

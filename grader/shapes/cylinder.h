@@ -5,6 +5,7 @@
 
 #include "derivation/mistake.h"
 #include "sampling/outcome.h"
+#include "shapes/filter_roots.h"
 #include "shapes/sphere.h"
 #include "shapes/surface_point.h"
 
@@ -47,7 +48,7 @@ template <typename T>
 [[gnu::noinline]] Roots<T> cylinder_side_roots_slow(const Vec3<T>& o, const Vec3<T>& d,
                                                     const Vec3<T>& base, const Vec3<T>& axis, T r) {
   using std::sqrt;
-  if constexpr (kErrorFree<T>) {
+  if constexpr (ScalesByPowersOfTwo<T>) {
     if (int k = scale_exponent(d); k < -kRescaleExponent || k > kRescaleExponent) {
       return roots_scaled_back(
           cylinder_side_roots_slow(o, scaled_by_power_of_two(d, -k), base, axis, r), k);
@@ -168,6 +169,52 @@ template <typename T>
   return cylinder_side_nearest_slow(o, d, base, axis, r, t);
 }
 
+// The side's quadratic for the static filter (docs/precision.md, "Static filters"), from an axis
+// vector A of any length: with F = f × A, D = d × A and s = (f × d)·A, |(f + t d) × A|² = r²|A|²
+// is a·t² + 2b·t + c = 0 with a = |D|², b = F·D, c = |F|² − r²|A|², and its quarter discriminant
+// is |A|²·(r²a − s²) (as (F × D) = ((f × d)·A)·A): disc = r²a − s², which does not cancel for
+// a far cylinder, and scale = |A|. Every quantity is a polynomial in the inputs, computed in
+// double (dot_fused and cross_fused round no more often than the plain products), with the bound
+// γ_n·(the same polynomial on magnitudes) on its error, n the most roundings on a path from an
+// input to the result (Higham, Accuracy and Stability, 2nd ed., sec. 3.1). f = o − base counts one
+// rounding, and so does A, which may itself be a rounded difference (the capsule's b − a): a has
+// n = 9, b 10, c 12, disc 16; the bounds take (n + 1)·u, the extra u covering their own
+// rounding. The magnitudes are bounded by 1-norms (filter_roots.h). |A| = √(A·A) is within 4u of
+// the exact length. False when a vector's 1-norm or the radius lies beyond kFilterInputLimit.
+[[gnu::always_inline]] inline bool cylinder_side_bounded(const Vec3d& o, const Vec3d& d,
+                                                         const Vec3d& base, const Vec3d& axis,
+                                                         double r, double bound_scale,
+                                                         BoundedQuadratic& k) {
+  using std::abs;
+  constexpr double u = kUnitRoundoff<double>;
+  Vec3d f = o - base;
+  Vec3d dd = cross_fused(d, axis), ff = cross_fused(f, axis), fd = cross_fused(f, d);
+  // Magnitudes: of D and F by 1-norms; of s = (f × d)·A component by component, since f and d
+  // are nearly parallel for a ray aimed at the cylinder from afar, where the 1-norms would
+  // overstate the discriminant's error most.
+  Vec3d d_m{abs(d.x), abs(d.y), abs(d.z)}, f_m{abs(f.x), abs(f.y), abs(f.z)},
+      axis_m{abs(axis.x), abs(axis.y), abs(axis.z)};
+  double n_d = d_m.x + d_m.y + d_m.z, n_f = f_m.x + f_m.y + f_m.z,
+         n_axis = axis_m.x + axis_m.y + axis_m.z;
+  if (!within_filter_limit(n_d, n_f, n_axis, r)) return false;
+  double dd_m = n_d * n_axis, ff_m = n_f * n_axis;
+  Vec3d fd_m{f_m.y * d_m.z + f_m.z * d_m.y, f_m.z * d_m.x + f_m.x * d_m.z,
+             f_m.x * d_m.y + f_m.y * d_m.x};
+  double s_m = dot_fused(fd_m, axis_m);
+  double rr = r * r, aa = dot_fused(axis, axis), s = dot_fused(fd, axis);
+  k.a = dot_fused(dd, dd);
+  k.b = dot_fused(ff, dd);
+  k.c = dot_fused(ff, ff) - rr * aa;
+  k.disc = rr * k.a - s * s;
+  k.scale = std::sqrt(aa);
+  double slack = kFilterUnderflowSlack;
+  k.a_error = (10 * u * (dd_m * dd_m) + slack) * bound_scale;
+  k.b_error = (11 * u * (ff_m * dd_m) + slack) * bound_scale;
+  k.c_error = (13 * u * (ff_m * ff_m + rr * aa) + slack) * bound_scale;
+  k.disc_error = (17 * u * (rr * (dd_m * dd_m) + s_m * s_m) + slack) * bound_scale;
+  return true;
+}
+
 class Cylinder final : public Shape {
  public:
   // What the accuracy study needs of a cylinder (shapes/ladder_primitives.h).
@@ -237,6 +284,22 @@ struct Cylinder::Ladder {
     using std::sqrt;
     Vec3<T> axis = p[1] / sqrt(dot(p[1], p[1]));
     return cylinder_side_nearest(o, d, p[0], axis, r, t);
+  }
+
+  // The static filter: cylinder_side_bounded's quadratic, its roots enclosed (enclose_roots),
+  // the nearest at t > 0. Its t is its own, not the reference's (which normalizes the axis).
+  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double r,
+                     FilterAnswer& out, double bound_scale) {
+    BoundedQuadratic k;
+    EnclosedRoots roots;
+    if (!cylinder_side_bounded(o, d, p[0], p[1], r, bound_scale, k) || !enclose_roots(k, roots))
+      return false;
+    NearestKept nearest;
+    for (int i = 0; i < roots.count; ++i) {
+      if (!nearest.keep(roots.root[i])) return false;
+    }
+    out = nearest.nearest;
+    return true;
   }
 
   // The sphere's quadratic on the components across the unit axis.

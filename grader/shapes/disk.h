@@ -31,39 +31,49 @@ bool disk_inside(const Vec3<T>& p, const Vec3<T>& center, const T& r) {
 // from r² than a bound that takes in the enclosure's width and every rounding
 // (docs/precision.md). True with the exact decision and t (the reference's own) enclosed in
 // `out`. `bound_scale` multiplies the bounds (see filtered_double).
-// With t̂ the plane's t and δ = t_hi − t_lo ≥ |t̂ − t*| (t* the exact t), each component
-// g_i = (o_i + t̂·d_i) − c_i, rounded three times, is within 2u(|g_i| + |s_i| + |m_i|) + 2δ|d_i|
-// of the exact o_i + t*·d_i − c_i (m_i = t̂·d_i and s_i = o_i + m_i as rounded; 1.01u each would
-// do, the rest covers the bound's own rounding). Then |S − S*| ≤ 4u·S + Σ e_i(2|g_i| + e_i) for
-// S = Σ g_i² (its rounding, γ₃, and the components'), and |r² − r*²| ≤ 2u·r²: the rim test is
-// decided when |S − r²| exceeds their sum by a thousandth (the bound's evaluation rounds fewer
-// than 20 times). r² in [2^-900, 2^900] and finite sums keep the products normal or the
-// underflow's absolute errors (2^-1075 each) far inside the slack u·r² ≥ 2^-953.
+// With t̂ the plane's t and δ ≥ |t̂ − t*| (t* the exact t) twice the half-width of t's enclosure
+// with e taken from quotient_bound (at least x/size, at most twice it: no division waits), each
+// component g_i = (o_i + t̂·d_i) − c_i, rounded three times (m_i = t̂·d_i, s_i = o_i + m_i, g_i),
+// is within e_i = u(|g_i| + |s_i| + |m_i|) + δ|d_i| of the exact o_i + t*·d_i − c_i, and
+// |s_i| + |m_i| ≤ (1 + u)²(|o_i| + 2|t̂||d_i|). So Σ e_i ≤ E = 2u(‖g‖₁ + (1 + 4u)(‖o‖₁ +
+// 2|t̂|‖d‖₁)) + 2δ‖d‖₁ (the doubled constants cover the rounding of E itself), and
+// |Σ g_i² − Σ g*_i²| ≤ Σ e_i(2|g_i| + e_i) ≤ E(2‖g‖₁ + E). S = Σ g_i² carries γ₃ of its own
+// (4u·S) and r² rounds once (2u·r²): the rim test is decided when |S − r²| exceeds their sum by a
+// thousandth (the bound's evaluation rounds fewer than 20 times). r² in [2^-900, 2^900] and
+// finite sums keep the products normal or the underflow's absolute errors (2^-1075 each) far
+// inside the slack u·r² ≥ 2^-953.
 [[gnu::always_inline]] inline bool disk_filter(const Vec3d& o, const Vec3d& d, const Vec3d& center,
                                                const Vec3d& normal, double r, FilterAnswer& out,
                                                double bound_scale) {
   constexpr double u = kUnitRoundoff<double>;
-  FilterAnswer plane;
-  if (!plane_filter(o, d, normal, center, plane, bound_scale)) return false;
-  if (!plane.hit) {
-    out = {};
-    return true;  // behind the origin: a certain miss
-  }
+  PlaneQuotient q;
+  if (!plane_quotient_filter(o, d, normal, center, bound_scale, q)) return false;
+  out = {};
+  if ((q.num < 0) != (q.den < 0)) return true;  // behind the origin: a certain miss
   double rr = r * r;
-  if (!(rr >= kQuotientFloor && rr <= 1 / kQuotientFloor)) return false;
-  double t = plane.t, width = plane.t_hi - plane.t_lo;
-  double s = 0, error = 0;
-  for (int i = 0; i < 3; ++i) {
-    double m = t * d[i], sum = o[i] + m, g = sum - center[i];
-    double e = 2 * u * (std::abs(g) + std::abs(sum) + std::abs(m)) + 2 * width * std::abs(d[i]);
-    s += g * g;
-    error += e * (2 * std::abs(g) + e);
-  }
-  error = 1.001 * (error + 4 * u * s + 2 * u * rr) * bound_scale;
-  if (!(std::isfinite(s) && std::isfinite(error))) return false;
+  double t = q.num / q.den;
+  double o_norm = std::abs(o.x) + std::abs(o.y) + std::abs(o.z);
+  double d_norm = std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
+  // enclose_quotient's half-width, with e at most twice x/size (e ≤ 2τ ≤ 1/8 still), doubled.
+  double width = 2 * std::abs(t) * (1.25 * quotient_bound(q.x, q.size) + 3 * u);
+  // What E takes before g: every term but ‖g‖₁.
+  double e_rest = 2 * u * (1 + 4 * u) * (o_norm + 2 * std::abs(t) * d_norm) + 2 * width * d_norm;
+  Vec3d g = (o + t * d) - center;  // as disk_inside rounds it
+  double s = dot(g, g), g_norm = std::abs(g.x) + std::abs(g.y) + std::abs(g.z);
+  double e = 2 * u * g_norm + e_rest;
+  double error = 1.001 * (e * (2 * g_norm + e) + 4 * u * s + 2 * u * rr) * bound_scale;
   double gap = s - rr;
-  if (!(std::abs(gap) > error)) return false;
-  out = gap < 0 ? plane : FilterAnswer{};
+  // enclose_quotient's range for t, r²'s, finite sums, and the gap beyond its bound; joined
+  // without short circuits.
+  if (!((std::abs(t) >= kQuotientFloor) & (std::abs(t) <= std::numeric_limits<double>::max()) &
+        (rr >= kQuotientFloor) & (rr <= 1 / kQuotientFloor) & (std::abs(gap) > error) &
+        (error <= std::numeric_limits<double>::max()))) {
+    return false;
+  }
+  if (gap < 0) {
+    out.hit = true;
+    return enclose_quotient_within_limit(t, q.x / q.size, 1, out);
+  }
   return true;
 }
 

@@ -38,4 +38,17 @@ inline bool enclose_quotient(double t, double e, int roundings, FilterAnswer& ou
   return true;
 }
 
+// enclose_quotient where the caller has shown e ≤ kQuotientErrorLimit (the plane's filter shows
+// e ≤ kFastPathTolerance without dividing): the same enclosure, without the test of e, so that
+// a decision need not wait for e's division. False when t is too small or not finite.
+inline bool enclose_quotient_within_limit(double t, double e, int roundings, FilterAnswer& out) {
+  constexpr double u = 0x1p-53;
+  if (!(std::abs(t) >= kQuotientFloor && std::isfinite(t))) return false;
+  double width = std::abs(t) * (1.25 * e + (roundings + 2) * u);
+  out.t = t;
+  out.t_lo = t - width;
+  out.t_hi = t + width;
+  return true;
+}
+
 }  // namespace raygrade

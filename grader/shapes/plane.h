@@ -1,6 +1,9 @@
 // Plane: point and normal, or normal and d with n·p + d = 0.
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <optional>
 
 #include "derivation/mistake.h"
@@ -53,52 +56,86 @@ inline std::optional<T> plane_t(const Vec3<T>& o, const Vec3<T>& d, const Vec3<T
   }
 }
 
+// An upper bound on x/size, at most twice it, without dividing: x·2^-E where 2^E ≤ size <
+// 2^(E+1) (E taken at most 1000, which only enlarges the bound), exact for a normal size in
+// [2^-1022, ∞) when x·2^-E neither overflows nor underflows.
+// (The bits go through memcpy, which compilers turn into a move: the WebAssembly toolchain's
+// library has no std::bit_cast.)
+inline double quotient_bound(double x, double size) {
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &size, sizeof bits);
+  std::uint64_t exponent =
+      std::min<std::uint64_t>(bits & 0x7ff0000000000000ull, std::uint64_t(1023 + 1000) << 52);
+  bits = (std::uint64_t(2046) << 52) - exponent;
+  double scale = 0;
+  std::memcpy(&scale, &bits, sizeof scale);
+  return x * scale;
+}
+
 // The plane's static filter: plane_t's fast path with its bounds (above),
 // |den − den*| ≤ 4u·Σ|n_i d_i| and |num − num*| ≤ 5u·Σ|n_i f_i| (docs/precision.md), deciding
 // only where the fast path keeps its t (within kFastPathTolerance), so that its t is the
-// reference's own and the signs of num and den are certain. True with the exact decision and t
-// enclosed in `out`. `bound_scale` multiplies the bounds (see filtered_double). The magnitudes
-// must be at least kQuotientFloor, so that products that underflow (an absolute error of at
-// most 2^-1075 each) stay far inside the bounds' slack, and finite. `n_error` bounds, per
-// component, how far n lies from the normal the decision is about (zero for a given normal; the
-// rounding of a polygon's Newell normal): it adds Σ n_error_i·|d_i| to den's bound and
-// Σ n_error_i·|f_i| (twice, for the rounding of f and of the bound) to num's, and the enlarged
-// bounds, relative to |den| and |num| and summed, must still be within kFastPathTolerance.
-[[gnu::always_inline]] inline bool plane_filter(const Vec3d& o, const Vec3d& d, const Vec3d& n,
-                                                const Vec3d& p, FilterAnswer& out,
-                                                double bound_scale,
-                                                const Vec3d& n_error = Vec3d{}) {
-  constexpr double u = kUnitRoundoff<double>;
+// reference's own and the signs of num and den are certain. `bound_scale` multiplies the bounds
+// (see filtered_double). The magnitudes must be at least kQuotientFloor, so that products that
+// underflow (an absolute error of at most 2^-1075 each) stay far inside the bounds' slack; the
+// test x < τ·size below already fails on every sum that is not finite (x is then infinite or
+// NaN), and it shows e = x/size ≤ τ without dividing (τ·size is exact, and rounding is
+// monotonic). `n_error`, when given, bounds per component how far n lies from the normal the
+// decision is about (the rounding of a polygon's Newell normal): it adds Σ n_error_i·|d_i| to
+// den's bound and Σ n_error_i·|f_i| (twice, for the rounding of f and of the bound) to num's,
+// and the enlarged bounds, relative to |den| and |num| and summed, must still be within τ.
+// True with num, den, and x = num_error·|den| + den_error·|num| and size = |num|·|den| (so
+// that e = x/size bounds num's and den's relative errors, summed) in `q`.
+struct PlaneQuotient {
+  double num, den, x, size;
+};
+[[gnu::always_inline]] inline bool plane_quotient_filter(const Vec3d& o, const Vec3d& d,
+                                                         const Vec3d& n, const Vec3d& p,
+                                                         double bound_scale, PlaneQuotient& q,
+                                                         const Vec3d* n_error = nullptr) {
+  constexpr double u = kUnitRoundoff<double>, tau = kFastPathTolerance<double>;
   Vec3d f = p - o;
   double nd_x = n.x * d.x, nd_y = n.y * d.y, nd_z = n.z * d.z;
   double nf_x = n.x * f.x, nf_y = n.y * f.y, nf_z = n.z * f.z;
   double den = nd_x + nd_y + nd_z, num = nf_x + nf_y + nf_z;
   double den_size = std::abs(nd_x) + std::abs(nd_y) + std::abs(nd_z);
   double num_size = std::abs(nf_x) + std::abs(nf_y) + std::abs(nf_z);
-  if (!(den_size >= kQuotientFloor && num_size >= kQuotientFloor && std::isfinite(den_size) &&
-        std::isfinite(num_size))) {
-    return false;
-  }
   double den_error = 4 * u * den_size * bound_scale, num_error = 5 * u * num_size * bound_scale;
   double size = std::abs(num) * std::abs(den);
-  // Decide as the fast path does, so that t is the reference's own.
-  if (!(num_error * std::abs(den) + den_error * std::abs(num) < kFastPathTolerance<double> * size &&
-        size >= 1 / kFastPathRange<double>)) {
-    return false;
+  double x = num_error * std::abs(den) + den_error * std::abs(num);
+  // Decide as the fast path does, so that t is the reference's own (the clauses joined
+  // without short circuits: each costs less than a branch).
+  constexpr double kLeast = 1 / kFastPathRange<double>;
+  bool decided = (x < tau * size) & (size >= kLeast) & (den_size >= kQuotientFloor) &
+                 (num_size >= kQuotientFloor);
+  if (n_error) {
+    den_error +=
+        (n_error->x * std::abs(d.x) + n_error->y * std::abs(d.y) + n_error->z * std::abs(d.z)) *
+        bound_scale;
+    num_error +=
+        2 * (n_error->x * std::abs(f.x) + n_error->y * std::abs(f.y) + n_error->z * std::abs(f.z)) *
+        bound_scale;
+    x = num_error * std::abs(den) + den_error * std::abs(num);
+    decided &= x < tau * size;
   }
-  den_error += (n_error.x * std::abs(d.x) + n_error.y * std::abs(d.y) + n_error.z * std::abs(d.z)) *
-               bound_scale;
-  num_error += 2 *
-               (n_error.x * std::abs(f.x) + n_error.y * std::abs(f.y) + n_error.z * std::abs(f.z)) *
-               bound_scale;
-  // num_error/|num| + den_error/|den| in one division (its rounding, a few u of e, is inside
-  // the slack of enclose_quotient's 1.25 against 8/7).
-  double e = (num_error * std::abs(den) + den_error * std::abs(num)) / size;
-  if (!(e <= kFastPathTolerance<double>)) return false;
+  q = {num, den, x, size};
+  return decided;
+}
+
+// True with the exact decision and t enclosed in `out`, where plane_quotient_filter decides. The
+// decision does not wait for e's division: e ≤ τ is known (above), and only the enclosure's
+// width takes e = x/size (its rounding, a few u of e, is inside the slack of enclose_quotient's
+// 1.25 against 8/7).
+[[gnu::always_inline]] inline bool plane_filter(const Vec3d& o, const Vec3d& d, const Vec3d& n,
+                                                const Vec3d& p, FilterAnswer& out,
+                                                double bound_scale,
+                                                const Vec3d* n_error = nullptr) {
+  PlaneQuotient q;
+  if (!plane_quotient_filter(o, d, n, p, bound_scale, q, n_error)) return false;
   out = {};
-  if ((num < 0) != (den < 0)) return true;  // t < 0, a certain sign: a miss
+  if ((q.num < 0) != (q.den < 0)) return true;  // t < 0, a certain sign: a miss
   out.hit = true;
-  return enclose_quotient(num / den, e, 1, out);
+  return enclose_quotient_within_limit(q.num / q.den, q.x / q.size, 1, out);
 }
 
 struct AccuracyCase;

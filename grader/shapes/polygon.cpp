@@ -3,6 +3,7 @@
 #include "shapes/polygon.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "math/unit_vector.h"
 #include "sampling/draft.h"
@@ -31,24 +32,84 @@ bool is_convex(const std::vector<Vec3d>& v, const Vec3d& n) {
   return true;
 }
 
+// The bound of d_z² times an edge function, in units of u·(d_z·M)² (polygon_filter).
+constexpr double kPolygonEdgeUlps = 18;
+
+// The crossing count of watertight_polygon for the frame (KX, KY, KZ) (k_z the largest
+// component of D), swapped when flip (d_z < 0), from exact signs: true with the exact count's
+// parity in `inside` when every vertex's sheared y and every edge function lie beyond their
+// bounds (polygon_filter). Compile-time axes: picking a component by a run-time index costs a
+// load through memory for each.
+template <int KX, int KY, int KZ>
+[[gnu::always_inline]] inline bool polygon_crossings(const Vec3d& o, const Vec3d& d, const Vec3d* v,
+                                                     std::size_t k, bool flip, double bound_scale,
+                                                     bool& inside) {
+  constexpr double u = kUnitRoundoff<double>;
+  const double dz = d[KZ], dx = d[KX], dy = d[KY];
+  auto norm1 = [](const Vec3d& w) { return std::abs(w.x) + std::abs(w.y) + std::abs(w.z); };
+  // X = d_z·w_x − d_x·w_z and Y = d_z·w_y − d_y·w_z in the unswapped frame, with w = v − O.
+  const Vec3d w0 = v[0] - o;
+  const double x0 = dz * w0[KX] - dx * w0[KZ], y0 = dz * w0[KY] - dy * w0[KZ];
+  double m = norm1(w0), norms = m;  // norms: NaN or infinite when some w is
+  double xa = x0, ya = y0;
+  double sheared_y = flip ? xa : ya;
+  double least_y = std::abs(sheared_y), least_edge = std::numeric_limits<double>::infinity();
+  bool a_up = (sheared_y > 0) != flip;
+  bool in = false;
+  for (std::size_t i = 1; i <= k; ++i) {
+    double xb = x0, yb = y0;
+    if (i < k) {
+      const Vec3d w = v[i] - o;
+      const double norm = norm1(w);
+      norms += norm;
+      m = std::max(m, norm);
+      xb = dz * w[KX] - dx * w[KZ];
+      yb = dz * w[KY] - dy * w[KZ];
+    }
+    sheared_y = flip ? xb : yb;
+    least_y = std::min(least_y, std::abs(sheared_y));
+    const bool b_up = (sheared_y > 0) != flip;
+    const double e = xa * yb - ya * xb;  // d_z² times the edge function, negated when flip
+    least_edge = std::min(least_edge, std::abs(e));
+    in ^= (a_up != b_up) & (((e > 0) != flip) == b_up);
+    xa = xb;
+    ya = yb;
+    a_up = b_up;
+  }
+  const double nd = std::abs(d.x) + std::abs(d.y) + std::abs(d.z), dm = std::abs(dz) * m;
+  constexpr double kHuge = kFastPathRange<double>, kTiny = 1 / (kHuge * kHuge * kHuge);
+  const double y_bound = 4 * u * nd * m * bound_scale;
+  const double edge_bound = kPolygonEdgeUlps * u * dm * dm * bound_scale;
+  inside = in;
+  return (nd <= kHuge) & (m <= kHuge) & (norms <= kHuge * kHuge) & (y_bound >= kTiny) &
+         (edge_bound >= kTiny) & (least_y > y_bound) & (least_edge > edge_bound);
+}
+
 }  // namespace
 
 // The polygon's static filter (docs/precision.md, "Static filters").
 // - Newell's normal: each of its k terms rounds three times and their sum k − 1 times, so each
 //   component is within γ_(k+2) of the sum of its terms' magnitudes; (k + 4)u covers that, the
 //   rounding of the sum of magnitudes, and k·2^-1074 the terms that underflow.
-// - The sheared test's signs, without its divisions: with w = v − O, the sheared y of a vertex
-//   is (d_z·w_y − d_y·w_z)/d_z and an edge function times d_z² is d_z·(D·(w_a × w_b)) in the
-//   frame (x, y, z), which swapping x and y for d_z < 0 makes D·(w_a × w_b) with the sign of
-//   d_z removed. d_z·w_y − d_y·w_z rounds three times from exact inputs (w, the products, the
-//   difference): within 4u·‖D‖₁·M, M the largest 1-norm of the rounded w; the triple product is
-//   the triangle's, within kTriangleFilterUlps·u·‖D‖₁·M², with the same range.
-bool polygon_filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& v, FilterAnswer& out,
-                    double bound_scale) {
+// - The sheared test's signs, without its divisions: with w = v − O, in the frame (x, y, z) of
+//   watertight_polygon (x and y swapped when d_z < 0), a vertex's sheared coordinates are X/d_z
+//   and Y/d_z with X = d_z·w_x − d_x·w_z, Y = d_z·w_y − d_y·w_z, and an edge function is
+//   (X_a·Y_b − Y_a·X_b)/d_z². X and Y round three times from exact inputs (w, the products, the
+//   difference): within γ₃(|d_z||w_y| + |d_y||w_z|) ≤ 3.01u·|d_z|·M of the exact ones (M the
+//   largest 1-norm of the rounded w; |d_x|, |d_y| ≤ |d_z|), inside the bound 4u·‖D‖₁·M of y.
+//   With |X|, |Y| ≤ (1 + 3.01u)|d_z|·M, each product X_a·Y_b is within 2·3.02u·(d_z·M)² of the
+//   exact one, and the two products and their difference round within 2.01u·2(d_z·M)²: the edge
+//   function times d_z² is within 16.1u·(d_z·M)², and kPolygonEdgeUlps = 18 covers the rounding
+//   of M and of the bound. In the swapped frame the sheared y is X and the edge function is
+//   negated, exactly. The range is the triangle's (‖D‖₁, M at most 2^254, both bounds at least
+//   2^-762, every w finite).
+bool polygon_filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& vertices,
+                    FilterAnswer& out, double bound_scale) {
   constexpr double u = kUnitRoundoff<double>;
   constexpr std::size_t kMaxVertices = std::size_t(1) << 20;  // keeps k·u far below 1
-  const std::size_t k = v.size();
+  const std::size_t k = vertices.size();
   if (k < 3 || k > kMaxVertices) return false;
+  const Vec3d* v = vertices.data();
   // Newell's normal as newell_normal_of computes it, with the magnitudes of its terms.
   Vec3d n{}, terms{};
   for (std::size_t i = 0; i < k; ++i) {
@@ -64,48 +125,23 @@ bool polygon_filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& v,
     terms.z += std::abs(z);
   }
   const double n_ulps = (static_cast<double>(k) + 4) * u, n_underflow = k * 0x1p-1074;
-  Vec3d n_error{n_ulps * terms.x + n_underflow, n_ulps * terms.y + n_underflow,
-                n_ulps * terms.z + n_underflow};
+  const Vec3d n_error{n_ulps * terms.x + n_underflow, n_ulps * terms.y + n_underflow,
+                      n_ulps * terms.z + n_underflow};
   FilterAnswer plane;
-  if (!plane_filter(o, d, n, v[0], plane, bound_scale, n_error)) return false;
+  if (!plane_filter(o, d, n, v[0], plane, bound_scale, &n_error)) return false;
   if (!plane.hit) {
     out = {};
     return true;  // parallel or behind the origin, certainly: a miss
   }
-  // The sheared frame of watertight_polygon.
-  int kz = max_dimension(d);
-  int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-  if (d[kz] < 0) std::swap(kx, ky);
+  const int kz = max_dimension(d);
   const bool flip = d[kz] < 0;
-  auto norm1 = [](const Vec3d& w) { return std::abs(w.x) + std::abs(w.y) + std::abs(w.z); };
-  double m = 0;
-  for (const Vec3d& vertex : v) m = std::max(m, norm1(vertex - o));
-  const double nd = norm1(d);
-  constexpr double kHuge = kFastPathRange<double>, kTiny = 1 / (kHuge * kHuge * kHuge);
-  const double y_bound = 4 * u * nd * m * bound_scale;
-  const double edge_bound = kTriangleFilterUlps * u * nd * m * m * bound_scale;
-  if (!((nd <= kHuge) & (m <= kHuge) & (y_bound >= kTiny) & (edge_bound >= kTiny))) return false;
-  // Is the sheared y of w above zero, certainly? Undecided when within its bound.
-  auto up = [&](const Vec3d& w, bool& certain) {
-    double y = d[kz] * w[ky] - d[ky] * w[kz];
-    certain = std::abs(y) > y_bound;
-    return (y > 0) != flip;
-  };
-  const Vec3d first = v[0] - o;
-  Vec3d a = first;
-  bool certain = true, a_certain = true;
-  bool a_up = up(a, a_certain);
-  bool inside = false;
-  for (std::size_t i = 0; i < k; ++i) {
-    const Vec3d b = i + 1 < k ? v[i + 1] - o : first;
-    bool b_certain = true;
-    bool b_up = up(b, b_certain);
-    double e = dot(d, cross(a, b));
-    certain &= a_certain & (std::abs(e) > edge_bound);
-    inside ^= (a_up != b_up) & ((e > 0) == b_up);
-    a = b;
-    a_up = b_up;
-    a_certain = b_certain;
+  bool inside = false, certain = false;
+  if (kz == 0) {
+    certain = polygon_crossings<1, 2, 0>(o, d, v, k, flip, bound_scale, inside);
+  } else if (kz == 1) {
+    certain = polygon_crossings<2, 0, 1>(o, d, v, k, flip, bound_scale, inside);
+  } else {
+    certain = polygon_crossings<0, 1, 2>(o, d, v, k, flip, bound_scale, inside);
   }
   if (!certain) return false;
   out = inside ? plane : FilterAnswer{};

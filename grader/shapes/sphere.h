@@ -184,9 +184,11 @@ template <typename T>
 [[gnu::noinline]] Roots<T> sphere_roots_slow(const Vec3<T>& o, const Vec3<T>& d,
                                              const Vec3<T>& center, T r) {
   using std::abs, std::sqrt;
-  if constexpr (kErrorFree<T>) {
+  if constexpr (ScalesByPowersOfTwo<T>) {
     if (int k = scale_exponent(d); k < -kRescaleExponent || k > kRescaleExponent)
       return roots_scaled_back(sphere_roots_slow(o, scaled_by_power_of_two(d, -k), center, r), k);
+  }
+  if constexpr (kErrorFree<T>) {
     Vec3<T> f = o - center;
     T a = dot(d, d), ff = dot(f, f), rr = r * r;
     T s2 = length_squared(cross(f, d)), disc = a * rr - s2;
