@@ -161,9 +161,9 @@ struct Capsule::Ladder {
   }
 
   // The static filter: the side's roots from cylinder_side_bounded with the axis b − a, and each
-  // end sphere's from the sphere's fast path (whose quotients are within 2.2τ, as its own filter
-  // takes them), each root enclosed, certainly on its part or not (capsule_height_sign), the
-  // nearest kept at t > 0.
+  // end sphere's from the sphere's fast path (whose quotients are within kFilterError, as its
+  // own filter takes them), each root enclosed, certainly on its part or not (capsule_height_sign),
+  // the nearest kept at t > 0.
   static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double r,
                      FilterAnswer& out, double bound_scale) {
     Vec3d u = p[1] - p[0];
@@ -187,8 +187,8 @@ struct Capsule::Ladder {
       if (fast == FastPath::kMiss) continue;
       double q = stable_q(sphere, std::sqrt(sphere.disc));
       FilterAnswer roots[2];
-      if (!enclose_quotient(sphere.c / q, 2.2 * kFastPathTolerance<double>, 1, roots[0]) ||
-          !enclose_quotient(q / sphere.a, 2.2 * kFastPathTolerance<double>, 1, roots[1])) {
+      if (!enclose_quotient(sphere.c / q, Sphere::Ladder::kFilterError, 1, roots[0]) ||
+          !enclose_quotient(q / sphere.a, Sphere::Ladder::kFilterError, 1, roots[1])) {
         return false;
       }
       for (const FilterAnswer& root : roots) {

@@ -21,23 +21,6 @@ constexpr double kQuotientErrorLimit = 1.0 / 8;
 // come near the subnormals, where relative bounds fail. 2^-900.
 constexpr double kQuotientFloor = 0x1p-900;
 
-// Sets out.t = t and [t_lo, t_hi] around it, where t is the quotient N/D of computed values whose
-// exact values are N(1 + α), D(1 + β) with |α| + |β| ≤ e, rounded `roundings` times after the
-// division. The exact quotient is within (8/7)·e·|N/D| of N/D for e ≤ 1/8 (1.25e is used), and
-// within u per rounding of t; two ulps more cover the rounding of the bounds themselves. False
-// (nothing enclosed) when e is too large or t too small or not finite.
-inline bool enclose_quotient(double t, double e, int roundings, FilterAnswer& out) {
-  constexpr double u = 0x1p-53;
-  if (!(e <= kQuotientErrorLimit && std::abs(t) >= kQuotientFloor && std::isfinite(t))) {
-    return false;
-  }
-  double width = std::abs(t) * (1.25 * e + (roundings + 2) * u);
-  out.t = t;
-  out.t_lo = t - width;
-  out.t_hi = t + width;
-  return true;
-}
-
 // enclose_quotient where the caller has shown e ≤ kQuotientErrorLimit (the plane's filter shows
 // e ≤ kFastPathTolerance without dividing): the same enclosure, without the test of e, so that
 // a decision need not wait for e's division. False when t is too small or not finite.
@@ -49,6 +32,15 @@ inline bool enclose_quotient_within_limit(double t, double e, int roundings, Fil
   out.t_lo = t - width;
   out.t_hi = t + width;
   return true;
+}
+
+// Sets out.t = t and [t_lo, t_hi] around it, where t is the quotient N/D of computed values whose
+// exact values are N(1 + α), D(1 + β) with |α| + |β| ≤ e, rounded `roundings` times after the
+// division. The exact quotient is within (8/7)·e·|N/D| of N/D for e ≤ 1/8 (1.25e is used), and
+// within u per rounding of t; two ulps more cover the rounding of the bounds themselves. False
+// (nothing enclosed) when e is too large or t too small or not finite.
+inline bool enclose_quotient(double t, double e, int roundings, FilterAnswer& out) {
+  return e <= kQuotientErrorLimit && enclose_quotient_within_limit(t, e, roundings, out);
 }
 
 }  // namespace raygrade

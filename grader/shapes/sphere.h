@@ -364,8 +364,10 @@ struct Sphere::Ladder {
     double t = 0;
     if (fast == FastPath::kMiss || !nearest_root(k, std::sqrt(k.disc), t)) return true;
     out.hit = true;
-    return enclose_quotient(t, 2.2 * kFastPathTolerance<double>, 1, out);
+    return enclose_quotient(t, kFilterError, 1, out);
   }
+  // The relative error of either quotient of the fast path's quadratic, q/a or c/q (above).
+  static constexpr double kFilterError = 2.2 * kFastPathTolerance<double>;
 
   // a t² + b t + c = 0 with b = 2 d·(o − c), discriminant b² − 4ac, roots (−b ± √Δ)/2a.
   template <typename T>
