@@ -14,6 +14,7 @@
 #include "assignments/feedback.h"
 #include "assignments/grading.h"
 #include "assignments/handout.h"
+#include "assignments/lms_export.h"
 #include "assignments/roster.h"
 #include "assignments/variants.h"
 #include "core/escape.h"
@@ -208,6 +209,47 @@ TEST(Assignment, WithoutPerStudentNumbersASubmissionNeedNotNameItsStudent) {
   // student's own.
   AssignmentSpec example = load_assignment(kExample);
   EXPECT_TRUE(has_per_student_numbers(example, load_assignment_bank(example).problems));
+}
+
+// The exports that serve one page or one autograder to the whole class refuse only where
+// students' numbers really differ: "per_student": true over a problem without parameters gives
+// everyone the same numbers, so the Gradescope autograder needs no roster and a SCORM package
+// may be made; the example's numbers differ, and both are refused, each for its reason.
+TEST(Assignment, ExportsRefuseOnlyWhereNumbersDiffer) {
+  TempDir dir("same-numbers-export");
+  const std::string bank = std::string(RAYGRADE_SOURCE_DIR) + "/problems";
+  write_text(dir.path() / "fixed.json",
+             R"({"assignment": "fixed", "bank": ")" + bank +
+                 R"(", "variants": {"per_student": true}, "problems": ["sphere-hit"]})");
+  write_text(dir.path() / "raygrade", "not really a binary");
+  write_text(dir.path() / "raygrade.js", "// not really the grader");
+  auto refusal = [&](const std::string& file, auto&& export_it) -> std::string {
+    AssignmentSpec spec = load_assignment(file);
+    AssignmentBank problems = load_assignment_bank(spec);
+    EXPECT_TRUE(problems.errors.empty());
+    try {
+      export_it(spec, problems);
+    } catch (const Error& e) {
+      return e.diagnostic().code;
+    }
+    return "";
+  };
+  auto gradescope = [&](const AssignmentSpec& spec, const AssignmentBank& problems) {
+    EXPECT_FALSE(gradescope_autograder(spec, problems, dir.path() / "raygrade", "").empty());
+  };
+  auto scorm = [&](const AssignmentSpec& spec, const AssignmentBank& problems) {
+    LmsExportInput in;
+    in.spec = &spec;
+    in.bank = &problems;
+    in.grader_js = dir.path() / "raygrade.js";
+    in.scorm_version = "1.2";
+    EXPECT_FALSE(scorm_package(in, (dir.path() / "scorm").string()).files.empty());
+  };
+  const std::string fixed = (dir.path() / "fixed.json").string();
+  EXPECT_EQ(refusal(fixed, gradescope), "");
+  EXPECT_EQ(refusal(fixed, scorm), "");
+  EXPECT_EQ(refusal(kExample, gradescope), "no-roster");
+  EXPECT_EQ(refusal(kExample, scorm), "scorm-per-student");
 }
 
 TEST(Assignment, TheRosterNamesTheStudents) {

@@ -9,6 +9,7 @@
 
 #include "assignments/quiz_export.h"
 #include "assignments/roster.h"
+#include "assignments/variants.h"
 #include "core/atomic_file.h"
 #include "core/escape.h"
 #include "json/cursor.h"
@@ -168,10 +169,10 @@ std::vector<ZipEntry> assignment_files(const AssignmentSpec& spec, const Bank& b
   return entries;
 }
 
-std::vector<ZipEntry> gradescope_autograder(const AssignmentSpec& spec, const Bank& bank,
+std::vector<ZipEntry> gradescope_autograder(const AssignmentSpec& spec, const AssignmentBank& bank,
                                             const std::filesystem::path& binary,
                                             const std::string& roster) {
-  if (spec.per_student && roster.empty()) {
+  if (has_per_student_numbers(spec, bank.problems) && roster.empty()) {
     throw Error(Diagnostic{spec.file, "/variants", 0, 0, Severity::kError,
                            "each student has their own numbers: give --roster (the roster the "
                            "handouts were written from, with each student's email as Gradescope "
@@ -186,7 +187,7 @@ std::vector<ZipEntry> gradescope_autograder(const AssignmentSpec& spec, const Ba
     load_roster(roster);  // read now, so that a faulty roster fails the export, not each upload
     entries.push_back({"roster.csv", read_file_bytes(roster), false});
   }
-  for (auto& e : assignment_files(spec, bank)) entries.push_back(std::move(e));
+  for (auto& e : assignment_files(spec, bank.bank)) entries.push_back(std::move(e));
   return entries;
 }
 
@@ -207,8 +208,7 @@ void write_entries(const std::filesystem::path& folder, const std::vector<ZipEnt
 namespace {
 
 LmsPackage gradescope_package(const LmsExportInput& in, const std::string& out) {
-  std::vector<ZipEntry> entries =
-      gradescope_autograder(*in.spec, in.bank->bank, in.binary, in.roster);
+  std::vector<ZipEntry> entries = gradescope_autograder(*in.spec, *in.bank, in.binary, in.roster);
   LmsPackage p;
   for (const auto& e : entries) p.files.push_back({"autograder/" + e.name, e.bytes, e.executable});
   p.files.push_back({"autograder.zip", zip_archive(entries), false});

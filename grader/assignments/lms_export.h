@@ -43,10 +43,10 @@ std::vector<ZipEntry> assignment_files(const AssignmentSpec& spec, const Bank& b
 // The files of the Gradescope autograder, as paths inside its zip: setup.sh, run_autograder,
 // raygrade (`binary`'s bytes), assignment.json (the assignment with "bank": "bank") and
 // bank/*.json (the files of its bank), and roster.csv when `roster` names one. An assignment
-// whose numbers differ per student needs the roster: it ties each uploading account (by email)
-// to the id its numbers were drawn for. Throws Error when a file cannot be read, the roster is
-// faulty, or a needed roster is missing.
-std::vector<ZipEntry> gradescope_autograder(const AssignmentSpec& spec, const Bank& bank,
+// whose numbers differ per student (has_per_student_numbers) needs the roster: it ties each
+// uploading account (by email) to the id its numbers were drawn for. Throws Error when a file
+// cannot be read, the roster is faulty, or a needed roster is missing.
+std::vector<ZipEntry> gradescope_autograder(const AssignmentSpec& spec, const AssignmentBank& bank,
                                             const std::filesystem::path& binary,
                                             const std::string& roster);
 

@@ -124,7 +124,7 @@ const std::vector<std::string>& scorm_versions() {
 
 LmsPackage scorm_package(const LmsExportInput& in, const std::string& out) {
   const AssignmentSpec& spec = *in.spec;
-  if (spec.per_student) {
+  if (has_per_student_numbers(spec, in.bank->problems)) {
     throw Error(Diagnostic{spec.file, "/variants", 0, 0, Severity::kError,
                            "each student has their own numbers, but a SCORM package is one page "
                            "for the whole class, which cannot know whose numbers to grade: set "
