@@ -256,16 +256,43 @@ TEST(StaticFilter, NeverWrongNearTheBoundary) {
 }
 
 // The checks above can fail: with every bound divided by 2^8 (the cone's by 2^12), the filter
-// decides wrongly on some of the same near-boundary rays. (Halved, the bounds still hold on
-// every ray here: they carry slack, the running bounds of the quadrics most. The plane's are
-// caught from 1/16 on, the cylinder's from 1/64, the triangle's and the capsule's from 1/256,
-// the cone's from 1/4096.)
+// decides wrongly on some of the same near-boundary rays. (Halved, the bounds of all but the
+// box still hold on every ray here: they carry slack, the running bounds of the quadrics most.
+// The plane's and the disk's are caught from 1/16 on, the polygon's and the cylinder's from
+// 1/64, the triangle's and the capsule's from 1/256, the cone's from 1/4096; the box's halved
+// is caught below.)
 TEST(StaticFilter, ABoundTooSmallIsCaught) {
   for (Primitive p : kScaled) {
     double shrink = p == primitive_of<Cone>() ? 0x1p-12 : 0x1p-8;
     Tally t = check(near_boundary_cases(p, 2000, 32), shrink);
     EXPECT_GT(t.wrong, 0) << primitive_name(p);
   }
+}
+
+// A bound halved is caught where the bound is tight: the box's 2.1u(|x| + |y|) is within 5% of
+// the most two slab ends can be off. This ray enters the x slab at t*ₓ = (lo_x − o_x)/d_x just
+// after it leaves the y slab at t*ᵧ = (hi_y − o_y)/d_y, both near 1.5: an exact miss. Its
+// inputs were found by a search for ends whose two roundings (the difference, then the
+// division) each come near their most, the x end's downwards and the y end's upwards, so that
+// the computed ends lie two ulps apart the wrong way round (a gap of 4u against 2.1u·3 ≈ 6.3u
+// at the full bound, 3.15u at half of it). At the full bound the filter leaves the ray to the
+// ladder; at half it certifies a hit, which the MPFR truth refutes.
+TEST(StaticFilter, AHalvedBoundIsCaught) {
+  AccuracyCase c;
+  c.id = "box-ends-two-ulps-the-wrong-way";
+  c.primitive = primitive_of<Box>();
+  c.origin = {-0x1.cf0f9e336e2a8p-2, -0x1.44de32d374468p-2, 0};
+  c.direction = {0x1.55f0650b9bfe9p-1, 0x1.5553b7c790ff9p-1, 1};
+  c.points = {{0x1.1968ec30a8fb1p-1, -0x1.51378cb4dd11ap+0, -10},
+              {0x1.e30f061cc91d6p+2, 0x1.5d969a3fd1e6fp-1, 10}};
+  Truth truth = compute_truth(c, false);
+  ASSERT_FALSE(truth.boundary);
+  EXPECT_FALSE(truth.hit);
+  EXPECT_EQ(check({c}, 1).wrong, 0);
+  EXPECT_FALSE(filtered_double(c, 1).has_value());
+  Tally halved = check({c}, 0.5);
+  EXPECT_EQ(halved.decided, 1);
+  EXPECT_EQ(halved.wrong, 1);
 }
 
 }  // namespace

@@ -62,6 +62,20 @@ Vec3<T> normalized(const Vec3<T>& a) {
   return a / length(a);
 }
 
+// The components' magnitudes, (|a.x|, |a.y|, |a.z|).
+template <typename T>
+Vec3<T> magnitudes(const Vec3<T>& a) {
+  using std::abs;
+  return {abs(a.x), abs(a.y), abs(a.z)};
+}
+
+// The 1-norm |a.x| + |a.y| + |a.z|, which the error bounds of the static filters take.
+template <typename T>
+T norm1(const Vec3<T>& a) {
+  using std::abs;
+  return abs(a.x) + abs(a.y) + abs(a.z);
+}
+
 // Index of the component with the largest magnitude.
 template <typename T>
 int max_dimension(const Vec3<T>& a) {

@@ -57,15 +57,16 @@ template <typename T>
 // t = (b − o)/d is exact when b = o (b − o is then exactly zero), and otherwise, when it is
 // normal and finite, t*(1 + α)(1 + β) with |α|, |β| ≤ u (the difference is exact where it
 // underflows; the quotient does not underflow): |t − t*| ≤ 2.01u|t|, and t has the sign of t*.
-// Two exact values x* < y* are certain when the computed y − x exceeds 4u(|x| + |y|), which
-// covers both errors and the rounding of the test. Every pair of entries, and of exits, must be
-// certain, so that the maximum and the minimum are the exact ones (and the ground truth, which
-// compares them, is decided). A zero direction component makes its slab all or nothing, exactly.
+// Two exact values x* < y* are certain when the computed y − x exceeds 2.1u(|x| + |y|): the two
+// errors take 2.01u(|x| + |y|), and the rounding of y − x and of the bound at most 3u of it. Every
+// pair of entries, and of exits, must be certain, so that the maximum and the minimum are the exact
+// ones (and the ground truth, which compares them, is decided). A zero direction component makes
+// its slab all or nothing, exactly.
 [[gnu::always_inline]] inline bool box_filter(const Vec3d& o, const Vec3d& d, const Vec3d& lo,
                                               const Vec3d& hi, FilterAnswer& out,
                                               double bound_scale) {
   constexpr double u = kUnitRoundoff<double>;
-  const double k = 4 * u * bound_scale;
+  const double k = 2.1 * u * bound_scale;
   auto certain_less = [&](double x, double y) { return y - x > k * (std::abs(x) + std::abs(y)); };
   // x* ≠ y* certain, one way or the other: |y − x| is the same for both (fl(x − y) = −fl(y − x)).
   // The magnitudes come with the values (the range test below takes them anyway).
@@ -192,8 +193,9 @@ struct Box::Ladder {
     return s.hit && nearest_root(Roots<T>{2, s.t_enter, s.t_exit}, t);
   }
 
-  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double /*r*/,
-                     FilterAnswer& out, double bound_scale) {
+  [[gnu::always_inline]] static bool filter(const Vec3d& o, const Vec3d& d,
+                                            const std::vector<Vec3d>& p, double /*r*/,
+                                            FilterAnswer& out, double bound_scale) {
     return box_filter(o, d, p[0], p[1], out, bound_scale);
   }
 

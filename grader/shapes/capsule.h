@@ -164,8 +164,9 @@ struct Capsule::Ladder {
   // end sphere's from the sphere's fast path (whose quotients are within kFilterError, as its
   // own filter takes them), each root enclosed, certainly on its part or not (capsule_height_sign),
   // the nearest kept at t > 0.
-  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double r,
-                     FilterAnswer& out, double bound_scale) {
+  [[gnu::always_inline]] static bool filter(const Vec3d& o, const Vec3d& d,
+                                            const std::vector<Vec3d>& p, double r,
+                                            FilterAnswer& out, double bound_scale) {
     Vec3d u = p[1] - p[0];
     BoundedQuadratic k;
     EnclosedRoots side;

@@ -94,23 +94,26 @@ bool cone_on_side(const ConeSide<T>& k, const T& t) {
 // and v = A − B, rounded differences, count one rounding each: a has n = 16, b/2 17, c 18 and
 // Δ'/(v·v)² 23; the bounds take (n + 1)·u. The root scale is v·v, within 6u of the exact one.
 // The side's own test, −v·v ≤ γ + tα ≤ 0 at a root, needs γ and α: their bounds go in
-// `gamma_error` and `alpha_error`. False when a vector's 1-norm or the radius lies beyond
-// kFilterInputLimit.
+// `gamma_error` and `alpha_error` beside the side and its quadratic. False when a vector's 1-norm
+// or the radius lies beyond kFilterInputLimit.
+struct BoundedConeSide {
+  ConeSide<double> side;
+  BoundedQuadratic k;
+  double gamma_error = 0, alpha_error = 0;
+};
 [[gnu::always_inline]] inline bool cone_side_bounded(const Vec3d& o, const Vec3d& d,
                                                      const Vec3d& apex, const Vec3d& v, double r,
-                                                     double bound_scale, ConeSide<double>& side,
-                                                     BoundedQuadratic& k, double& gamma_error,
-                                                     double& alpha_error) {
-  using std::abs;
+                                                     double bound_scale, BoundedConeSide& out) {
   constexpr double u = kUnitRoundoff<double>;
+  ConeSide<double>& side = out.side;
+  BoundedQuadratic& k = out.k;
   side = cone_side(o, d, apex, v, r);
   const Vec3d& g = side.g;
   // Magnitudes: of D × v and g × v by 1-norms; of m = D × g component by component, since D and
   // g are nearly parallel for a ray aimed at the cone from afar, where the 1-norms would
   // overstate the discriminant's error most.
-  Vec3d v_m{abs(v.x), abs(v.y), abs(v.z)}, d_m{abs(d.x), abs(d.y), abs(d.z)},
-      g_m{abs(g.x), abs(g.y), abs(g.z)};
-  double n_d = d_m.x + d_m.y + d_m.z, n_v = v_m.x + v_m.y + v_m.z, n_g = g_m.x + g_m.y + g_m.z;
+  Vec3d v_m = magnitudes(v), d_m = magnitudes(d), g_m = magnitudes(g);
+  double n_d = norm1(d), n_v = norm1(v), n_g = norm1(g);
   if (!within_filter_limit(n_d, n_v, n_g, r)) return false;
   double dv_m = n_d * n_v, gv_m = n_g * n_v;
   Vec3d m_v{d_m.y * g_m.z + d_m.z * g_m.y, d_m.z * g_m.x + d_m.x * g_m.z,
@@ -128,8 +131,8 @@ bool cone_on_side(const ConeSide<T>& k, const T& t) {
   k.b_error = (18 * u * (vv * (gv_m * dv_m) + rr * (gamma_m * alpha_m)) + slack) * bound_scale;
   k.c_error = (19 * u * (vv * (gv_m * gv_m) + rr * (gamma_m * gamma_m)) + slack) * bound_scale;
   k.disc_error = (24 * u * (rr * vv * mm_m + (vv + rr) * (mv_m * mv_m)) + slack) * bound_scale;
-  gamma_error = (6 * u * gamma_m + slack) * bound_scale;
-  alpha_error = (5 * u * alpha_m + slack) * bound_scale;
+  out.gamma_error = (6 * u * gamma_m + slack) * bound_scale;
+  out.alpha_error = (5 * u * alpha_m + slack) * bound_scale;
   return true;
 }
 
@@ -137,11 +140,12 @@ bool cone_on_side(const ConeSide<T>& k, const T& t) {
 // v·v? 1 or −1 when certain (on it or not), 0 when not. s = γ + tα at r.t is within
 // |γ − γ*| + width·|α| + (|t| + width)·|α − α*| of the exact one, and two roundings
 // (u·(|tα| + |s|)); s + v·v adds 6u·v·v and one rounding. 1.01 covers the bound's own rounding.
-[[gnu::always_inline]] inline int cone_root_on_side(const ConeSide<double>& side,
-                                                    const FilterAnswer& r, double gamma_error,
-                                                    double alpha_error, double bound_scale) {
+[[gnu::always_inline]] inline int cone_root_on_side(const BoundedConeSide& bounded,
+                                                    const FilterAnswer& r, double bound_scale) {
   using std::abs;
   constexpr double u = kUnitRoundoff<double>;
+  const ConeSide<double>& side = bounded.side;
+  double gamma_error = bounded.gamma_error, alpha_error = bounded.alpha_error;
   double width = enclosure_width(r), ta = r.t * side.alpha, s = side.gamma + ta;
   double s_error = 1.01 * (gamma_error + width * abs(side.alpha) +
                            (abs(r.t) + width) * alpha_error + u * bound_scale * (abs(ta) + abs(s)));
@@ -238,15 +242,13 @@ struct Cone::Ladder {
   // The static filter: cone_side_bounded's quadratic, its roots enclosed (enclose_roots), each
   // certainly on the cone or not (cone_root_on_side), the nearest kept at t > 0. Its t is the
   // reference's own (the same coefficients, root and quotients).
-  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double r,
-                     FilterAnswer& out, double bound_scale) {
-    ConeSide<double> side;
-    BoundedQuadratic k;
+  [[gnu::always_inline]] static bool filter(const Vec3d& o, const Vec3d& d,
+                                            const std::vector<Vec3d>& p, double r,
+                                            FilterAnswer& out, double bound_scale) {
+    BoundedConeSide bounded;
     EnclosedRoots roots;
-    double gamma_error = 0, alpha_error = 0;
-    if (!cone_side_bounded(o, d, p[1], Vec3d(p[1] - p[0]), r, bound_scale, side, k, gamma_error,
-                           alpha_error) ||
-        !enclose_roots(k, roots)) {
+    if (!cone_side_bounded(o, d, p[1], Vec3d(p[1] - p[0]), r, bound_scale, bounded) ||
+        !enclose_roots(bounded.k, roots)) {
       return false;
     }
     // The roots in the order of their t, as the reference takes them: it stops at the first
@@ -257,7 +259,7 @@ struct Cone::Ladder {
       const FilterAnswer& root = roots.root[swapped ? 1 - i : i];
       if (root.t_hi < 0) continue;
       if (nearest.nearest.hit && nearest.nearest.t_hi < root.t_lo) break;
-      int on = cone_root_on_side(side, root, gamma_error, alpha_error, bound_scale);
+      int on = cone_root_on_side(bounded, root, bound_scale);
       if (on == 0 || (on > 0 && !nearest.keep(root))) return false;
     }
     out = nearest.nearest;

@@ -185,17 +185,14 @@ template <typename T>
                                                          const Vec3d& base, const Vec3d& axis,
                                                          double r, double bound_scale,
                                                          BoundedQuadratic& k) {
-  using std::abs;
   constexpr double u = kUnitRoundoff<double>;
   Vec3d f = o - base;
   Vec3d dd = cross_fused(d, axis), ff = cross_fused(f, axis), fd = cross_fused(f, d);
   // Magnitudes: of D and F by 1-norms; of s = (f × d)·A component by component, since f and d
   // are nearly parallel for a ray aimed at the cylinder from afar, where the 1-norms would
   // overstate the discriminant's error most.
-  Vec3d d_m{abs(d.x), abs(d.y), abs(d.z)}, f_m{abs(f.x), abs(f.y), abs(f.z)},
-      axis_m{abs(axis.x), abs(axis.y), abs(axis.z)};
-  double n_d = d_m.x + d_m.y + d_m.z, n_f = f_m.x + f_m.y + f_m.z,
-         n_axis = axis_m.x + axis_m.y + axis_m.z;
+  Vec3d d_m = magnitudes(d), f_m = magnitudes(f), axis_m = magnitudes(axis);
+  double n_d = norm1(d), n_f = norm1(f), n_axis = norm1(axis);
   if (!within_filter_limit(n_d, n_f, n_axis, r)) return false;
   double dd_m = n_d * n_axis, ff_m = n_f * n_axis;
   Vec3d fd_m{f_m.y * d_m.z + f_m.z * d_m.y, f_m.z * d_m.x + f_m.x * d_m.z,
@@ -288,8 +285,9 @@ struct Cylinder::Ladder {
 
   // The static filter: cylinder_side_bounded's quadratic, its roots enclosed (enclose_roots),
   // the nearest at t > 0. Its t is its own, not the reference's (which normalizes the axis).
-  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double r,
-                     FilterAnswer& out, double bound_scale) {
+  [[gnu::always_inline]] static bool filter(const Vec3d& o, const Vec3d& d,
+                                            const std::vector<Vec3d>& p, double r,
+                                            FilterAnswer& out, double bound_scale) {
     BoundedQuadratic k;
     EnclosedRoots roots;
     if (!cylinder_side_bounded(o, d, p[0], p[1], r, bound_scale, k) || !enclose_roots(k, roots))

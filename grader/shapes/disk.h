@@ -52,14 +52,14 @@ bool disk_inside(const Vec3<T>& p, const Vec3<T>& center, const T& r) {
   if ((q.num < 0) != (q.den < 0)) return true;  // behind the origin: a certain miss
   double rr = r * r;
   double t = q.num / q.den;
-  double o_norm = std::abs(o.x) + std::abs(o.y) + std::abs(o.z);
-  double d_norm = std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
+  double o_norm = norm1(o);
+  double d_norm = norm1(d);
   // enclose_quotient's half-width, with e at most twice x/size (e ≤ 2τ ≤ 1/8 still), doubled.
   double width = 2 * std::abs(t) * (1.25 * quotient_bound(q.x, q.size) + 3 * u);
   // What E takes before g: every term but ‖g‖₁.
   double e_rest = 2 * u * (1 + 4 * u) * (o_norm + 2 * std::abs(t) * d_norm) + 2 * width * d_norm;
   Vec3d g = (o + t * d) - center;  // as disk_inside rounds it
-  double s = dot(g, g), g_norm = std::abs(g.x) + std::abs(g.y) + std::abs(g.z);
+  double s = dot(g, g), g_norm = norm1(g);
   double e = 2 * u * g_norm + e_rest;
   double error = 1.001 * (e * (2 * g_norm + e) + 4 * u * s + 2 * u * rr) * bound_scale;
   double gap = s - rr;
@@ -140,8 +140,9 @@ struct Disk::Ladder {
     return true;
   }
 
-  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double r,
-                     FilterAnswer& out, double bound_scale) {
+  [[gnu::always_inline]] static bool filter(const Vec3d& o, const Vec3d& d,
+                                            const std::vector<Vec3d>& p, double r,
+                                            FilterAnswer& out, double bound_scale) {
     return disk_filter(o, d, p[0], p[1], r, out, bound_scale);
   }
 

@@ -215,8 +215,9 @@ struct Plane::Ladder {
     return true;
   }
 
-  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double /*r*/,
-                     FilterAnswer& out, double bound_scale) {
+  [[gnu::always_inline]] static bool filter(const Vec3d& o, const Vec3d& d,
+                                            const std::vector<Vec3d>& p, double /*r*/,
+                                            FilterAnswer& out, double bound_scale) {
     return plane_filter(o, d, p[0], p[1], out, bound_scale);
   }
 

@@ -46,7 +46,6 @@ template <int KX, int KY, int KZ>
                                                      bool& inside) {
   constexpr double u = kUnitRoundoff<double>;
   const double dz = d[KZ], dx = d[KX], dy = d[KY];
-  auto norm1 = [](const Vec3d& w) { return std::abs(w.x) + std::abs(w.y) + std::abs(w.z); };
   // X = d_z·w_x − d_x·w_z and Y = d_z·w_y − d_y·w_z in the unswapped frame, with w = v − O.
   const Vec3d w0 = v[0] - o;
   const double x0 = dz * w0[KX] - dx * w0[KZ], y0 = dz * w0[KY] - dy * w0[KZ];
@@ -76,7 +75,7 @@ template <int KX, int KY, int KZ>
     ya = yb;
     a_up = b_up;
   }
-  const double nd = std::abs(d.x) + std::abs(d.y) + std::abs(d.z), dm = std::abs(dz) * m;
+  const double nd = norm1(d), dm = std::abs(dz) * m;
   constexpr double kHuge = kFastPathRange<double>, kTiny = 1 / (kHuge * kHuge * kHuge);
   const double y_bound = 4 * u * nd * m * bound_scale;
   const double edge_bound = kPolygonEdgeUlps * u * dm * dm * bound_scale;

@@ -123,8 +123,9 @@ struct Polygon::Ladder {
     return true;
   }
 
-  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double /*r*/,
-                     FilterAnswer& out, double bound_scale) {
+  [[gnu::always_inline]] static bool filter(const Vec3d& o, const Vec3d& d,
+                                            const std::vector<Vec3d>& p, double /*r*/,
+                                            FilterAnswer& out, double bound_scale) {
     return polygon_filter(o, d, p, out, bound_scale);
   }
 

@@ -355,8 +355,9 @@ struct Sphere::Ladder {
   // c is within τ of c*, and q = −(b + sign(b)√disc) within τ + 2^-44 of q* (√disc within τ, b
   // within 4u|f||d| ≤ 2^-44·|q| since √disc ≥ √(33u/τ)·|f||d|), a within 3u: a quotient error
   // of at most 2.2τ (docs/precision.md). Its bounds are fixed (`bound_scale` is not applied).
-  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double r,
-                     FilterAnswer& out, double /*bound_scale*/) {
+  [[gnu::always_inline]] static bool filter(const Vec3d& o, const Vec3d& d,
+                                            const std::vector<Vec3d>& p, double r,
+                                            FilterAnswer& out, double /*bound_scale*/) {
     Quadratic<double> k;
     FastPath fast = sphere_quadratic_fast(o, d, p[0], r, k);
     if (fast == FastPath::kUndecided) return false;

@@ -80,7 +80,6 @@ template <typename T>
                                                      const Vec3<T>& c, TriangleHit<T>& out,
                                                      T bound_scale = T(1)) {
   using std::abs;
-  auto norm1 = [](const Vec3<T>& v) { return abs(v.x) + abs(v.y) + abs(v.z); };
   auto larger = [](T x, T y) { return x > y ? x : y; };
   Vec3<T> e1 = b - a, e2 = c - a, s = o - a;
   T nd = norm1(d), m = larger(larger(norm1(e1), norm1(e2)), norm1(s));
@@ -265,8 +264,9 @@ struct Triangle::Ladder {
 
   // The static filter: filtered_triangle's exact decision, and its t (the reference's own)
   // enclosed; a decided hit behind the origin (t < 0, a certain sign) is a miss.
-  static bool filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& p, double /*r*/,
-                     FilterAnswer& out, double bound_scale) {
+  [[gnu::always_inline]] static bool filter(const Vec3d& o, const Vec3d& d,
+                                            const std::vector<Vec3d>& p, double /*r*/,
+                                            FilterAnswer& out, double bound_scale) {
     TriangleHit<double> h;
     if (!filtered_triangle(o, d, p[0], p[1], p[2], h, bound_scale)) return false;
     out = {};
