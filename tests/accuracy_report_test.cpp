@@ -51,6 +51,18 @@ TEST(AccuracyReport, TableHasEveryLevelOnEveryPrimitiveAndThePeer) {
   EXPECT_NE(md.find("(accuracy.svg)"), std::string::npos);
 }
 
+// The random sets' share of hits, least and largest, from the truth's counts: 1 of 10 plane
+// rays hit, 7 of 10 sphere rays, 4 of 10 triangle rays.
+TEST(AccuracyReport, SaysHowManyRandomRaysHit) {
+  AccuracyReport r = hand_made_report();
+  r.random_hits = {
+      {primitive_of<Sphere>(), 7}, {primitive_of<Plane>(), 1}, {primitive_of<Triangle>(), 4}};
+  std::string md = render_accuracy_markdown(r, "accuracy.svg");
+  EXPECT_NE(md.find("rays from a few units away, from 10% (plane) to 70% (sphere) of them hits)"),
+            std::string::npos);
+  EXPECT_EQ(md.find("half of them hits"), std::string::npos);
+}
+
 TEST(AccuracyReport, ConclusionsQuoteTheLargestRatiosAndWhere) {
   std::string md = render_accuracy_markdown(hand_made_report(), "accuracy.svg");
   std::size_t conclusions = md.find("## Conclusions");

@@ -258,9 +258,9 @@ TEST(StaticFilter, NeverWrongNearTheBoundary) {
 // The checks above can fail: with every bound divided by 2^8 (the cone's by 2^12), the filter
 // decides wrongly on some of the same near-boundary rays. (Halved, the bounds of all but the
 // box still hold on every ray here: they carry slack, the running bounds of the quadrics most.
-// The plane's and the disk's are caught from 1/16 on, the polygon's and the cylinder's from
-// 1/64, the triangle's and the capsule's from 1/256, the cone's from 1/4096; the box's halved
-// is caught below.)
+// The plane's and the disk's are caught from 1/16 on, the triangle's from 1/32, the polygon's
+// and the cylinder's from 1/64, the capsule's from 1/256, the cone's from 1/4096; the box's
+// halved is caught below.)
 TEST(StaticFilter, ABoundTooSmallIsCaught) {
   for (Primitive p : kScaled) {
     double shrink = p == primitive_of<Cone>() ? 0x1p-12 : 0x1p-8;
@@ -293,6 +293,32 @@ TEST(StaticFilter, AHalvedBoundIsCaught) {
   Tally halved = check({c}, 0.5);
   EXPECT_EQ(halved.decided, 1);
   EXPECT_EQ(halved.wrong, 1);
+}
+
+// The triangle's first bound takes D's scale cubed; the second takes it once, so a direction
+// far longer than the triangle is still decided. The triangle (0,0,0), (1,0,0), (0,1,0) and
+// O = (−0.75, −0.75, 1), D = 2^30·(1, 1, −1): O + t·D meets z = 0 at t = 2^-30, at
+// (0.25, 0.25, 0), inside; from O = (1, 1, 1) the same D meets it at (2, 2, 0), outside. There
+// det = 2^30 against a first bound of 50u·2^90 ≈ 2^42, and a second of 12u·3·2^30·2.5² ≈ 2^-15.
+TEST(StaticFilter, TheTriangleDecidesAFarLongerDirection) {
+  const std::vector<Vec3d> tri = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const Vec3d d = 0x1p30 * Vec3d{1, 1, -1};
+  AccuracyCase hit =
+      make_case("long-hit", "scale", primitive_of<Triangle>(), {-0.75, -0.75, 1}, d, tri);
+  AccuracyCase miss = make_case("long-miss", "scale", primitive_of<Triangle>(), {1, 1, 1}, d, tri);
+  for (const AccuracyCase& c : {hit, miss}) {
+    TriangleHit<double> first;
+    EXPECT_FALSE(filtered_triangle<TriangleBound::kAxes>(c.origin, c.direction, tri[0], tri[1],
+                                                         tri[2], first))
+        << c.id;
+  }
+  std::optional<FilterAnswer> h = filtered_double(hit, 1), m = filtered_double(miss, 1);
+  ASSERT_TRUE(h.has_value());
+  EXPECT_TRUE(h->hit);
+  EXPECT_LE(h->t_lo, 0x1p-30);
+  EXPECT_GE(h->t_hi, 0x1p-30);
+  ASSERT_TRUE(m.has_value());
+  EXPECT_FALSE(m->hit);
 }
 
 }  // namespace

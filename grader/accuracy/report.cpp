@@ -108,6 +108,7 @@ AccuracyReport measure_accuracy(const std::vector<Measured>& levels, int random_
     std::vector<TruthCase> random;
     for (auto& c : random_cases(p, random_count, 1000 + static_cast<int>(p))) {
       Truth t = compute_truth(c, false);
+      report.random_hits[p] += t.hit;
       random.push_back({std::move(c), t});
     }
     std::vector<TruthCase> hard_p;

@@ -35,6 +35,8 @@ struct AccuracyReport {
   std::vector<ReportRow> rows;
   int random_per_primitive = 0;
   std::map<Primitive, int> hard_per_primitive;
+  // Cases of each primitive's random set that the truth hits.
+  std::map<Primitive, int> random_hits;
   std::map<std::string, int> adaptive_levels_hard;  // level name → cases of the hard set
   // Cases the static filter decides, per primitive that has one, of its random and hard sets.
   std::map<Primitive, int> filter_decided_random, filter_decided_hard;

@@ -93,6 +93,18 @@ std::string summary(const AccuracyReport& r, const std::string& level) {
       err(max_error(r, level, false)));
 }
 
+// ", from 8% (triangle) to 92% (plane) of them hits": the least and the largest share of hits
+// in the primitives' random sets; nothing when the report has no count of them.
+std::string random_hit_shares(const AccuracyReport& r) {
+  if (r.random_hits.empty() || r.random_per_primitive <= 0) return "";
+  auto by_count = [](const auto& a, const auto& b) { return a.second < b.second; };
+  auto [least, most] = std::minmax_element(r.random_hits.begin(), r.random_hits.end(), by_count);
+  auto percent = [&](int hits) { return std::lround(100.0 * hits / r.random_per_primitive); };
+  return fmt::format(", from {}% ({}) to {}% ({}) of them hits", percent(least->second),
+                     primitive_name(least->first), percent(most->second),
+                     primitive_name(most->first));
+}
+
 }  // namespace
 
 std::string render_accuracy_markdown(const AccuracyReport& r, const std::string& svg_name) {
@@ -103,7 +115,7 @@ std::string render_accuracy_markdown(const AccuracyReport& r, const std::string&
   md += fmt::format(
       "Every primitive is intersected at every level of the precision ladder, and by the peers "
       "where they apply, on the same rays: a random set of {} ordinary cases per primitive "
-      "(unit-sized objects, rays from a few units away, about half of them hits) and the hard "
+      "(unit-sized objects, rays from a few units away{}) and the hard "
       "set of `tests/data/hard_cases.json` ({} cases: far and huge spheres, grazing and tangent "
       "rays, origins on the surface, rays nearly parallel to a plane, shared edges and vertices, "
       "needle triangles, huge coordinates, tiny and huge direction scales, box slab planes, rays "
@@ -120,7 +132,7 @@ std::string render_accuracy_markdown(const AccuracyReport& r, const std::string&
       "formula alone, called once per case through a pointer, handing t back by reference "
       "(a returned std::optional<double> goes through memory in GCC 12, a stall that would "
       "be counted as part of the formula).\n\n",
-      r.random_per_primitive, hard_total);
+      r.random_per_primitive, random_hit_shares(r), hard_total);
   md += "## The ladder\n\n";
   md += "| level | what it is |\n| --- | --- |\n";
   for (const auto& level : ladder_levels())

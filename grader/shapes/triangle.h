@@ -4,6 +4,10 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <type_traits>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "math/robust.h"
 #include "sampling/outcome.h"
@@ -53,66 +57,121 @@ void snap_edge_functions(T& u, T& v, T& w, const ShearedVertex<T>& a, const Shea
   if (abs(w) <= bound(b, a)) w = T(0);
 }
 
-// The triangle filter's error bound, in units of the unit roundoff u. Each of the filter's
-// quantities is a triple product x·(y × z) of the direction D and the rounded differences
-// e₁ = b − a, e₂ = c − a, s = O − a; each of its six terms carries at most 8 roundings (3
-// differences, 2 products, the cross product's difference, 2 additions of the dot product), so
-// its error is at most γ₈ < 8.001u times the sum of the terms' magnitudes, which is
-// at most the product of the three factors' 1-norms: at most ‖D‖₁·M² for det, U and V, and M³
-// for t's numerator, where M is the largest 1-norm of e₁, e₂ and s. 12 leaves room for the
-// rounding of the norms and of the bound, and for underflow (see filtered_triangle). Derived in
-// docs/precision.md.
-constexpr int kTriangleFilterUlps = 12;
+// The two error bounds the triangle's filter tries, both derived in docs/precision.md. Each of
+// its quantities is a triple product x·(y × z) of three of D and the rounded differences
+// e₁ = b − a, e₂ = c − a, s = O − a, whose six terms x_i·y_j·z_k each carry at most 8 roundings
+// (3 differences; the cross product's product and fused step; the dot product's product and two
+// fused steps): its error is at most γ₈ < 8.001u times Σ|x_i||y_j||z_k|.
+enum class TriangleBound {
+  // 50u·X·Y·Z for all four, X the largest |x-coordinate| of D, e₁, e₂ and s (likewise Y, Z): each
+  // term takes one coordinate of each axis, so Σ ≤ 6·X·Y·Z. Cheap, and tried first; but D's
+  // scale enters it cubed where the quantities have it once, so it leaves rays whose direction
+  // is far longer than the triangle to the second.
+  kAxes,
+  // 12u·‖D‖₁·M² for det, U and V and 12u·M³ for t's numerator, M the largest 1-norm of e₁, e₂
+  // and s: Σ is at most the product of the three 1-norms.
+  kNorms,
+};
+inline constexpr int kTriangleAxesUlps = 50, kTriangleNormsUlps = 12;
 
-// The triangle's static filter: Möller and Trumbore's formulation (JGT 2(1), 1997) with a
-// forward error bound on each quantity that decides. det = e₁·(D × e₂) (zero when the ray is
-// parallel to the plane), the barycentric numerators U = s·(D × e₂), V = D·(s × e₁) and
-// W = det − U − V (weights of b, c and a times det), and t's numerator e₂·(s × e₁). When det and
-// every numerator the decision rests on lie farther from zero than their bounds, their signs are
-// those of exact arithmetic on the same inputs, so the decision is exact: true with `out` set.
-// t is kept when its relative error is within kFastPathTolerance. Otherwise false: the caller
-// runs the sheared test. A decision it makes is never a miss of a closed triangle the ray meets
-// exactly, so mixing the two keeps a mesh watertight (docs/precision.md). `bound_scale`
-// multiplies every bound: 1 but in the test that shows a smaller bound is caught.
+// e₁ = b − a, e₂ = c − a, s = O − a, and the axes' largest magnitudes of D, e₁, e₂ and s (X, Y,
+// Z): the first bound's inputs. In double on x86-64, each vector's x and y in one SSE2 register,
+// which halves the differences, magnitudes and maxima of those two axes (and the loads of the
+// inputs); the values are the same either way.
 template <typename T>
+[[gnu::always_inline]] inline Vec3<T> differences_and_axes(const Vec3<T>& o, const Vec3<T>& d,
+                                                           const Vec3<T>& a, const Vec3<T>& b,
+                                                           const Vec3<T>& c, Vec3<T>& e1,
+                                                           Vec3<T>& e2, Vec3<T>& s) {
+  using std::abs;
+  auto larger = [](T x, T y) { return x > y ? x : y; };
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<T, double>) {
+    static_assert(sizeof(Vec3<double>) == 3 * sizeof(double), "x, y, z contiguous");
+    const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffff));
+    auto xy = [](const Vec3<double>& v) { return _mm_loadu_pd(&v.x); };
+    auto high = [](__m128d v) { return _mm_cvtsd_f64(_mm_unpackhi_pd(v, v)); };
+    __m128d a_xy = xy(a), e1_xy = _mm_sub_pd(xy(b), a_xy), e2_xy = _mm_sub_pd(xy(c), a_xy),
+            s_xy = _mm_sub_pd(xy(o), a_xy);
+    e1 = {_mm_cvtsd_f64(e1_xy), high(e1_xy), b.z - a.z};
+    e2 = {_mm_cvtsd_f64(e2_xy), high(e2_xy), c.z - a.z};
+    s = {_mm_cvtsd_f64(s_xy), high(s_xy), o.z - a.z};
+    __m128d axes =
+        _mm_max_pd(_mm_max_pd(_mm_and_pd(xy(d), magnitude), _mm_and_pd(e1_xy, magnitude)),
+                   _mm_max_pd(_mm_and_pd(e2_xy, magnitude), _mm_and_pd(s_xy, magnitude)));
+    return {_mm_cvtsd_f64(axes), high(axes),
+            larger(larger(abs(d.z), abs(e1.z)), larger(abs(e2.z), abs(s.z)))};
+  }
+#endif
+  e1 = b - a, e2 = c - a, s = o - a;
+  auto axis = [&](T dx, T x1, T x2, T sx) {
+    return larger(larger(abs(dx), abs(x1)), larger(abs(x2), abs(sx)));
+  };
+  return {axis(d.x, e1.x, e2.x, s.x), axis(d.y, e1.y, e2.y, s.y), axis(d.z, e1.z, e2.z, s.z)};
+}
+
+// The triangle's static filter: Möller and Trumbore's formulation (JGT 2(1), 1997), with fused
+// products, and a forward error bound on each quantity that decides. det = e₁·(D × e₂) (zero
+// when the ray is parallel to the plane), the barycentric numerators U = s·(D × e₂),
+// V = D·(s × e₁) and W = det − U − V (weights of b, c and a times det), and t's numerator
+// e₂·(s × e₁). When det and every numerator the decision rests on lie farther from zero than
+// their bounds, their signs are those of exact arithmetic on the same inputs, so the decision is
+// exact: true with `out` set. t is kept when its relative error is within kFastPathTolerance.
+// Otherwise false: the caller tries the other bound, then the sheared test. A decision it makes
+// is never a miss of a closed triangle the ray meets exactly, so mixing the two keeps a mesh
+// watertight (docs/precision.md). `bound_scale` multiplies every bound: 1 but in the test that
+// shows a smaller bound is caught.
+template <TriangleBound Kind, typename T>
 [[gnu::always_inline]] inline bool filtered_triangle(const Vec3<T>& o, const Vec3<T>& d,
                                                      const Vec3<T>& a, const Vec3<T>& b,
                                                      const Vec3<T>& c, TriangleHit<T>& out,
                                                      T bound_scale = T(1)) {
   using std::abs;
   auto larger = [](T x, T y) { return x > y ? x : y; };
-  Vec3<T> e1 = b - a, e2 = c - a, s = o - a;
-  T nd = norm1(d), m = larger(larger(norm1(e1), norm1(e2)), norm1(s));
-  // The bound of det, U and V. Norms at most kFastPathRange (2^254 in double) keep every product
-  // of three finite; a bound at least its cube's inverse keeps the absolute errors of underflow
-  // (at most 2^-1074 an operation) far below the bound's slack.
+  Vec3<T> e1, e2, s;
+  if constexpr (Kind == TriangleBound::kNorms) e1 = b - a, e2 = c - a, s = o - a;
+  // B for det, U and V, and t's numerator's. Magnitudes at most kFastPathRange (2^254 in double)
+  // keep every product of three finite. Both are at least kTiny (2^-762), which the absolute
+  // errors of underflow (at most 2^-1074 an operation) cannot reach; a product that underflows on
+  // the way to a bound leaves it below kTiny (no factor exceeds 2^254, and the constant comes
+  // last), so the floor then holds it.
   constexpr T kHuge = kFastPathRange<T>, kTiny = T(1) / (kHuge * kHuge * kHuge);
-  const T k = T(kTriangleFilterUlps) * kUnitRoundoff<T> * bound_scale;
-  T bound = k * nd * m * m;
-  if (!((nd <= kHuge) & (m <= kHuge) & (bound >= kTiny))) return false;
+  T bound, t_bound;
+  if constexpr (Kind == TriangleBound::kAxes) {
+    auto [x, y, z] = differences_and_axes(o, d, a, b, c, e1, e2, s);
+    if (!(larger(larger(x, y), z) <= kHuge)) return false;
+    bound = t_bound =
+        larger(x * y * z * (T(kTriangleAxesUlps) * kUnitRoundoff<T> * bound_scale), kTiny);
+  } else {
+    T nd = norm1(d), m = larger(larger(norm1(e1), norm1(e2)), norm1(s));
+    if (!(larger(nd, m) <= kHuge)) return false;
+    const T k = T(kTriangleNormsUlps) * kUnitRoundoff<T> * bound_scale;
+    bound = larger(nd * m * m * k, kTiny);
+    t_bound = larger(m * m * m * k, kTiny);
+  }
   // Decide the plane: det's sign, then every numerator taken with that sign (an exact flip).
-  Vec3<T> p = cross(d, e2);
-  T det = dot(e1, p);
+  Vec3<T> p = cross_fused(d, e2);
+  T det = dot_fused(e1, p);
   T abs_det = abs(det);
   if (!(abs_det > bound)) return false;
+  // Edge tests: a numerator certainly of the other sign than det is an exact miss. (Written as a
+  // choice on det's sign, which compiles to a branch that resolves as soon as det is known.)
+  bool positive = det > T(0);
+  T U = dot_fused(s, p);
+  if (positive ? U < -bound : U > bound) return true;
+  Vec3<T> q = cross_fused(s, e1);
+  T V = dot_fused(d, q);
+  if (positive ? V < -bound : V > bound) return true;
+  // W's bound adds the two subtractions' rounding, 2.01u(|det| + |U| + |V|), less than B (at
+  // most 36.3u·X·Y·Z, or 6.01u·‖D‖₁·M²), to the three bounds.
   T sign = std::copysign(T(1), det);
-  // Edge tests: a numerator certainly below zero is an exact miss. W's bound adds the two
-  // subtractions' rounding, 2u(|det| + |U| + |V|) ≤ 6u·‖D‖₁·M² < bound, to the three bounds.
-  T u = sign * dot(s, p);
-  if (u < -bound) return true;
-  Vec3<T> q = cross(s, e1);
-  T v = sign * dot(d, q);
-  if (v < -bound) return true;
-  T w = abs_det - u - v;
+  T u = sign * U, v = sign * V, w = abs_det - u - v;
   if (w < T(-4) * bound) return true;
   if (!((u > bound) & (v > bound) & (w > T(4) * bound))) return false;
   // Compute t: e₂·(s × e₁)/det, kept when both are far from zero next to their bounds.
-  T t_num = dot(e2, q), t_bound = k * m * m * m;
+  T t_num = dot_fused(e2, q);
   constexpr T kTolerance = kFastPathTolerance<T>;
-  if (!((abs(t_num) * kTolerance > t_bound) & (abs_det * kTolerance > bound) &
-        (t_bound >= kTiny))) {
-    return false;
-  }
+  if (!((abs(t_num) * kTolerance > t_bound) & (abs_det * kTolerance > bound))) return false;
   T inv = T(1) / abs_det;
   out.hit = true;
   out.t = sign * t_num * inv;
@@ -189,16 +248,29 @@ template <typename T>
   return out;
 }
 
+// The static filter with the second bound where the first cannot decide, then the sheared
+// watertight test: the reference test's path after its first bound (float and double). Not
+// inlined, so that the first bound's path keeps no frame.
+template <typename T>
+[[gnu::noinline]] TriangleHit<T> triangle_after_axes(const Vec3<T>& o, const Vec3<T>& d,
+                                                     const Vec3<T>& a, const Vec3<T>& b,
+                                                     const Vec3<T>& c) {
+  TriangleHit<T> out;
+  if (filtered_triangle<TriangleBound::kNorms>(o, d, a, b, c, out)) return out;
+  return sheared_triangle(o, d, a, b, c);
+}
+
 // The reference ray-triangle test: in float and double the static filter (filtered_triangle)
-// answers, and the sheared watertight test runs on the few rays it cannot decide; other number
-// types run the sheared test.
+// answers, with its cheap bound and then its other, and the sheared watertight test runs on the
+// few rays it cannot decide; other number types run the sheared test.
 template <typename T>
 [[gnu::always_inline]] inline TriangleHit<T> watertight_triangle(const Vec3<T>& o, const Vec3<T>& d,
                                                                  const Vec3<T>& a, const Vec3<T>& b,
                                                                  const Vec3<T>& c) {
   if constexpr (kErrorFree<T>) {
     TriangleHit<T> out;
-    if (filtered_triangle(o, d, a, b, c, out)) return out;
+    if (filtered_triangle<TriangleBound::kAxes>(o, d, a, b, c, out)) return out;
+    return triangle_after_axes(o, d, a, b, c);
   }
   return sheared_triangle(o, d, a, b, c);
 }
@@ -252,11 +324,31 @@ struct Triangle::Ladder {
   static constexpr bool kMorePoints = false, kRadius = false;
   static constexpr int kDirectionPoint = -1;
 
+  // watertight_triangle: the filter's first bound, and the rest (its second bound, then the
+  // sheared test) a call of its own at the end, so that the first bound's path keeps no frame.
   template <typename T>
   [[gnu::always_inline]] static bool reference(const Vec3<T>& o, const Vec3<T>& d,
                                                const std::vector<Vec3<T>>& p, const T& /*r*/,
                                                T& t) {
-    TriangleHit<T> h = watertight_triangle(o, d, p[0], p[1], p[2]);
+    if constexpr (kErrorFree<T>) {
+      TriangleHit<T> h;
+      if (filtered_triangle<TriangleBound::kAxes>(o, d, p[0], p[1], p[2], h)) {
+        if (!h.hit || !(h.t >= T(0))) return false;
+        t = h.t;
+        return true;
+      }
+    }
+    return reference_after_axes(o, d, p, t);
+  }
+  template <typename T>
+  [[gnu::noinline]] static bool reference_after_axes(const Vec3<T>& o, const Vec3<T>& d,
+                                                     const std::vector<Vec3<T>>& p, T& t) {
+    TriangleHit<T> h;
+    if constexpr (kErrorFree<T>) {
+      h = triangle_after_axes(o, d, p[0], p[1], p[2]);
+    } else {
+      h = sheared_triangle(o, d, p[0], p[1], p[2]);
+    }
     if (!h.hit || !(h.t >= T(0))) return false;
     t = h.t;
     return true;
@@ -268,7 +360,10 @@ struct Triangle::Ladder {
                                             const std::vector<Vec3d>& p, double /*r*/,
                                             FilterAnswer& out, double bound_scale) {
     TriangleHit<double> h;
-    if (!filtered_triangle(o, d, p[0], p[1], p[2], h, bound_scale)) return false;
+    if (!filtered_triangle<TriangleBound::kAxes>(o, d, p[0], p[1], p[2], h, bound_scale) &&
+        !filtered_triangle<TriangleBound::kNorms>(o, d, p[0], p[1], p[2], h, bound_scale)) {
+      return false;
+    }
     out = {};
     if (!h.hit || h.t < 0) return true;
     out.hit = true;
