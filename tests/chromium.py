@@ -37,6 +37,42 @@ def run_browser(browser, args, page):
         return subprocess.run(cmd, capture_output=True, text=True, timeout=120)
 
 
+class PageBrowser:
+    """One headless Chromium, driven by Selenium, that loads page after page: the DOM as
+    Chromium serialises it after the load (what --dump-dom prints) and screenshots at a given
+    window size, without starting a browser for each page. Needs python3-selenium and
+    chromedriver (scripts/install-deps.sh's browser extra)."""
+
+    def __enter__(self):
+        self._profile = tempfile.TemporaryDirectory(prefix="raygrade-chromium-")
+        self.driver = selenium_chromium(self._profile.name)
+        return self
+
+    def __exit__(self, *exc):
+        try:
+            self.driver.quit()
+        finally:
+            self._profile.cleanup()
+
+    def _load(self, page, size):
+        width, height = size
+        self.driver.set_window_size(width, height)
+        self.driver.get("file://" + page)
+
+    def dom(self, page, size=(1200, 1600)):
+        """The page's DOM once loaded, as markup."""
+        self._load(page, size)
+        return self.driver.execute_script(
+            "return new XMLSerializer().serializeToString(document.doctype || '') +"
+            " document.documentElement.outerHTML")
+
+    def screenshot(self, page, path, size=(1000, 1600)):
+        """A screenshot of the page's window at `size` in the PNG file `path`."""
+        self._load(page, size)
+        self.driver.execute_script("document.documentElement.style.overflow = 'hidden'")
+        self.driver.save_screenshot(path)
+
+
 def write_solution_pages(binary, bank, out, formats):
     """Writes the bank's worked solutions in `formats` ("html,json") to OUT/pages and makes
     OUT/screenshots; returns the two folders."""

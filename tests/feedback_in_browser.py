@@ -19,7 +19,7 @@ import shutil
 import subprocess
 import sys
 
-from chromium import SKIPPED, require_chromium, run_browser
+from chromium import SKIPPED, PageBrowser, require_chromium
 
 MARK = "document.documentElement.setAttribute('data-pwned','1')"
 SCRIPT_NAME = "<script>alert(1)</script>"
@@ -83,27 +83,34 @@ def main():
         failures.append("no index.html")
     if len(files) - 1 != len(SUBMISSIONS):
         failures.append(f"{len(files) - 1} pages for {len(SUBMISSIONS)} submissions")
-    saw_script_name = False
-    for name in files:
-        page = os.path.abspath(os.path.join(pages, name))
-        dom = run_browser(browser, ["--dump-dom"], page).stdout
-        problems = check_dom(dom) if dom else ["Chromium returned no DOM"]
-        # The name is text on the page: serialized back as escaped markup.
-        if "&lt;script&gt;alert(1)&lt;/script&gt;" in dom:
-            saw_script_name = True
-        shot = os.path.join(out, name[:-5] + ".png")
-        run_browser(browser, ["--hide-scrollbars", "--window-size=1000,1200",
-                              f"--screenshot={shot}"], page)
-        if not os.path.exists(shot) or os.path.getsize(shot) < 1000:
-            problems.append("no screenshot")
-        print(f"{name}: {'ok' if not problems else '; '.join(problems)}")
-        if problems:
-            failures.append(name)
+    with PageBrowser() as browser:
+        saw_script_name = check_pages(browser, pages, out, files, failures)
     if not saw_script_name:
         print(f"no page shows the name {SCRIPT_NAME} as text")
         failures.append("script-name")
     print(f"screenshots in {out}")
     return 1 if failures else 0
+
+
+def check_pages(browser, pages, out, files, failures):
+    """Loads each page; appends the name of each that fails a check to `failures`; whether a
+    page shows the hostile student name as text."""
+    saw_script_name = False
+    for name in files:
+        page = os.path.abspath(os.path.join(pages, name))
+        dom = browser.dom(page)
+        problems = check_dom(dom) if dom else ["Chromium returned no DOM"]
+        # The name is text on the page: serialized back as escaped markup.
+        if "&lt;script&gt;alert(1)&lt;/script&gt;" in dom:
+            saw_script_name = True
+        shot = os.path.join(out, name[:-5] + ".png")
+        browser.screenshot(page, shot, (1000, 1200))
+        if not os.path.exists(shot) or os.path.getsize(shot) < 1000:
+            problems.append("no screenshot")
+        print(f"{name}: {'ok' if not problems else '; '.join(problems)}")
+        if problems:
+            failures.append(name)
+    return saw_script_name
 
 
 if __name__ == "__main__":

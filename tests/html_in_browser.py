@@ -13,7 +13,7 @@ import os
 import re
 import sys
 
-from chromium import SKIPPED, require_chromium, run_browser, write_solution_pages
+from chromium import SKIPPED, PageBrowser, require_chromium, write_solution_pages
 
 
 def main():
@@ -44,36 +44,41 @@ def main():
             kind += " " + types[solution["id"]]
         chosen.setdefault((kind, solution["methods"][0]["method"]), name[:-5])
     failures = []
-    for (kind, method), base in sorted(chosen.items()):
-        page = os.path.abspath(os.path.join(pages, base + ".html"))
-        with open(page, encoding="utf-8") as f:
-            source = f.read()
-        dom = run_browser(browser, ["--dump-dom"], page).stdout
-        problems = []
-        if not re.search(r"<math[^>]*>\s*<mrow>", dom):
-            problems.append("no MathML formulas in the DOM")
-        if "<svg" not in dom:
-            problems.append("no SVG sketch in the DOM")
-        # The one script a worked solution may have is the 3D view's: its data and the viewer
-        # beside the page (scene_view.js, which `raygrade solutions` writes there).
-        rest = re.sub(r'<script type="application/json" id="scene-[^"]*-data">.*?</script>', "",
-                      source, flags=re.S)
-        rest = rest.replace('<script src="scene_view.js"></script>', "")
-        if re.search(r"<script|<link|<img|<iframe|\bsrc=|url\(", rest):
-            problems.append("refers to a script or an external resource")
-        if re.search(r"https?://(?!www\.w3\.org/2000/svg)", source):
-            problems.append("names a network address")
-        shot = os.path.join(shots, base + ".png")
-        run_browser(browser, ["--hide-scrollbars", "--window-size=1000,1600",
-                              f"--screenshot={shot}"], page)
-        if not os.path.exists(shot) or os.path.getsize(shot) < 1000:
-            problems.append("no screenshot")
-        status = "ok" if not problems else "; ".join(problems)
-        print(f"{kind} / {method}: {base}.html: {status}")
-        if problems:
-            failures.append(base)
+    with PageBrowser() as pages_browser:
+        for (kind, method), base in sorted(chosen.items()):
+            check_page(pages_browser, pages, shots, kind, method, base, failures)
     print(f"screenshots in {shots}")
     return 1 if failures or not chosen else 0
+
+
+def check_page(browser, pages, shots, kind, method, base, failures):
+    """Loads one worked solution; appends its name to `failures` when a check fails."""
+    page = os.path.abspath(os.path.join(pages, base + ".html"))
+    with open(page, encoding="utf-8") as f:
+        source = f.read()
+    dom = browser.dom(page)
+    problems = []
+    if not re.search(r"<math[^>]*>\s*<mrow>", dom):
+        problems.append("no MathML formulas in the DOM")
+    if "<svg" not in dom:
+        problems.append("no SVG sketch in the DOM")
+    # The one script a worked solution may have is the 3D view's: its data and the viewer
+    # beside the page (scene_view.js, which `raygrade solutions` writes there).
+    rest = re.sub(r'<script type="application/json" id="scene-[^"]*-data">.*?</script>', "",
+                  source, flags=re.S)
+    rest = rest.replace('<script src="scene_view.js"></script>', "")
+    if re.search(r"<script|<link|<img|<iframe|\bsrc=|url\(", rest):
+        problems.append("refers to a script or an external resource")
+    if re.search(r"https?://(?!www\.w3\.org/2000/svg)", source):
+        problems.append("names a network address")
+    shot = os.path.join(shots, base + ".png")
+    browser.screenshot(page, shot, (1000, 1600))
+    if not os.path.exists(shot) or os.path.getsize(shot) < 1000:
+        problems.append("no screenshot")
+    status = "ok" if not problems else "; ".join(problems)
+    print(f"{kind} / {method}: {base}.html: {status}")
+    if problems:
+        failures.append(base)
 
 
 if __name__ == "__main__":
