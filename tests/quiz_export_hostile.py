@@ -8,11 +8,13 @@ t = h/dy, worked by hand) names its parameters `answer` (h), `e1` (dy) and `s1` 
 raygrade gives the reference answer, the statement's expressions and the worked solution's
 steps. Its statement holds the platforms' own delimiters as text (`[answer]` and `[e1]` for
 Canvas; `{answer}`, `{s1}` and `{=1+1}` for Moodle, written `{{...}}` in raygrade's template),
-and its title and the assignment's title hold characters XML 1.0 forbids (U+0001, BEL, U+FFFF)
-and a bidi override. Each export is written for 8 sets of numbers, then:
+and a second problem misses in some sets (ox = 6), so some questions lack a set. The assignment
+is exported as written, and again with characters XML 1.0 forbids (U+0001, BEL, U+FFFF) and a
+bidi override in its title and the problem's. Each export is written for 8 sets, then:
 
 - every file is well-formed XML, by xmllint (libxml2) and by Python's parser;
-- the export says on standard error that characters were dropped or replaced;
+- the export says on standard error that characters were dropped or replaced (only the second),
+  and how many sets of `sometimes` have no hit (QuizProblem::lost, shown with the other notes);
 - no two variables of a question (Canvas: vars/var, and the vars of each var_set; Moodle:
   dataset_definitions) share a name;
 - the question text of each set, with the platform's substitution applied as the platform
@@ -43,7 +45,7 @@ QTI = "{http://www.imsglobal.org/xsd/ims_qtiasiv1p2}"
 
 BANK = {"problems": [{
     "id": "clash",
-    "title": "Names\u0001 and\u0007 delimiters \uffff \u202eevil",
+    "title": "Names and delimiters",
     "statement": "Literal [answer], [e1] and {{answer}}, {{s1}}, {{=1+1}}. A ray starts at "
                  "({s1}, 0, 1) with direction (0, {e1}, 0). Where does it meet the plane "
                  "y = {answer}? Twice the height is {2*answer}.",
@@ -60,8 +62,12 @@ BANK = {"problems": [{
      "parameters": {"ox": {"choices": [0, 3, 6], "default": 0}},
      "ray": {"origin": ["=ox", 0, 0], "direction": [0, 0, 1]},
      "object": {"type": "sphere", "center": [0, 0, 10], "radius": 5}}]}
-ASSIGNMENT = {"assignment": "hostile", "title": "Bell\u0007 and \u0001 title", "bank": "bank.json",
+ASSIGNMENT = {"assignment": "hostile", "title": "Names and delimiters", "bank": "bank.json",
               "variants": {"per_student": True, "seed": 7}, "problems": ["clash", "sometimes"]}
+# The same with characters XML 1.0 forbids in the titles (U+0001, BEL, U+FFFF) and a bidi
+# override: exported once more, and checked the same way.
+CONTROLS = {"title": "Names\u0001 and\u0007 delimiters \uffff \u202eevil",
+            "assignment": "Bell\u0007 and \u0001 title"}
 
 # What the statement reads as with a set's numbers x0, dy, h (the delimiters as text).
 STATEMENT = re.compile(
@@ -71,7 +77,7 @@ STATEMENT = re.compile(
 
 
 def well_formed(path):
-    r = subprocess.run(["xmllint", "--noout", path], capture_output=True, text=True)
+    r = subprocess.run(["xmllint", "--noout", path], capture_output=True, text=True, errors="replace")
     check(r.returncode == 0, f"xmllint: {path} is not well-formed: {r.stderr.strip()}")
     try:
         return ET.parse(path)
@@ -112,15 +118,15 @@ def lost_sets(summary, platform):
           f"export {platform} does not say which sets have no hit:\n{summary}")
 
 
-def canvas(raygrade, work):
-    out = os.path.join(work, "canvas")
-    r = subprocess.run([raygrade, "export", "canvas", os.path.join(work, "a.json"), "--sets", "8",
-                        "--out", out], capture_output=True, text=True)
+def canvas(raygrade, work, assignment, controls):
+    out = os.path.join(work, "canvas-" + assignment)
+    r = subprocess.run([raygrade, "export", "canvas", os.path.join(work, assignment), "--sets", "8",
+                        "--out", out], capture_output=True, text=True, errors="replace")
     check(r.returncode == 0, f"export canvas: exit {r.returncode}: {r.stderr}")
-    check("dropped or replaced" in r.stderr,
-          f"export canvas does not say characters were dropped:\n{r.stderr}")
+    check(("dropped or replaced" in r.stderr) == controls,
+          f"export canvas of {assignment} says wrongly whether characters were dropped:\n{r.stderr}")
     lost_sets(r.stderr, "canvas")
-    unpacked = os.path.join(work, "canvas-unpacked")
+    unpacked = os.path.join(work, "canvas-unpacked-" + assignment)
     with zipfile.ZipFile(os.path.join(out, "hostile-canvas-qti.zip")) as z:
         z.extractall(unpacked)
     trees = {}
@@ -176,13 +182,13 @@ def moodle_substitute(text, items):
     return text
 
 
-def moodle(raygrade, work):
-    out = os.path.join(work, "moodle")
-    r = subprocess.run([raygrade, "export", "moodle", os.path.join(work, "a.json"), "--sets", "8",
-                        "--out", out], capture_output=True, text=True)
+def moodle(raygrade, work, assignment, controls):
+    out = os.path.join(work, "moodle-" + assignment)
+    r = subprocess.run([raygrade, "export", "moodle", os.path.join(work, assignment), "--sets", "8",
+                        "--out", out], capture_output=True, text=True, errors="replace")
     check(r.returncode == 0, f"export moodle: exit {r.returncode}: {r.stderr}")
-    check("dropped or replaced" in r.stderr,
-          f"export moodle does not say characters were dropped:\n{r.stderr}")
+    check(("dropped or replaced" in r.stderr) == controls,
+          f"export moodle of {assignment} says wrongly whether characters were dropped:\n{r.stderr}")
     lost_sets(r.stderr, "moodle")
     tree = well_formed(os.path.join(out, "hostile-moodle.xml"))
     if tree is None:
@@ -238,8 +244,15 @@ def main():
             json.dump(BANK, f)
         with open(os.path.join(work, "a.json"), "w", encoding="utf-8") as f:
             json.dump(ASSIGNMENT, f)
-        canvas(raygrade, work)
-        moodle(raygrade, work)
+        bank = json.loads(json.dumps(BANK))
+        bank["problems"][0]["title"] = CONTROLS["title"]
+        with open(os.path.join(work, "controls-bank.json"), "w", encoding="utf-8") as f:
+            json.dump(bank, f)
+        with open(os.path.join(work, "controls.json"), "w", encoding="utf-8") as f:
+            json.dump(dict(ASSIGNMENT, title=CONTROLS["assignment"], bank="controls-bank.json"), f)
+        for assignment, controls in (("a.json", False), ("controls.json", True)):
+            canvas(raygrade, work, assignment, controls)
+            moodle(raygrade, work, assignment, controls)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     print(f"{len(failures)} failures" if failures else "quiz exports of a hostile bank: ok")
