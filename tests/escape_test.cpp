@@ -40,7 +40,8 @@ TEST(Escape, XmlTextIsWhatXml10Allows) {
             "a\xEF\xBF\xBD b\xEF\xBF\xBD c\xEF\xBF\xBD");
   EXPECT_EQ(changed, 2u);
   // A lone surrogate's bytes (U+D800 as CESU-8 would write it) and a byte of Latin-1.
-  EXPECT_EQ(xml_text("\xED\xA0\x80|\xFF|", &changed), "\xEF\xBF\xBD\xEF\xBF\xBD\xEF\xBF\xBD|\xEF\xBF\xBD|");
+  EXPECT_EQ(xml_text("\xED\xA0\x80|\xFF|", &changed),
+            "\xEF\xBF\xBD\xEF\xBF\xBD\xEF\xBF\xBD|\xEF\xBF\xBD|");
   EXPECT_EQ(changed, 4u);
   // Kept: the last character below the surrogates, the first above them, and one above U+FFFF.
   EXPECT_EQ(xml_text("\xED\x9F\xBF\xEE\x80\x80\xF0\x9F\x98\x80", &changed),

@@ -121,8 +121,8 @@ namespace {
 // Canvas's NON_ASSIGNMENT_COLUMN_HEADERS (app/models/gradebook_importer.rb): a column whose title
 // contains one of them is not read as an assignment.
 constexpr std::string_view kCanvasNonAssignmentWords[] = {
-    "Current Score",  "Current Points", "Current Grade",  "Final Score",    "Final Points",
-    "Final Grade",    "Override Score", "Override Grade", "Override Status"};
+    "Current Score", "Current Points", "Current Grade",  "Final Score",    "Final Points",
+    "Final Grade",   "Override Score", "Override Grade", "Override Status"};
 
 bool all_digits(std::string_view s) {
   return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });

@@ -67,8 +67,7 @@ std::string moodle_question_html(const QuizProblem& q, const QuizPart& part) {
 // The worked solution with each set's own numbers, where every set's solution has the same
 // steps; else where to find it.
 std::string moodle_feedback_html(const QuizProblem& q, const QuizPart& part) {
-  std::string out =
-      fmt::format("<p>The answer: {}.</p>\n", moodle_wildcard(q.answer_variable));
+  std::string out = fmt::format("<p>The answer: {}.</p>\n", moodle_wildcard(q.answer_variable));
   if (q.steps.empty()) {
     return out +
            "<p>The worked solution differs from set to set: `raygrade solve` with the "

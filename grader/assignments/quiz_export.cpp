@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -377,9 +377,9 @@ Quiz build_quiz(const AssignmentSpec& spec, const AssignmentBank& bank,
     for (const Problem* s : sets) answers.push_back(s->task->answer());
     std::vector<Asked> asked = asked_numbers(form, answers, q.lost);
     if (asked.empty()) {
-      quiz.notes.push_back(xml_text(
-          fmt::format("{} is left out: its answer form asks no number ({})", base.id,
-                      q.lost.empty() ? std::string("no input") : q.lost.front())));
+      quiz.notes.push_back(
+          xml_text(fmt::format("{} is left out: its answer form asks no number ({})", base.id,
+                               q.lost.empty() ? std::string("no input") : q.lost.front())));
       continue;
     }
 

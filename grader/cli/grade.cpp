@@ -44,7 +44,7 @@ struct GradeCliOptions {
   std::string moodle_worksheet;     // Moodle's grading worksheet: filled in, or names the zip
   std::optional<std::string> canvas_assignment_id;  // csv-canvas: the column's assignment id
   std::optional<std::string> blackboard_column_id;  // csv-blackboard: the column's Column ID
-  unsigned jobs = 0;                // threads that grade (0: one per core)
+  unsigned jobs = 0;                                // threads that grade (0: one per core)
 };
 
 // A progress bar on standard error, only when it is a terminal.
@@ -239,8 +239,7 @@ class GradeOutput {
         for (const auto& n : notes)
           fmt::print(stderr, "raygrade grade: warning: {}\n", printable(n));
       } else {
-        csv() << (platform_book_ ? class_book_->platform_csv(format_.name, setup_.title,
-                                                             column_id_)
+        csv() << (platform_book_ ? class_book_->platform_csv(format_.name, setup_.title, column_id_)
                                  : class_book_->csv());
       }
       for (const auto& c : class_book_->choices())
@@ -386,9 +385,9 @@ int run_grade(const GradeCliOptions& o) {
     return usage("--blackboard-column-id goes with --format csv-blackboard");
   for (const auto* id : {&o.canvas_assignment_id, &o.blackboard_column_id}) {
     if (*id && (*id)->empty())
-      return usage(fmt::format("{} is empty: give the platform's id of the column (digits)",
-                               id == &o.canvas_assignment_id ? "--canvas-assignment-id"
-                                                             : "--blackboard-column-id"));
+      return usage(fmt::format(
+          "{} is empty: give the platform's id of the column (digits)",
+          id == &o.canvas_assignment_id ? "--canvas-assignment-id" : "--blackboard-column-id"));
   }
   if (!o.pick.empty() && o.roster.empty())
     return usage("--pick chooses among a roster student's submissions: it needs --roster");
@@ -406,7 +405,8 @@ int run_grade(const GradeCliOptions& o) {
   if (format->layout == GradeLayout::kClassGradebook && setup.worksheet.empty()) {
     ColumnCheck column = check_platform_column(o.format, setup.title, column_id);
     if (!column.error.empty()) return usage(column.error);
-    if (!column.warning.empty()) fmt::print(stderr, "raygrade grade: warning: {}\n", column.warning);
+    if (!column.warning.empty())
+      fmt::print(stderr, "raygrade grade: warning: {}\n", column.warning);
   }
   std::vector<Diagnostic> errors;
   std::vector<BulkSubmission> bulk;
