@@ -28,6 +28,28 @@ TEST(Escape, XmlDropsControlsAndRepairsUtf8) {
   EXPECT_EQ(xml_escape("√"), "√");
 }
 
+// XML 1.0's Char (production 2): tab, line feed, carriage return, U+0020 to U+D7FF, U+E000 to
+// U+FFFD and U+10000 up; a lone surrogate cannot be in UTF-8 at all. Everything else is dropped
+// (controls) or becomes U+FFFD (bytes that are no character, the noncharacters U+FFFE, U+FFFF),
+// and counted.
+TEST(Escape, XmlTextIsWhatXml10Allows) {
+  std::size_t changed = 0;
+  EXPECT_EQ(xml_text("T\x01itle\x07 tab\t line\n", &changed), "Title tab\t line\n");
+  EXPECT_EQ(changed, 2u);
+  EXPECT_EQ(xml_text("a\xEF\xBF\xBE b\xEF\xBF\xBF c\xEF\xBF\xBD", &changed),
+            "a\xEF\xBF\xBD b\xEF\xBF\xBD c\xEF\xBF\xBD");
+  EXPECT_EQ(changed, 2u);
+  // A lone surrogate's bytes (U+D800 as CESU-8 would write it) and a byte of Latin-1.
+  EXPECT_EQ(xml_text("\xED\xA0\x80|\xFF|", &changed),
+            "\xEF\xBF\xBD\xEF\xBF\xBD\xEF\xBF\xBD|\xEF\xBF\xBD|");
+  EXPECT_EQ(changed, 4u);
+  // Kept: the last character below the surrogates, the first above them, and one above U+FFFF.
+  EXPECT_EQ(xml_text("\xED\x9F\xBF\xEE\x80\x80\xF0\x9F\x98\x80", &changed),
+            "\xED\x9F\xBF\xEE\x80\x80\xF0\x9F\x98\x80");
+  EXPECT_EQ(changed, 0u);
+  EXPECT_EQ(xml_escape("\xEF\xBF\xBF<"), "\xEF\xBF\xBD&lt;");
+}
+
 TEST(Escape, MarkdownKeepsTextOnItsLine) {
   EXPECT_EQ(markdown_escape("**bold** [x](javascript:alert(1))"),
             "\\*\\*bold\\*\\* \\[x\\]\\(javascript:alert\\(1\\)\\)");

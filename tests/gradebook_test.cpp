@@ -135,6 +135,111 @@ TEST_F(Gradebook, EachPlatformsImportLayout) {
   EXPECT_NE(r.err.find("needs --assignment and --roster"), std::string::npos) << r.err;
 }
 
+// What Canvas's gradebook importer does with a column title (tests/data/gradebook/README.md):
+// with --canvas-assignment-id the column is "Title (id)", matched by the id; a title Canvas
+// would read as another assignment's id, or drop for a word of its own columns, is refused
+// before anything is graded, as is an id that is not a number.
+TEST_F(Gradebook, CanvasReadsTheColumnAsMeant) {
+  auto canvas = [&](const std::string& extra) {
+    return run_raygrade(fmt::format("grade --assignment hw.json --roster roster.csv subs "
+                                    "--format csv-canvas --now 2026-12-01T00:00:00Z {}",
+                                    extra),
+                        dir_.path());
+  };
+  auto r = canvas("--canvas-assignment-id 4711");
+  EXPECT_EQ(r.exit_code, 2) << r.err;  // Barbara's file is rejected
+  EXPECT_EQ(r.out, read_text(kData / "canvas-assignment-id.csv")) << r.err;
+  for (const char* id : {"47a", "", "4 7", "\xEF\xBC\x94\xEF\xBC\x97"}) {  // ４７: not ASCII
+    auto bad = canvas(fmt::format("--canvas-assignment-id '{}'", id));
+    EXPECT_EQ(bad.exit_code, 2) << id;
+    EXPECT_EQ(bad.out, "") << id;
+    EXPECT_NE(bad.err.find("--canvas-assignment-id"), std::string::npos) << id << bad.err;
+  }
+  auto other = run_raygrade(
+      "grade --assignment hw.json --roster roster.csv subs --format csv-moodle "
+      "--canvas-assignment-id 4711",
+      dir_.path());
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("--canvas-assignment-id goes with --format csv-canvas"),
+            std::string::npos)
+      << other.err;
+
+  // "Lab (2)" is read as the assignment of id 2: refused without an id, taken with one (the
+  // importer's greedy title then keeps "Lab (2)" and reads 4711).
+  testing::write_class_assignment(dir_.path(), "Lab (2)");
+  auto lab = canvas("");
+  EXPECT_EQ(lab.exit_code, 2);
+  EXPECT_EQ(lab.out, "");
+  EXPECT_NE(lab.err.find("Canvas reads the title \"Lab (2)\" as the assignment of id 2"),
+            std::string::npos)
+      << lab.err;
+  auto lab_id = canvas("--canvas-assignment-id 4711");
+  EXPECT_NE(lab_id.out.find(",Lab (2) (4711)\n"), std::string::npos) << lab_id.out << lab_id.err;
+  // A title without the space before "(" is not read as an id.
+  testing::write_class_assignment(dir_.path(), "Lab(2)");
+  EXPECT_NE(canvas("").out.find(",Lab(2)\n"), std::string::npos);
+
+  // Each of NON_ASSIGNMENT_COLUMN_HEADERS, anywhere in the title, even with an id; a
+  // different case is kept (the importer's match is case-sensitive).
+  for (const char* words :
+       {"Current Score", "Current Points", "Current Grade", "Final Score", "Final Points",
+        "Final Grade", "Override Score", "Override Grade", "Override Status"}) {
+    testing::write_class_assignment(dir_.path(), fmt::format("Rays: {} check", words));
+    auto dropped = canvas("--canvas-assignment-id 4711");
+    EXPECT_EQ(dropped.exit_code, 2) << words;
+    EXPECT_EQ(dropped.out, "") << words;
+    EXPECT_NE(dropped.err.find(fmt::format("contains \"{}\"", words)), std::string::npos)
+        << words << ": " << dropped.err;
+  }
+  testing::write_class_assignment(dir_.path(), "Rays: final grade check");
+  EXPECT_NE(canvas("").out.find(",Rays: final grade check\n"), std::string::npos);
+}
+
+// Blackboard's documented upload layout (tests/data/gradebook/README.md): every field quoted;
+// with --blackboard-column-id the column is matched by its Column ID, and without one the upload
+// makes a new text column, which the grader is told. A title holding '|' (where Blackboard's
+// Column ID starts) is refused.
+TEST_F(Gradebook, BlackboardQuotesEveryFieldAndMatchesTheColumnId) {
+  auto blackboard = [&](const std::string& extra) {
+    return run_raygrade(fmt::format("grade --assignment hw.json --roster roster.csv subs "
+                                    "--format csv-blackboard --now 2026-12-01T00:00:00Z {}",
+                                    extra),
+                        dir_.path());
+  };
+  auto r = blackboard("--blackboard-column-id 123456");
+  EXPECT_EQ(r.exit_code, 2) << r.err;  // Barbara's file is rejected
+  EXPECT_EQ(r.out, read_text(kData / "blackboard-column-id.csv")) << r.err;
+  EXPECT_EQ(r.err.find("new text column"), std::string::npos) << r.err;
+  auto bare = blackboard("");
+  EXPECT_EQ(bare.out, read_text(kData / "blackboard.csv"));
+  EXPECT_NE(bare.err.find("warning: without --blackboard-column-id, Blackboard adds the column as "
+                          "a new text column"),
+            std::string::npos)
+      << bare.err;
+  auto bad = blackboard("--blackboard-column-id 12x");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.out, "");
+  auto other = run_raygrade(
+      "grade --assignment hw.json --roster roster.csv subs --format csv-canvas "
+      "--blackboard-column-id 123456",
+      dir_.path());
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("--blackboard-column-id goes with --format csv-blackboard"),
+            std::string::npos)
+      << other.err;
+  testing::write_class_assignment(dir_.path(), "Rays |99");
+  auto pipe = blackboard("--blackboard-column-id 123456");
+  EXPECT_EQ(pipe.exit_code, 2);
+  EXPECT_EQ(pipe.out, "");
+  EXPECT_NE(pipe.err.find("'|'"), std::string::npos) << pipe.err;
+  // A quotation mark in a field is doubled inside the quotes; a formula stays text.
+  testing::write_class_assignment(dir_.path(), R"(=Rays \"quoted\")");
+  auto quoted = blackboard("--blackboard-column-id 123456");
+  EXPECT_NE(quoted.out.find(R"("'=Rays ""quoted"" [Total Pts: 5 Score] |123456")"),
+            std::string::npos)
+      << quoted.out << quoted.err;
+}
+
 // Moodle's grading worksheet as downloaded (moodle-worksheet.csv, written by hand in Moodle's
 // columns): each row found by its email (in any case) gets its student's total from the table of
 // the README; a row of no roster student stays as it was, and Donald, who has no row, is named.

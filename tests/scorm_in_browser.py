@@ -10,7 +10,9 @@ gives, presses each Check, and the LMS holds score 100 and "passed" (SCORM 1.2),
 "passed" and "completed" (2004); with the plane's t wrong it holds 50 and "incomplete" (2004:
 success "unknown"). The LMS's data (scorm-again's renderCommitCMI) loaded into a fresh LMS
 page brings the answers and attempts back, with the browser's own storage cleared first
-(resume from cmi.suspend_data). The page opened from file://, with no LMS, still grades.
+(resume from cmi.suspend_data). Stored data the page never wrote (null where answers go, a
+prototype key, text that is not JSON) is ignored: the page still grades and sends the score.
+The page opened from file://, with no LMS, still grades.
 imsmanifest.xml is checked with xmllint: well-formed always; against the SCORM 1.2 and 2004
 schemas when RAYGRADE_SCHEMAS (default ../shared/schemas beside the repository) holds them
 (scorm12/, scorm2004/), saying which ran.
@@ -314,6 +316,26 @@ def run_version(driver, unpacked, version, answers):
         check(got == want, f"SCORM {version}: one wrong t sent {got}, not {want}")
         print(f"SCORM {version}: one wrong answer: score {got[0]}, {got[1]} "
               f"(the page: {', '.join(scores(driver))})")
+
+        # Stored data this page never wrote (an older page's, or anyone's who can set
+        # cmi.suspend_data): the page still opens, grades and reports the score. The first threw
+        # inside the LMS script, and no score was ever sent again (issue 47).
+        for hostile in ('{"v":1,"i":{"x":null}}', '{"v":1,"i":{},"p":{"p":null},"r":"x"}',
+                        '{"v":1,"i":{"":{"__proto__":{"polluted":"1"}}}}', "not JSON"):
+            cmi = lms.kept()
+            cmi["suspend_data"] = hostile
+            if v12:
+                cmi["core"]["entry"] = "resume"
+            else:
+                cmi["entry"] = "resume"
+            lms.launch(cmi)
+            linked = driver.execute_script("return !!window.raygradeLms")
+            check(linked, f"SCORM {version}: suspend_data {hostile!r} cut the page from the LMS")
+            type_and_check(driver, texts)
+            got = lms.value(raw)
+            check(got == "100", f"SCORM {version}: with suspend_data {hostile!r} the right answers "
+                  f"sent {got}, not 100: {feedback(driver)}")
+        print(f"SCORM {version}: hostile suspend_data ignored, the score still sent")
     finally:
         driver.switch_to.default_content()
         server.shutdown()

@@ -74,13 +74,30 @@ int canvas_answer_decimals(const QuizPart& part) {
   return std::clamp(static_cast<int>(std::ceil(-std::log10(smallest))) + 1, 0, 10);
 }
 
+// Text in a question's HTML: escaped, and each '[' written "<span>[</span>". Canvas puts a
+// variable's value in place of every "[name]" of the stored question text (a regular expression
+// per variable of the set drawn, Quizzes::Quiz#generate_submission_question), so no bracket of
+// the text may be followed by a name and ']' in the HTML; an entity (&#91;) would not do, as
+// the importer's HTML sanitizer writes the text out again with the bracket as a character.
+std::string canvas_text(std::string_view s) {
+  std::string out;
+  for (char c : html_escape(s)) {
+    if (c == '[') {
+      out += "<span>[</span>";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 std::string canvas_question_html(const QuizProblem& q, const QuizPart& part) {
   std::string statement;
   for (const QuizText& t : q.statement) {
-    statement += t.variable.empty() ? html_escape(t.text) : "[" + t.variable + "]";
+    statement += t.variable.empty() ? canvas_text(t.text) : "[" + t.variable + "]";
   }
   return fmt::format("<p>{}</p>\n<p>Give {}.</p>\n<p>An answer {} counts as right.</p>", statement,
-                     html_escape(part.label), html_escape(quiz_tolerance_text(part.tolerance)));
+                     canvas_text(part.label), canvas_text(quiz_tolerance_text(part.tolerance)));
 }
 
 void canvas_item(pugi::xml_node section, const QuizProblem& q, const QuizPart& part) {
@@ -128,7 +145,7 @@ void canvas_item(pugi::xml_node section, const QuizProblem& q, const QuizPart& p
   pugi::xml_node formulas = calculated.append_child("formulas");
   formulas.append_attribute("decimal_places") = canvas_answer_decimals(part);
   // The answer is a variable of its own: the formula gives back raygrade's reference answer.
-  formulas.append_child("formula").text().set("answer");
+  formulas.append_child("formula").text().set(q.answer_variable.c_str());
   pugi::xml_node vars = calculated.append_child("vars");
   auto add_var = [&](const std::string& name, int scale, double lo, double hi) {
     pugi::xml_node v = vars.append_child("var");
@@ -144,7 +161,7 @@ void canvas_item(pugi::xml_node section, const QuizProblem& q, const QuizPart& p
     add_var(v.name, v.decimals, *lo, *hi);
   }
   auto [lo, hi] = std::minmax_element(part.answers.begin(), part.answers.end());
-  add_var("answer", canvas_answer_decimals(part), *lo, *hi);
+  add_var(q.answer_variable, canvas_answer_decimals(part), *lo, *hi);
   pugi::xml_node sets = calculated.append_child("var_sets");
   for (std::size_t k = 0; k < part.sets.size() && k < kCanvasMaxSets; ++k) {
     std::size_t s = part.sets[k];
@@ -156,7 +173,7 @@ void canvas_item(pugi::xml_node section, const QuizProblem& q, const QuizPart& p
       x.text().set(quiz_number(v.values[s]).c_str());
     }
     pugi::xml_node x = vs.append_child("var");
-    x.append_attribute("name") = "answer";
+    x.append_attribute("name") = q.answer_variable.c_str();
     x.text().set(quiz_number(part.answers[k]).c_str());
     vs.append_child("answer").text().set(quiz_number(part.answers[k]).c_str());
   }

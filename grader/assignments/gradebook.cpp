@@ -116,7 +116,101 @@ std::optional<double> RosterGradebook::max_score() const {
   return std::nullopt;
 }
 
-std::string RosterGradebook::platform_csv(std::string_view layout, const std::string& title) const {
+namespace {
+
+// Canvas's NON_ASSIGNMENT_COLUMN_HEADERS (app/models/gradebook_importer.rb): a column whose title
+// contains one of them is not read as an assignment.
+constexpr std::string_view kCanvasNonAssignmentWords[] = {
+    "Current Score", "Current Points", "Current Grade",  "Final Score",    "Final Points",
+    "Final Grade",   "Override Score", "Override Grade", "Override Status"};
+
+bool all_digits(std::string_view s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// Ruby's \s: space, tab, line feed, vertical tab, form feed, carriage return.
+bool ruby_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
+
+// The id Canvas's Assignment.title_and_id reads at the end of a title (/\A(.*)\s\((\d+)\)\z/),
+// or "".
+std::string canvas_title_id(std::string_view title) {
+  if (title.size() < 4 || title.back() != ')') return "";
+  std::size_t open = title.rfind('(');
+  if (open == std::string_view::npos || open == 0 || !ruby_space(title[open - 1])) return "";
+  std::string_view digits = title.substr(open + 1, title.size() - open - 2);
+  // (.*) matches no line break: the id must be on the title's only line.
+  if (!all_digits(digits) || title.substr(0, open).find('\n') != std::string_view::npos) return "";
+  return std::string(digits);
+}
+
+// A field in quotation marks, as Blackboard's upload wants every field: the text csv_cell writes
+// (control characters as \xNN, a formula neutralised), its quotation marks doubled.
+std::string quoted_cell(std::string_view s) {
+  std::string v = printable(s);
+  if (!v.empty() && (v[0] == '=' || v[0] == '+' || v[0] == '-' || v[0] == '@')) {
+    v.insert(v.begin(), '\'');
+  }
+  std::string out = "\"";
+  for (char c : v) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+ColumnCheck check_platform_column(std::string_view layout, const std::string& title,
+                                  const std::string& column_id) {
+  ColumnCheck c;
+  if (layout == "csv-canvas") {
+    if (!column_id.empty() && !all_digits(column_id)) {
+      c.error = fmt::format("--canvas-assignment-id '{}' is not a Canvas assignment id (digits)",
+                            printable(column_id));
+      return c;
+    }
+    for (std::string_view words : kCanvasNonAssignmentWords) {
+      if (title.find(words) != std::string::npos) {
+        c.error = fmt::format(
+            "the assignment's title \"{}\" contains \"{}\": Canvas's gradebook import drops "
+            "such a column as one of its own totals; give the assignment another title",
+            printable(title), words);
+        return c;
+      }
+    }
+    std::string id = canvas_title_id(title);
+    if (column_id.empty() && !id.empty()) {
+      c.error = fmt::format(
+          "Canvas reads the title \"{}\" as the assignment of id {}: give the assignment's "
+          "Canvas id with --canvas-assignment-id (the column is then \"Title (id)\"), or "
+          "another title",
+          printable(title), id);
+    }
+  } else if (layout == "csv-blackboard") {
+    if (!column_id.empty() && !all_digits(column_id)) {
+      c.error = fmt::format("--blackboard-column-id '{}' is not a Blackboard Column ID (digits)",
+                            printable(column_id));
+      return c;
+    }
+    if (title.find('|') != std::string::npos) {
+      c.error = fmt::format(
+          "the assignment's title \"{}\" holds '|', where Blackboard reads a column's Column ID: "
+          "give the assignment another title",
+          printable(title));
+      return c;
+    }
+    if (column_id.empty()) {
+      c.warning =
+          "without --blackboard-column-id, Blackboard adds the column as a new text column with "
+          "0 points possible (its Grade Center: the column's menu, Column Information, shows the "
+          "id of an existing column)";
+    }
+  }
+  return c;
+}
+
+std::string RosterGradebook::platform_csv(std::string_view layout, const std::string& title,
+                                          const std::string& column_id) const {
   std::optional<double> most = max_score();
   std::string points = most ? format_points(*most) : "";
   std::string s;
@@ -125,17 +219,21 @@ std::string RosterGradebook::platform_csv(std::string_view layout, const std::st
     // (the roster's id) or SIS Login ID (the email);
     // the row under the header gives the points possible, and a new column name makes a new
     // assignment.
-    s = "Student,ID,SIS User ID,SIS Login ID,Section," + csv_cell(title) + "\n";
+    // With the assignment's id, Canvas's own "Title (id)": matched by the id.
+    std::string column = column_id.empty() ? title : fmt::format("{} ({})", title, column_id);
+    s = "Student,ID,SIS User ID,SIS Login ID,Section," + csv_cell(column) + "\n";
     s += "    Points Possible,,,,," + points + "\n";
   } else if (layout == "csv-moodle") {
     // Moodle's grade import from CSV: map "Email address" to the user's email, and the grade
     // column to the assignment's grade item.
     s = "ID number,Full name,Email address," + csv_cell(title) + "\n";
   } else {
-    // Blackboard's offline grade upload: Username identifies the student (the roster's id),
-    // and a column named "NAME [Total Pts: N Score]" is made as a new score column.
-    s = "Last Name,First Name,Username,Student ID," +
-        csv_cell(fmt::format("{} [Total Pts: {} Score]", title, points)) + "\n";
+    // Blackboard's offline grade upload: Username identifies the student (the roster's id), a
+    // column its Column ID after '|' (without one, the upload adds a new text column), and
+    // every field is in quotation marks.
+    std::string column = fmt::format("{} [Total Pts: {} Score]", title, points);
+    if (!column_id.empty()) column += " |" + column_id;
+    s = "\"Last Name\",\"First Name\",\"Username\",\"Student ID\"," + quoted_cell(column) + "\n";
   }
   for (std::size_t i = 0; i < roster_.size(); ++i) {
     const StudentIdentity& who = roster_[i];
@@ -153,8 +251,8 @@ std::string RosterGradebook::platform_csv(std::string_view layout, const std::st
       std::size_t cut = name.rfind(' ');
       std::string first = cut == std::string::npos ? "" : name.substr(0, cut);
       std::string last = cut == std::string::npos ? name : name.substr(cut + 1);
-      s += csv_cell(last) + "," + csv_cell(first) + "," + csv_cell(who.id) + "," +
-           csv_cell(who.id) + "," + score;
+      s += quoted_cell(last) + "," + quoted_cell(first) + "," + quoted_cell(who.id) + "," +
+           quoted_cell(who.id) + "," + quoted_cell(score);
     }
     s += "\n";
   }

@@ -48,6 +48,25 @@ std::vector<ZipEntry> moodle_feedback_files(const std::vector<std::vector<std::s
                                             const std::vector<StudentPage>& pages,
                                             std::vector<std::string>& notes);
 
+// What a platform's importer would make of the grade column of platform_csv, before anything is
+// graded: `error` when it would misread it (the column is then refused), `warning` when it reads
+// it but not as an instructor may expect; both empty when it reads it as meant.
+// - csv-canvas (Canvas's gradebook importer, instructure/canvas-lms): a column whose title
+//   contains "Current Score", "Current Points", "Current Grade", "Final Score", "Final Points",
+//   "Final Grade", "Override Score", "Override Grade" or "Override Status" (case-sensitive,
+//   app/models/gradebook_importer.rb's NON_ASSIGNMENT_COLUMN_HEADERS) is dropped; a title ending
+//   in white space and "(digits)" is read as "Title (assignment id)" (Assignment.title_and_id),
+//   so without `column_id` it would grade another assignment. `column_id` must be digits.
+// - csv-blackboard (Blackboard's "Uploading External Grade Center Items"): a column is matched by
+//   the Column ID after '|' in its header, so a title may hold no '|'; without `column_id` the
+//   upload adds a new text column with 0 points possible (a warning). `column_id` must be digits.
+struct ColumnCheck {
+  std::string error;
+  std::string warning;
+};
+ColumnCheck check_platform_column(std::string_view layout, const std::string& title,
+                                  const std::string& column_id);
+
 class RosterGradebook {
  public:
   RosterGradebook(const std::vector<StudentIdentity>& roster,
@@ -70,8 +89,12 @@ class RosterGradebook {
 
   // The same class in a platform's import layout ("csv-canvas", "csv-moodle",
   // "csv-blackboard"): the total as one grade column named `title`, out of the assignment's
-  // points (docs/assignments.md says how each platform matches its students).
-  std::string platform_csv(std::string_view layout, const std::string& title) const;
+  // points (docs/assignments.md says how each platform matches its students). `column_id` is the
+  // platform's id of the grade column, when known: Canvas's assignment id, written "Title (id)";
+  // Blackboard's Column ID, written "Title [Total Pts: N Score] |id". Blackboard's fields are
+  // each in quotation marks, as its upload wants.
+  std::string platform_csv(std::string_view layout, const std::string& title,
+                           const std::string& column_id = "") const;
 
   // Moodle's offline grading worksheet as downloaded from the assignment (`rows`, read from
   // `file`), each row's "Grade" set to the total of the roster student whose email is its

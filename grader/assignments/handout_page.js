@@ -604,7 +604,8 @@
     // The LMS's copy first: it follows the student to another computer.
     let state = lms && lms.resumed;
     if (!state) try { state = JSON.parse(localStorage.getItem(storageKey) || "null"); } catch (e) { state = null; }
-    if (!state) return;
+    // A copy of another shape (an older page's, or damaged) is not read.
+    if (!state || typeof state.values !== "object" || state.values === null) return;
     for (const p of problems) for (const {f, made} of p.fields) {
       const n = state.rows && state.rows[p.id + "." + f.key];
       while (made.rows && n && made.rows.length < n) made.addRow();
@@ -647,6 +648,15 @@
     let progress = {};
     try { progress = JSON.parse(localStorage.getItem(progressKey) || "{}") || {}; } catch (e) { progress = {}; }
     if (lms && lms.resumed) progress = lms.resumed.progress || {};
+    // Progress an older page kept (or a damaged copy): each field takes its default.
+    if (typeof progress !== "object" || Array.isArray(progress)) progress = {};
+    for (const [id, p] of Object.entries(progress)) {
+      if (!p || typeof p !== "object") { delete progress[id]; continue; }
+      if (!(Number.isInteger(p.attempts) && p.attempts >= 0)) p.attempts = 0;
+      p.full = p.full === true;
+      if (!Number.isFinite(p.score)) p.score = 0;
+      if (!Number.isFinite(p.max)) p.max = 0;
+    }
     practiceProgress = () => progress;
     const keep = () => { try { localStorage.setItem(progressKey, JSON.stringify(progress)); } catch (e) { /* storage off */ } };
     const views = {};

@@ -35,19 +35,39 @@ void moodle_value(pugi::xml_node parent, const char* name, const std::string& va
 
 std::string moodle_wildcard(const std::string& name) { return "{" + name + "}"; }
 
+// Text in a question's HTML: escaped, with '{' and '}' as &#123; and &#125;. Moodle replaces
+// every {=formula} and every {name} of a dataset in the stored text before it formats it
+// (qtype_calculated_variable_substituter::replace_expressions_in_text: a regular expression for
+// the formulas, str_replace for the names), so no brace of the text may be one; the browser
+// shows the entity as the brace.
+std::string moodle_text_html(std::string_view s) {
+  std::string out;
+  for (char c : html_escape(s)) {
+    if (c == '{') {
+      out += "&#123;";
+    } else if (c == '}') {
+      out += "&#125;";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 std::string moodle_question_html(const QuizProblem& q, const QuizPart& part) {
   std::string statement;
   for (const QuizText& t : q.statement) {
-    statement += t.variable.empty() ? html_escape(t.text) : moodle_wildcard(t.variable);
+    statement += t.variable.empty() ? moodle_text_html(t.text) : moodle_wildcard(t.variable);
   }
   return fmt::format("<p>{}</p>\n<p>Give {}.</p>\n<p>An answer {} counts as right.</p>", statement,
-                     html_escape(part.label), html_escape(quiz_tolerance_text(part.tolerance)));
+                     moodle_text_html(part.label),
+                     moodle_text_html(quiz_tolerance_text(part.tolerance)));
 }
 
 // The worked solution with each set's own numbers, where every set's solution has the same
 // steps; else where to find it.
 std::string moodle_feedback_html(const QuizProblem& q, const QuizPart& part) {
-  std::string out = fmt::format("<p>The answer: {}.</p>\n", moodle_wildcard("answer"));
+  std::string out = fmt::format("<p>The answer: {}.</p>\n", moodle_wildcard(q.answer_variable));
   if (q.steps.empty()) {
     return out +
            "<p>The worked solution differs from set to set: `raygrade solve` with the "
@@ -58,7 +78,7 @@ std::string moodle_feedback_html(const QuizProblem& q, const QuizPart& part) {
   for (const QuizStep& s : q.steps) {
     if (!s.heading.empty()) {
       if (open) out += "</ul>\n";
-      out += fmt::format("<p>{}</p>\n", html_escape(s.heading));
+      out += fmt::format("<p>{}</p>\n", moodle_text_html(s.heading));
       open = false;
     }
     if (!open) out += "<ul>\n";
@@ -70,7 +90,7 @@ std::string moodle_feedback_html(const QuizProblem& q, const QuizPart& part) {
       value = fmt::format("({}, {}, {})", moodle_wildcard(s.variables[0]),
                           moodle_wildcard(s.variables[1]), moodle_wildcard(s.variables[2]));
     }
-    out += fmt::format("<li>{} = {}</li>\n", html_escape(s.text), value);
+    out += fmt::format("<li>{} = {}</li>\n", moodle_text_html(s.text), value);
   }
   if (open) out += "</ul>";
   (void)part;
@@ -117,7 +137,7 @@ void moodle_question(pugi::xml_node quiz, const QuizProblem& q, const QuizPart& 
   pugi::xml_node answer = question.append_child("answer");
   answer.append_attribute("fraction") = "100";
   // The answer is a moodle_wildcard of its own: Moodle's formula gives back raygrade's answer.
-  answer.append_child("text").text().set(moodle_wildcard("answer").c_str());
+  answer.append_child("text").text().set(moodle_wildcard(q.answer_variable).c_str());
   bool relative = part.tolerance.kind == QuizTolerance::Kind::kRelative;
   moodle_value(answer, "tolerance", quiz_number(part.tolerance.value));
   moodle_value(answer, "tolerancetype", relative ? "1" : "2");
@@ -141,7 +161,7 @@ void moodle_question(pugi::xml_node quiz, const QuizProblem& q, const QuizPart& 
     moodle_dataset(definitions, v.name, offered(v.values), v.decimals);
   std::vector<double> answers(part.answers.begin(),
                               part.answers.begin() + static_cast<long>(count));
-  moodle_dataset(definitions, "answer", answers, 12);
+  moodle_dataset(definitions, q.answer_variable, answers, 12);
   for (const QuizVariable& v : q.step_variables) {
     moodle_dataset(definitions, v.name, offered(v.values), std::min(v.decimals, 6));
   }

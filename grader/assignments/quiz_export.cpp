@@ -5,8 +5,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "assignments/answer_form.h"
 #include "assignments/roster.h"
@@ -39,9 +41,36 @@ QuizVariable make_variable(std::string name, std::vector<double> values) {
 
 const char* component_name(int c) { return c == 0 ? "x" : c == 1 ? "y" : "z"; }
 
+// The names of a problem's variables: the parameters' own, taken first, and each name raygrade
+// makes the first of "wanted", "wanted_2", "wanted_3", ... that is not taken yet. A name must
+// start with a letter (Moodle's wildcards do): a parameter named "_a" is written "v_a".
+class QuizNames {
+ public:
+  explicit QuizNames(const Problem& base) {
+    if (base.parameters) {
+      for (const Parameter& p : base.parameters->parameters) taken_.insert(p.name);
+    }
+  }
+  std::string parameter(const std::string& name) {
+    if (std::isalpha(static_cast<unsigned char>(name.front()))) return name;
+    return make("v" + name);
+  }
+  std::string make(const std::string& wanted) {
+    if (taken_.insert(wanted).second) return wanted;
+    for (int k = 2;; ++k) {
+      std::string name = fmt::format("{}_{}", wanted, k);
+      if (taken_.insert(name).second) return name;
+    }
+  }
+
+ private:
+  std::set<std::string> taken_;
+};
+
 // The statement, with a variable for each "{expression}" whose value differs between sets
 // (a vector parameter: one per component). A problem without parameters is its own text.
-void statement_of(const Problem& base, const std::vector<const Problem*>& sets, QuizProblem& q) {
+void statement_of(const Problem& base, const std::vector<const Problem*>& sets, QuizNames& names_of,
+                  QuizProblem& q) {
   if (!base.parameters || base.parameters->empty() || !base.template_json ||
       !base.template_json->contains("statement")) {
     q.statement.push_back({base.statement, ""});
@@ -73,14 +102,14 @@ void statement_of(const Problem& base, const std::vector<const Problem*>& sets, 
         for (int k = 0; k < 3; ++k) {
           std::vector<double> component;
           for (const json& v : values) component.push_back(v.at(static_cast<std::size_t>(k)));
-          names.push_back(fmt::format("{}_{}", name, component_name(k)));
+          names.push_back(names_of.make(fmt::format("{}_{}", name, component_name(k))));
           q.variables.push_back(make_variable(names.back(), std::move(component)));
         }
       } else {
         std::vector<double> scalar;
         for (const json& v : values) scalar.push_back(v.get<double>());
-        names.push_back(name);
-        q.variables.push_back(make_variable(name, std::move(scalar)));
+        names.push_back(plain ? names_of.parameter(name) : names_of.make(name));
+        q.variables.push_back(make_variable(names.back(), std::move(scalar)));
       }
       found = named.emplace(expr, std::move(names)).first;
     }
@@ -217,7 +246,7 @@ QuizTolerance tolerance_of(const Tolerance& t, const std::vector<double>& answer
 
 // The worked solution's steps with their values as variables s1, s2, ..., when every set's
 // derivation has the same steps in the same order.
-void solution_steps(const std::vector<const Problem*>& sets, QuizProblem& q) {
+void solution_steps(const std::vector<const Problem*>& sets, QuizNames& names_of, QuizProblem& q) {
   std::vector<std::vector<SolutionPart>> derived;
   for (const Problem* s : sets) derived.push_back(s->task->derive(s->method));
   auto shape = [](const std::vector<SolutionPart>& parts) {
@@ -253,12 +282,40 @@ void solution_steps(const std::vector<const Problem*>& sets, QuizProblem& q) {
           const Value& v = other[p].derivation.steps[k].value;
           values.push_back(components == 1 ? v.scalar : v.vector[c]);
         }
-        out.variables.push_back(fmt::format("s{}", ++n));
+        out.variables.push_back(names_of.make(fmt::format("s{}", ++n)));
         q.step_variables.push_back(make_variable(out.variables.back(), std::move(values)));
       }
       q.steps.push_back(std::move(out));
     }
   }
+}
+
+// The problem's text as XML 1.0 allows it (xml_text); returns how many characters were dropped
+// or replaced.
+std::size_t well_formed_text(QuizProblem& q) {
+  std::size_t changed = 0;
+  auto clean = [&changed](std::string& s) {
+    std::size_t n = 0;
+    s = xml_text(s, &n);
+    changed += n;
+  };
+  clean(q.id);
+  clean(q.title);
+  for (QuizText& t : q.statement) clean(t.text);
+  for (QuizPart& p : q.parts) clean(p.label);
+  for (QuizStep& s : q.steps) {
+    clean(s.heading);
+    clean(s.text);
+  }
+  for (std::string& l : q.lost) clean(l);
+  return changed;
+}
+
+std::string xml_note(std::string_view what, std::size_t changed) {
+  return fmt::format(
+      "{}: {} character{} XML does not allow (control characters, ill-formed UTF-8, U+FFFE, "
+      "U+FFFF) or that reorder text (bidi controls) dropped or replaced with U+FFFD",
+      what, changed, changed == 1 ? "" : "s");
 }
 
 }  // namespace
@@ -287,8 +344,12 @@ std::vector<std::string> quiz_set_keys(const AssignmentSpec& spec, const std::st
 Quiz build_quiz(const AssignmentSpec& spec, const AssignmentBank& bank,
                 const std::vector<std::string>& keys) {
   Quiz quiz;
-  quiz.id = spec.id;
-  quiz.title = spec.title.empty() ? spec.id : spec.title;
+  std::size_t in_id = 0, in_title = 0;
+  quiz.id = xml_text(spec.id, &in_id);
+  quiz.title = xml_text(spec.title.empty() ? spec.id : spec.title, &in_title);
+  if (in_id + in_title > 0) {
+    quiz.notes.push_back(xml_note("the assignment's id and title", in_id + in_title));
+  }
   // Every key's problems, drawn once.
   std::vector<std::vector<Problem>> drawn;
   for (const std::string& key : keys) drawn.push_back(student_problems(spec, bank.problems, key));
@@ -307,16 +368,18 @@ Quiz build_quiz(const AssignmentSpec& spec, const AssignmentBank& bank,
       sets.push_back(&p);
       q.set_keys.push_back(keys[k]);
     }
-    statement_of(base, sets, q);
+    QuizNames names_of(base);
+    statement_of(base, sets, names_of, q);
+    q.answer_variable = names_of.make("answer");
 
     json form = answer_form(*sets.front());
     std::vector<json> answers;
     for (const Problem* s : sets) answers.push_back(s->task->answer());
     std::vector<Asked> asked = asked_numbers(form, answers, q.lost);
     if (asked.empty()) {
-      quiz.notes.push_back(fmt::format("{} is left out: its answer form asks no number ({})",
-                                       base.id,
-                                       q.lost.empty() ? std::string("no input") : q.lost.front()));
+      quiz.notes.push_back(
+          xml_text(fmt::format("{} is left out: its answer form asks no number ({})", base.id,
+                               q.lost.empty() ? std::string("no input") : q.lost.front())));
       continue;
     }
 
@@ -363,10 +426,11 @@ Quiz build_quiz(const AssignmentSpec& spec, const AssignmentBank& bank,
       part.points = total * w / per_part[a.part];
       q.parts.push_back(std::move(part));
     }
-    solution_steps(sets, q);
+    solution_steps(sets, names_of, q);
     if (form["fields"].size() > 0) {
       q.lost.push_back("named-mistake feedback: the platform grades each number alone");
     }
+    if (std::size_t dropped = well_formed_text(q)) quiz.notes.push_back(xml_note(q.id, dropped));
     quiz.problems.push_back(std::move(q));
   }
   return quiz;

@@ -16,7 +16,10 @@ namespace raygrade {
 // A number of the statement that changes from set to set: a parameter, a component of a
 // vector parameter ("d_x"), or an expression of the statement ("e1"); or the reference answer
 // itself ("answer"), which the questions use as their formula so that the platform's answer
-// is raygrade's.
+// is raygrade's. A parameter keeps its name; every name raygrade makes is the first of "answer",
+// "answer_2", "answer_3", ... (and so for "e1", "s1", "d_x") that no parameter and no other
+// variable of the problem has, since both platforms put a variable's value in place of its name
+// wherever the name appears.
 struct QuizVariable {
   std::string name;
   std::vector<double> values;  // one per set
@@ -72,6 +75,9 @@ struct QuizProblem {
   // variables of their own, so that each set's solution shows that set's numbers.
   std::vector<QuizStep> steps;
   std::vector<QuizVariable> step_variables;
+  // The name of the variable that holds each part's reference answer (the question's formula):
+  // "answer" unless a parameter has that name.
+  std::string answer_variable = "answer";
   std::vector<std::string> lost;  // what the quiz cannot carry, in sentences (in the summary)
 };
 
@@ -79,7 +85,8 @@ struct Quiz {
   std::string id;
   std::string title;
   std::vector<QuizProblem> problems;
-  std::vector<std::string> notes;  // problems left out, and why
+  // Problems left out and why, and text changed so that the files are well-formed XML.
+  std::vector<std::string> notes;
 };
 
 // The variant keys of the sets: the roster's students (their student_key), else "set-1" ...
@@ -89,7 +96,8 @@ std::vector<std::string> quiz_set_keys(const AssignmentSpec& spec, const std::st
 
 // The quiz: per problem of the assignment, the sets (duplicates of an earlier set dropped),
 // the statement with its variables, and one part per number the answer form asks. A problem
-// whose form asks no number (a ray tree, a yes/no) is left out with a note. Throws Error when
+// whose form asks no number (a ray tree, a yes/no) is left out with a note. Every text is as
+// XML 1.0 allows it (xml_text): what was dropped or replaced is said in a note. Throws Error when
 // a variant cannot be drawn or the bank is faulty.
 Quiz build_quiz(const AssignmentSpec& spec, const AssignmentBank& bank,
                 const std::vector<std::string>& keys);

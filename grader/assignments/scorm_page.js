@@ -75,17 +75,38 @@ window.raygradeLms = (function () {
     if (Object.keys(p).length) out.p = p;
     return JSON.stringify(out);
   }
+  // What the LMS kept, read as untrusted: an older page wrote it, or anyone who can set
+  // cmi.suspend_data. Only what has the shape this page writes is taken (answers as text or a
+  // ticked box, row counts, trees as lists, progress as numbers); anything else is left out,
+  // and data that is not this page's at all gives nothing, so that the page still opens and
+  // reports. Progress an older page kept without a field takes its default.
+  const plain = (o) => o !== null && typeof o === "object" && !Array.isArray(o);
+  const number = (x) => (typeof x === "number" && Number.isFinite(x) ? x : 0);
   function decode(textValue) {
     let kept = null;
     try { kept = JSON.parse(textValue); } catch (e) { return null; }
-    if (!kept || kept.v !== 1 || typeof kept.i !== "object") return null;
-    const values = {};
+    if (!plain(kept) || kept.v !== 1 || !plain(kept.i)) return null;
+    // Objects without a prototype: a key "__proto__" is a key like any other.
+    const values = Object.create(null), rows = Object.create(null), trees = Object.create(null);
+    const progress = Object.create(null);
     for (const [id, inputs] of Object.entries(kept.i)) {
-      for (const [rest, value] of Object.entries(inputs)) values[id ? id + "." + rest : rest] = value === 1 ? true : value;
+      if (!plain(inputs)) continue;
+      for (const [rest, value] of Object.entries(inputs)) {
+        if (typeof value !== "string" && value !== 1) continue;
+        values[id ? id + "." + rest : rest] = value === 1 ? true : value;
+      }
     }
-    const progress = {};
-    for (const [id, q] of Object.entries(kept.p || {})) progress[id] = {attempts: q[0], full: !!q[1], score: q[2], max: q[3]};
-    return {values: values, rows: kept.r || {}, trees: kept.t || {}, progress: progress};
+    // A page adds at most a few hundred rows; more is not this page's data.
+    for (const [key, n] of Object.entries(plain(kept.r) ? kept.r : {})) {
+      if (Number.isInteger(n) && n > 0 && n <= 1000) rows[key] = n;
+    }
+    for (const [key, t] of Object.entries(plain(kept.t) ? kept.t : {})) if (Array.isArray(t)) trees[key] = t;
+    for (const [id, q] of Object.entries(plain(kept.p) ? kept.p : {})) {
+      if (!Array.isArray(q)) continue;
+      const attempts = Number.isInteger(q[0]) && q[0] >= 0 ? q[0] : 0;
+      progress[id] = {attempts: attempts, full: q[1] === 1 || q[1] === true, score: number(q[2]), max: number(q[3])};
+    }
+    return {values: values, rows: rows, trees: trees, progress: progress};
   }
   const resumed = decode(text("cmi.suspend_data"));
 

@@ -42,7 +42,9 @@ struct GradeCliOptions {
   std::string now;                  // the time the due date is compared with (default: the clock)
   std::string gradescope_metadata;  // submission_metadata.json: who uploaded the submission
   std::string moodle_worksheet;     // Moodle's grading worksheet: filled in, or names the zip
-  unsigned jobs = 0;                // threads that grade (0: one per core)
+  std::optional<std::string> canvas_assignment_id;  // csv-canvas: the column's assignment id
+  std::optional<std::string> blackboard_column_id;  // csv-blackboard: the column's Column ID
+  unsigned jobs = 0;                                // threads that grade (0: one per core)
 };
 
 // A progress bar on standard error, only when it is a terminal.
@@ -237,7 +239,7 @@ class GradeOutput {
         for (const auto& n : notes)
           fmt::print(stderr, "raygrade grade: warning: {}\n", printable(n));
       } else {
-        csv() << (platform_book_ ? class_book_->platform_csv(format_.name, setup_.title)
+        csv() << (platform_book_ ? class_book_->platform_csv(format_.name, setup_.title, column_id_)
                                  : class_book_->csv());
       }
       for (const auto& c : class_book_->choices())
@@ -295,6 +297,9 @@ class GradeOutput {
   }
 
   const GradeCliOptions& o_;
+  std::string column_id_ = o_.canvas_assignment_id   ? *o_.canvas_assignment_id
+                           : o_.blackboard_column_id ? *o_.blackboard_column_id
+                                                     : std::string();
   const GradeFormat& format_;
   const GradeSetup& setup_;
   bool single_, platform_book_, gradebook_, json_stream_;
@@ -374,6 +379,16 @@ int run_grade(const GradeCliOptions& o) {
     return usage(
         "--moodle-worksheet goes with --roster, and --format csv-moodle (the worksheet "
         "filled in) or --format html --out DIR (a zip of feedback files for Moodle)");
+  if (o.canvas_assignment_id && o.format != "csv-canvas")
+    return usage("--canvas-assignment-id goes with --format csv-canvas");
+  if (o.blackboard_column_id && o.format != "csv-blackboard")
+    return usage("--blackboard-column-id goes with --format csv-blackboard");
+  for (const auto* id : {&o.canvas_assignment_id, &o.blackboard_column_id}) {
+    if (*id && (*id)->empty())
+      return usage(fmt::format(
+          "{} is empty: give the platform's id of the column (digits)",
+          id == &o.canvas_assignment_id ? "--canvas-assignment-id" : "--blackboard-column-id"));
+  }
   if (!o.pick.empty() && o.roster.empty())
     return usage("--pick chooses among a roster student's submissions: it needs --roster");
   std::optional<PickPolicy> pick = parse_pick_policy(o.pick.empty() ? "latest" : o.pick);
@@ -383,6 +398,16 @@ int run_grade(const GradeCliOptions& o) {
           o.assignment.empty() ? setup_from_bank(o, setup) : setup_from_assignment(o, setup))
     return *failed;
   for (const auto& e : setup.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
+  // A grade column the platform would misread is refused before anything is graded.
+  std::string column_id = o.canvas_assignment_id   ? *o.canvas_assignment_id
+                          : o.blackboard_column_id ? *o.blackboard_column_id
+                                                   : std::string();
+  if (format->layout == GradeLayout::kClassGradebook && setup.worksheet.empty()) {
+    ColumnCheck column = check_platform_column(o.format, setup.title, column_id);
+    if (!column.error.empty()) return usage(column.error);
+    if (!column.warning.empty())
+      fmt::print(stderr, "raygrade grade: warning: {}\n", column.warning);
+  }
   std::vector<Diagnostic> errors;
   std::vector<BulkSubmission> bulk;
   if (auto failed = read_bulk_zips(o, setup, bulk, errors)) return *failed;
@@ -498,6 +523,13 @@ Runner setup_grade(CLI::App& sub) {
                  "with --format csv-moodle the gradebook is that worksheet with each student's "
                  "grade filled in, with --format html --out DIR the pages also go into "
                  "moodle-feedback.zip for Moodle's bulk feedback upload");
+  sub.add_option("--canvas-assignment-id", o->canvas_assignment_id,
+                 "with --format csv-canvas: the Canvas id of the assignment (its page's address "
+                 "ends in it); the column is then titled \"Title (id)\", which Canvas's import "
+                 "matches by the id");
+  sub.add_option("--blackboard-column-id", o->blackboard_column_id,
+                 "with --format csv-blackboard: the Column ID of the Grade Center column to "
+                 "fill in (without it, the upload adds a new text column)");
   sub.add_option("-j,--jobs", o->jobs,
                  "threads that grade at once (default: one per core); the output is the same");
   sub.add_option("--now", o->now,

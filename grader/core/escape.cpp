@@ -87,27 +87,48 @@ std::string html_escape(std::string_view s) {
   return out;
 }
 
-std::string xml_escape(std::string_view s) {
+std::string xml_text(std::string_view s, std::size_t* changed) {
   std::string out;
+  out.reserve(s.size());
+  std::size_t n_changed = 0;
   for (std::size_t i = 0; i < s.size(); ++i) {
     char c = s[i];
     auto u = static_cast<unsigned char>(c);
-    if (is_disallowed_control(c) || c == '\x7F') continue;
+    if (is_disallowed_control(c) || c == '\x7F') {
+      ++n_changed;
+      continue;
+    }
     if (is_c1_control_at(s, i) || is_bidi_control_at(s, i)) {
       i += is_c1_control_at(s, i) ? 1 : 2;
+      ++n_changed;
       continue;
     }
-    if (u >= 0x80) {
-      // XML parsers reject a whole document over one ill-formed byte: write U+FFFD instead.
-      std::size_t n = utf8_sequence_length(s, i);
-      if (n == 0) {
-        out += "\xEF\xBF\xBD";
-      } else {
-        out.append(s.substr(i, n));
-        i += n - 1;
-      }
+    if (u < 0x80) {
+      out += c;
       continue;
     }
+    // XML parsers reject a whole document over one ill-formed byte, and over the noncharacters
+    // U+FFFE and U+FFFF, which XML 1.0's Char excludes: U+FFFD instead.
+    std::size_t n = utf8_sequence_length(s, i);
+    if (n == 3 && s.substr(i, 2) == "\xEF\xBF" && static_cast<unsigned char>(s[i + 2]) >= 0xBE) {
+      n = 0;
+      i += 2;
+    }
+    if (n == 0) {
+      out += "\xEF\xBF\xBD";
+      ++n_changed;
+    } else {
+      out.append(s.substr(i, n));
+      i += n - 1;
+    }
+  }
+  if (changed) *changed = n_changed;
+  return out;
+}
+
+std::string xml_escape(std::string_view s) {
+  std::string out;
+  for (char c : xml_text(s)) {
     switch (c) {
       case '&': out += "&amp;"; break;
       case '<': out += "&lt;"; break;

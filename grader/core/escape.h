@@ -11,9 +11,14 @@ namespace raygrade {
 // &, <, >, " and ' as entities, control characters other than tab and line breaks dropped:
 // safe in HTML and XML text and attribute values.
 std::string html_escape(std::string_view s);
-// The same for XML (JUnit); control characters other than tab and newline are dropped, and
-// ill-formed UTF-8 becomes U+FFFD, so the document always parses.
+// The same for XML (JUnit): the text of xml_text, with &, <, >, " and ' as entities.
 std::string xml_escape(std::string_view s);
+// Text that XML 1.0 allows, for a writer that escapes &, < and > itself (pugixml): control
+// characters other than tab and line breaks, C1 controls and reordering controls are dropped,
+// and ill-formed UTF-8 (a lone surrogate's bytes among them) and the noncharacters U+FFFE and
+// U+FFFF become U+FFFD, so the document always parses. `changed`, when given, counts the
+// characters dropped or replaced.
+std::string xml_text(std::string_view s, std::size_t* changed = nullptr);
 // Markdown: backslash before every character Markdown or inline HTML could act on; line
 // breaks become spaces.
 std::string markdown_escape(std::string_view s);
