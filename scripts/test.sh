@@ -16,8 +16,9 @@ step() {
   printf '== %s: %d s\n' "$name" "$took" >&2
 }
 trap 'printf "\nStep times:\n%s" "$timings" >&2' EXIT
-# The browser extra: the HTML worked solutions are checked in headless Chromium.
-step "install" env RAYGRADE_EXTRA="${RAYGRADE_EXTRA:-} browser" bash scripts/install-deps.sh
+# The browser extra: the HTML worked solutions are checked in headless Chromium; the fuzz extra:
+# clang and its sanitizer runtime, for the asan preset (the tests and the fuzz targets).
+step "install" env RAYGRADE_EXTRA="${RAYGRADE_EXTRA:-} browser fuzz" bash scripts/install-deps.sh
 step "web libraries" bash scripts/fetch-web-libs.sh
 step "configure release" cmake --preset release >/dev/null
 step "build release" cmake --build --preset release
@@ -60,9 +61,11 @@ step "gradescope" /usr/bin/python3 tests/gradescope_autograder.py build/release/
   assignments/homework-rays.json build/static/grader/raygrade
 step "prairielearn" /usr/bin/python3 tests/prairielearn_export.py build/release/grader/raygrade \
   assignments/homework-rays.json build/static/grader/raygrade
-# The whole suite again with ASan and UBSan (the asan preset).
+# The whole suite again with ASan and UBSan (the asan preset: clang, which also builds the
+# libFuzzer targets there, so that the library is compiled under the sanitizers once).
 step "configure asan" cmake --preset asan >/dev/null
 step "build asan" cmake --build --preset asan
 step "test asan" ctest --preset asan
-# Each fuzz target for 30 seconds (scripts/fuzz.sh TARGET SECONDS runs longer campaigns).
+# Each fuzz target for 30 seconds, from the asan build (scripts/fuzz.sh TARGET SECONDS runs longer
+# campaigns).
 step "fuzz" bash scripts/fuzz.sh all 30
