@@ -252,10 +252,14 @@ Derivation node_steps(const RayTree& tree, const Scene& scene, const TreeNode& n
   std::vector<std::string> terms = node_terms(node);
   if (scene.lights.empty()) {
     d.conclude("The scene has no lights: only the ambient term applies.");
-  } else if (in_shadow(node)) {
-    d.conclude(fmt::format("{} is in shadow, blocked by {}: only the ambient term applies.",
-                           node.label, names_list(shadow_blockers(tree, scene, node))));
-  } else if (faces_away(node)) {
+  } else if (ShadowReading shadow = shadow_reading(tree, node); shadow.in_shadow) {
+    d.conclude(fmt::format(
+        "{} is in shadow, blocked by {}{}: only the ambient term applies.", node.label,
+        names_list(shadow_blockers(tree, scene, node)),
+        shadow.faces_away ? " (it faces away from the light too, but the course lets the shadow "
+                            "ray decide)"
+                          : ""));
+  } else if (shadow.faces_away) {
     d.conclude(fmt::format(
         "{} faces away from every light (N·L ≤ 0), which is not a shadow: only the ambient "
         "term applies.",
