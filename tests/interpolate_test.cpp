@@ -11,7 +11,8 @@
 #include "test_util.h"
 
 namespace raygrade {
-namespace {
+// Named rather than anonymous: a unity batch of tests shares one anonymous namespace.
+namespace interpolate_test {
 
 // A = (0, 0, 0), B = (4, 0, 0), C = (0, 4, 0); the vertex normals lean out of the corners.
 const std::string kTriangle = R"("vertices": [[0, 0, 0], [4, 0, 0], [0, 4, 0]],
@@ -164,5 +165,5 @@ TEST(InterpolateKind, AnswerFormAsksWhatCarriesPoints) {
       (std::vector<std::string>{"normal", "barycentric", "u", "v"}));
 }
 
-}  // namespace
+}  // namespace interpolate_test
 }  // namespace raygrade
