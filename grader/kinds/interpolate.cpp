@@ -60,7 +60,7 @@ std::unique_ptr<Task> InterpolateTask::read(const Cursor& problem) {
     // A normal whose length squared underflows cannot be made unit (1e-200: 1e-400 is 0).
     if (length_squared(n[i]) < std::numeric_limits<double>::min()) {
       normals[i].fail(fmt::format("the normal is too short to be made unit: its length squared "
-                                  "{} underflows",
+                                  "underflows (to {})",
                                   format_number(length_squared(n[i]))),
                       "undefined-normal");
     }
