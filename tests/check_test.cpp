@@ -60,6 +60,8 @@ const Fault kFaults[] = {
     {"duplicate-geometry.json", "duplicate-geometry", 9},
     {"self-test.json", "self-test", 7},
     {"no-solution.json", "no-solution", 2},
+    {"undefined-normal.json", "undefined-normal", 5},
+    {"underflowing-normal.json", "undefined-normal", 5},
 };
 
 bool ends_with(const std::string& s, const std::string& tail) {

@@ -214,7 +214,8 @@ TEST(Grade, ErrorCarriedForward) {
   EXPECT_TRUE(said);
   // Steps: t_ca right, d2 wrong, t_hc carried forward.
   EXPECT_NEAR(part(r, "steps")->max_points, 0, 0);
-  EXPECT_EQ(part(r, "steps")->status, PartStatus::kPartial);
+  // Worth no points, the steps are never partial: not all right, they are wrong.
+  EXPECT_EQ(part(r, "steps")->status, PartStatus::kWrong);
   // Without the wrong step the same t values earn nothing.
   auto bare = grade(kSphere1, R"({"hits": [{"t": 1.5}, {"t": 2.5}]})");
   EXPECT_DOUBLE_EQ(part(bare, "t")->points, 0);
@@ -232,7 +233,12 @@ TEST(Grade, NoCreditCarriedFromATrivialValue) {
   std::string said = fmt::format("{}", fmt::join(part(zero, "steps")->feedback, " "));
   EXPECT_NE(said.find("nothing later is carried forward"), std::string::npos) << said;
   auto slip = grade(kSphere1, R"({"steps": {"L": [3, 0, 0], "t_ca": 3}})");
-  EXPECT_EQ(part(slip, "steps")->status, PartStatus::kPartial);
+  // The steps carry no points, so the slip's are wrong, not partial (a part worth nothing is
+  // never partial); what sets it apart is that t_ca is carried forward from it.
+  EXPECT_EQ(part(slip, "steps")->status, PartStatus::kWrong);
+  said = fmt::format("{}", fmt::join(part(slip, "steps")->feedback, " "));
+  EXPECT_EQ(said.find("nothing later is carried forward"), std::string::npos) << said;
+  EXPECT_TRUE(slip.carried_forward);
   auto origin = grade(kSphere1, R"({"hits": [{"t": 0, "point": [0, 0, 0]}]})");
   EXPECT_DOUBLE_EQ(part(origin, "point")->points, 0);
   EXPECT_FALSE(origin.carried_forward);

@@ -11,7 +11,8 @@
 #include "test_util.h"
 
 namespace raygrade {
-namespace {
+// Named rather than anonymous: a unity batch of tests shares one anonymous namespace.
+namespace interpolate_test {
 
 // A = (0, 0, 0), B = (4, 0, 0), C = (0, 4, 0); the vertex normals lean out of the corners.
 const std::string kTriangle = R"("vertices": [[0, 0, 0], [4, 0, 0], [0, 4, 0]],
@@ -98,6 +99,34 @@ TEST(InterpolateKind, PointOffTheTriangleIsAnError) {
   EXPECT_NE(e.find("/vertices: a triangle has 3 vertices, not 2"), std::string::npos) << e;
 }
 
+std::string code_of(const std::string& point, const std::string& triangle) {
+  try {
+    interpolate(point, "", triangle);
+  } catch (const Error& e) {
+    return e.diagnostic().code + " at " + e.diagnostic().path;
+  }
+  return "no error";
+}
+
+// The normals (1, 0, 0) at A and (−1, 0, 0) at B cancel halfway along A–B, at (1, 0, 0),
+// where w = (½, ½, 0): the blend is the zero vector and has no direction. Nearly so,
+// (1, 1e-17, 0) at B, leaves (0, 5e-18, 0), a direction decided by rounding alone. A vertex
+// normal of length 1e-200 is not zero, but its length squared, 1e-400, underflows to 0.
+TEST(InterpolateKind, AnUndefinedNormalIsAnError) {
+  const std::string opposite = R"("vertices": [[0, 0, 0], [2, 0, 0], [0, 2, 0]],
+                                  "normals": [[1, 0, 0], [-1, 0, 0], [0, 0, 1]])";
+  EXPECT_EQ(code_of("[1, 0, 0]", opposite), "undefined-normal at /normals");
+  const std::string nearly = R"("vertices": [[0, 0, 0], [2, 0, 0], [0, 2, 0]],
+                                "normals": [[1, 0, 0], [-1, 1e-17, 0], [0, 0, 1]])";
+  EXPECT_EQ(code_of("[1, 0, 0]", nearly), "undefined-normal at /normals");
+  // Away from the cancelling point the same normals blend to a direction: at (0.5, 0, 0),
+  // w = (¾, ¼, 0) and the blend is (½, 0, 0).
+  expect_vector(interpolate("[0.5, 0, 0]", "", opposite).task->answer()["normal"], 1, 0, 0);
+  const std::string tiny = R"("vertices": [[0, 0, 0], [2, 0, 0], [0, 2, 0]],
+                             "normals": [[0, 0, 1e-200], [0, 0, 1], [0, 0, 1]])";
+  EXPECT_EQ(code_of("[0.5, 0.5, 0]", tiny), "undefined-normal at /normals/0");
+}
+
 // The blend (0.15, 0.15, 0.9) left unnormalised points the right way at length √0.855 ≈ 0.9247:
 // no credit for the normal, which is asked as a unit vector, and the feedback says so.
 TEST(InterpolateKind, GradingAnUnnormalisedNormal) {
@@ -136,5 +165,5 @@ TEST(InterpolateKind, AnswerFormAsksWhatCarriesPoints) {
       (std::vector<std::string>{"normal", "barycentric", "u", "v"}));
 }
 
-}  // namespace
+}  // namespace interpolate_test
 }  // namespace raygrade

@@ -340,6 +340,29 @@ TEST(Parts, UnaskedPartsAreNotMissingButNotedWhenGiven) {
   EXPECT_DOUBLE_EQ(normal.score, 2);  // t's 2 points: the normals change nothing
 }
 
+// The sphere's normals at t = 1 and 3 are (−1, 0, 0) and (1, 0, 0); normals are worth no
+// points by default. One right and one wrong is half right, but a part worth nothing has no
+// share to be partly earned: it is right or wrong, in the part and in the JSON alike, and the
+// score is t's 2 points either way (the points, not given, earn nothing). The same with the
+// normal named worth 0 in "points".
+TEST(Parts, AZeroPointPartIsNeverPartial) {
+  for (const std::string& problem :
+       {std::string(kPartsSphere), std::string(R"({"id": "s1", "points": {"t": 2, "normal": 0},
+  "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+  "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}})")}) {
+    GradeResult r = grade(problem, R"({"hits": [{"t": 1, "normal": [-1, 0, 0]},
+      {"t": 3, "normal": [0, 1, 0]}]})");
+    ASSERT_NE(part(r, "normal"), nullptr) << problem;
+    EXPECT_EQ(part(r, "normal")->status, PartStatus::kWrong) << problem;
+    EXPECT_DOUBLE_EQ(r.score, 2);
+    for (const auto& p : result_json(r)["parts"]) EXPECT_NE(p["status"], "partial") << p;
+    // Both right: right.
+    GradeResult right = grade(problem, R"({"hits": [{"t": 1, "normal": [-1, 0, 0]},
+      {"t": 3, "normal": [1, 0, 0]}]})");
+    EXPECT_EQ(part(right, "normal")->status, PartStatus::kRight) << problem;
+  }
+}
+
 TEST(Parts, EveryKindDeclaresItsParts) {
   for (const char* kind : {"intersect", "first-hit", "camera-ray", "reflect", "refract", "shade",
                            "ray-tree", "derive"}) {

@@ -251,6 +251,44 @@ TEST(RayTreeGrade, FacingAwayConventionPicksOneReading) {
   EXPECT_THROW(facing_away_scene(true, "sometimes"), Error);
 }
 
+// The convention decides the reference as it decides grading: under "shadow-ray" the answer
+// says P is in shadow, blocked by B, and the worked solution concludes that its shadow ray is; under
+// "normal-first" both say it faces away; a bank file's convention does the same. The reference
+// answer always gets full marks.
+TEST(RayTreeGrade, FacingAwayConventionDecidesTheReference) {
+  auto conclusions = [](const Problem& p) {
+    std::string all;
+    for (const auto& c : p.task->conclusion()) all += c + "\n";
+    return all;
+  };
+  Problem cast = facing_away_scene(true, "shadow-ray");
+  nlohmann::json node = cast.task->answer()["nodes"][0];
+  EXPECT_EQ(node["in_shadow"], true) << node;
+  EXPECT_EQ(node["shadowed_by"], nlohmann::json({"B"})) << node;
+  EXPECT_NE(conclusions(cast).find("shadow ray is blocked by B"), std::string::npos)
+      << conclusions(cast);
+  GradeResult own = grade_answer(cast, cast.task->answer());
+  EXPECT_DOUBLE_EQ(own.score, own.max_score);
+  Problem normal = facing_away_scene(true, "normal-first");
+  node = normal.task->answer()["nodes"][0];
+  EXPECT_EQ(node["in_shadow"], false) << node;
+  EXPECT_FALSE(node.contains("shadowed_by")) << node;
+  EXPECT_NE(conclusions(normal).find("faces away from every light"), std::string::npos)
+      << conclusions(normal);
+  own = grade_answer(normal, normal.task->answer());
+  EXPECT_DOUBLE_EQ(own.score, own.max_score);
+  // The convention of the bank file, inherited by its problem.
+  auto f = parse_json_text("away.json", R"({"id": "away", "kind": "ray-tree",
+    "ray": {"origin": [0, -5, 0], "direction": [0, 1, 0]},
+    "scene": {"objects": [{"name": "A", "type": "sphere", "center": [0, 0, 0], "radius": 1},
+                          {"name": "B", "type": "sphere", "center": [0, 5, 0], "radius": 1}],
+              "lights": [{"name": "lamp", "position": [0, 10, 0]}], "ambient_light": 1}})");
+  Conventions file;
+  file.facing_away = Conventions::FacingAway::kShadowRay;
+  Problem inherited = read_problem(Cursor(f), file);
+  EXPECT_EQ(inherited.task->answer()["nodes"][0]["in_shadow"], true);
+}
+
 TEST(RayTreeGrade, FacingAwayAloneIsNotAShadow) {
   Problem p = facing_away_scene(false);
   EXPECT_DOUBLE_EQ(grade_answer(p, said_shadow(false)).score,

@@ -224,7 +224,8 @@ TEST(Transformed, NormalByTheMatrixIsNamed) {
       {"t": 6.8, "point": [1.8, 1.6, 0], "normal": [1, 2, 0]}]})"));
   ASSERT_EQ(wrong.mistakes.size(), 1u);
   EXPECT_EQ(wrong.mistakes[0].id, "normal-not-inverse-transpose");
-  EXPECT_EQ(status_of(wrong, "normal"), PartStatus::kPartial);
+  // One of two normals right; worth no points, the part is wrong, never partial.
+  EXPECT_EQ(status_of(wrong, "normal"), PartStatus::kWrong);
   GradeResult right = grade_answer(p, json::parse(R"({"hits": [
       {"t": 3.2, "point": [-1.8, 1.6, 0], "normal": [-1, 2, 0]},
       {"t": 6.8, "point": [1.8, 1.6, 0], "normal": [1, 2, 0]}]})"));

@@ -15,6 +15,9 @@ const std::vector<DiagnosticCode>& check_codes() {
       {"range", "a number is out of range (not finite, a precision above 15)"},
       {"invalid", "a value breaks a rule of the format (t_max below t_min, an empty id)"},
       {"degenerate", "degenerate geometry: zero direction or radius, collinear vertices"},
+      {"undefined-normal",
+       "an interpolate problem's vertex normals blend to no direction at its point: they cancel, "
+       "or one is too short to be made unit"},
       {"off-surface", "the point of a normal problem is not on the object's surface (how far off)"},
       {"unknown-kind", "an unknown problem kind"},
       {"unknown-type", "an unknown object type"},

@@ -11,6 +11,7 @@
 #include "core/escape.h"
 #include "core/parallel.h"
 #include "grading/outputs.h"
+#include "grading/regrade.h"
 
 namespace raygrade::cli {
 // Named rather than anonymous: a unity batch shares one anonymous namespace.
@@ -57,25 +58,6 @@ class BankGrading {
   std::vector<Diagnostic> errors_;
 };
 
-std::string mistake_ids(const GradeResult& r) {
-  std::string out;
-  for (const auto& m : r.mistakes) out += (out.empty() ? "" : ", ") + m.id;
-  return out.empty() ? "none" : out;
-}
-
-// What changed in one problem's grade: empty when nothing did.
-std::string difference(const GradeResult& before, const GradeResult& after) {
-  if (result_json(before) == result_json(after)) return "";
-  std::vector<std::string> what;
-  if (before.score != after.score)
-    what.push_back(
-        fmt::format("points {} → {}", format_points(before.score), format_points(after.score)));
-  if (mistake_ids(before) != mistake_ids(after))
-    what.push_back(fmt::format("mistakes {} → {}", mistake_ids(before), mistake_ids(after)));
-  if (what.empty()) what.push_back("feedback");
-  return fmt::format("{}", fmt::join(what, "; "));
-}
-
 int run_regrade(const RegradeOptions& o) {
   if (o.assignment.empty() == o.problems.empty()) {
     fmt::print(stderr, "raygrade regrade: give --assignment or --problems (the bank as it is)\n");
@@ -101,14 +83,11 @@ int run_regrade(const RegradeOptions& o) {
       continue;
     }
     std::string who = b.identity.id.empty() ? b.student : b.identity.id;
-    bool any = false;
-    for (std::size_t k = 0; k < b.results.size() && k < a.results.size(); ++k) {
-      std::string d = difference(b.results[k], a.results[k]);
-      if (d.empty()) continue;
-      fmt::print("{}\t{}\t{}\n", printable(who), b.results[k].problem_id, d);
-      any = true;
-    }
-    changed += any;
+    // Paired by problem id: a problem the new bank adds, drops or moves is seen as such.
+    auto changes = grade_changes(b.results, a.results);
+    for (const auto& c : changes)
+      fmt::print("{}\t{}\t{}\n", printable(who), printable(c.problem_id), printable(c.what));
+    changed += !changes.empty();
   }
   fmt::print(stderr, "{} of {} students' grades change; nothing was written.\n", changed,
              pairs.size());

@@ -64,9 +64,10 @@ PartResult make_part(const GradingContext& c, const std::string& name, double cr
   p.max_points = c.points.of(name);
   credit = std::clamp(credit, 0.0, 1.0);
   p.points = p.max_points * credit;
-  p.status = credit >= 1  ? PartStatus::kRight
-             : credit > 0 ? PartStatus::kPartial
-                          : PartStatus::kWrong;
+  // A part worth nothing has no share to be partly earned: it is right or wrong.
+  p.status = credit >= 1                     ? PartStatus::kRight
+             : credit > 0 && p.max_points > 0 ? PartStatus::kPartial
+                                              : PartStatus::kWrong;
   p.feedback = std::move(feedback);
   if (credit < 1 && p.feedback.empty()) {
     throw InternalError(fmt::format("part {} of {} earns {} without a reason", name,

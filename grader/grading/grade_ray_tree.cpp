@@ -462,14 +462,9 @@ class RayTreeGrader final : public KindGrader {
       std::set<std::string> want = term_set(node_terms(n));
       // Facing away and blocked as well: "in shadow" and "not in shadow" both hold, unless the
       // course's convention picks one (the shadow ray decides, or N·L is tested first).
-      bool want_shadow = in_shadow(n);
-      bool either = shadow_either(n);
-      using F = Conventions::FacingAway;
-      F convention = context_.problem->conventions.facing_away;
-      if (either && convention != F::kEither) {
-        want_shadow = convention == F::kShadowRay;
-        either = false;
-      }
+      ShadowReading reading = shadow_reading(tree(), n);
+      bool want_shadow = reading.in_shadow;
+      bool either = reading.either;
       // Terms without in_shadow say only whether some light reaches the point: ambient alone
       // is right at a point in shadow and at one that faces away from every light alike.
       if (shadow < 0 && terms && !scene().lights.empty()) {

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 #include "derivation/number_format.h"
 #include "kinds/form.h"
@@ -16,6 +17,12 @@ namespace {
 
 constexpr std::array<const char*, 3> kLetter = {"a", "b", "c"};
 constexpr std::array<const char*, 3> kVertex = {"A", "B", "C"};
+
+// Below this length the blend of the unit vertex normals has no direction of its own: each of
+// its components carries a rounding error of a few units of 1 (u ≈ 1.1e-16), so its direction
+// is off by about 4u/|blend|, which at 1e-8 is under 1e-7, a ten-thousandth of the default
+// relative tolerance; shorter, the direction is rounding's.
+constexpr double kShortestBlend = 1e-8;
 
 bool unit(const Vec3d& n) { return std::abs(length(n) - 1) <= kUnitLengthTolerance; }
 
@@ -50,6 +57,13 @@ std::unique_ptr<Task> InterpolateTask::read(const Cursor& problem) {
   for (int i = 0; i < 3; ++i) {
     v[i] = vertices[i].vec3();
     n[i] = normals[i].nonzero_vec3();
+    // A normal whose length squared underflows cannot be made unit (1e-200: 1e-400 is 0).
+    if (length_squared(n[i]) < std::numeric_limits<double>::min()) {
+      normals[i].fail(fmt::format("the normal is too short to be made unit: its length squared "
+                                  "underflows (to {})",
+                                  format_number(length_squared(n[i]))),
+                      "undefined-normal");
+    }
   }
   Vec3d face = cross(v[1] - v[0], v[2] - v[0]);
   double scale = std::max({1.0, length(v[1] - v[0]), length(v[2] - v[0])});
@@ -85,12 +99,25 @@ std::unique_ptr<Task> InterpolateTask::read(const Cursor& problem) {
               "invalid");
     }
   }
+  double blended = length(task->blend());
+  if (!(blended >= kShortestBlend)) {
+    problem.at("normals").fail(
+        fmt::format("the vertex normals cancel at the point: their blend there, w_a·N̂_a + "
+                    "w_b·N̂_b + w_c·N̂_c, is {} long, too short to have a direction (under {})",
+                    format_number(blended), format_number(kShortestBlend)),
+        "undefined-normal");
+  }
   return task;
 }
 
-nlohmann::json InterpolateTask::answer() const {
+Vec3d InterpolateTask::blend() const {
   Vec3d s{0, 0, 0};
   for (int i = 0; i < 3; ++i) s = s + w_[i] * normalized(n_[i]);
+  return s;
+}
+
+nlohmann::json InterpolateTask::answer() const {
+  Vec3d s = blend();
   nlohmann::json j = {{"barycentric", {w_[0], w_[1], w_[2]}}, {"normal", vec_json(normalized(s))}};
   if (uv_) {
     for (int k = 0; k < 2; ++k) {

@@ -2,7 +2,8 @@
 // its vertices' normals (and coordinates) weighted by the point's barycentric weights, as Phong
 // shading interpolates them: n̂ = (w_a·N_a + w_b·N_b + w_c·N_c) / |…|, u = w_a·u_a + w_b·u_b +
 // w_c·u_c. The point is given (a ray's hit found before); one off the triangle's plane, or
-// outside it, is an error that says how far.
+// outside it, is an error that says how far; so are vertex normals that blend to no direction
+// there (they cancel, or one is too short to be made unit).
 #pragma once
 
 #include <array>
@@ -49,6 +50,9 @@ class InterpolateTask final : public Task {
   std::optional<std::array<Texcoord, 3>> uv_;
   Vec3d p_;
   std::array<double, 3> w_{};
+
+  // w_a·N̂_a + w_b·N̂_b + w_c·N̂_c, the unit vertex normals blended, before it is made unit.
+  Vec3d blend() const;
 };
 
 }  // namespace raygrade

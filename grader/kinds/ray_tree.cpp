@@ -82,6 +82,11 @@ RayTreeTask::RayTreeTask(Scene scene, Ray primary, Ask ask,
   apply_labels(tree_, labels);
 }
 
+void RayTreeTask::follow(const Conventions& conventions) {
+  tree_.facing_away = conventions.facing_away;
+  for (auto& t : channels_) t.facing_away = conventions.facing_away;
+}
+
 void RayTreeTask::trace_channels(std::vector<Scene> channel_scenes,
                                  const std::map<std::string, std::string>& labels) {
   channel_scenes_ = std::move(channel_scenes);

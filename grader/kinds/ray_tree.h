@@ -57,6 +57,8 @@ class RayTreeTask final : public Task {
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
   std::vector<std::string> conclusion() const override;
+  // The convention on a point that faces away from a light whose shadow ray is blocked.
+  void follow(const Conventions& conventions) override;
 
   const Scene& scene() const { return scene_; }
   // The tree's rays, hits, shadows and terms. When the scene has colours, its intensities are

@@ -177,6 +177,7 @@ Problem read_plain_problem(const Cursor& c, const Conventions& defaults) {
   p.path = c.path();
   p.source_file = c.file();
   p.task = entry->read(c);
+  p.task->follow(p.conventions);
   if (!p.method.empty()) {
     auto methods = p.task->methods();
     if (std::find(methods.begin(), methods.end(), p.method) == methods.end()) {

@@ -38,6 +38,22 @@ struct SolutionPart {
   std::vector<Figure> figures;
 };
 
+// Conventions on which textbooks differ, so that an exercise can say which it follows
+// (docs/grading.md): a problem's "conventions", or a bank file's for all its problems.
+struct Conventions {
+  // A ray lying in a plane, or running along a cylinder's side, meets it along a whole line.
+  // kEither: "contained": true and "no intersection" ([]) are both right (the default);
+  // kLine: only "contained": true is; kMiss: only [] is.
+  enum class Contained { kEither, kLine, kMiss };
+  Contained contained = Contained::kEither;
+  // A point of a ray tree whose surface faces away from a light (N·L ≤ 0) while a shadow ray
+  // toward that light would also meet another object. kEither: "in shadow" and "not in
+  // shadow" are both right (the default); kShadowRay: the shadow ray decides (in shadow);
+  // kNormalFirst: N·L is tested first, so the ray is never cast (not in shadow).
+  enum class FacingAway { kEither, kShadowRay, kNormalFirst };
+  FacingAway facing_away = FacingAway::kEither;
+};
+
 // The kind-specific part of a problem: what it asks and how to answer it.
 class Task {
  public:
@@ -58,22 +74,10 @@ class Task {
   // The precision the answer's hit-or-miss decision needed ("double", "double-double", "mpfr",
   // "exact-boundary"), for kinds that know it.
   virtual std::optional<std::string> level() const { return std::nullopt; }
-};
-
-// Conventions on which textbooks differ, so that an exercise can say which it follows
-// (docs/grading.md): a problem's "conventions", or a bank file's for all its problems.
-struct Conventions {
-  // A ray lying in a plane, or running along a cylinder's side, meets it along a whole line.
-  // kEither: "contained": true and "no intersection" ([]) are both right (the default);
-  // kLine: only "contained": true is; kMiss: only [] is.
-  enum class Contained { kEither, kLine, kMiss };
-  Contained contained = Contained::kEither;
-  // A point of a ray tree whose surface faces away from a light (N·L ≤ 0) while a shadow ray
-  // toward that light would also meet another object. kEither: "in shadow" and "not in
-  // shadow" are both right (the default); kShadowRay: the shadow ray decides (in shadow);
-  // kNormalFirst: N·L is tested first, so the ray is never cast (not in shadow).
-  enum class FacingAway { kEither, kShadowRay, kNormalFirst };
-  FacingAway facing_away = FacingAway::kEither;
+  // The course's conventions, for a kind whose reference answer depends on one (a ray tree's
+  // point that faces away from a light whose shadow ray is blocked anyway): called once, right
+  // after the task is read, so that its answer, worked solution and sketch follow them.
+  virtual void follow(const Conventions& /*conventions*/) {}
 };
 
 // Reads a "conventions" object on top of `base`. Throws Error naming the path of a fault.

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "problems/problem.h"
 #include "scenes/media.h"
 #include "scenes/optics.h"
 #include "scenes/scene.h"
@@ -117,6 +118,9 @@ struct RayTree {
   RayCounts counts;
   std::vector<Effect> effects;
   std::vector<Crossing> crossings;  // ask kMedia: every boundary along the primary ray's line
+  // The course's reading of a point that faces away from a light whose shadow ray is blocked
+  // anyway (the problem's conventions): shadow_reading() applies it.
+  Conventions::FacingAway facing_away = Conventions::FacingAway::kEither;
 
   const TreeNode* find(std::string_view path) const;
   std::vector<int> children(int node) const;  // reflection first, then refraction

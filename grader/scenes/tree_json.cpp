@@ -41,11 +41,27 @@ bool shadow_either(const TreeNode& node) {
          });
 }
 
-std::vector<std::string> shadow_blockers(const RayTree& /*tree*/, const Scene& scene,
+ShadowReading shadow_reading(const RayTree& tree, const TreeNode& node) {
+  ShadowReading r;
+  r.in_shadow = in_shadow(node);
+  r.faces_away = faces_away(node);
+  if (shadow_either(node)) {
+    using F = Conventions::FacingAway;
+    switch (tree.facing_away) {
+      case F::kEither: r.either = true; break;
+      case F::kShadowRay: r.in_shadow = true; break;
+      case F::kNormalFirst: break;
+    }
+  }
+  return r;
+}
+
+std::vector<std::string> shadow_blockers(const RayTree& tree, const Scene& scene,
                                          const TreeNode& node) {
+  bool by_convention = !in_shadow(node) && shadow_reading(tree, node).in_shadow;
   std::vector<std::string> out;
   for (const auto& s : node.lights) {
-    for (int b : s.blockers) {
+    for (int b : by_convention ? s.behind_blockers : s.blockers) {
       const std::string& name = scene.objects[b].name;
       if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
     }
@@ -100,9 +116,10 @@ nlohmann::json node_json(const RayTree& tree, const Scene& scene, const TreeNode
     }
     j["lights"] = lights;
     j["terms"] = node_terms(n);
-    j["in_shadow"] = in_shadow(n);
-    if (in_shadow(n)) j["shadowed_by"] = shadow_blockers(tree, scene, n);
-    if (faces_away(n)) j["faces_away"] = true;
+    ShadowReading shadow = shadow_reading(tree, n);
+    j["in_shadow"] = shadow.in_shadow;
+    if (shadow.in_shadow) j["shadowed_by"] = shadow_blockers(tree, scene, n);
+    if (shadow.faces_away) j["faces_away"] = true;
   }
   nlohmann::json children = nlohmann::json::array();
   for (int c : tree.children(n.index)) children.push_back(tree.nodes[c].label);

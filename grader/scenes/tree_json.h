@@ -21,10 +21,22 @@ bool in_shadow(const TreeNode& node);
 bool faces_away(const TreeNode& node);
 // A point that faces away from every light that could reach it, where a shadow ray cast anyway
 // toward one of them would meet another object: both readings hold, "faces away" and "in
-// shadow" (some courses cast the ray first), and grading accepts either.
+// shadow" (some courses cast the ray first), and grading accepts either unless the course's
+// convention picks one.
 bool shadow_either(const TreeNode& node);
 
-// The objects that block a node's lights, by name, nearest first for each light.
+// What the reference says of a hit node's shadow under the tree's convention (its
+// facing_away): the one place that decides it, for the answer, the worked solution, the
+// sketches and grading alike.
+struct ShadowReading {
+  bool in_shadow = false;   // the reference's verdict
+  bool either = false;      // "not in shadow" is right as well (the convention leaves it open)
+  bool faces_away = false;  // no light reaches it and no shadow ray is blocked: N·L ≤ 0
+};
+ShadowReading shadow_reading(const RayTree& tree, const TreeNode& node);
+
+// The objects that block a node's lights, by name, nearest first for each light; at a point in
+// shadow by the convention alone, those its shadow rays meet although it faces away.
 std::vector<std::string> shadow_blockers(const RayTree& tree, const Scene& scene,
                                          const TreeNode& node);
 

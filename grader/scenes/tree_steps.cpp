@@ -41,9 +41,10 @@ SolutionPart overview(const RayTree& tree, const Scene& scene) {
   return part;
 }
 
-// Shadow ray and Phong steps for one light.
+// Shadow ray and Phong steps for one light. `cast_anyway`: the course casts a shadow ray toward
+// a light the surface faces away from (its facing_away convention "shadow-ray").
 void light_steps(Deriver& d, const Scene& scene, const TreeNode& node, const ShadowCheck& s, int k,
-                 bool intensity) {
+                 bool intensity, bool cast_anyway) {
   const Light& light = scene.lights[s.light];
   std::string i = std::to_string(k + 1);
   E L;
@@ -68,8 +69,17 @@ void light_steps(Deriver& d, const Scene& scene, const TreeNode& node, const Sha
   std::string verdict;
   switch (s.status) {
     case LightStatus::kBehind:
-      verdict = fmt::format("N·L ≤ 0: the surface faces away from {}; no shadow ray is needed.",
-                            light.name);
+      if (cast_anyway && !s.behind_blockers.empty()) {
+        std::vector<std::string> by;
+        for (int b : s.behind_blockers) by.push_back(scene.objects[b].name);
+        verdict = fmt::format(
+            "N·L ≤ 0: the surface faces away from {}; the course casts the shadow ray anyway, "
+            "and it meets {}.",
+            light.name, names_list(by));
+      } else {
+        verdict = fmt::format("N·L ≤ 0: the surface faces away from {}; no shadow ray is needed.",
+                              light.name);
+      }
       break;
     case LightStatus::kVisible:
       verdict = fmt::format("The shadow ray toward {} meets no object: the light is visible.",
@@ -247,15 +257,20 @@ Derivation node_steps(const RayTree& tree, const Scene& scene, const TreeNode& n
   bool intensity = tree.ask == Ask::kIntensity;
   if (intensity) d.step("V", "V", -d.sym("D_hat"), "toward the viewer");
   for (std::size_t k = 0; k < node.lights.size(); ++k) {
-    light_steps(d, scene, node, node.lights[k], static_cast<int>(k), intensity);
+    light_steps(d, scene, node, node.lights[k], static_cast<int>(k), intensity,
+                tree.facing_away == Conventions::FacingAway::kShadowRay);
   }
   std::vector<std::string> terms = node_terms(node);
   if (scene.lights.empty()) {
     d.conclude("The scene has no lights: only the ambient term applies.");
-  } else if (in_shadow(node)) {
-    d.conclude(fmt::format("{} is in shadow, blocked by {}: only the ambient term applies.",
-                           node.label, names_list(shadow_blockers(tree, scene, node))));
-  } else if (faces_away(node)) {
+  } else if (ShadowReading shadow = shadow_reading(tree, node); shadow.in_shadow) {
+    d.conclude(fmt::format(
+        "{} is in shadow, blocked by {}{}: only the ambient term applies.", node.label,
+        names_list(shadow_blockers(tree, scene, node)),
+        shadow.faces_away ? " (it faces away from the light too, but the course lets the shadow "
+                            "ray decide)"
+                          : ""));
+  } else if (shadow.faces_away) {
     d.conclude(fmt::format(
         "{} faces away from every light (N·L ≤ 0), which is not a shadow: only the ambient "
         "term applies.",

@@ -154,7 +154,7 @@ std::string tree_svg(const RayTree& tree, const Scene& scene, const std::vector<
       out += text_at(p.x, p.y + 22, "miss", " fill=\"#666\"");
       continue;
     }
-    bool shadowed = in_shadow(n);
+    bool shadowed = shadow_reading(tree, n).in_shadow;
     out +=
         fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{}\" fill=\"{}\" stroke=\"#333\"/>\n",
                     p.x, p.y, kRadius, shadowed ? "#ddd" : "#ffd");
