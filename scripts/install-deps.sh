@@ -8,7 +8,7 @@ packages=(
   libbenchmark-dev libmpfr-dev libglm-dev
   python3-jsonschema pkg-config clang-format strace
   libgmp-dev file nodejs
-  libzip-dev libpugixml-dev libxml2-utils
+  libzip-dev libpugixml-dev libxml2-utils libutf8proc-dev
 )
 # npm fetches the browser libraries the build bundles (scripts/fetch-web-libs.sh). Debian ships
 # it as its own package; a nodejs from elsewhere (NodeSource) carries it already.
