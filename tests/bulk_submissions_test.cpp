@@ -280,21 +280,27 @@ TEST_F(BulkSubmissions, BlankEmailOwnsNothing) {
 // "zolaémile" is "Émile Zola" whichever of NFC or NFD either is written in, "straußhans" is
 // "Hans STRAUSS" (ß folds to ss), and a name that folds to nothing matches nobody.
 TEST_F(BulkSubmissions, CanvasNamesOutsideAscii) {
-  const std::string e_nfc = "\xC3\x89", e_nfd = "E\xCC\x81";   // É
+  const std::string e_nfc = "\xC3\x89", e_nfd = "E\xCC\x81";              // É
   const std::string e_small_nfc = "\xC3\xA9", e_small_nfd = "e\xCC\x81";  // é
   write_text(dir_.path() / "roster-u.csv",
              "id,name,email\n"
-             "z1," + e_nfc + "mile Zola,zola@example.edu\n"
-             "z2," + e_nfd + "mile Zolb,zolb@example.edu\n"
-             "z3,Hans STRAUSS,hans@example.edu\n"
-             "z4,___,blank@example.edu\n");
+             "z1," +
+                 e_nfc +
+                 "mile Zola,zola@example.edu\n"
+                 "z2," +
+                 e_nfd +
+                 "mile Zolb,zolb@example.edu\n"
+                 "z3,Hans STRAUSS,hans@example.edu\n"
+                 "z4,___,blank@example.edu\n");
   for (const char* id : {"z1", "z2", "z3"})
     write_text(dir_.path() / (std::string(id) + ".json"),
                fmt::format(R"({{"answers": {{{}}}}})", kClassSphere));
   write_text(dir_.path() / "z4.json", fmt::format(R"({{"answers": {{{}}}}})", kClassPlane));
   zip("canvas.zip", {{"zola" + e_small_nfd + "mile_2001_9001_answers.json", "z1.json"},
                      {"zolb" + e_small_nfc + "mile_2002_9002_answers.json", "z2.json"},
-                     {"strau\xC3\x9F" "hans_2003_9003_answers.json", "z3.json"},
+                     {"strau\xC3\x9F"
+                      "hans_2003_9003_answers.json",
+                      "z3.json"},
                      {"---_2004_9004_answers.json", "z4.json"}});
   auto r = run_raygrade(
       "grade --assignment hw.json --roster roster-u.csv canvas.zip --format csv "
@@ -314,8 +320,9 @@ TEST_F(BulkSubmissions, CanvasNamesOutsideAscii) {
 // submissions keeps --out out of it, written either way.
 TEST_F(BulkSubmissions, OutBesideAZipAbsoluteOrRelative) {
   zip("canvas.zip", {{"lovelaceada_1001_9001_answers.json", "subs/s1.json"}});
-  const std::string base = "grade --assignment hw.json --roster roster-canvas.csv canvas.zip "
-                           "--format html --now 2026-12-01T00:00:00Z --out ";
+  const std::string base =
+      "grade --assignment hw.json --roster roster-canvas.csv canvas.zip "
+      "--format html --now 2026-12-01T00:00:00Z --out ";
   auto relative = run_raygrade(base + "out-rel", dir_.path());
   EXPECT_EQ(relative.exit_code, 0) << relative.err;
   EXPECT_TRUE(fs::exists(dir_.path() / "out-rel" / "s1.html")) << relative.err;
@@ -325,8 +332,9 @@ TEST_F(BulkSubmissions, OutBesideAZipAbsoluteOrRelative) {
   auto itself = run_raygrade(base + "canvas.zip", dir_.path());
   EXPECT_EQ(itself.exit_code, 2) << itself.err;
   EXPECT_NE(itself.err.find("inside the submissions"), std::string::npos) << itself.err;
-  const std::string folder = "grade --assignment hw.json --roster roster.csv subs --format html "
-                             "--now 2026-12-01T00:00:00Z --out ";
+  const std::string folder =
+      "grade --assignment hw.json --roster roster.csv subs --format html "
+      "--now 2026-12-01T00:00:00Z --out ";
   auto in_rel = run_raygrade(folder + "subs/out", dir_.path());
   auto in_abs = run_raygrade(folder + "'" + (dir_.path() / "subs/out").string() + "'", dir_.path());
   for (const auto& r : {in_rel, in_abs}) {

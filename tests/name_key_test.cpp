@@ -16,14 +16,20 @@ TEST(NameKey, FoldsCaseAndNormalForm) {
   EXPECT_EQ(name_key("\xC3\x89mile"), "\xC3\xA9mile");
   EXPECT_EQ(name_key("E\xCC\x81mile"), "\xC3\xA9mile");
   // ß folds to "ss" (CaseFolding.txt, status F), as does SS.
-  EXPECT_EQ(name_key("Stra\xC3\x9F" "e"), "strasse");
+  EXPECT_EQ(name_key("Stra\xC3\x9F"
+                     "e"),
+            "strasse");
   EXPECT_EQ(name_key("STRASSE"), "strasse");
   // Σ and final ς both fold to σ.
   EXPECT_EQ(name_key("\xCE\xA3"), name_key("\xCF\x82"));
   // The ligature ﬁ (U+FB01) is "fi" in NFKC.
-  EXPECT_EQ(name_key("\xEF\xAC\x81" "nn"), "finn");
+  EXPECT_EQ(name_key("\xEF\xAC\x81"
+                     "nn"),
+            "finn");
   // Zero-width and bidi controls are ignored: U+200B, U+202E (RLO), U+2066 (LRI).
-  EXPECT_EQ(name_key("A\xE2\x80\x8B" "da\xE2\x80\xAE\xE2\x81\xA6"), "ada");
+  EXPECT_EQ(name_key("A\xE2\x80\x8B"
+                     "da\xE2\x80\xAE\xE2\x81\xA6"),
+            "ada");
   EXPECT_EQ(name_key("\xE2\x80\x8B"), "");
   // Not UTF-8: ASCII lowered, the rest byte for byte.
   EXPECT_EQ(name_key("Jos\xE9"), "jos\xE9");

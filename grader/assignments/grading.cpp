@@ -113,9 +113,8 @@ StudentIdentity AssignmentGrader::identify_uploader(
   // An empty address is nobody's: not that of an account whose address is empty too.
   auto uploaded_by = [&](const std::string& email) {
     std::string key = email_key(email);
-    return !key.empty() &&
-           std::any_of(uploaders.begin(), uploaders.end(),
-                       [&](const auto& u) { return email_key(u.email) == key; });
+    return !key.empty() && std::any_of(uploaders.begin(), uploaders.end(),
+                                       [&](const auto& u) { return email_key(u.email) == key; });
   };
   if (options_.roster.empty()) {
     // No roster: an account cannot be tied to a student id, so nothing may depend on one.

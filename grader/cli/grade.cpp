@@ -179,8 +179,7 @@ std::optional<int> setup_from_assignment(const GradeCliOptions& o, GradeSetup& s
   s.ids = s.spec_grader->problem_ids();
   s.title = s.spec->title.empty() ? s.spec->id : s.spec->title;
   s.per_student = true;
-  s.grade_one = [g = s.spec_grader.get()](const std::string& f,
-                                          std::optional<FileIdentity> seen) {
+  s.grade_one = [g = s.spec_grader.get()](const std::string& f, std::optional<FileIdentity> seen) {
     return g->grade_file(f, seen);
   };
   return std::nullopt;
@@ -414,10 +413,9 @@ int run_grade(const GradeCliOptions& o) {
   GradeOutput output(o, *format, setup, *pick, single);
   auto grade_at = [&](std::size_t i) {
     auto start = std::chrono::steady_clock::now();
-    Graded r{
-        i < files.size() ? setup.grade_one(files[i], seen[i])
-                         : grade_bulk(setup, bulk[i - files.size()]),
-        {}};
+    Graded r{i < files.size() ? setup.grade_one(files[i], seen[i])
+                              : grade_bulk(setup, bulk[i - files.size()]),
+             {}};
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.text = output.render(r.grade, seconds);

@@ -92,8 +92,7 @@ int run_regrade(const RegradeOptions& o) {
   for (const auto& e : errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   unsigned jobs = o.jobs > 0 ? o.jobs : default_jobs();
   auto pairs = parallel_map<std::pair<SubmissionGrade, SubmissionGrade>>(
-      files.size(), jobs,
-      [&](std::size_t i) {
+      files.size(), jobs, [&](std::size_t i) {
         return std::make_pair(before.grade(files[i], seen[i]), after.grade(files[i], seen[i]));
       });
   std::size_t changed = 0;

@@ -20,9 +20,8 @@ std::string name_key(std::string_view s) {
 #if RAYGRADE_HAS_UTF8PROC
   if (!is_valid_utf8(s)) return ascii_lower(std::string(s));
   utf8proc_uint8_t* folded = nullptr;
-  auto options = static_cast<utf8proc_option_t>(UTF8PROC_STABLE | UTF8PROC_COMPAT |
-                                                UTF8PROC_COMPOSE | UTF8PROC_CASEFOLD |
-                                                UTF8PROC_IGNORE);
+  auto options = static_cast<utf8proc_option_t>(
+      UTF8PROC_STABLE | UTF8PROC_COMPAT | UTF8PROC_COMPOSE | UTF8PROC_CASEFOLD | UTF8PROC_IGNORE);
   utf8proc_ssize_t n = utf8proc_map(reinterpret_cast<const utf8proc_uint8_t*>(s.data()),
                                     static_cast<utf8proc_ssize_t>(s.size()), &folded, options);
   std::unique_ptr<utf8proc_uint8_t, decltype(&std::free)> owned(folded, &std::free);

@@ -84,8 +84,8 @@ nlohmann::json submission_json(const SubmissionGrade& g) {
   j["gradable"] = g.gradable;
   if (!g.gradable) {
     const Diagnostic& d = *g.fault;
-    j["fault"] = {{"file", printable(d.file)},     {"path", d.path}, {"line", d.line},
-                  {"column", d.column}, {"code", d.code}, {"message", d.message}};
+    j["fault"] = {{"file", printable(d.file)}, {"path", d.path}, {"line", d.line},
+                  {"column", d.column},        {"code", d.code}, {"message", d.message}};
     return j;
   }
   j["score"] = g.score;

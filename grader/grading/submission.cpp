@@ -1,12 +1,12 @@
 // Reading and grading submissions.
 #include "grading/submission.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 #include <tuple>
-
-#include <sys/stat.h>
 
 #include "core/escape.h"
 #include "json/cursor.h"
