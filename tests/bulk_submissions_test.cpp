@@ -228,6 +228,167 @@ TEST_F(BulkSubmissions, MoodleZipGradesAsTheFilesOneByOne) {
   EXPECT_EQ(zipped, one_by_one());
 }
 
+// An empty field ties nothing: a worksheet row without an email address is no roster student's,
+// not the one roster student who has no email (issue 47), in the Moodle zip and in the feedback
+// zip for Moodle alike.
+TEST_F(BulkSubmissions, BlankEmailOwnsNothing) {
+  std::string roster = testing::class_roster_csv();
+  roster.replace(roster.find("don@example.edu"), std::string("don@example.edu").size(), "");
+  write_text(dir_.path() / "roster-blank.csv", roster);
+  std::string sheet = read_text(dir_.path() / "worksheet.csv");
+  sheet += "Participant 107,Mallory Intruder,,Submitted,,5.00,-\n";
+  sheet.replace(sheet.find("don@example.edu"), std::string("don@example.edu").size(), "");
+  write_text(dir_.path() / "worksheet-blank.csv", sheet);
+  // Mallory's file (with s1's right answers, naming nobody) and Donald's own.
+  write_text(dir_.path() / "mallory.json",
+             fmt::format(R"({{"answers": {{{}, {}}}}})", kClassSphere, kClassPlane));
+  zip("moodle.zip", {{"Mallory Intruder_107_assignsubmission_file/answers.json", "mallory.json"},
+                     {"Donald Knuth_106_assignsubmission_file/answers.json", "subs/s6.json"}});
+  // Donald's feedback page is not made of Mallory's file (nor of his own: row 106 has no email
+  // either, so nothing ties it to him).
+  auto r = run_raygrade(
+      "grade --assignment hw.json --roster roster-blank.csv moodle.zip --format html --out "
+      "zipped --moodle-worksheet worksheet-blank.csv --now 2026-12-01T00:00:00Z",
+      dir_.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_FALSE(fs::exists(dir_.path() / "zipped" / "s6.html"));
+  EXPECT_NE(r.err.find("Mallory Intruder_107_assignsubmission_file/answers.json: error: not "
+                       "graded: Moodle participant 107"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("no email address"), std::string::npos) << r.err;
+  // Donald's file: row 106 has no email either, so it is tied to nobody.
+  EXPECT_NE(r.err.find("Moodle participant 106"), std::string::npos) << r.err;
+  // The feedback zip for Moodle: Donald's page (he has no email) goes in no row's folder.
+  auto html = run_raygrade(
+      "grade --assignment hw.json --roster roster-blank.csv subs/s6.json subs/s1.json --format "
+      "html --out pages --moodle-worksheet worksheet-blank.csv --now 2026-12-01T00:00:00Z",
+      dir_.path());
+  auto list = run_shell(
+      "/usr/bin/python3 -c 'import zipfile; print(\"\\n\".join(zipfile.ZipFile("
+      "\"pages/moodle-feedback.zip\").namelist()))'",
+      dir_.path());
+  ASSERT_EQ(list.exit_code, 0) << list.err << html.err;
+  EXPECT_EQ(list.out.find("Mallory"), std::string::npos) << list.out;
+  EXPECT_EQ(list.out.find("_106_"), std::string::npos) << list.out;
+  EXPECT_NE(list.out.find("Ada Lovelace_101_assignfeedback_file/s1.html"), std::string::npos)
+      << list.out;
+}
+
+// Canvas writes a name in lower case without spaces; the roster's name is matched to it by
+// Unicode's full case folding and normalisation (issue 47), not by ASCII's lower case alone:
+// "zolaémile" is "Émile Zola" whichever of NFC or NFD either is written in, "straußhans" is
+// "Hans STRAUSS" (ß folds to ss), and a name that folds to nothing matches nobody.
+TEST_F(BulkSubmissions, CanvasNamesOutsideAscii) {
+  const std::string e_nfc = "\xC3\x89", e_nfd = "E\xCC\x81";              // É
+  const std::string e_small_nfc = "\xC3\xA9", e_small_nfd = "e\xCC\x81";  // é
+  write_text(dir_.path() / "roster-u.csv",
+             "id,name,email\n"
+             "z1," +
+                 e_nfc +
+                 "mile Zola,zola@example.edu\n"
+                 "z2," +
+                 e_nfd +
+                 "mile Zolb,zolb@example.edu\n"
+                 "z3,Hans STRAUSS,hans@example.edu\n"
+                 "z4,___,blank@example.edu\n");
+  for (const char* id : {"z1", "z2", "z3"})
+    write_text(dir_.path() / (std::string(id) + ".json"),
+               fmt::format(R"({{"answers": {{{}}}}})", kClassSphere));
+  write_text(dir_.path() / "z4.json", fmt::format(R"({{"answers": {{{}}}}})", kClassPlane));
+  zip("canvas.zip", {{"zola" + e_small_nfd + "mile_2001_9001_answers.json", "z1.json"},
+                     {"zolb" + e_small_nfc + "mile_2002_9002_answers.json", "z2.json"},
+                     {"strau\xC3\x9F"
+                      "hans_2003_9003_answers.json",
+                      "z3.json"},
+                     {"---_2004_9004_answers.json", "z4.json"}});
+  auto r = run_raygrade(
+      "grade --assignment hw.json --roster roster-u.csv canvas.zip --format csv "
+      "--now 2026-12-01T00:00:00Z",
+      dir_.path());
+  auto t = totals(r.out);
+  EXPECT_EQ(t["z1"], "2") << r.out << r.err;
+  EXPECT_EQ(t["z2"], "2") << r.out << r.err;
+  EXPECT_EQ(t["z3"], "2") << r.out << r.err;
+  EXPECT_EQ(t["z4"], "0") << r.out << r.err;
+  EXPECT_EQ(r.exit_code, 2) << r.err;  // "---" is nobody
+  EXPECT_NE(r.err.find("Canvas's '---'"), std::string::npos) << r.err;
+}
+
+// A zip is read whole before anything is written: --out beside it is accepted whether it is
+// written as an absolute or a relative path; only the zip itself is refused. A folder of
+// submissions keeps --out out of it, written either way.
+TEST_F(BulkSubmissions, OutBesideAZipAbsoluteOrRelative) {
+  zip("canvas.zip", {{"lovelaceada_1001_9001_answers.json", "subs/s1.json"}});
+  const std::string base =
+      "grade --assignment hw.json --roster roster-canvas.csv canvas.zip "
+      "--format html --now 2026-12-01T00:00:00Z --out ";
+  auto relative = run_raygrade(base + "out-rel", dir_.path());
+  EXPECT_EQ(relative.exit_code, 0) << relative.err;
+  EXPECT_TRUE(fs::exists(dir_.path() / "out-rel" / "s1.html")) << relative.err;
+  auto absolute = run_raygrade(base + "'" + (dir_.path() / "out-abs").string() + "'", dir_.path());
+  EXPECT_EQ(absolute.exit_code, 0) << absolute.err;
+  EXPECT_TRUE(fs::exists(dir_.path() / "out-abs" / "s1.html")) << absolute.err;
+  auto itself = run_raygrade(base + "canvas.zip", dir_.path());
+  EXPECT_EQ(itself.exit_code, 2) << itself.err;
+  EXPECT_NE(itself.err.find("inside the submissions"), std::string::npos) << itself.err;
+  const std::string folder =
+      "grade --assignment hw.json --roster roster.csv subs --format html "
+      "--now 2026-12-01T00:00:00Z --out ";
+  auto in_rel = run_raygrade(folder + "subs/out", dir_.path());
+  auto in_abs = run_raygrade(folder + "'" + (dir_.path() / "subs/out").string() + "'", dir_.path());
+  for (const auto& r : {in_rel, in_abs}) {
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("inside the submissions"), std::string::npos) << r.err;
+  }
+}
+
+// A file of the zip that is no JSON is its student's rejected submission (the platform says
+// whose it is), not "no submission".
+TEST_F(BulkSubmissions, AnEntryThatWillNotParseIsRejectedNotMissing) {
+  write_text(dir_.path() / "broken.json", "{\"answers\": {");
+  zip("canvas.zip", {{"lovelaceada_1001_9001_answers.json", "broken.json"},
+                     {"turingalan_1002_9002_answers.json", "subs/s2.json"}});
+  auto r = run_raygrade(
+      "grade --assignment hw.json --roster roster-canvas.csv canvas.zip --format csv "
+      "--now 2026-12-01T00:00:00Z",
+      dir_.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  std::string ada_row;
+  std::istringstream in(r.out);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("Ada Lovelace,s1,", 0) == 0) ada_row = line;
+  EXPECT_NE(ada_row.find("rejected"), std::string::npos) << r.out;
+  EXPECT_EQ(ada_row.find("no submission"), std::string::npos) << r.out;
+  EXPECT_EQ(totals(r.out)["s2"], "2") << r.out;
+}
+
+// One platform's naming for a whole zip: a file of a Canvas zip that its student named to look
+// like Moodle's "<name>_<participant>_assignsubmission_file_<file>" is still the Canvas user's,
+// not Moodle participant 102's (Alan's, on the worksheet).
+TEST_F(BulkSubmissions, ACanvasFileNamedLikeMoodlesIsCanvas) {
+  // Ada's file names no student, so only the zip's naming says whose it is.
+  write_text(dir_.path() / "nameless.json",
+             fmt::format(R"({{"answers": {{{}, {}}}}})", kClassSphere, kClassPlane));
+  zip("canvas.zip",
+      {{"lovelaceada_1001_9001_x_102_assignsubmission_file_answers.json", "nameless.json"},
+       {"hopper grace_1003_9003_answers.json", "subs/s3.json"}});
+  auto r = run_raygrade(
+      "grade --assignment hw.json --roster roster-canvas.csv canvas.zip --format csv-moodle "
+      "--moodle-worksheet worksheet.csv --now 2026-12-01T00:00:00Z",
+      dir_.path());
+  // Alan (participant 102) handed in nothing: his grade stays 0; Ada's file is Ada's.
+  EXPECT_NE(r.out.find("Participant 102,Alan Turing,alan@example.edu,Submitted,0,5.00,-"),
+            std::string::npos)
+      << r.out << r.err;
+  EXPECT_NE(r.out.find("Participant 101,Ada Lovelace,ada@example.edu,Submitted,5,5.00,-"),
+            std::string::npos)
+      << r.out << r.err;
+  EXPECT_NE(r.out.find("Participant 103,Grace Hopper,grace@example.edu,Submitted,3,5.00,-"),
+            std::string::npos)
+      << r.out << r.err;
+}
+
 // A zip needs the assignment and its roster; one that is not a zip is an error of its own.
 TEST_F(BulkSubmissions, ZipNeedsTheRosterAndMustBeAZip) {
   zip("canvas.zip", {{"lovelaceada_1001_9001_answers.json", "subs/s1.json"}});

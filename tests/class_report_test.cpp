@@ -550,5 +550,32 @@ TEST(ClassReport, RosterStudentsWithoutASubmissionAreListedApart) {
   EXPECT_NE(r.err.find("No submission from 4 students of the roster."), std::string::npos) << r.err;
 }
 
+// A submission that names no student stands under its file's name; a file name that is not
+// UTF-8 (Latin-1's "jos\xe9.json") is written escaped, and costs neither the report nor the
+// other students (issue 47: it stopped the report with the JSON library's own message).
+TEST(ClassReport, FileNameNotUtf8CostsNothing) {
+  testing::TempDir dir("report-latin1");
+  testing::write_text(dir.path() / "bank.json", R"({"problems": [
+    {"id": "sphere-1", "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+     "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}}]})");
+  std::filesystem::create_directories(dir.path() / "subs");
+  const char* right = R"({"answers": {"sphere-1": {"hits": [{"t": 1, "point": [1, 0, 0]},
+                        {"t": 3, "point": [3, 0, 0]}]}}})";
+  testing::write_text(dir.path() / "subs/jos\xe9.json", right);
+  testing::write_text(dir.path() / "subs/ana.json", right);
+  auto r = testing::run_raygrade("report --problems bank.json subs --out rep", dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_TRUE(std::filesystem::exists(dir.path() / "rep/report.html")) << r.err;
+  json report = json::parse(testing::read_text(dir.path() / "rep/report.json"));
+  EXPECT_EQ(report["problems"][0]["students"], 2) << report.dump();
+  EXPECT_NE(report.dump().find("jos\\\\xE9"), std::string::npos) << report.dump();
+  // grade too: its JSON is JSON, the student named by the escaped file name.
+  auto g = testing::run_raygrade("grade --problems bank.json subs --format json", dir.path());
+  EXPECT_EQ(g.exit_code, 0) << g.err;
+  json graded = json::parse(g.out, nullptr, false);
+  ASSERT_FALSE(graded.is_discarded()) << g.out;
+  EXPECT_NE(g.out.find("jos\\\\xE9"), std::string::npos) << g.out;
+}
+
 }  // namespace class_report_test
 }  // namespace raygrade

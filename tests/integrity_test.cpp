@@ -90,6 +90,43 @@ TEST(Integrity, ALinkSwappedInAfterTheWalkIsNotRead) {
   for (const auto& f : files) EXPECT_TRUE(assignment.grade_file(f).gradable) << f;
 }
 
+// Not the file but a folder the walk has listed, swapped for a link to a folder elsewhere
+// (issue 47): O_NOFOLLOW guards only the last component, so the file opened is compared with
+// the one the walk listed (device and inode), and another is refused.
+TEST(Integrity, AFolderSwappedForALinkAfterTheWalkIsNotRead) {
+  TempDir dir("swap-folder");
+  write_text(dir.path() / "bank.json", kIntegrityBank);
+  fs::create_directories(dir.path() / "subs" / "week1");
+  write_text(dir.path() / "subs" / "week1" / "Ada.json", kAnswer);
+  write_text(dir.path() / "subs" / "Bob.json", kAnswer);
+  fs::create_directories(dir.path() / "elsewhere");
+  write_text(dir.path() / "elsewhere" / "Ada.json", kAnswer);
+  std::vector<Diagnostic> errors;
+  std::vector<std::optional<FileIdentity>> seen;
+  std::vector<std::string> files =
+      submission_files({(dir.path() / "subs").string()}, errors, &seen);
+  ASSERT_EQ(files.size(), 2u);
+  ASSERT_EQ(seen.size(), 2u);
+  ASSERT_TRUE(seen[0] && seen[1]);
+  EXPECT_TRUE(errors.empty());
+  // The walk is done; now the folder week1 becomes a link to a folder outside the submissions.
+  fs::rename(dir.path() / "subs" / "week1", dir.path() / "week1-moved");
+  fs::create_directory_symlink(dir.path() / "elsewhere", dir.path() / "subs" / "week1");
+  Bank bank = load_bank({(dir.path() / "bank.json").string()});
+  Assignment assignment(bank.problems);
+  std::size_t ada = files[0].find("Ada.json") != std::string::npos ? 0 : 1;
+  SubmissionGrade g = assignment.grade_file(files[ada], seen[ada]);
+  EXPECT_FALSE(g.gradable);
+  ASSERT_TRUE(g.fault);
+  EXPECT_EQ(g.fault->code, "unreadable");
+  EXPECT_NE(g.fault->message.find("not the file the submissions were listed with"),
+            std::string::npos)
+      << g.fault->message;
+  // The file beside it is the one listed, and is graded; a file edited in place is too.
+  write_text(dir.path() / "subs" / "Bob.json", kAnswer);
+  EXPECT_TRUE(assignment.grade_file(files[1 - ada], seen[1 - ada]).gradable);
+}
+
 TEST(Integrity, ALegacyEncodedRosterNamesItsLineAndByteAndWritesNothing) {
   TempDir dir("latin1");
   // "Zoë" in Windows-1252: ë is the single byte EB, at byte 8 of line 3.

@@ -10,16 +10,18 @@
 #include "assignments/roster.h"
 #include "assignments/variants.h"
 #include "core/escape.h"
+#include "core/name_key.h"
 #include "core/zip.h"
 
 namespace raygrade {
 namespace {
 
-// Lower-case letters and digits alone: how Canvas writes a name into a file's name.
-std::string letters_and_digits(std::string_view s) {
+// A name as Canvas writes it into a file's name, as a key: case-folded and normalised
+// (name_key), then without ASCII spaces and punctuation. Letters outside ASCII are kept.
+std::string canvas_name_key(std::string_view s) {
   std::string out;
-  for (unsigned char c : s) {
-    if (std::isalnum(c) || c >= 0x80) out += static_cast<char>(std::tolower(c));
+  for (unsigned char c : name_key(s)) {
+    if (std::isalnum(c) || c >= 0x80) out += static_cast<char>(c);
   }
   return out;
 }
@@ -65,15 +67,11 @@ const StudentIdentity* canvas_owner(const BulkName& n, const BulkRoster& r, std:
         roster, [&](const StudentIdentity&) { return r.canvas_ids[i++] == n.platform_id; },
         fmt::format("Canvas user {} ({})", n.platform_id, n.name), problem);
   }
+  // A name with no letter or digit is nobody's (its key is empty).
+  std::string want = canvas_name_key(n.name);
+  std::size_t i = 0;
   return only_entry(
-      roster,
-      [&](const StudentIdentity& s) {
-        std::string name = trimmed(s.name);
-        std::size_t cut = name.rfind(' ');
-        std::string last_first =
-            cut == std::string::npos ? name : name.substr(cut + 1) + name.substr(0, cut);
-        return !name.empty() && letters_and_digits(last_first) == n.name;
-      },
+      roster, [&](const StudentIdentity&) { return !want.empty() && r.canvas_keys[i++] == want; },
       fmt::format("Canvas's '{}' (user {}; the roster has no canvas_id column to find it by)",
                   n.name, n.platform_id),
       problem);
@@ -108,7 +106,15 @@ const StudentIdentity* moodle_owner(const BulkName& n, const BulkRoster& r, std:
       const std::string& id = rows[i][identifier];
       std::size_t digits = id.find_last_not_of("0123456789") + 1;
       if (digits == id.size() || id.substr(digits) != n.platform_id) continue;
-      std::string mail = email_key(rows[i][email]);
+      std::string mail = email < rows[i].size() ? email_key(rows[i][email]) : std::string();
+      if (mail.empty()) {
+        // An empty address is nobody's, not that of a roster student who has none.
+        problem = fmt::format(
+            "Moodle participant {} ({}) has no email address on the worksheet {}, which ties "
+            "the participant to a roster student",
+            n.platform_id, n.name, r.moodle_worksheet_file);
+        return nullptr;
+      }
       return only_entry(
           roster, [&](const StudentIdentity& s) { return email_key(s.email) == mail; },
           fmt::format("Moodle participant {} ({}, {} on the worksheet)", n.platform_id, n.name,
@@ -119,14 +125,10 @@ const StudentIdentity* moodle_owner(const BulkName& n, const BulkRoster& r, std:
                           n.platform_id, n.name, r.moodle_worksheet_file);
     return nullptr;
   }
-  std::string want = ascii_lower(trimmed(n.name));
+  std::string want = name_key(trimmed(n.name));
+  std::size_t i = 0;
   return only_entry(
-      roster,
-      [&](const StudentIdentity& s) {
-        std::string name = s.name;
-        std::replace(name.begin(), name.end(), '_', ' ');
-        return !name.empty() && ascii_lower(trimmed(name)) == want;
-      },
+      roster, [&](const StudentIdentity&) { return !want.empty() && r.moodle_keys[i++] == want; },
       fmt::format("Moodle's '{}' (participant {}; without --moodle-worksheet the full name finds "
                   "the student)",
                   n.name, n.platform_id),
@@ -140,7 +142,7 @@ bool is_json_name(std::string_view file) {
 }  // namespace
 
 const std::vector<BulkFormat>& bulk_formats() {
-  // Moodle first: its names would also fit Canvas's pattern when a full name has no space.
+  // read_bulk_submissions chooses one of them for a whole zip.
   static const std::vector<BulkFormat> table = {
       {"Moodle", "<full name>_<participant>_assignsubmission_file/<file>", &parse_moodle,
        &moodle_owner},
@@ -154,34 +156,61 @@ bool is_zip_path(std::string_view path) {
 }
 
 std::vector<BulkSubmission> read_bulk_submissions(const std::string& path,
-                                                  const BulkRoster& roster) {
+                                                  const BulkRoster& given) {
+  BulkRoster roster = given;
+  roster.canvas_keys.clear();
+  roster.moodle_keys.clear();
+  for (const StudentIdentity& s : *roster.roster) {
+    // Canvas writes the last name first: a roster name's last word is taken as the last name.
+    std::string name = trimmed(s.name);
+    std::size_t cut = name.rfind(' ');
+    roster.canvas_keys.push_back(canvas_name_key(
+        cut == std::string::npos ? name : name.substr(cut + 1) + name.substr(0, cut)));
+    // Moodle writes '_' in a name as a space.
+    name = s.name;
+    std::replace(name.begin(), name.end(), '_', ' ');
+    roster.moodle_keys.push_back(name_key(trimmed(name)));
+  }
   std::vector<BulkSubmission> out;
-  for (ZipFileRead& f : read_zip(path)) {
+  std::vector<ZipFileRead> files = read_zip(path);
+  // One platform's naming for the whole zip, not a choice per file: a file of a Canvas zip whose
+  // student named it "x_102_assignsubmission_file_a.json" is still Canvas's, not Moodle
+  // participant 102's. Moodle never writes a name Canvas's naming fits (its participant number
+  // is followed by "_assignsubmission", never by a number), so a zip with any file Canvas's
+  // naming fits is Canvas's; any other is Moodle's.
+  const auto& formats = bulk_formats();
+  const BulkFormat* platform = &formats.front();
+  for (const BulkFormat& format : formats) {
+    if (format.title != "Canvas") continue;
+    for (const ZipFileRead& f : files)
+      if (format.parse(f.name)) platform = &format;
+  }
+  for (ZipFileRead& f : files) {
     BulkSubmission b;
     b.file = path + "/" + f.name;
     b.modified = f.modified;
     auto fail = [&](std::string message, std::string code) {
       b.fault = Diagnostic{b.file, "", 0, 0, Severity::kError, std::move(message), std::move(code)};
     };
-    std::optional<BulkName> name;
-    for (const BulkFormat& format : bulk_formats()) {
-      name = format.parse(f.name);
-      if (!name) continue;
-      b.platform = format.title;
+    std::optional<BulkName> name = platform->parse(f.name);
+    b.platform = platform->title;
+    if (name) {
       std::string problem;
-      b.owner = format.owner(*name, roster, problem);
+      b.owner = platform->owner(*name, roster, problem);
       if (!b.owner) {
         fail(fmt::format("not graded: {}", problem), "not-on-roster");
         b.claimed = StudentIdentity{name->name, "", ""};
       }
-      break;
     }
     if (!name) {
       std::string namings;
       for (const BulkFormat& format : bulk_formats())
         namings += fmt::format("{}{} names its files {}", namings.empty() ? "" : "; ", format.title,
                                format.naming);
-      fail(fmt::format("not graded: the file's name names no student ({})", namings), "no-student");
+      fail(fmt::format("not graded: the file's name names no student ({}; this zip is read as "
+                       "{}'s)",
+                       namings, platform->title),
+           "no-student");
     } else if (!b.fault && !is_json_name(name->file)) {
       fail(fmt::format("not graded: {} is not a .json submission (answers.json, as the handout "
                        "page saves it)",

@@ -28,6 +28,9 @@ struct BulkRoster {
   // ("Participant 101") and "Email address" tie a participant number to a roster email.
   const std::vector<std::vector<std::string>>* moodle_worksheet = nullptr;
   std::string moodle_worksheet_file;
+  // Per roster student, its name as each platform's naming is matched (filled by
+  // read_bulk_submissions, once per zip rather than once per file).
+  std::vector<std::string> canvas_keys, moodle_keys;
 };
 
 // One platform's file naming: one row of bulk_formats().
@@ -52,8 +55,9 @@ struct BulkSubmission {
   std::optional<StudentIdentity> claimed;  // whom the platform's naming names, for a fault's row
 };
 
-// The files of the zip at `path`, each tied to its roster student by the first platform whose
-// naming it follows. A file no platform's naming fits, one whose student is not on the roster,
+// The files of the zip at `path`, each tied to its roster student by one platform's naming,
+// chosen for the whole zip: Canvas's when any file follows it (Moodle never writes such a
+// name), else Moodle's. A file no platform's naming fits, one whose student is not on the roster,
 // one that is not a .json file or one that cannot be unpacked comes back with its fault alone.
 // Throws Error naming `path` when it is no zip archive.
 std::vector<BulkSubmission> read_bulk_submissions(const std::string& path,

@@ -310,17 +310,21 @@ std::vector<ZipEntry> moodle_feedback_files(const std::vector<std::vector<std::s
                                             std::vector<std::string>& notes) {
   MoodleWorksheet sheet(rows, file);
   std::map<std::string, std::string> email_of;  // roster id → email, in lower case
-  for (const auto& who : roster) email_of[who.id] = ascii_lower(who.email);
+  for (const auto& who : roster) {
+    if (!email_key(who.email).empty()) email_of[who.id] = email_key(who.email);
+  }
   std::map<std::string, std::string> folder_of;  // email → the folder Moodle reads
   for (std::size_t r = 1; r < rows.size(); ++r) {
     const std::string& id = rows[r][sheet.identifier];
     std::size_t digits = id.find_last_not_of("0123456789") + 1;
     if (digits == id.size()) continue;  // no participant number
+    // A row without an email address is nobody's, not a roster student's who has none.
+    if (email_key(rows[r][sheet.email]).empty()) continue;
     // Moodle's importer splits the folder name at '_': the name may hold none.
     std::string name = rows[r][sheet.full_name];
     std::replace_if(
         name.begin(), name.end(), [](char c) { return c == '_' || c == '/' || c == '\\'; }, ' ');
-    folder_of[ascii_lower(rows[r][sheet.email])] =
+    folder_of[email_key(rows[r][sheet.email])] =
         fmt::format("{}_{}_assignfeedback_file", name, id.substr(digits));
   }
   std::vector<ZipEntry> out;
@@ -346,14 +350,14 @@ std::string RosterGradebook::moodle_worksheet(const std::vector<std::vector<std:
   std::set<double> scaled;  // the Moodle maxima that differ from the assignment's points
   std::map<std::string, std::size_t> by_email;
   for (std::size_t i = 0; i < roster_.size(); ++i) {
-    if (!roster_[i].email.empty()) by_email[ascii_lower(roster_[i].email)] = i;
+    if (!email_key(roster_[i].email).empty()) by_email[email_key(roster_[i].email)] = i;
   }
   std::vector<bool> has_row(roster_.size(), false);
   std::string out;
   for (std::size_t r = 0; r < rows.size(); ++r) {
     std::vector<std::string> cells = rows[r];
     if (r > 0) {
-      auto it = by_email.find(ascii_lower(cells[email]));
+      auto it = by_email.find(email_key(cells[email]));
       if (it == by_email.end()) {
         notes.push_back(fmt::format("worksheet row {} ({}) is no roster student's: left as it was",
                                     r + 1, cells[email]));

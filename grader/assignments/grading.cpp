@@ -110,9 +110,11 @@ StudentIdentity AssignmentGrader::identify_uploader(
   std::string accounts;
   for (const auto& u : uploaders)
     accounts += fmt::format("{}'{}'", accounts.empty() ? "" : ", ", u.email);
+  // An empty address is nobody's: not that of an account whose address is empty too.
   auto uploaded_by = [&](const std::string& email) {
-    return std::any_of(uploaders.begin(), uploaders.end(),
-                       [&](const auto& u) { return email_key(u.email) == email_key(email); });
+    std::string key = email_key(email);
+    return !key.empty() && std::any_of(uploaders.begin(), uploaders.end(),
+                                       [&](const auto& u) { return email_key(u.email) == key; });
   };
   if (options_.roster.empty()) {
     // No roster: an account cannot be tied to a student id, so nothing may depend on one.
@@ -123,14 +125,15 @@ StudentIdentity AssignmentGrader::identify_uploader(
                             accounts),
                 "no-roster");
     }
-    if (claimed && !claimed->email.empty() && !uploaded_by(claimed->email)) {
+    if (claimed && !email_key(claimed->email).empty() && !uploaded_by(claimed->email)) {
       root.at("student").fail(
           fmt::format("the submission names '{}', who is not the account that uploaded it ({})",
                       claimed->email, accounts),
           "not-uploader");
     }
     for (const auto& u : uploaders) {
-      if (!claimed || claimed->email.empty() || email_key(u.email) == email_key(claimed->email))
+      if (!claimed || email_key(claimed->email).empty() ||
+          email_key(u.email) == email_key(claimed->email))
         return StudentIdentity{u.name, "", u.email};
     }
     // uploaded_by(claimed->email) held above, so one of the accounts matched.
@@ -166,9 +169,12 @@ StudentIdentity AssignmentGrader::identify_uploader(
   return *m.entry;
 }
 
-SubmissionGrade AssignmentGrader::grade_file(const std::string& path) {
+SubmissionGrade AssignmentGrader::grade_file(const std::string& path,
+                                             std::optional<FileIdentity> seen) {
+  JsonLimits limits = JsonLimits::submission();
+  limits.expected = seen;
   SubmissionGrade g = grade_loaded(
-      path, [&] { return load_json_file(path, JsonLimits::submission()); },
+      path, [&] { return load_json_file(path, limits); },
       [this](const Cursor& root) { return identify(root); });
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0) g.file_time = st.st_mtim.tv_sec;
@@ -196,6 +202,9 @@ SubmissionGrade AssignmentGrader::grade_handed_in(const std::string& name, std::
   SubmissionGrade g = grade_loaded(
       name, [&] { return parse_json_text(name, std::move(text), JsonLimits::submission()); }, who);
   g.file_time = modified;
+  // The platform says who handed the file in: a file that will not parse, or that names someone
+  // else, is that student's rejected submission, not "no submission".
+  if (!g.gradable) g.claimed = owner;
   return g;
 }
 
@@ -245,7 +254,7 @@ SubmissionGrade AssignmentGrader::grade_loaded(
     g.identity = who;
     g.student = who.display();
   } else if (g.student.empty()) {
-    g.student = std::filesystem::path(path).stem().string();
+    g.student = student_of_file(path);
   }
   g.score = g.max_score = 0;
   for (auto& r : g.results) {

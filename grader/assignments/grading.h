@@ -41,7 +41,9 @@ class AssignmentGrader {
   // is graded against the generic set when every student's numbers are the same and there is no
   // roster; else it is rejected with the reason, as is one that names a student not on the
   // roster, or one whose variant cannot be drawn.
-  SubmissionGrade grade_file(const std::string& path);
+  // `seen`: the file submission_files listed at `path`; another file found there is refused.
+  SubmissionGrade grade_file(const std::string& path,
+                             std::optional<FileIdentity> seen = std::nullopt);
 
   // Grades a submission handed in through a learning platform (a file of its bulk download):
   // `owner` is the roster student the platform says handed it in, and whoever the submission

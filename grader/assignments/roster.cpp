@@ -9,6 +9,7 @@
 #include "assignments/variants.h"
 #include "core/atomic_file.h"
 #include "core/escape.h"
+#include "core/name_key.h"
 
 namespace raygrade {
 namespace {
@@ -167,9 +168,12 @@ RosterMatch match_on_roster(const std::vector<StudentIdentity>& roster,
                         return email_key(s.email) == e;
                       })});
   }
-  if (std::string n = trimmed(who.name); !n.empty()) {
-    fields.push_back(
-        {"name", n, entries_where(roster, [&](const auto& s) { return trimmed(s.name) == n; })});
+  // Names in any case and Unicode form ("Émile" precomposed or not); a name with no letter
+  // left (only ignorable characters) names nobody.
+  if (std::string n = trimmed(who.name), key = name_key(n); !key.empty()) {
+    fields.push_back({"name", n, entries_where(roster, [&](const auto& s) {
+                        return name_key(trimmed(s.name)) == key;
+                      })});
   }
   RosterMatch m;
   if (fields.empty()) {

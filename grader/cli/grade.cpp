@@ -74,6 +74,12 @@ std::optional<std::string> out_among_submissions(const std::string& out,
   for (const auto& s : submissions) {
     auto p = std::filesystem::weakly_canonical(s, ec);
     if (ec) continue;
+    // A platform's zip is read whole before anything is written: --out may be beside it
+    // (however either is written), only not the zip itself.
+    if (is_zip_path(s) && !std::filesystem::is_directory(p, ec)) {
+      if (o == p) return s;
+      continue;
+    }
     if (!std::filesystem::is_directory(p, ec)) p = p.parent_path();
     auto rel = o.lexically_relative(p);
     if (!rel.empty() && *rel.begin() != "..") return s;
@@ -84,7 +90,7 @@ std::optional<std::string> out_among_submissions(const std::string& out,
 // What grades one file, the problems in gradebook order, and what the setting-up found: from
 // the bank, or from an assignment (each student's own variant).
 struct GradeSetup {
-  std::function<SubmissionGrade(const std::string&)> grade_one;
+  std::function<SubmissionGrade(const std::string&, std::optional<FileIdentity>)> grade_one;
   std::vector<std::string> ids;
   std::vector<Diagnostic> errors;
   std::vector<StudentIdentity> roster;
@@ -127,7 +133,9 @@ std::optional<int> setup_from_bank(const GradeCliOptions& o, GradeSetup& s) {
   s.assignment = std::make_unique<Assignment>(s.bank.problems, AssignmentOptions{o.answered_only});
   s.errors.insert(s.errors.end(), s.assignment->errors().begin(), s.assignment->errors().end());
   for (const auto& gr : s.assignment->graders()) s.ids.push_back(gr.problem().id);
-  s.grade_one = [a = s.assignment.get()](const std::string& f) { return a->grade_file(f); };
+  s.grade_one = [a = s.assignment.get()](const std::string& f, std::optional<FileIdentity> seen) {
+    return a->grade_file(f, seen);
+  };
   return std::nullopt;
 }
 
@@ -173,7 +181,9 @@ std::optional<int> setup_from_assignment(const GradeCliOptions& o, GradeSetup& s
   s.ids = s.spec_grader->problem_ids();
   s.title = s.spec->title.empty() ? s.spec->id : s.spec->title;
   s.per_student = true;
-  s.grade_one = [g = s.spec_grader.get()](const std::string& f) { return g->grade_file(f); };
+  s.grade_one = [g = s.spec_grader.get()](const std::string& f, std::optional<FileIdentity> seen) {
+    return g->grade_file(f, seen);
+  };
   return std::nullopt;
 }
 
@@ -415,8 +425,9 @@ int run_grade(const GradeCliOptions& o) {
   for (const auto& p : o.submissions) {
     if (!is_zip_path(p)) paths.push_back(p);
   }
+  std::vector<std::optional<FileIdentity>> seen;
   std::vector<std::string> files =
-      paths.empty() ? std::vector<std::string>{} : submission_files(paths, errors);
+      paths.empty() ? std::vector<std::string>{} : submission_files(paths, errors, &seen);
   for (const auto& e : errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   std::size_t total = files.size() + bulk.size();
   bool single = total == 1 && errors.empty();
@@ -427,9 +438,9 @@ int run_grade(const GradeCliOptions& o) {
   GradeOutput output(o, *format, setup, *pick, single);
   auto grade_at = [&](std::size_t i) {
     auto start = std::chrono::steady_clock::now();
-    Graded r{
-        i < files.size() ? setup.grade_one(files[i]) : grade_bulk(setup, bulk[i - files.size()]),
-        {}};
+    Graded r{i < files.size() ? setup.grade_one(files[i], seen[i])
+                              : grade_bulk(setup, bulk[i - files.size()]),
+             {}};
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.text = output.render(r.grade, seconds);
@@ -470,9 +481,11 @@ int grade_sample_submissions(const Bank& bank, const std::string& folder) {
   std::vector<Diagnostic> errors;
   std::size_t answers = 0, rejected = 0, mistakes = 0;
   double score = 0, max_score = 0;
-  std::vector<std::string> files = submission_files({folder}, errors);
-  for (const auto& f : files) {
-    SubmissionGrade g = assignment.grade_file(f);
+  std::vector<std::optional<FileIdentity>> seen;
+  std::vector<std::string> files = submission_files({folder}, errors, &seen);
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const std::string& f = files[i];
+    SubmissionGrade g = assignment.grade_file(f, seen[i]);
     if (!g.gradable) {
       fmt::print(stderr, "{}\n", format_diagnostic(*g.fault));
       ++rejected;

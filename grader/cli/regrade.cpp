@@ -45,8 +45,8 @@ class BankGrading {
     grader_ = std::make_unique<AssignmentGrader>(*spec_, spec_bank_->problems, options);
   }
   const std::vector<Diagnostic>& errors() const { return errors_; }
-  SubmissionGrade grade(const std::string& file) const {
-    return grader_ ? grader_->grade_file(file) : plain_->grade_file(file);
+  SubmissionGrade grade(const std::string& file, std::optional<FileIdentity> seen) const {
+    return grader_ ? grader_->grade_file(file, seen) : plain_->grade_file(file, seen);
   }
 
  private:
@@ -69,12 +69,14 @@ int run_regrade(const RegradeOptions& o) {
     for (const auto& e : g->errors()) fmt::print(stderr, "{}\n", format_diagnostic(e)), bad = true;
   if (bad) return kExitBadInput;
   std::vector<Diagnostic> errors;
-  std::vector<std::string> files = submission_files(o.submissions, errors);
+  std::vector<std::optional<FileIdentity>> seen;
+  std::vector<std::string> files = submission_files(o.submissions, errors, &seen);
   for (const auto& e : errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   unsigned jobs = o.jobs > 0 ? o.jobs : default_jobs();
   auto pairs = parallel_map<std::pair<SubmissionGrade, SubmissionGrade>>(
-      files.size(), jobs,
-      [&](std::size_t i) { return std::make_pair(before.grade(files[i]), after.grade(files[i])); });
+      files.size(), jobs, [&](std::size_t i) {
+        return std::make_pair(before.grade(files[i], seen[i]), after.grade(files[i], seen[i]));
+      });
   std::size_t changed = 0;
   for (const auto& [b, a] : pairs) {
     if (!b.gradable || !a.gradable) {

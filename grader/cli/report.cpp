@@ -52,9 +52,11 @@ class AssignmentSource {
   std::string title() const { return spec_.title.empty() ? spec_.id : spec_.title; }
   std::vector<const Problem*> problems() const { return bank_.problems; }
 
-  Handed grade(const std::string& path) const {
+  Handed grade(const std::string& path, std::optional<FileIdentity> seen) const {
     Handed h;
-    auto file = load_json_file(path, JsonLimits::submission());
+    JsonLimits limits = JsonLimits::submission();
+    limits.expected = seen;
+    auto file = load_json_file(path, limits);
     Cursor root(file);
     if (!root.is_object()) root.fail("a submission is a JSON object", "type");
     StudentIdentity who = grader_->identify(root);
@@ -65,7 +67,7 @@ class AssignmentSource {
     h.grade = graders.grade(file);
     h.grade.identity = who;
     // A submission that names nobody (numbers that are everyone's) is its file.
-    h.grade.student = who.empty() ? std::filesystem::path(path).stem().string() : who.display();
+    h.grade.student = who.empty() ? student_of_file(path) : who.display();
     h.grade.score = h.grade.max_score = 0;
     for (auto& r : h.grade.results) {
       for (const auto& ap : spec_.problems)
@@ -160,16 +162,19 @@ int run_report(const ReportOptions& o, bool problems_given) {
     for (const auto& g : plain->graders()) problems.push_back(&g.problem());
   }
   std::vector<Diagnostic> file_errors;
-  std::vector<std::string> files = submission_files(o.submissions, file_errors);
+  std::vector<std::optional<FileIdentity>> seen;
+  std::vector<std::string> files = submission_files(o.submissions, file_errors, &seen);
   for (const auto& e : file_errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   unsigned jobs = o.jobs > 0 ? o.jobs : default_jobs();
   auto graded = parallel_map<std::optional<Handed>>(
       files.size(), jobs, [&](std::size_t i) -> std::optional<Handed> {
         try {
-          if (source) return source->grade(files[i]);
-          Handed h{plain->grade_file(files[i]), {}, nullptr};
+          if (source) return source->grade(files[i], seen[i]);
+          Handed h{plain->grade_file(files[i], seen[i]), {}, nullptr};
           if (!h.grade.gradable) throw Error(*h.grade.fault);
-          auto file = load_json_file(files[i], JsonLimits::submission());
+          JsonLimits limits = JsonLimits::submission();
+          limits.expected = seen[i];
+          auto file = load_json_file(files[i], limits);
           if (file->root.contains("answers")) h.answers = file->root["answers"];
           return h;
         } catch (const Error& e) {

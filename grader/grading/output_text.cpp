@@ -77,14 +77,15 @@ std::string json_text(const nlohmann::json& j, int indent) {
 }
 
 nlohmann::json submission_json(const SubmissionGrade& g) {
-  nlohmann::json j = {{"file", g.file}, {"student", g.student}};
+  // A file name need not be UTF-8 (Latin-1's "jos\xe9.json"): JSON text must be.
+  nlohmann::json j = {{"file", printable(g.file)}, {"student", g.student}};
   if (!g.identity.id.empty()) j["student_id"] = g.identity.id;
   if (!g.identity.email.empty()) j["email"] = g.identity.email;
   j["gradable"] = g.gradable;
   if (!g.gradable) {
     const Diagnostic& d = *g.fault;
-    j["fault"] = {{"file", d.file},     {"path", d.path}, {"line", d.line},
-                  {"column", d.column}, {"code", d.code}, {"message", d.message}};
+    j["fault"] = {{"file", printable(d.file)}, {"path", d.path}, {"line", d.line},
+                  {"column", d.column},        {"code", d.code}, {"message", d.message}};
     return j;
   }
   j["score"] = g.score;
@@ -94,7 +95,7 @@ nlohmann::json submission_json(const SubmissionGrade& g) {
   j["problems"] = results;
   nlohmann::json findings = nlohmann::json::array();
   for (const auto& d : g.findings) {
-    findings.push_back({{"file", d.file},
+    findings.push_back({{"file", printable(d.file)},
                         {"path", d.path},
                         {"line", d.line},
                         {"column", d.column},

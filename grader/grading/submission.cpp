@@ -1,11 +1,14 @@
 // Reading and grading submissions.
 #include "grading/submission.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 #include <tuple>
 
+#include "core/escape.h"
 #include "json/cursor.h"
 
 namespace raygrade {
@@ -32,17 +35,24 @@ Assignment::Assignment(const std::vector<Problem>& problems, AssignmentOptions o
   }
 }
 
-SubmissionGrade Assignment::grade_file(const std::string& path) const {
+SubmissionGrade Assignment::grade_file(const std::string& path,
+                                       std::optional<FileIdentity> seen) const {
   try {
-    return grade(load_json_file(path, JsonLimits::submission()));
+    JsonLimits limits = JsonLimits::submission();
+    limits.expected = seen;
+    return grade(load_json_file(path, limits));
   } catch (const Error& e) {
     SubmissionGrade g;
     g.file = path;
-    g.student = std::filesystem::path(path).stem().string();
+    g.student = student_of_file(path);
     g.gradable = false;
     g.fault = e.diagnostic();
     return g;
   }
+}
+
+std::string student_of_file(const std::string& path) {
+  return printable(std::filesystem::path(path).stem().string());
 }
 
 std::string StudentIdentity::display() const {
@@ -113,7 +123,7 @@ nlohmann::json without_blanks(const nlohmann::json& v) {
 SubmissionGrade Assignment::grade(const std::shared_ptr<const SourceFile>& file) const {
   SubmissionGrade g;
   g.file = file->name;
-  g.student = std::filesystem::path(file->name).stem().string();
+  g.student = student_of_file(file->name);
   Cursor root(file);
   try {
     if (!root.is_object()) root.fail("a submission is a JSON object", "type");
@@ -236,6 +246,13 @@ bool inside(const fs::path& path, const fs::path& folder) {
 
 // Walks `folder` (whose canonical path is `root`), adding its .json submissions to `out` and
 // reporting every entry it cannot read or will not open.
+// The identity of the file at `path` now (following links), or nothing.
+std::optional<FileIdentity> identity_of(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return std::nullopt;
+  return FileIdentity{static_cast<std::uint64_t>(st.st_dev), static_cast<std::uint64_t>(st.st_ino)};
+}
+
 void walk(const fs::path& folder, const fs::path& root, std::vector<std::string>& out,
           std::vector<Diagnostic>& errors) {
   std::error_code ec;
@@ -297,7 +314,8 @@ void walk(const fs::path& folder, const fs::path& root, std::vector<std::string>
 }  // namespace
 
 std::vector<std::string> submission_files(const std::vector<std::string>& paths,
-                                          std::vector<Diagnostic>& errors) {
+                                          std::vector<Diagnostic>& errors,
+                                          std::vector<std::optional<FileIdentity>>* seen) {
   std::vector<std::string> out;
   for (const auto& p : paths) {
     std::error_code ec;
@@ -317,6 +335,10 @@ std::vector<std::string> submission_files(const std::vector<std::string>& paths,
     } else {
       errors.push_back(skipped(p, "no such file or folder", "unreadable"));
     }
+  }
+  if (seen) {
+    seen->clear();
+    for (const auto& f : out) seen->push_back(identity_of(f));
   }
   return out;
 }

@@ -28,6 +28,10 @@ struct StudentIdentity {
   std::string display() const;
 };
 
+// How a submission that names no student is named: its file's name without the folder and the
+// extension, as text (a byte that is not UTF-8, Latin-1's "jos\xe9.json", written \xE9).
+std::string student_of_file(const std::string& path);
+
 // The "student" of a submission's root object; nothing when it has none. Throws Error at
 // /student when it is neither a string nor an object of name, id and email strings.
 std::optional<StudentIdentity> read_student(const Cursor& root);
@@ -67,7 +71,9 @@ class Assignment {
   // Problems whose tolerance or points are faulty are left out and reported in errors().
   explicit Assignment(const std::vector<Problem>& problems, AssignmentOptions options = {});
 
-  SubmissionGrade grade_file(const std::string& path) const;
+  // `seen`: the file submission_files listed at `path`; another file found there is refused.
+  SubmissionGrade grade_file(const std::string& path,
+                             std::optional<FileIdentity> seen = std::nullopt) const;
   SubmissionGrade grade(const std::shared_ptr<const SourceFile>& file) const;
 
   const std::vector<Grader>& graders() const { return graders_; }
@@ -84,8 +90,11 @@ class Assignment {
 // `errors`, and left out: paths that do not exist, folders that cannot be read (code
 // "unreadable"), and entries that are not regular files (FIFOs, devices, sockets), dangling
 // symbolic links, links to folders and links leading outside the folder walked (code
-// "skipped"). A path named in `paths` itself is followed wherever it leads.
+// "skipped"). A path named in `paths` itself is followed wherever it leads. Given `seen`, it
+// receives the identity of each file listed (to pass to grade_file), so that a folder on its
+// path replaced by a link after the listing leads to a file that is refused.
 std::vector<std::string> submission_files(const std::vector<std::string>& paths,
-                                          std::vector<Diagnostic>& errors);
+                                          std::vector<Diagnostic>& errors,
+                                          std::vector<std::optional<FileIdentity>>* seen = nullptr);
 
 }  // namespace raygrade

@@ -167,6 +167,13 @@ std::shared_ptr<const SourceFile> load_json_file(const std::string& path,
     fail(path, fmt::format("cannot read the file: {}", std::strerror(errno)), 0, 0, "unreadable");
   }
   if (!S_ISREG(st.st_mode)) fail(path, "not a regular file", 0, 0, "unreadable");
+  if (limits.expected && *limits.expected != FileIdentity{static_cast<std::uint64_t>(st.st_dev),
+                                                          static_cast<std::uint64_t>(st.st_ino)}) {
+    fail(path,
+         "not read: this is not the file the submissions were listed with (a folder on its path "
+         "was replaced after the listing, by a symbolic link say)",
+         0, 0, "unreadable");
+  }
   auto size = static_cast<std::size_t>(st.st_size);
   if (size > limits.max_bytes) {
     fail(path, fmt::format("file is {} bytes, over the limit of {} bytes", size, limits.max_bytes),

@@ -1,15 +1,24 @@
 // SourceFile: a JSON file read with limits, and the line and column of any JSON path in it.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "core/error.h"
 
 namespace raygrade {
+
+// A file as the file system knows it (st_dev, st_ino): the same file whatever path led to it.
+struct FileIdentity {
+  std::uint64_t device = 0;
+  std::uint64_t inode = 0;
+  bool operator==(const FileIdentity&) const = default;
+};
 
 // Limits on untrusted JSON. Each is far above what a real bank or submission needs.
 // Beyond them a file is rejected with a clear error before nlohmann builds anything, so hostile
@@ -23,6 +32,10 @@ struct JsonLimits {
   // listed with their links resolved and checked, so a link found when opening one is a swap
   // made after the check.
   bool no_follow = false;
+  // The file the submissions' listing found at the path: a file opened there that is another
+  // one (a folder on the path replaced by a symbolic link after the listing, which O_NOFOLLOW
+  // on the last component does not see) is refused.
+  std::optional<FileIdentity> expected;
 
   // The limits for a student's submission: one student's answers to one assignment.
   static JsonLimits submission() {
