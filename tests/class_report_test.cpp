@@ -4,10 +4,12 @@
 // answers are worked out here by hand from each variant's parameters, not by raygrade.
 #include "reports/class_report.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <numbers>
@@ -19,6 +21,7 @@
 #include "problems/kind.h"
 #include "problems/problem.h"
 #include "run_binary.h"
+#include "test_util.h"
 
 namespace raygrade {
 // Named rather than anonymous: a unity batch of tests shares one anonymous namespace.
@@ -466,6 +469,26 @@ TEST(ClassReport, PlantedMistakesAreFoundAndNoiseIsNotClaimed) {
   EXPECT_GT(planted_all, 400);
 }
 
+// The report built one student at a time keeps a compact row per student (scores, parts'
+// statuses, mistakes' ids, which variant, a wrong answer's text): at most 300 bytes per
+// answer, where the graded results it was given hold every part's feedback (145 kB per
+// student of the example assignment in `raygrade report` before). Its report is the one of
+// the whole class at once, and a student added again replaces the first, in its place.
+TEST(ClassReport, TheBuilderKeepsACompactRowPerStudent) {
+  Class c;
+  make_class(c, 200, 20261126);
+  json whole = class_report_json(c.input, 2);
+  ClassReportBuilder b(c.input.title, c.input.problem_ids, c.input.problem_titles);
+  ClassStudent first = c.input.students.front();
+  first.answers = c.input.students.back().answers;  // another student's answers, replaced below
+  b.add(first);
+  for (const auto& s : c.input.students) b.add(s);
+  EXPECT_EQ(b.students(), 200u);
+  EXPECT_EQ(b.json(2), whole);
+  std::size_t answers = 200 * c.input.problem_ids.size();
+  EXPECT_LE(b.retained_bytes(), 300 * answers) << b.retained_bytes() / 200 << " bytes a student";
+}
+
 // The plane of the bank's defaults: O = (1, 0, 1), R = (1, 2, 0), the plane y = 5, so t = 5/2
 // and P = (3.5, 5, 1). Written dy/h, t = 2/5 = 0.4 and P = (1.4, 0.8, 1).
 TEST(ChangeSearch, ExplainsAnAnswerByOneChangeAndNotTheRightOne) {
@@ -507,6 +530,92 @@ TEST(ChangeSearch, SearchesTheStepsOfEveryMethod) {
   EXPECT_EQ(d.changes.front().method, "algebraic");
   EXPECT_EQ(d.changes.front().step, "t0");
   EXPECT_EQ(d.changes.front().kind, "drop-term");
+}
+
+// The noise guard at 2%: an answer whose chance of fitting some change at random lies between
+// 2% and 50% is not claimed. The plane z = 4 from the origin along +z, t alone, with a 2%
+// tolerance: t = numerator / denominator = (n · (P − O)) / (n · D) = −4 / −1 = 4. The whole step
+// t negated gives t = −4, fitted by a random t (uniform within max(1, 4) = 4 of 4) with a chance
+// of (1e-6 + 0.02·4) / 4 = 2.000025%; t = denominator / numerator = 0.25 adds
+// (1e-6 + 0.02·0.25) / 4 = 0.125%: at least 2.125% in all, so the answer t = −4 is "noisy".
+// The changes are a few dozen at most, each fitting under 1%·|t'|/4: well under 50%.
+TEST(ChangeSearch, AnAnswerThatChangesFitTwoPercentOfTheTimeIsNotClaimed) {
+  Problem p = testing::problem(R"({"id": "plane-noise", "tolerance": 0.02,
+      "ray": {"origin": [0, 0, 0], "direction": [0, 0, 1]},
+      "object": {"type": "plane", "point": [0, 0, 4], "normal": [0, 0, -1]}})");
+  ChangeSearch search(p);
+  Discovery d = search.explain(json{{"hits", {{{"t", -4}}}}});
+  EXPECT_GE(d.random_fit, 0.02125);
+  EXPECT_LT(d.random_fit, 0.5);
+  EXPECT_EQ(d.verdict, Discovery::Verdict::kNoisy) << to_string(d.verdict);
+  // With its point too the answer is three numbers more, each fitted by chance far less
+  // often, and the change is claimed: t = −4 and P = O + t·D = (0, 0, −4).
+  Discovery whole = search.explain(json{{"hits", {{{"t", -4}, {"point", {0, 0, -4}}}}}});
+  EXPECT_LT(whole.random_fit, 0.02);
+  EXPECT_EQ(whole.verdict, Discovery::Verdict::kExplained) << to_string(whole.verdict);
+}
+
+// A regular polygon of `n` vertices of radius 2 about the z axis in z = 0, counter-clockwise
+// seen from +z, and a ray from (0.1, 0.2, 5) along (0, 0, −2): Newell's normal is (0, 0, 2A)
+// with A the area, numerator n · (v0 − O) = −10A and denominator n · D = −4A, so t = 2.5 and
+// the point is (0.1, 0.2, 0). Written denominator/numerator, t = 0.4 and the point is
+// O + 0.4·D = (0.1, 0.2, 4.2).
+Problem big_polygon(int n) {
+  json vertices = json::array();
+  for (int k = 0; k < n; ++k) {
+    double a = 2 * std::numbers::pi * k / n;
+    vertices.push_back({2 * std::cos(a), 2 * std::sin(a), 0});
+  }
+  json problem = {{"id", "big-polygon"},
+                  {"ray", {{"origin", {0.1, 0.2, 5}}, {"direction", {0, 0, -2}}}},
+                  {"object", {{"type", "polygon"}, {"vertices", vertices}}}};
+  return testing::problem(problem.dump());
+}
+
+// One wrong answer to a polygon of n vertices cost about n³ (60 s and 811 MB at 100 vertices):
+// a Newell sum of n terms has n² changes of an operand and each changed derivation works n
+// steps. The search's work (steps and formula nodes worked through) must not grow faster than
+// the polygon: at most twice as much for twice the vertices, and at most 20,000 per vertex at
+// 200; and the slip in t is still found.
+TEST(ChangeSearch, WorkOnABigPolygonGrowsLinearly) {
+  std::map<int, std::size_t> work;
+  for (int n : {50, 100, 200}) {
+    Problem p = big_polygon(n);
+    ChangeSearch search(p);
+    work[n] = search.work();
+    Discovery d = search.explain(
+        json{{"hits", {{{"t", 0.4}, {"point", {0.1, 0.2, 4.2}}, {"normal", {0, 0, 1}}}}}});
+    EXPECT_EQ(d.verdict, Discovery::Verdict::kExplained) << n << ": " << to_string(d.verdict);
+    if (!d.changes.empty()) {
+      EXPECT_EQ(d.changes.front().step, "t") << n;
+      EXPECT_EQ(d.changes.front().kind, "swap") << n;
+    }
+    EXPECT_EQ(search.explain(json{{"hits", {{{"t", 2.5}, {"point", {0.1, 0.2, 0}}}}}}).verdict,
+              Discovery::Verdict::kNone);
+  }
+  EXPECT_LE(work[100], 2 * work[50]) << work[50] << " then " << work[100];
+  EXPECT_LE(work[200], 2 * work[100]) << work[100] << " then " << work[200];
+  EXPECT_LE(work[200], 200u * 20'000u) << work[200];
+}
+
+// The budget leaves every problem of the bundled bank searched whole: the report's groups on
+// them are those of the search without one.
+TEST(ChangeSearch, EveryProblemOfTheBankIsSearchedWhole) {
+  Bank bank = load_bank({std::string(RAYGRADE_SOURCE_DIR) + "/problems"});
+  std::size_t searched = 0, most = 0;
+  for (const Problem& p : bank.problems) {
+    std::unique_ptr<ChangeSearch> search;
+    try {
+      search = std::make_unique<ChangeSearch>(p);
+    } catch (const Error&) {
+      continue;  // a derivation that cannot be worked: the report searches nothing either
+    }
+    ++searched;
+    most = std::max(most, search->work());
+    EXPECT_FALSE(search->truncated()) << p.id << ": " << search->work();
+  }
+  EXPECT_GT(searched, 100u);
+  std::cout << "most work on one problem: " << most << "\n";
 }
 
 // With a roster, its students who handed in nothing are listed apart, and the problems'
@@ -575,6 +684,83 @@ TEST(ClassReport, FileNameNotUtf8CostsNothing) {
   json graded = json::parse(g.out, nullptr, false);
   ASSERT_FALSE(graded.is_discarded()) << g.out;
   EXPECT_NE(g.out.find("jos\\\\xE9"), std::string::npos) << g.out;
+}
+
+// The report reads a class a chunk of files at a time: a student who handed in twice is
+// counted once, by the later submission, at the place of the first; the page is the later
+// one's. Files are listed in name order: a.json (s1, right), b.json (s2, right), c.json (s1
+// again, wrong: t = 2 where the sphere of centre (2, 0, 0) and radius 1 is met at t = 1 and 3).
+TEST(ClassReport, ALaterSubmissionReplacesTheStudentInItsPlace) {
+  testing::TempDir dir("report-twice");
+  testing::write_text(dir.path() / "bank.json", R"({"problems": [
+    {"id": "sphere-1", "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+     "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}}]})");
+  std::filesystem::create_directories(dir.path() / "subs");
+  const char* right = R"({"hits": [{"t": 1, "point": [1, 0, 0]}, {"t": 3, "point": [3, 0, 0]}]})";
+  const char* wrong = R"({"hits": [{"t": 2, "point": [2, 0, 0]}]})";
+  testing::write_text(
+      dir.path() / "subs/a.json",
+      fmt::format(R"({{"student": {{"id": "s1"}}, "answers": {{"sphere-1": {}}}}})", right));
+  testing::write_text(
+      dir.path() / "subs/b.json",
+      fmt::format(R"({{"student": {{"id": "s2"}}, "answers": {{"sphere-1": {}}}}})", right));
+  testing::write_text(
+      dir.path() / "subs/c.json",
+      fmt::format(R"({{"student": {{"id": "s1"}}, "answers": {{"sphere-1": {}}}}})", wrong));
+  auto r = testing::run_raygrade("report --problems bank.json subs --out rep -j 2", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  json report = json::parse(testing::read_text(dir.path() / "rep/report.json"));
+  ASSERT_EQ(report["students"].size(), 2u) << report["students"].dump();
+  EXPECT_EQ(report["students"][0]["id"], "s1");
+  EXPECT_EQ(report["students"][1]["id"], "s2");
+  const json& problem = report["problems"][0];
+  EXPECT_EQ(problem["students"], 2);
+  EXPECT_EQ(problem["shares"]["right"], 0.5);
+  ASSERT_EQ(problem["groups"].size(), 1u);
+  EXPECT_EQ(problem["groups"][0]["students"], json({"s1"}));
+  // s1's page is the wrong answer's: its score is not s2's full marks.
+  auto score = [&](int k) {
+    std::string page =
+        testing::read_text(dir.path() / "rep" / report["students"][k]["page"].get<std::string>());
+    auto at = page.find("Score: <strong>");
+    return at == std::string::npos ? std::string()
+                                   : page.substr(at, page.find("</strong>", at) - at);
+  };
+  EXPECT_FALSE(score(1).empty());
+  EXPECT_NE(score(0), score(1));
+}
+
+// Ids that differ only in case, that climb out of a folder, carry markup or a bidi override:
+// each is its own student with its own page inside students/, whatever the chunk it is read in.
+TEST(ClassReport, HostileIdsEachGetTheirOwnPage) {
+  testing::TempDir dir("report-ids");
+  testing::write_text(dir.path() / "bank.json", R"({"problems": [
+    {"id": "sphere-1", "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
+     "object": {"type": "sphere", "center": [2, 0, 0], "radius": 1}}]})");
+  std::filesystem::create_directories(dir.path() / "subs");
+  const std::vector<std::string> ids = {"s1", "S1", "../../evil", "<b>x</b>", "a\u202Eb"};
+  for (std::size_t k = 0; k < ids.size(); ++k)
+    testing::write_text(
+        dir.path() / fmt::format("subs/{}.json", k),
+        json{{"student", {{"id", ids[k]}}}, {"answers", {{"sphere-1", {{"hits", {{{"t", 2}}}}}}}}}
+            .dump());
+  auto r = testing::run_raygrade("report --problems bank.json subs --out rep -j 2", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  json report = json::parse(testing::read_text(dir.path() / "rep/report.json"));
+  ASSERT_EQ(report["students"].size(), ids.size());
+  std::set<std::string> pages;
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    EXPECT_EQ(report["students"][k]["id"], ids[k]);
+    std::string page = report["students"][k]["page"];
+    EXPECT_TRUE(page.starts_with("students/")) << page;
+    EXPECT_EQ(std::filesystem::weakly_canonical(dir.path() / "rep" / page).parent_path(),
+              std::filesystem::weakly_canonical(dir.path() / "rep/students"))
+        << page;
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "rep" / page)) << page;
+    pages.insert(page);
+  }
+  EXPECT_EQ(pages.size(), ids.size());
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "evil.html"));
 }
 
 }  // namespace class_report_test

@@ -85,57 +85,31 @@ class AssignmentSource {
   std::unique_ptr<AssignmentGrader> grader_;
 };
 
-// The students of the report, one per student (the last of several submissions), in the
-// order their submissions were listed.
-ClassInput class_input(const std::vector<Handed>& handed,
-                       const std::vector<const Problem*>& problems,
-                       std::map<std::string, const Handed*>& by_student) {
-  ClassInput in;
-  for (const Problem* p : problems) {
-    in.problem_ids.push_back(p->id);
-    in.problem_titles.push_back(p->title);
-  }
-  std::vector<std::string> order;
-  for (const Handed& h : handed) {
-    std::string id = h.grade.identity.id.empty() ? h.grade.student : h.grade.identity.id;
-    if (!by_student.count(id)) order.push_back(id);
-    by_student[id] = &h;
-  }
-  std::set<std::string> names = {"report"};
-  for (const auto& id : order) {
-    const Handed& h = *by_student[id];
-    ClassStudent s{
-        id, h.grade.identity.name, "students/" + unique_file_name(id, names) + ".html", {}};
-    for (std::size_t p = 0; p < problems.size(); ++p) {
-      ClassAnswer a;
-      for (const auto& r : h.grade.results)
-        if (r.problem_id == problems[p]->id) a.result = r;
-      if (a.result.problem_id.empty()) {
-        a.result.problem_id = problems[p]->id;
-        a.result.answered = false;
-      }
-      if (h.answers.contains(problems[p]->id)) a.answer = h.answers[problems[p]->id];
-      a.variant = h.problems ? &(*h.problems)[p] : problems[p];
-      s.answers.push_back(std::move(a));
+// One student of the report from a graded submission: an answer per problem, in the problems'
+// order. Its variants are the submission's and live as long as `h`.
+ClassStudent class_student(const Handed& h, const std::vector<const Problem*>& problems,
+                           std::string id, std::string page) {
+  ClassStudent s{std::move(id), h.grade.identity.name, std::move(page), {}};
+  for (std::size_t p = 0; p < problems.size(); ++p) {
+    ClassAnswer a;
+    for (const auto& r : h.grade.results)
+      if (r.problem_id == problems[p]->id) a.result = r;
+    if (a.result.problem_id.empty()) {
+      a.result.problem_id = problems[p]->id;
+      a.result.answered = false;
     }
-    in.students.push_back(std::move(s));
+    if (h.answers.contains(problems[p]->id)) a.answer = h.answers[problems[p]->id];
+    a.variant = h.problems ? &(*h.problems)[p] : problems[p];
+    s.answers.push_back(std::move(a));
   }
-  return in;
+  return s;
 }
 
-// The roster's students whom no graded submission is from, in the roster's order. A submission
-// that could not be read counts for nobody: its student is listed too, and the exit code says
-// that a file was left out.
-std::vector<AbsentStudent> without_submission(const std::vector<StudentIdentity>& roster,
-                                              const std::vector<Handed>& handed) {
-  std::set<const StudentIdentity*> handed_in;
-  for (const Handed& h : handed)
-    if (const StudentIdentity* e = find_on_roster(roster, h.grade.identity)) handed_in.insert(e);
-  std::vector<AbsentStudent> out;
-  for (const auto& e : roster)
-    if (!handed_in.count(&e)) out.push_back({e.id, e.name});
-  return out;
-}
+// A graded submission and its student's feedback page.
+struct Graded {
+  Handed handed;
+  std::string page;  // the page's HTML
+};
 
 int run_report(const ReportOptions& o, bool problems_given) {
   if (problems_given && !o.assignment.empty()) {
@@ -161,48 +135,89 @@ int run_report(const ReportOptions& o, bool problems_given) {
     plain = std::make_unique<Assignment>(bank.problems);
     for (const auto& g : plain->graders()) problems.push_back(&g.problem());
   }
+  std::vector<StudentIdentity> roster;
+  if (!o.roster.empty()) roster = load_roster(o.roster);
   std::vector<Diagnostic> file_errors;
   std::vector<std::optional<FileIdentity>> seen;
   std::vector<std::string> files = submission_files(o.submissions, file_errors, &seen);
   for (const auto& e : file_errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   unsigned jobs = o.jobs > 0 ? o.jobs : default_jobs();
-  auto graded = parallel_map<std::optional<Handed>>(
-      files.size(), jobs, [&](std::size_t i) -> std::optional<Handed> {
-        try {
-          if (source) return source->grade(files[i], seen[i]);
-          Handed h{plain->grade_file(files[i], seen[i]), {}, nullptr};
-          if (!h.grade.gradable) throw Error(*h.grade.fault);
-          JsonLimits limits = JsonLimits::submission();
-          limits.expected = seen[i];
-          auto file = load_json_file(files[i], limits);
-          if (file->root.contains("answers")) h.answers = file->root["answers"];
-          return h;
-        } catch (const Error& e) {
-          fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
-          return std::nullopt;
-        }
-      });
-  std::vector<Handed> handed;
-  for (auto& g : graded)
-    if (g) handed.push_back(std::move(*g));
-  std::map<std::string, const Handed*> by_student;
-  ClassInput in = class_input(handed, problems, by_student);
-  in.title = title;
-  if (!o.roster.empty()) in.no_submission = without_submission(load_roster(o.roster), handed);
-  nlohmann::json report = class_report_json(in, jobs);
   std::filesystem::path out(o.out);
   std::filesystem::create_directories(out / "students");
   const GradeFormat* html = find_grade_format("html");
-  for (const auto& s : in.students)
-    write_file_atomically(out / s.page, html->render(by_student[s.id]->grade, 0), false);
-  write_file_atomically(out / "report.json", report.dump(1) + "\n", false);
-  write_file_atomically(out / "report.html", class_report_html(report), false);
+  std::vector<std::string> ids, titles;
+  for (const Problem* p : problems) {
+    ids.push_back(p->id);
+    titles.push_back(p->title);
+  }
+  // The report keeps of each student what it shows (ClassReportBuilder); the submissions are
+  // graded a chunk at a time, each page written as soon as its chunk is graded, so that
+  // memory does not grow with the class.
+  ClassReportBuilder report(title, ids, titles, problems);
+  std::map<std::string, std::string> page_of;  // student → page, by the first submission
+  std::set<std::string> names = {"report"};
+  std::set<const StudentIdentity*> handed_in;
+  std::size_t handed = 0;
+  const std::size_t chunk = std::max<std::size_t>(64, 16 * std::size_t{jobs});
+  for (std::size_t from = 0; from < files.size(); from += chunk) {
+    std::size_t n = std::min(chunk, files.size() - from);
+    auto graded = parallel_map<std::optional<Graded>>(
+        n, jobs, [&](std::size_t k) -> std::optional<Graded> {
+          const std::string& file = files[from + k];
+          try {
+            Graded g;
+            const std::optional<FileIdentity>& expected = seen[from + k];
+            if (source) {
+              g.handed = source->grade(file, expected);
+            } else {
+              g.handed = Handed{plain->grade_file(file, expected), {}, nullptr};
+              if (!g.handed.grade.gradable) throw Error(*g.handed.grade.fault);
+              JsonLimits limits = JsonLimits::submission();
+              limits.expected = expected;
+              auto json = load_json_file(file, limits);
+              if (json->root.contains("answers")) g.handed.answers = json->root["answers"];
+            }
+            g.page = html->render(g.handed.grade, 0);
+            return g;
+          } catch (const Error& e) {
+            fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
+            return std::nullopt;
+          }
+        });
+    // A student who handed in several submissions is counted once, by the last in the order
+    // the files are listed, at the place of the first.
+    for (auto& g : graded) {
+      if (!g) continue;
+      ++handed;
+      const Handed& h = g->handed;
+      std::string id = h.grade.identity.id.empty() ? h.grade.student : h.grade.identity.id;
+      auto [it, fresh] = page_of.emplace(id, "");
+      if (fresh) it->second = "students/" + unique_file_name(id, names) + ".html";
+      write_file_atomically(out / it->second, g->page, false);
+      report.add(class_student(h, problems, id, it->second));
+      if (!roster.empty())
+        if (const StudentIdentity* e = find_on_roster(roster, h.grade.identity))
+          handed_in.insert(e);
+      g.reset();
+    }
+  }
+  // The roster's students whom no graded submission is from, in the roster's order. A
+  // submission that could not be read counts for nobody: its student is listed too, and the
+  // exit code says that a file was left out.
+  std::vector<AbsentStudent> absent;
+  for (const auto& e : roster)
+    if (!handed_in.count(&e)) absent.push_back({e.id, e.name});
+  report.set_no_submission(std::move(absent));
+  nlohmann::json json = report.json(jobs);
+  write_file_atomically(out / "report.json", json.dump(1) + "\n", false);
+  write_file_atomically(out / "report.html", class_report_html(json), false);
   flush_folder(o.out);
-  fmt::print(stderr, "Reported {} students on {} problems into {}.\n", in.students.size(),
+  fmt::print(stderr, "Reported {} students on {} problems into {}.\n", report.students(),
              problems.size(), o.out);
   if (!o.roster.empty())
-    fmt::print(stderr, "No submission from {} students of the roster.\n", in.no_submission.size());
-  bool bad = handed.size() != files.size() || !errors.empty() || !file_errors.empty();
+    fmt::print(stderr, "No submission from {} students of the roster.\n",
+               json["no_submission"].size());
+  bool bad = handed != files.size() || !errors.empty() || !file_errors.empty();
   return bad ? kExitBadInput : kExitOk;
 }
 

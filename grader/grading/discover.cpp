@@ -6,6 +6,8 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <numeric>
+#include <functional>
 #include <set>
 #include <tuple>
 
@@ -179,16 +181,24 @@ struct Context {
   std::vector<std::pair<std::string, E>> given_vectors;  // name, symbol
 };
 
-void symbol_alternatives(const E& e, const Context& c, std::vector<Alt>& out) {
+// Which changes: the changes of an operator, a constant or a step's sign (tier 0), the changes
+// that put another quantity for a vector (tier 1: one per given vector, so as many as the
+// problem has vertices), or both, in the order of the formula.
+enum class Tier { kOperators, kOperands, kAll };
+
+bool in_tier(Tier want, Tier t) { return want == Tier::kAll || want == t; }
+
+void symbol_alternatives(const E& e, const Context& c, Tier tier, std::vector<Alt>& out) {
   const ExprNode& n = e.node();
   auto it = c.values.find(n.name);
   if (it == c.values.end() || !it->second.is_vector()) return;
   Vec3d v = it->second.vector;
   constexpr double kUnit = 1e-9;  // a vector of length 1 needs no normalising
-  if (std::abs(length(v) - 1) > kUnit) {
+  if (std::abs(length(v) - 1) > kUnit && in_tier(tier, Tier::kOperators)) {
     E unit = e / norm(e);
     out.push_back({unit, unit, "normalise"});
   }
+  if (!in_tier(tier, Tier::kOperands)) return;
   for (const auto& [name, symbol] : c.given_vectors) {
     if (name != n.name) out.push_back({symbol, symbol, "vector-swap"});
   }
@@ -208,12 +218,13 @@ void symbol_alternatives(const E& e, const Context& c, std::vector<Alt>& out) {
 }
 
 // The changes at the node `e` itself.
-void local_alternatives(const E& e, const Context& c, std::vector<Alt>& out) {
+void local_alternatives(const E& e, const Context& c, Tier tier, std::vector<Alt>& out) {
   const ExprNode& n = e.node();
+  if (n.op == Op::kSymbol) return symbol_alternatives(e, c, tier, out);
+  if (!in_tier(tier, Tier::kOperators)) return;
   auto both = [&](const E& x, const char* kind) { out.push_back({x, x, kind}); };
   const auto& a = n.args;
   switch (n.op) {
-    case Op::kSymbol: symbol_alternatives(e, c, out); break;
     case Op::kAdd:
       both(a[0] - a[1], "sign");
       both(a[0], "drop-term");
@@ -244,18 +255,79 @@ void local_alternatives(const E& e, const Context& c, std::vector<Alt>& out) {
   }
 }
 
-// Every single change of the formula `e`, anywhere in its tree.
-void alternatives(const E& e, const Context& c, std::vector<Alt>& out) {
-  if (e.empty()) return;
-  local_alternatives(e, c, out);
-  if (e.node().op == Op::kSymbol) return;  // its args are how it is shown
-  for (std::size_t i = 0; i < e.node().args.size(); ++i) {
-    std::vector<Alt> inner;
-    alternatives(e.node().args[i], c, inner);
-    for (auto& x : inner) {
-      out.push_back({with_arg(e, i, x.eval), with_arg(e, i, x.shown), std::move(x.kind)});
+// How many changes of `tier` the formula `e` has, anywhere in its tree, without making them:
+// a formula of a thousand terms has that many, and each change made copies its path.
+std::size_t count_alternatives(const E& e, const Context& c, Tier tier) {
+  if (e.empty()) return 0;
+  const ExprNode& n = e.node();
+  if (n.op == Op::kSymbol) {
+    auto it = c.values.find(n.name);
+    if (it == c.values.end() || !it->second.is_vector()) return 0;
+    Vec3d v = it->second.vector;
+    std::size_t k = 0;
+    if (std::abs(length(v) - 1) > 1e-9 && in_tier(tier, Tier::kOperators)) ++k;
+    if (in_tier(tier, Tier::kOperands)) {
+      for (const auto& g : c.given_vectors) k += g.first != n.name;
+      for (int i = 0; i < 3; ++i) k += v[i] != 0;
     }
+    return k;
   }
+  std::vector<Alt> local;
+  if (in_tier(tier, Tier::kOperators)) local_alternatives(e, c, Tier::kOperators, local);
+  std::size_t k = local.size();
+  for (const E& a : n.args) k += count_alternatives(a, c, tier);
+  return k;
+}
+
+// Calls `sink` with each single change of `tier` of the formula `e`, anywhere in its tree (the
+// node's own first, then each operand's), until `left` of them have been made. Returns false
+// when it stopped for `left`.
+bool each_alternative(const E& e, const Context& c, Tier tier, std::size_t& left,
+                      const std::function<void(Alt&&)>& sink) {
+  if (e.empty()) return true;
+  std::vector<Alt> local;
+  local_alternatives(e, c, tier, local);
+  for (auto& a : local) {
+    if (left == 0) return false;
+    --left;
+    sink(std::move(a));
+  }
+  if (e.node().op == Op::kSymbol) return true;  // its args are how it is shown
+  for (std::size_t i = 0; i < e.node().args.size(); ++i) {
+    bool more = each_alternative(e.node().args[i], c, tier, left, [&](Alt&& x) {
+      sink({with_arg(e, i, x.eval), with_arg(e, i, x.shown), std::move(x.kind)});
+    });
+    if (!more) return false;
+  }
+  return true;
+}
+
+// The nodes of a formula: what evaluating it costs.
+std::size_t formula_size(const E& e) {
+  if (e.empty()) return 0;
+  std::size_t k = 1;
+  if (e.node().op != Op::kSymbol)
+    for (const E& a : e.node().args) k += formula_size(a);
+  return k;
+}
+
+// The largest level L such that the counts, each cut to L, sum to at most `budget` (every
+// count's when they fit).
+std::size_t water_level(const std::vector<std::size_t>& counts, std::size_t budget) {
+  std::size_t hi = 0;
+  for (std::size_t n : counts) hi = std::max(hi, n);
+  auto total = [&](std::size_t level) {
+    std::size_t t = 0;
+    for (std::size_t n : counts) t += std::min(n, level);
+    return t;
+  };
+  std::size_t lo = 0;
+  while (lo < hi) {
+    std::size_t mid = lo + (hi - lo + 1) / 2;
+    if (total(mid) <= budget) lo = mid;
+    else hi = mid - 1;
+  }
+  return lo;
 }
 
 // Numbers that fit one answer: the changes giving them, and their chance to fit at random.
@@ -275,6 +347,9 @@ struct ChangeSearch::Impl {
   TolerancePolicy tolerance;
   std::vector<discover_internal::Prediction> predictions;
   std::size_t changes = 0;
+  std::size_t derivations = 0;  // changed derivations worked
+  std::size_t work = 0;         // their cost: steps and formula nodes
+  bool truncated = false;       // some changes were left out for the budget
 
   double allowed_at(std::size_t i, const std::vector<double>& numbers) const {
     const discover_internal::Leaf& l = leaves[i];
@@ -320,6 +395,9 @@ struct ChangeSearch::Impl {
 
 ChangeSearch::~ChangeSearch() = default;
 std::size_t ChangeSearch::changes() const { return impl_->changes; }
+std::size_t ChangeSearch::derivations() const { return impl_->derivations; }
+std::size_t ChangeSearch::work() const { return impl_->work; }
+bool ChangeSearch::truncated() const { return impl_->truncated; }
 
 ChangeSearch::ChangeSearch(const Problem& problem) : impl_(std::make_unique<Impl>()) {
   using namespace discover_internal;  // NOLINT: this file's own functions
@@ -383,12 +461,39 @@ ChangeSearch::ChangeSearch(const Problem& problem) : impl_(std::make_unique<Impl
           steps.push_back(&s);
       }
     }
-    for (const Step* s : steps) {
+    // What a changed derivation costs (its steps and their formulas' nodes), and how many
+    // changes this method's share of the budget pays for. A formula of n terms has n changes of
+    // its operators and, for each vector in it, one per given vector: n² for a polygon's
+    // Newell sum. Beyond the budget, each step gets an equal share of its operators' changes
+    // first (every change of a short step), then of its operands'.
+    std::size_t cost = 0;
+    for (const auto& part : right) {
+      for (const auto& s : part.derivation.steps) cost += 1 + formula_size(s.formula);
+    }
+    std::size_t budget = std::max(kMinSearchedChanges, kSearchWork / methods.size() / cost);
+    std::vector<std::size_t> ops(steps.size()), operands(steps.size());
+    std::size_t total = 0;
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      ops[i] = 1 + count_alternatives(steps[i]->formula, c, Tier::kOperators);  // 1: negated
+      operands[i] = count_alternatives(steps[i]->formula, c, Tier::kOperands);
+      total += ops[i] + operands[i];
+    }
+    std::vector<std::size_t> take_ops = ops, take_operands = operands;
+    if (total > budget) {
+      m.truncated = true;
+      std::size_t level = water_level(ops, budget), used = 0;
+      for (std::size_t i = 0; i < steps.size(); ++i) used += take_ops[i] = std::min(ops[i], level);
+      bool all_ops = used == std::accumulate(ops.begin(), ops.end(), std::size_t{0});
+      std::size_t level1 = all_ops ? water_level(operands, budget - used) : 0;
+      for (std::size_t i = 0; i < steps.size(); ++i)
+        take_operands[i] = std::min(operands[i], level1);
+    }
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      const Step* s = steps[i];
       std::string before = to_text(s->formula);
-      std::vector<Alt> alts;
-      alternatives(s->formula, c, alts);
-      alts.push_back({-s->formula, -s->formula, "sign"});
-      for (const Alt& alt : alts) {
+      auto try_change = [&](Alt&& alt) {
+        ++m.derivations;
+        m.work += cost;
         Overrides o;
         o.formula = [&](std::string_view step, const E& f) -> std::optional<E> {
           if (step != s->name || to_text(f) != before) return std::nullopt;
@@ -400,13 +505,29 @@ ChangeSearch::ChangeSearch(const Problem& problem) : impl_(std::make_unique<Impl
           for (const auto& l : mapped)
             numbers.push_back(l.step.empty() ? NAN : leaf_value(values, l));
         } catch (const Error&) {
-          continue;  // the change leaves the method's way (no root where one was)
+          return;  // the change leaves the method's way (no root where one was)
         } catch (const EvaluationFault&) {
-          continue;  // the change makes no sense here (a vector where a number was)
+          return;  // the change makes no sense here (a vector where a number was)
         }
         m.add(StepChange{method, s->name, alt.kind, before, to_text(alt.shown)}, mapped,
               std::move(numbers));
+      };
+      Alt negated{-s->formula, -s->formula, "sign"};
+      if (take_ops[i] == ops[i] && take_operands[i] == operands[i]) {
+        // Every change of the step, in the formula's order, the whole step negated last.
+        std::size_t left = ops[i] + operands[i];
+        each_alternative(s->formula, c, Tier::kAll, left, try_change);
+        try_change(std::move(negated));
+        continue;
       }
+      std::size_t left = take_ops[i];
+      if (left > 0) {
+        --left;
+        try_change(std::move(negated));
+      }
+      each_alternative(s->formula, c, Tier::kOperators, left, try_change);
+      left = take_operands[i];
+      each_alternative(s->formula, c, Tier::kOperands, left, try_change);
     }
   }
   // A number some method computes can be explained; one that none computes cannot.

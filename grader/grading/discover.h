@@ -23,6 +23,15 @@ constexpr std::size_t kMaxSearchedMethods = 4;
 // 5% of such answers be claimed, and 2% leaves room for answers that are partly right.
 constexpr double kMaxRandomFit = 0.02;
 
+// The search's budget: the steps and formula nodes that all changed derivations of a variant
+// work through, shared equally by its methods. Every problem of the bundled bank and of the
+// tests stays below it (they are searched whole); a polygon of 200 vertices would need 10⁸
+// (its Newell sum alone has 80,000 changes, each derivation 3,000 nodes), and is searched in
+// part: every step's operators first, then its operands (docs/report.md).
+constexpr std::size_t kSearchWork = 4'000'000;
+// Changed derivations worked per method however large one is.
+constexpr std::size_t kMinSearchedChanges = 64;
+
 // One change to one step of a derivation.
 struct StepChange {
   std::string method;  // the derivation's method ("algebraic")
@@ -71,6 +80,12 @@ class ChangeSearch {
   Discovery explain(const nlohmann::json& answer) const;
 
   std::size_t changes() const;  // changes tried that moved some number of the answer
+  // The changed derivations worked, and their cost: for each, the steps and formula nodes of
+  // its method's derivation. The cost is at most kSearchWork, or kMinSearchedChanges
+  // derivations per method when one derivation costs more: linear in the problem's size.
+  std::size_t derivations() const;
+  std::size_t work() const;
+  bool truncated() const;  // some changes were left out for the budget
 
  private:
   struct Impl;

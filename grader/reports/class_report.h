@@ -4,6 +4,7 @@
 // from that JSON alone.
 #pragma once
 
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -53,6 +54,37 @@ struct ClassInput {
 
 // The report as JSON (the layout of docs/report.md). `jobs` threads search for changes.
 nlohmann::json class_report_json(const ClassInput& input, unsigned jobs);
+
+// The same report built one student at a time, keeping of each only what the report shows:
+// the scores and parts' statuses, the mistakes' ids, which variant, and the text of an answer
+// below full marks. A class of any size costs a few hundred bytes per student, not the
+// students' graded results (docs/report.md, "Speed").
+class ClassReportBuilder {
+ public:
+  // `bases`: the bank's problems in the report's order. Given, each variant is kept as its
+  // numbers and read again from its base when its wrong answers are searched; null, the
+  // answers' variants are kept as pointers and must outlive the builder.
+  ClassReportBuilder(std::string title, std::vector<std::string> problem_ids,
+                     std::vector<std::string> problem_titles,
+                     std::vector<const Problem*> bases = {});
+  ~ClassReportBuilder();
+  ClassReportBuilder(const ClassReportBuilder&) = delete;
+  ClassReportBuilder& operator=(const ClassReportBuilder&) = delete;
+
+  // A student, one answer per problem; a student of the same id added before is replaced,
+  // in its place.
+  void add(const ClassStudent& student);
+  void set_no_submission(std::vector<AbsentStudent> absent);
+  std::size_t students() const;
+  // What the builder holds, in bytes (its rows, strings and tables; the allocator's own
+  // overhead aside).
+  std::size_t retained_bytes() const;
+  nlohmann::json json(unsigned jobs) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 // The page: every number on it is a number of `report`, in an element whose data-j attribute
 // is that number's JSON pointer.
