@@ -7,7 +7,7 @@ packages=(
   nlohmann-json3-dev libfmt-dev libcli11-dev libgtest-dev libgmock-dev
   libbenchmark-dev libmpfr-dev libglm-dev
   python3-jsonschema pkg-config clang-format strace
-  libgmp-dev file nodejs
+  libgmp-dev file nodejs libboost-dev
   libzip-dev libpugixml-dev libxml2-utils libutf8proc-dev
 )
 # npm fetches the browser libraries the build bundles (scripts/fetch-web-libs.sh). Debian ships

@@ -129,14 +129,14 @@ struct Interval {
   }
   friend Interval operator*(const Interval& a, const Interval& b) {
     const T* x[4][2] = {{&a.lo, &b.lo}, {&a.lo, &b.hi}, {&a.hi, &b.lo}, {&a.hi, &b.hi}};
-    T lo = R::mul(a.lo, b.lo, false), hi = R::mul(a.lo, b.lo, true);
-    if (a.is_point() && b.is_point()) return {lo, hi};
+    T low = R::mul(a.lo, b.lo, false), high = R::mul(a.lo, b.lo, true);
+    if (a.is_point() && b.is_point()) return {low, high};
     for (int i = 1; i < 4; ++i) {
       T l = R::mul(*x[i][0], *x[i][1], false), h = R::mul(*x[i][0], *x[i][1], true);
-      if (l < lo) lo = l;
-      if (h > hi) hi = h;
+      if (l < low) low = l;
+      if (h > high) high = h;
     }
-    return {lo, hi};
+    return {low, high};
   }
   friend Interval operator/(const Interval& a, const Interval& b) {
     if (b.lo <= T(0) && b.hi >= T(0)) return entire();
@@ -179,8 +179,8 @@ struct Interval {
   }
 
   friend Interval sqrt(const Interval& a) {
-    T lo = a.lo < T(0) ? T(0) : a.lo;
-    return {R::sqrt(lo, false), R::sqrt(a.hi, true)};
+    T low = a.lo < T(0) ? T(0) : a.lo;
+    return {R::sqrt(low, false), R::sqrt(a.hi, true)};
   }
   friend Interval abs(const Interval& a) {
     if (a.lo >= T(0)) return a;

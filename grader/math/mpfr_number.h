@@ -6,9 +6,11 @@
 
 #include <utility>
 
-#include "math/soft_float.h"
+#include "math/rounding.h"
 
-#if !RAYGRADE_SOFT_MPFR
+#if RAYGRADE_SOFT_MPFR
+#include "math/soft_float.h"
+#else
 #include <mpfr.h>
 #endif
 

@@ -1,13 +1,15 @@
-// SoftFloat: binary floating point of any precision in portable C++, correctly rounded (to
-// nearest even, down or up), for builds without MPFR (WebAssembly; docs/web.md).
+// SoftFloat: binary floating point of any precision, correctly rounded (to nearest even, down
+// or up), for builds without MPFR (WebAssembly; docs/web.md). The exact arithmetic on the
+// significands is Boost.Multiprecision's cpp_int; this class only places the binary point and
+// rounds once.
 #pragma once
 
+#include <boost/multiprecision/cpp_int.hpp>
 #include <cstdint>
-#include <vector>
+
+#include "math/rounding.h"
 
 namespace raygrade {
-
-enum class Rounding { kNearest, kDown, kUp };
 
 // A value is zero, ±∞, NaN or m·2^e with m a natural number whose lowest bit is set (one
 // representation per value). The operations take the precision of their result in bits, as
@@ -15,6 +17,8 @@ enum class Rounding { kNearest, kDown, kUp };
 // exponent is unbounded (no overflow or underflow before a conversion to double).
 class SoftFloat {
  public:
+  using Natural = boost::multiprecision::cpp_int;
+
   SoftFloat() = default;  // +0
   SoftFloat(double x, int precision, Rounding rounding = Rounding::kNearest);
   static SoftFloat nan();
@@ -42,13 +46,13 @@ class SoftFloat {
   enum class Kind : std::uint8_t { kZero, kFinite, kInf, kNaN };
   // Rounds ±(m + a fraction, when `sticky`)·2^e to `precision` bits. With `sticky`, m must
   // hold at least precision + 2 bits.
-  static SoftFloat round(bool negative, std::vector<std::uint32_t> m, std::int64_t e, bool sticky,
-                         int precision, Rounding r);
+  static SoftFloat round(bool negative, Natural m, std::int64_t e, bool sticky, int precision,
+                         Rounding r);
   static SoftFloat special(Kind kind, bool negative);
 
   Kind kind_ = Kind::kZero;
   bool negative_ = false;
-  std::vector<std::uint32_t> m_;  // little-endian 32-bit limbs, no zero limb on top
+  Natural m_;  // odd when finite
   std::int64_t e_ = 0;
 };
 

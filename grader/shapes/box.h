@@ -84,7 +84,9 @@ template <typename T>
     double low = lo[i] - o[i], high = hi[i] - o[i];
     double t_low = low / d[i], t_high = high / d[i];
     double low_m = std::abs(t_low), high_m = std::abs(t_high);
-    ends_in_range &= in_range(low, low_m) & in_range(high, high_m);
+    // Named first: clang warns of a bitwise & on calls' results.
+    bool low_in_range = in_range(low, low_m), high_in_range = in_range(high, high_m);
+    ends_in_range &= low_in_range & high_in_range;
     bool backward = d[i] < 0;
     near[j] = backward ? t_high : t_low;
     far[j] = backward ? t_low : t_high;
@@ -92,8 +94,9 @@ template <typename T>
     far_m[j] = backward ? low_m : high_m;
   };
   auto pair_apart = [&](int i, int j) {
-    return certain_apart(near[i], near[j], near_m[i], near_m[j]) &
-           certain_apart(far[i], far[j], far_m[i], far_m[j]);
+    bool near_apart = certain_apart(near[i], near[j], near_m[i], near_m[j]);
+    bool far_apart = certain_apart(far[i], far[j], far_m[i], far_m[j]);
+    return near_apart & far_apart;
   };
   double enter = 0, leave = 0;
   if ((d.x != 0) & (d.y != 0) & (d.z != 0)) {

@@ -64,10 +64,11 @@ bool disk_inside(const Vec3<T>& p, const Vec3<T>& center, const T& r) {
   double error = 1.001 * (e * (2 * g_norm + e) + 4 * u * s + 2 * u * rr) * bound_scale;
   double gap = s - rr;
   // enclose_quotient's range for t, r²'s, finite sums, and the gap beyond its bound; joined
-  // without short circuits.
-  if (!((std::abs(t) >= kQuotientFloor) & (std::abs(t) <= std::numeric_limits<double>::max()) &
-        (rr >= kQuotientFloor) & (rr <= 1 / kQuotientFloor) & (std::abs(gap) > error) &
-        (error <= std::numeric_limits<double>::max()))) {
+  // without short circuits (values named first: clang warns of a bitwise & on a call's result).
+  constexpr double kMax = std::numeric_limits<double>::max();
+  double t_m = std::abs(t), gap_m = std::abs(gap);
+  if (!((t_m >= kQuotientFloor) & (t_m <= kMax) & (rr >= kQuotientFloor) &
+        (rr <= 1 / kQuotientFloor) & (gap_m > error) & (error <= kMax))) {
     return false;
   }
   if (gap < 0) {

@@ -70,15 +70,17 @@ constexpr double root_error(double tolerance) {
 // products, not quotients: no division but the roots'. c ≠ 0 keeps both roots away from zero.
 [[gnu::always_inline]] inline bool enclose_roots(const BoundedQuadratic& k, EnclosedRoots& out) {
   using std::abs;
-  if (!((abs(k.disc) > k.disc_error) & (abs(k.a) > k.a_error) & (abs(k.c) > k.c_error)))
-    return false;
+  // The magnitudes named first: clang warns of a bitwise & on a call's result.
+  double disc_m = abs(k.disc), a_m = abs(k.a), c_m = abs(k.c);
+  if (!((disc_m > k.disc_error) & (a_m > k.a_error) & (c_m > k.c_error))) return false;
   out.count = 0;
   if (k.disc < 0) return true;
   double root = k.scale * std::sqrt(k.disc);
   double q = -(k.b + sign_of(k.b) * root);
+  double q_m = abs(q);
   auto within = [&](double tolerance) {
-    return (k.disc_error <= 2 * tolerance * k.disc) & (2 * k.a_error <= tolerance * abs(k.a)) &
-           (2 * k.c_error <= tolerance * abs(k.c)) & (2 * k.b_error <= tolerance * abs(q));
+    return (k.disc_error <= 2 * tolerance * k.disc) & (2 * k.a_error <= tolerance * a_m) &
+           (2 * k.c_error <= tolerance * c_m) & (2 * k.b_error <= tolerance * q_m);
   };
   double error = root_error(kRootTolerances[0]);
   if (!within(kRootTolerances[0])) {

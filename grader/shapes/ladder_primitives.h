@@ -129,14 +129,17 @@ decltype(auto) visit_primitive(Primitive p, F&& f) {
   return [&]<std::size_t... I>(std::index_sequence<I...>)->decltype(auto) {
     using Result = decltype(f.template operator()<LadderPrimitive<0>>());
     if constexpr (std::is_void_v<Result>) {
-      ((static_cast<std::size_t>(p) == I ? (f.template operator()<LadderPrimitive<I>>(), true)
-                                         : false) ||
-       ...);
+      static_cast<void>(
+          ((static_cast<std::size_t>(p) == I ? (f.template operator()<LadderPrimitive<I>>(), true)
+                                             : false) ||
+           ...));
     } else {
       Result out{};
-      ((static_cast<std::size_t>(p) == I ? (out = f.template operator()<LadderPrimitive<I>>(), true)
-                                         : false) ||
-       ...);
+      static_cast<void>(
+          ((static_cast<std::size_t>(p) == I
+                ? (out = f.template operator()<LadderPrimitive<I>>(), true)
+                : false) ||
+           ...));
       return out;
     }
   }

@@ -209,9 +209,12 @@ template <typename T>
   snap_edge_functions(u, v, w, {ax, ay, A[kx], A[ky], A[kz]}, {bx, by, B[kx], B[ky], B[kz]},
                       {cx, cy, C[kx], C[ky], C[kz]}, sx, sy);
   // Signs combined without short circuits: one branch, which goes wrong as often as rays miss,
-  // rather than up to six.
-  bool negative = (u < T(0)) | (v < T(0)) | (w < T(0));
-  bool positive = (u > T(0)) | (v > T(0)) | (w > T(0));
+  // rather than up to six. (Each comparison named first: for a T whose comparison is a call,
+  // clang warns of a bitwise | on its result.)
+  bool u_negative = u < T(0), v_negative = v < T(0), w_negative = w < T(0);
+  bool u_positive = u > T(0), v_positive = v > T(0), w_positive = w > T(0);
+  bool negative = u_negative | v_negative | w_negative;
+  bool positive = u_positive | v_positive | w_positive;
   if (negative & positive) return out;
   T det = u + v + w;
   if (det == T(0)) return out;
