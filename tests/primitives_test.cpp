@@ -18,7 +18,7 @@
 #include "test_util.h"
 
 namespace raygrade {
-namespace {
+namespace primitives_test {  // named: a unity batch of tests shares one anonymous namespace
 
 // A ray towards the example's centre along −w, from 10 sizes away: w is no axis and lies in no
 // plane of the examples, so the ray meets every example, flat or solid, from outside.
@@ -182,5 +182,5 @@ TEST(Primitives, NoCodeOutsideTheShapesNamesOne) {
   EXPECT_GT(files, 100);  // the scan found the sources
 }
 
-}  // namespace
+}  // namespace primitives_test
 }  // namespace raygrade
