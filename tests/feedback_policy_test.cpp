@@ -119,8 +119,8 @@ TEST(FeedbackPolicy, EveryGradeFormatShowsEachPolicyBeforeAndAfterTheDueDate) {
         for (bool late : {false, true}) {
           std::string expected = late ? after : before;
           std::string when = late ? kAfter : kBefore;
-          std::string what = fmt::format("{} then {}, {} {} the due date", before, after,
-                                         f.name, late ? "after" : "before");
+          std::string what = fmt::format("{} then {}, {} {} the due date", before, after, f.name,
+                                         late ? "after" : "before");
           std::filesystem::remove_all(dir.path() / "out");
           auto r = run_raygrade(fmt::format("grade --assignment hw.json subs --format {} "
                                             "--now {} --out out",

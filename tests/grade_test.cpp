@@ -238,7 +238,11 @@ TEST(Grade, NoCreditCarriedFromATrivialValue) {
   EXPECT_EQ(part(slip, "steps")->status, PartStatus::kWrong);
   said = fmt::format("{}", fmt::join(part(slip, "steps")->feedback, " "));
   EXPECT_EQ(said.find("nothing later is carried forward"), std::string::npos) << said;
-  EXPECT_TRUE(slip.carried_forward);
+  EXPECT_NE(said.find("t_ca = 3 follows correctly from your earlier values"), std::string::npos)
+      << said;
+  // No credit came of it (the steps are worth nothing), so the result is not marked as carrying
+  // credit forward.
+  EXPECT_FALSE(slip.carried_forward);
   auto origin = grade(kSphere1, R"({"hits": [{"t": 0, "point": [0, 0, 0]}]})");
   EXPECT_DOUBLE_EQ(part(origin, "point")->points, 0);
   EXPECT_FALSE(origin.carried_forward);

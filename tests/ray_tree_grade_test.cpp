@@ -252,9 +252,9 @@ TEST(RayTreeGrade, FacingAwayConventionPicksOneReading) {
 }
 
 // The convention decides the reference as it decides grading: under "shadow-ray" the answer
-// says P is in shadow, blocked by B, and the worked solution concludes that its shadow ray is; under
-// "normal-first" both say it faces away; a bank file's convention does the same. The reference
-// answer always gets full marks.
+// says P is in shadow, blocked by B, and the worked solution concludes that its shadow ray is;
+// under "normal-first" both say it faces away; a bank file's convention does the same. The
+// reference answer always gets full marks.
 TEST(RayTreeGrade, FacingAwayConventionDecidesTheReference) {
   auto conclusions = [](const Problem& p) {
     std::string all;

@@ -1,10 +1,11 @@
 // raygrade regrade against a new bank whose problems moved, were added or were removed: the
 // grades are paired by problem id, never by position.
+#include "grading/regrade.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "grading/regrade.h"
 #include "run_binary.h"
 
 namespace raygrade {
@@ -53,7 +54,8 @@ TEST(Regrade, AProblemInsertedFirstIsListedAsAddedAndTheOthersUnchanged) {
   TempDir dir("regrade-insert");
   std::filesystem::create_directories(dir.path() / "subs");
   write_text(dir.path() / "old.json", bank({sphere("pa", 5), sphere("pb", 10)}));
-  write_text(dir.path() / "new.json", bank({sphere("pnew", 20), sphere("pa", 5), sphere("pb", 10)}));
+  write_text(dir.path() / "new.json",
+             bank({sphere("pnew", 20), sphere("pa", 5), sphere("pb", 10)}));
   write_submission(dir);
   auto r = run_raygrade("regrade --problems old.json --bank new.json subs", dir.path());
   EXPECT_EQ(r.exit_code, 0) << r.err;

@@ -117,7 +117,8 @@ int compare_with_mpfr(double a1, double a2, double b1, double b2, int bits, cons
     Rounding r = roundings[k];
     auto check = [&](const SoftFloat& s, const char* op) {
       EXPECT_EQ(expansion(s), expansion(mr)) << op << " " << bits << " bits, " << what;
-      EXPECT_TRUE(same(s.to_double(Rounding::kDown), mpfr_get_d(mr, MPFR_RNDD))) << op << " " << what;
+      EXPECT_TRUE(same(s.to_double(Rounding::kDown), mpfr_get_d(mr, MPFR_RNDD)))
+          << op << " " << what;
       EXPECT_TRUE(same(s.to_double(Rounding::kUp), mpfr_get_d(mr, MPFR_RNDU))) << op << " " << what;
       EXPECT_TRUE(same(s.to_double(kNear), mpfr_get_d(mr, MPFR_RNDN))) << op << " " << what;
       ++compared;
@@ -214,9 +215,9 @@ TEST(SoftFloat, SquareRootOfAnExactSquare) {
   // 1/3 = 0.0101…₂: its 2048 bits start at 2^-2, so the 2047th is worth 2^-2048.
   SoftFloat gap = SoftFloat::sub(up, down, 4096, kNear);
   EXPECT_EQ(gap.to_double(kNear), 0.0);
-  EXPECT_EQ(SoftFloat::mul(gap, SoftFloat(0x1p1000, 53), 64, kNear).to_double(kNear) * 0x1p1000 *
-                0x1p48,
-            1.0);
+  EXPECT_EQ(
+      SoftFloat::mul(gap, SoftFloat(0x1p1000, 53), 64, kNear).to_double(kNear) * 0x1p1000 * 0x1p48,
+      1.0);
 }
 
 // The top rung of the ladder divides and takes square roots at 4096 bits. Measured on one core

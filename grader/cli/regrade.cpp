@@ -1,5 +1,7 @@
 // raygrade regrade: which students' points or feedback a new bank changes (a discovered mistake
 // promoted to a named one, say), before anything is written.
+#include "grading/regrade.h"
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -11,7 +13,6 @@
 #include "core/escape.h"
 #include "core/parallel.h"
 #include "grading/outputs.h"
-#include "grading/regrade.h"
 
 namespace raygrade::cli {
 // Named rather than anonymous: a unity batch shares one anonymous namespace.

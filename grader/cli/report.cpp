@@ -161,8 +161,8 @@ int run_report(const ReportOptions& o, bool problems_given) {
   const std::size_t chunk = std::max<std::size_t>(64, 16 * std::size_t{jobs});
   for (std::size_t from = 0; from < files.size(); from += chunk) {
     std::size_t n = std::min(chunk, files.size() - from);
-    auto graded = parallel_map<std::optional<Graded>>(
-        n, jobs, [&](std::size_t k) -> std::optional<Graded> {
+    auto graded =
+        parallel_map<std::optional<Graded>>(n, jobs, [&](std::size_t k) -> std::optional<Graded> {
           const std::string& file = files[from + k];
           try {
             Graded g;

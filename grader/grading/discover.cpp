@@ -4,10 +4,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numbers>
 #include <numeric>
-#include <functional>
 #include <set>
 #include <tuple>
 
@@ -324,8 +324,10 @@ std::size_t water_level(const std::vector<std::size_t>& counts, std::size_t budg
   std::size_t lo = 0;
   while (lo < hi) {
     std::size_t mid = lo + (hi - lo + 1) / 2;
-    if (total(mid) <= budget) lo = mid;
-    else hi = mid - 1;
+    if (total(mid) <= budget)
+      lo = mid;
+    else
+      hi = mid - 1;
   }
   return lo;
 }
@@ -335,6 +337,36 @@ struct Prediction {
   std::vector<double> numbers;  // per leaf (NaN for a leaf with no step)
   std::vector<StepChange> changes;
 };
+
+// How many of each step's changes the budget pays for: all of them when they fit; else each
+// step an equal share of its operators' changes (the whole step negated among them) first, then
+// what is left in equal shares of its operands'.
+struct Shares {
+  std::vector<std::size_t> ops, operands, take_ops, take_operands;
+  bool truncated = false;
+};
+Shares shares(const std::vector<const Step*>& steps, const Context& c, std::size_t budget) {
+  Shares r;
+  r.ops.resize(steps.size());
+  r.operands.resize(steps.size());
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    r.ops[i] = 1 + count_alternatives(steps[i]->formula, c, Tier::kOperators);  // 1: negated
+    r.operands[i] = count_alternatives(steps[i]->formula, c, Tier::kOperands);
+    total += r.ops[i] + r.operands[i];
+  }
+  r.take_ops = r.ops;
+  r.take_operands = r.operands;
+  if (total <= budget) return r;
+  r.truncated = true;
+  std::size_t level = water_level(r.ops, budget), used = 0;
+  for (std::size_t i = 0; i < steps.size(); ++i) used += r.take_ops[i] = std::min(r.ops[i], level);
+  bool all_ops = used == std::accumulate(r.ops.begin(), r.ops.end(), std::size_t{0});
+  std::size_t level1 = all_ops ? water_level(r.operands, budget - used) : 0;
+  for (std::size_t i = 0; i < steps.size(); ++i)
+    r.take_operands[i] = std::min(r.operands[i], level1);
+  return r;
+}
 
 }  // namespace discover_internal
 
@@ -471,23 +503,8 @@ ChangeSearch::ChangeSearch(const Problem& problem) : impl_(std::make_unique<Impl
       for (const auto& s : part.derivation.steps) cost += 1 + formula_size(s.formula);
     }
     std::size_t budget = std::max(kMinSearchedChanges, kSearchWork / methods.size() / cost);
-    std::vector<std::size_t> ops(steps.size()), operands(steps.size());
-    std::size_t total = 0;
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-      ops[i] = 1 + count_alternatives(steps[i]->formula, c, Tier::kOperators);  // 1: negated
-      operands[i] = count_alternatives(steps[i]->formula, c, Tier::kOperands);
-      total += ops[i] + operands[i];
-    }
-    std::vector<std::size_t> take_ops = ops, take_operands = operands;
-    if (total > budget) {
-      m.truncated = true;
-      std::size_t level = water_level(ops, budget), used = 0;
-      for (std::size_t i = 0; i < steps.size(); ++i) used += take_ops[i] = std::min(ops[i], level);
-      bool all_ops = used == std::accumulate(ops.begin(), ops.end(), std::size_t{0});
-      std::size_t level1 = all_ops ? water_level(operands, budget - used) : 0;
-      for (std::size_t i = 0; i < steps.size(); ++i)
-        take_operands[i] = std::min(operands[i], level1);
-    }
+    const auto& [ops, operands, take_ops, take_operands, cut] = shares(steps, c, budget);
+    m.truncated = m.truncated || cut;
     for (std::size_t i = 0; i < steps.size(); ++i) {
       const Step* s = steps[i];
       std::string before = to_text(s->formula);

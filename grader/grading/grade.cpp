@@ -65,7 +65,7 @@ PartResult make_part(const GradingContext& c, const std::string& name, double cr
   credit = std::clamp(credit, 0.0, 1.0);
   p.points = p.max_points * credit;
   // A part worth nothing has no share to be partly earned: it is right or wrong.
-  p.status = credit >= 1                     ? PartStatus::kRight
+  p.status = credit >= 1                      ? PartStatus::kRight
              : credit > 0 && p.max_points > 0 ? PartStatus::kPartial
                                               : PartStatus::kWrong;
   p.feedback = std::move(feedback);

@@ -45,9 +45,9 @@ std::vector<GradeChange> grade_changes(const std::vector<GradeResult>& before,
   for (const auto& a : after) {
     auto it = old_of.find(a.problem_id);
     if (it == old_of.end() || it->second.empty()) {
-      changes.push_back({a.problem_id, fmt::format("added ({} of {} points)",
-                                                   format_points(a.score),
-                                                   format_points(a.max_score))});
+      changes.push_back(
+          {a.problem_id, fmt::format("added ({} of {} points)", format_points(a.score),
+                                     format_points(a.max_score))});
       continue;
     }
     std::size_t k = it->second.back();
@@ -58,9 +58,9 @@ std::vector<GradeChange> grade_changes(const std::vector<GradeResult>& before,
   }
   for (std::size_t k = 0; k < before.size(); ++k)
     if (!paired[k])
-      changes.push_back({before[k].problem_id,
-                         fmt::format("removed (was {} of {} points)", format_points(before[k].score),
-                                     format_points(before[k].max_score))});
+      changes.push_back({before[k].problem_id, fmt::format("removed (was {} of {} points)",
+                                                           format_points(before[k].score),
+                                                           format_points(before[k].max_score))});
   return changes;
 }
 

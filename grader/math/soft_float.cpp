@@ -141,8 +141,8 @@ SoftFloat SoftFloat::add(const SoftFloat& a, const SoftFloat& b, int precision, 
   std::int64_t small_e = collapsed ? low - 1 : small->e_;
   std::int64_t e = std::min(big->e_, small_e);
   Natural mb = shifted_left(big->m_, big->e_ - e);
-  Natural ms = collapsed ? shifted_left(Natural(1), small_e - e)
-                         : shifted_left(small->m_, small_e - e);
+  Natural ms =
+      collapsed ? shifted_left(Natural(1), small_e - e) : shifted_left(small->m_, small_e - e);
   if (big->negative_ == small->negative_) {
     mb += ms;
     return round(big->negative_, std::move(mb), e, false, precision, r);

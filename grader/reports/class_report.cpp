@@ -91,7 +91,7 @@ struct Report {
   std::vector<std::string> problem_ids, problem_titles;
   std::vector<const Problem*> bases;
   Tables tables;
-  std::vector<std::vector<VariantRow>> variants;                  // per problem
+  std::vector<std::vector<VariantRow>> variants;                   // per problem
   std::vector<std::map<std::string, std::int32_t>> variant_index;  // per problem
   std::vector<StudentRow> students;
   std::map<std::string, std::size_t> student_index;
@@ -401,8 +401,8 @@ void ClassReportBuilder::add(const ClassStudent& student) {
     for (const auto& m : a.result.mistakes) out.mistakes.push_back(r.tables.intern(m.id));
     if (a.variant) {
       std::string key = variant_key(*a.variant);
-      auto [it, fresh] = r.variant_index[p].emplace(
-          key, static_cast<std::int32_t>(r.variants[p].size()));
+      auto [it, fresh] =
+          r.variant_index[p].emplace(key, static_cast<std::int32_t>(r.variants[p].size()));
       if (fresh) {
         bool keep = r.bases.empty() || a.variant->values.empty() || a.variant == r.bases[p];
         const Problem* kept = !keep ? nullptr : r.bases.empty() ? a.variant : r.bases[p];
@@ -415,8 +415,10 @@ void ClassReportBuilder::add(const ClassStudent& student) {
     out.mistakes.shrink_to_fit();
   }
   auto [it, fresh] = r.student_index.emplace(student.id, r.students.size());
-  if (fresh) r.students.push_back(std::move(row));
-  else r.students[it->second] = std::move(row);
+  if (fresh)
+    r.students.push_back(std::move(row));
+  else
+    r.students[it->second] = std::move(row);
 }
 
 void ClassReportBuilder::set_no_submission(std::vector<AbsentStudent> absent) {
@@ -432,8 +434,8 @@ std::size_t ClassReportBuilder::retained_bytes() const {
   for (const auto& s : r.students) {
     n += bytes(s.id) + bytes(s.name) + bytes(s.page) + s.answers.capacity() * sizeof(AnswerRow);
     for (const auto& a : s.answers)
-      n += a.parts.capacity() * sizeof(PartRow) +
-           a.mistakes.capacity() * sizeof(std::uint32_t) + bytes(a.answer);
+      n += a.parts.capacity() * sizeof(PartRow) + a.mistakes.capacity() * sizeof(std::uint32_t) +
+           bytes(a.answer);
   }
   // A map entry: its key and value, and about four words of the tree's node.
   constexpr std::size_t kNode = 4 * sizeof(void*);

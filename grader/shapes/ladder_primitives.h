@@ -135,11 +135,10 @@ decltype(auto) visit_primitive(Primitive p, F&& f) {
            ...));
     } else {
       Result out{};
-      static_cast<void>(
-          ((static_cast<std::size_t>(p) == I
-                ? (out = f.template operator()<LadderPrimitive<I>>(), true)
-                : false) ||
-           ...));
+      static_cast<void>(((static_cast<std::size_t>(p) == I
+                              ? (out = f.template operator()<LadderPrimitive<I>>(), true)
+                              : false) ||
+                         ...));
       return out;
     }
   }
