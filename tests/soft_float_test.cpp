@@ -113,16 +113,15 @@ int compare_with_mpfr(double a1, double a2, double b1, double b2, int bits, cons
   mpfr_set_d(mb, b1, MPFR_RNDN);
   mpfr_add_d(mb, mb, b2, MPFR_RNDN);
   EXPECT_EQ(expansion(sa), expansion(ma)) << what;
+  auto check = [&](const SoftFloat& s, const char* op) {
+    EXPECT_EQ(expansion(s), expansion(mr)) << op << " " << bits << " bits, " << what;
+    EXPECT_TRUE(same(s.to_double(Rounding::kDown), mpfr_get_d(mr, MPFR_RNDD))) << op << " " << what;
+    EXPECT_TRUE(same(s.to_double(Rounding::kUp), mpfr_get_d(mr, MPFR_RNDU))) << op << " " << what;
+    EXPECT_TRUE(same(s.to_double(kNear), mpfr_get_d(mr, MPFR_RNDN))) << op << " " << what;
+    ++compared;
+  };
   for (int k = 0; k < 3; ++k) {
     Rounding r = roundings[k];
-    auto check = [&](const SoftFloat& s, const char* op) {
-      EXPECT_EQ(expansion(s), expansion(mr)) << op << " " << bits << " bits, " << what;
-      EXPECT_TRUE(same(s.to_double(Rounding::kDown), mpfr_get_d(mr, MPFR_RNDD)))
-          << op << " " << what;
-      EXPECT_TRUE(same(s.to_double(Rounding::kUp), mpfr_get_d(mr, MPFR_RNDU))) << op << " " << what;
-      EXPECT_TRUE(same(s.to_double(kNear), mpfr_get_d(mr, MPFR_RNDN))) << op << " " << what;
-      ++compared;
-    };
     mpfr_add(mr, ma, mb, modes[k]);
     check(SoftFloat::add(sa, sb, bits, r), "add");
     mpfr_sub(mr, ma, mb, modes[k]);
@@ -135,6 +134,17 @@ int compare_with_mpfr(double a1, double a2, double b1, double b2, int bits, cons
     mpfr_sqrt(mr, mr, modes[k]);
     check(SoftFloat::sqrt(SoftFloat::abs(sa, bits), bits, r), "sqrt");
   }
+  // Both bounds of a product and of a quotient from one exact result, as an interval takes them.
+  auto [mul_down, mul_up] = SoftFloat::mul_down_up(sa, sb, bits);
+  mpfr_mul(mr, ma, mb, MPFR_RNDD);
+  check(mul_down, "mul_down_up, down");
+  mpfr_mul(mr, ma, mb, MPFR_RNDU);
+  check(mul_up, "mul_down_up, up");
+  auto [div_down, div_up] = SoftFloat::div_down_up(sa, sb, bits);
+  mpfr_div(mr, ma, mb, MPFR_RNDD);
+  check(div_down, "div_down_up, down");
+  mpfr_div(mr, ma, mb, MPFR_RNDU);
+  check(div_up, "div_down_up, up");
   // The comparison, as the ladder's sign tests use it: exactly −1, 0 or 1.
   bool unordered = false;
   int c = SoftFloat::compare(sa, sb, unordered);
@@ -160,7 +170,7 @@ TEST(SoftFloat, AgreesWithMpfrBitForBit) {
       compared += compare_with_mpfr(a1, a2, b1, b2, bits, "random");
     }
   }
-  EXPECT_EQ(compared, 7 * 150 * 3 * 5);
+  EXPECT_EQ(compared, 7 * 150 * (3 * 5 + 4));
 }
 
 // The cases where a rounding is decided by its last bits: exact quotients and square roots (no

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "math/double_double.h"
 #include "math/mpfr_number.h"
@@ -63,7 +64,32 @@ struct Rounded<Mpfr> {
   static Mpfr mul(const Mpfr& a, const Mpfr& b, bool up) { return Mpfr::mul(a, b, mode(up)); }
   static Mpfr div(const Mpfr& a, const Mpfr& b, bool up) { return Mpfr::div(a, b, mode(up)); }
   static Mpfr sqrt(const Mpfr& a, bool up) { return Mpfr::sqrt(a, mode(up)); }
+  static std::pair<Mpfr, Mpfr> mul_bounds(const Mpfr& a, const Mpfr& b) {
+    return Mpfr::mul_down_up(a, b);
+  }
+  static std::pair<Mpfr, Mpfr> div_bounds(const Mpfr& a, const Mpfr& b) {
+    return Mpfr::div_down_up(a, b);
+  }
 };
+
+// A bound below and above of a·b (a/b): from Rounded<T>'s mul_bounds (div_bounds) when it has
+// one, which computes the exact result once for both (SoftFloat), else two roundings.
+template <typename R, typename T>
+std::pair<T, T> mul_bounds(const T& a, const T& b) {
+  if constexpr (requires { R::mul_bounds(a, b); }) {
+    return R::mul_bounds(a, b);
+  } else {
+    return {R::mul(a, b, false), R::mul(a, b, true)};
+  }
+}
+template <typename R, typename T>
+std::pair<T, T> div_bounds(const T& a, const T& b) {
+  if constexpr (requires { R::div_bounds(a, b); }) {
+    return R::div_bounds(a, b);
+  } else {
+    return {R::div(a, b, false), R::div(a, b, true)};
+  }
+}
 
 // DoubleDouble operations err by at most 15u² = 15·2^-106 < 2^-102 relative (the division,
 // Joldes et al. 2017) barring underflow; each of their at most 20 double operations may add
@@ -129,14 +155,14 @@ struct Interval {
   }
   friend Interval operator*(const Interval& a, const Interval& b) {
     const T* x[4][2] = {{&a.lo, &b.lo}, {&a.lo, &b.hi}, {&a.hi, &b.lo}, {&a.hi, &b.hi}};
-    T low = R::mul(a.lo, b.lo, false), high = R::mul(a.lo, b.lo, true);
-    if (a.is_point() && b.is_point()) return {low, high};
+    auto [low, high] = mul_bounds<R>(a.lo, b.lo);
+    if (a.is_point() && b.is_point()) return {std::move(low), std::move(high)};
     for (int i = 1; i < 4; ++i) {
-      T l = R::mul(*x[i][0], *x[i][1], false), h = R::mul(*x[i][0], *x[i][1], true);
-      if (l < low) low = l;
-      if (h > high) high = h;
+      auto [l, h] = mul_bounds<R>(*x[i][0], *x[i][1]);
+      if (l < low) low = std::move(l);
+      if (h > high) high = std::move(h);
     }
-    return {low, high};
+    return {std::move(low), std::move(high)};
   }
   friend Interval operator/(const Interval& a, const Interval& b) {
     if (b.lo <= T(0) && b.hi >= T(0)) return entire();
@@ -144,9 +170,9 @@ struct Interval {
     bool first = true;
     for (const T* p : {&a.lo, &a.hi}) {
       for (const T* q : {&b.lo, &b.hi}) {
-        T l = R::div(*p, *q, false), h = R::div(*p, *q, true);
-        if (first || l < out.lo) out.lo = l;
-        if (first || h > out.hi) out.hi = h;
+        auto [l, h] = div_bounds<R>(*p, *q);
+        if (first || l < out.lo) out.lo = std::move(l);
+        if (first || h > out.hi) out.hi = std::move(h);
         first = false;
       }
     }

@@ -56,6 +56,15 @@ class Mpfr {
   static Mpfr sqrt(const Mpfr& a, Rounding r) {
     return Mpfr(SoftFloat::sqrt(a.v_, mpfr_precision(), r));
   }
+  // a·b and a/b rounded down and up (an interval's bounds) from one exact product (quotient).
+  static std::pair<Mpfr, Mpfr> mul_down_up(const Mpfr& a, const Mpfr& b) {
+    auto [down, up] = SoftFloat::mul_down_up(a.v_, b.v_, mpfr_precision());
+    return {Mpfr(std::move(down)), Mpfr(std::move(up))};
+  }
+  static std::pair<Mpfr, Mpfr> div_down_up(const Mpfr& a, const Mpfr& b) {
+    auto [down, up] = SoftFloat::div_down_up(a.v_, b.v_, mpfr_precision());
+    return {Mpfr(std::move(down)), Mpfr(std::move(up))};
+  }
 
   friend Mpfr operator+(const Mpfr& a, const Mpfr& b) { return add(a, b, Rounding::kNearest); }
   friend Mpfr operator-(const Mpfr& a, const Mpfr& b) {
@@ -128,6 +137,13 @@ class Mpfr {
     Mpfr s;
     mpfr_sqrt(s.v_, a.v_, mode(r));
     return s;
+  }
+  // a·b and a/b rounded down and up (an interval's bounds): two MPFR operations.
+  static std::pair<Mpfr, Mpfr> mul_down_up(const Mpfr& a, const Mpfr& b) {
+    return {mul(a, b, Rounding::kDown), mul(a, b, Rounding::kUp)};
+  }
+  static std::pair<Mpfr, Mpfr> div_down_up(const Mpfr& a, const Mpfr& b) {
+    return {div(a, b, Rounding::kDown), div(a, b, Rounding::kUp)};
   }
 
   friend Mpfr operator+(const Mpfr& a, const Mpfr& b) { return apply(mpfr_add, a, b); }

@@ -96,7 +96,8 @@ SoftFloat SoftFloat::round(bool negative, Natural m, std::int64_t e, bool sticky
   // never gives 0).
   unsigned zeros = mp::lsb(m);
   SoftFloat x = special(Kind::kFinite, negative);
-  x.m_ = std::move(m) >> zeros;
+  m >>= zeros;
+  x.m_ = std::move(m);
   x.e_ = e + zeros;
   return x;
 }
@@ -163,30 +164,92 @@ SoftFloat SoftFloat::sub(const SoftFloat& a, const SoftFloat& b, int precision, 
   return add(a, minus_b, precision, r);
 }
 
-SoftFloat SoftFloat::mul(const SoftFloat& a, const SoftFloat& b, int precision, Rounding r) {
-  bool negative = a.negative_ != b.negative_;
-  if (a.kind_ == Kind::kNaN || b.kind_ == Kind::kNaN) return nan();
-  if (a.kind_ == Kind::kInf || b.kind_ == Kind::kInf) {
-    if (a.kind_ == Kind::kZero || b.kind_ == Kind::kZero) return nan();
-    return special(Kind::kInf, negative);
+// A value that needs no rounding (zero, ∞, NaN: `value`), or ±(m + a fraction below its last
+// bit, when `sticky`)·2^e, exactly.
+struct SoftFloat::Unrounded {
+  bool is_special = false;
+  SoftFloat value;
+  bool negative = false;
+  Natural m;
+  std::int64_t e = 0;
+  bool sticky = false;
+};
+
+SoftFloat SoftFloat::rounded(Unrounded x, int precision, Rounding r) {
+  if (x.is_special) return std::move(x.value);
+  return round(x.negative, std::move(x.m), x.e, x.sticky, precision, r);
+}
+
+std::pair<SoftFloat, SoftFloat> SoftFloat::rounded_down_up(Unrounded x, int precision) {
+  if (x.is_special) return {x.value, x.value};
+  SoftFloat down = round(x.negative, x.m, x.e, x.sticky, precision, Rounding::kDown);
+  return {std::move(down),
+          round(x.negative, std::move(x.m), x.e, x.sticky, precision, Rounding::kUp)};
+}
+
+SoftFloat::Unrounded SoftFloat::exact_product(const SoftFloat& a, const SoftFloat& b) {
+  Unrounded x;
+  x.negative = a.negative_ != b.negative_;
+  x.is_special = true;
+  if (a.kind_ == Kind::kNaN || b.kind_ == Kind::kNaN) {
+    x.value = nan();
+  } else if (a.kind_ == Kind::kInf || b.kind_ == Kind::kInf) {
+    bool zero = a.kind_ == Kind::kZero || b.kind_ == Kind::kZero;
+    x.value = zero ? nan() : special(Kind::kInf, x.negative);
+  } else if (a.kind_ == Kind::kZero || b.kind_ == Kind::kZero) {
+    x.value = special(Kind::kZero, x.negative);
+  } else {
+    x.is_special = false;
+    x.m = a.m_ * b.m_;
+    x.e = a.e_ + b.e_;
   }
-  if (a.kind_ == Kind::kZero || b.kind_ == Kind::kZero) return special(Kind::kZero, negative);
-  return round(negative, a.m_ * b.m_, a.e_ + b.e_, false, precision, r);
+  return x;
+}
+
+SoftFloat::Unrounded SoftFloat::exact_quotient(const SoftFloat& a, const SoftFloat& b,
+                                               int precision) {
+  Unrounded x;
+  x.negative = a.negative_ != b.negative_;
+  x.is_special = true;
+  if (a.kind_ == Kind::kNaN || b.kind_ == Kind::kNaN) {
+    x.value = nan();
+  } else if (a.kind_ == Kind::kInf) {
+    x.value = b.kind_ == Kind::kInf ? nan() : special(Kind::kInf, x.negative);
+  } else if (b.kind_ == Kind::kInf) {
+    x.value = special(Kind::kZero, x.negative);
+  } else if (b.kind_ == Kind::kZero) {
+    x.value = a.kind_ == Kind::kZero ? nan() : special(Kind::kInf, x.negative);
+  } else if (a.kind_ == Kind::kZero) {
+    x.value = special(Kind::kZero, x.negative);
+  } else {
+    x.is_special = false;
+    // Enough quotient bits for the rounding (precision + 2), the rest in the remainder.
+    std::int64_t shift =
+        std::max<std::int64_t>(0, precision + 3 + bit_length(b.m_) - bit_length(a.m_));
+    Natural rem;
+    mp::divide_qr(shifted_left(a.m_, shift), b.m_, x.m, rem);
+    x.e = a.e_ - b.e_ - shift;
+    x.sticky = !rem.is_zero();
+  }
+  return x;
+}
+
+SoftFloat SoftFloat::mul(const SoftFloat& a, const SoftFloat& b, int precision, Rounding r) {
+  return rounded(exact_product(a, b), precision, r);
 }
 
 SoftFloat SoftFloat::div(const SoftFloat& a, const SoftFloat& b, int precision, Rounding r) {
-  bool negative = a.negative_ != b.negative_;
-  if (a.kind_ == Kind::kNaN || b.kind_ == Kind::kNaN) return nan();
-  if (a.kind_ == Kind::kInf) return b.kind_ == Kind::kInf ? nan() : special(Kind::kInf, negative);
-  if (b.kind_ == Kind::kInf) return special(Kind::kZero, negative);
-  if (b.kind_ == Kind::kZero) return a.kind_ == Kind::kZero ? nan() : special(Kind::kInf, negative);
-  if (a.kind_ == Kind::kZero) return special(Kind::kZero, negative);
-  // Enough quotient bits for the rounding (precision + 2), the rest in the remainder.
-  std::int64_t shift =
-      std::max<std::int64_t>(0, precision + 3 + bit_length(b.m_) - bit_length(a.m_));
-  Natural q, rem;
-  mp::divide_qr(shifted_left(a.m_, shift), b.m_, q, rem);
-  return round(negative, std::move(q), a.e_ - b.e_ - shift, !rem.is_zero(), precision, r);
+  return rounded(exact_quotient(a, b, precision), precision, r);
+}
+
+std::pair<SoftFloat, SoftFloat> SoftFloat::mul_down_up(const SoftFloat& a, const SoftFloat& b,
+                                                       int precision) {
+  return rounded_down_up(exact_product(a, b), precision);
+}
+
+std::pair<SoftFloat, SoftFloat> SoftFloat::div_down_up(const SoftFloat& a, const SoftFloat& b,
+                                                       int precision) {
+  return rounded_down_up(exact_quotient(a, b, precision), precision);
 }
 
 SoftFloat SoftFloat::sqrt(const SoftFloat& a, int precision, Rounding r) {

@@ -6,6 +6,7 @@
 
 #include <boost/multiprecision/cpp_int.hpp>
 #include <cstdint>
+#include <utility>
 
 #include "math/rounding.h"
 
@@ -28,6 +29,12 @@ class SoftFloat {
   static SoftFloat mul(const SoftFloat& a, const SoftFloat& b, int precision, Rounding r);
   static SoftFloat div(const SoftFloat& a, const SoftFloat& b, int precision, Rounding r);
   static SoftFloat sqrt(const SoftFloat& a, int precision, Rounding r);
+  // a·b and a/b rounded down and up, both from one exact product (quotient and remainder), as
+  // an interval's bounds take them: the same two values as mul (div) with kDown and kUp.
+  static std::pair<SoftFloat, SoftFloat> mul_down_up(const SoftFloat& a, const SoftFloat& b,
+                                                     int precision);
+  static std::pair<SoftFloat, SoftFloat> div_down_up(const SoftFloat& a, const SoftFloat& b,
+                                                     int precision);
   // −a and |a|, rounded to `precision`.
   static SoftFloat neg(const SoftFloat& a, int precision);
   static SoftFloat abs(const SoftFloat& a, int precision);
@@ -44,6 +51,12 @@ class SoftFloat {
 
  private:
   enum class Kind : std::uint8_t { kZero, kFinite, kInf, kNaN };
+  // An exact result before its rounding (soft_float.cpp).
+  struct Unrounded;
+  static Unrounded exact_product(const SoftFloat& a, const SoftFloat& b);
+  static Unrounded exact_quotient(const SoftFloat& a, const SoftFloat& b, int precision);
+  static SoftFloat rounded(Unrounded x, int precision, Rounding r);
+  static std::pair<SoftFloat, SoftFloat> rounded_down_up(Unrounded x, int precision);
   // Rounds ±(m + a fraction, when `sticky`)·2^e to `precision` bits. With `sticky`, m must
   // hold at least precision + 2 bits.
   static SoftFloat round(bool negative, Natural m, std::int64_t e, bool sticky, int precision,
