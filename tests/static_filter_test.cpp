@@ -295,6 +295,32 @@ TEST(StaticFilter, AHalvedBoundIsCaught) {
   EXPECT_EQ(halved.wrong, 1);
 }
 
+// The triangle's first bound cannot be caught halved: where det, U or V is exactly zero their
+// rounding errors add up, to first order, to at most 19u·X·Y·Z (V's to 15u; W's to 57u against
+// its 4B), below the halved 25u (docs/precision.md). This ray comes near that most:
+// U = s·(D × e₂), exactly −5·10⁻⁵u·X·Y·Z (the ray passes just outside the edge from c to a),
+// comes out 16.1u·X·Y·Z above zero, while det, V, W and t's numerator lie far from zero (about
+// 4, 3.75, 0.25 and 0.25 times X·Y·Z; X, Y and Z within 10⁻⁶ of 1). Its inputs were found by a
+// hill climb over their low bits, from the signs that give the most error. At the full bound and
+// at half of it the filter leaves the ray (so a constant below 2·16.1u fails here); at 0.3 of
+// it (15u·X·Y·Z) it certifies a hit, which the MPFR truth refutes.
+TEST(StaticFilter, ATriangleBoundCutToThreeTenthsIsCaught) {
+  AccuracyCase c = make_case("triangle-u-16u-the-wrong-way", "scale", primitive_of<Triangle>(),
+                             {0x1.2383985ca7916p+0, -0x1.6f7e1939f39e5p+0, 0x1.1eece6cfab23dp+0},
+                             {-0x1.000002913aca6p+0, -0x1.0000015ff0128p+0, -0x1.00000a880263ap+0},
+                             {{0x1.1c1c7d1c58074p-3, -0x1.1efc2fc6d6bccp-1, 0x1.eecdfb14e0968p-4},
+                              {0x1.238369d8d13bp+0, -0x1.8f7287828fef8p+0, -0x1.c22511e78a54dp-1},
+                              {0x1.23839ed898405p+0, -0x1.8f7e23b00f1e4p+0, 0x1.1eececa84e6a6p+0}});
+  Truth truth = compute_truth(c, false);
+  ASSERT_FALSE(truth.boundary);
+  EXPECT_FALSE(truth.hit);
+  EXPECT_FALSE(filtered_double(c, 1).has_value());
+  EXPECT_FALSE(filtered_double(c, 0.5).has_value());
+  Tally cut = check({c}, 0.3);
+  EXPECT_EQ(cut.decided, 1);
+  EXPECT_EQ(cut.wrong, 1);
+}
+
 // The triangle's first bound takes D's scale cubed; the second takes it once, so a direction
 // far longer than the triangle is still decided. The triangle (0,0,0), (1,0,0), (0,1,0) and
 // O = (−0.75, −0.75, 1), D = 2^30·(1, 1, −1): O + t·D meets z = 0 at t = 2^-30, at
