@@ -6,16 +6,32 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 # Each step's wall time, printed as it ends and again at the end (a failing step stops the run
 # with its status; the times so far are printed then too).
-timings=""
+timings="$(mktemp)"
 step() {
   local name="$1" start=$SECONDS
   shift
   "$@"
   local took=$((SECONDS - start))
-  timings+="$(printf '%5d s  %s' "$took" "$name")"$'\n'
+  printf '%5d s  %s\n' "$took" "$name" >>"$timings"
   printf '== %s: %d s\n' "$name" "$took" >&2
 }
-trap 'printf "\nStep times:\n%s" "$timings" >&2' EXIT
+trap 'printf "\nStep times:\n" >&2; cat "$timings" >&2; rm -f "$timings"' EXIT
+# Steps that wait more than they compute run beside a build: started by in_background (their
+# output kept until then), waited for by wait_background, which shows it and fails when one did.
+background_pid=""
+background_log=""
+in_background() {
+  background_log="$(mktemp)"
+  "$@" >"$background_log" 2>&1 &
+  background_pid=$!
+}
+wait_background() {
+  local status=0
+  wait "$background_pid" || status=$?
+  cat "$background_log" >&2
+  rm -f "$background_log"
+  return "$status"
+}
 # The browser extra: the HTML worked solutions are checked in headless Chromium; the fuzz extra:
 # clang and its sanitizer runtime, for the asan preset (the tests and the fuzz targets).
 step "install" env RAYGRADE_EXTRA="${RAYGRADE_EXTRA:-} browser fuzz" bash scripts/install-deps.sh
@@ -44,17 +60,23 @@ web_test() {
   [ "$status" -eq 0 ] && [ "$other" -eq 0 ]
 }
 step "test web" web_test
-step "practice page" /usr/bin/python3 tests/practice_in_browser.py build/release/grader/raygrade \
-  build/web/web/raygrade.js assignments/homework-rays.json build/web/practice-check
-# The SCORM package under scorm-again's LMS API, SCORM 1.2 and 2004 (docs/assignments.md).
-step "scorm" ctest --preset release -R scorm_in_browser --output-on-failure
-# axe-core over the handout, practice, worked-solution and feedback pages (docs/web.md).
-step "accessibility" ctest --preset release -R axe_in_browser --output-on-failure
+# The practice page, the SCORM package and the accessibility audit in headless Chromium, beside
+# the static build (they wait on the browser more than they compute).
+browser_pages() {
+  step "practice page" /usr/bin/python3 tests/practice_in_browser.py build/release/grader/raygrade \
+    build/web/web/raygrade.js assignments/homework-rays.json build/web/practice-check
+  # The SCORM package under scorm-again's LMS API, SCORM 1.2 and 2004 (docs/assignments.md).
+  step "scorm" ctest --preset release -R scorm_in_browser --output-on-failure
+  # axe-core over the handout, practice, worked-solution and feedback pages (docs/web.md).
+  step "accessibility" ctest --preset release -R axe_in_browser --output-on-failure
+}
+in_background browser_pages
 # The static binary the LMS exports ship (a second build of the library, without tests): the
 # conformance set, every subcommand against the release binary's output, and the Gradescope
 # autograder and the PrairieLearn questions run with it.
 step "configure static" cmake --preset static >/dev/null
 step "build static" cmake --build --preset static
+step "browser pages (beside the static build)" wait_background
 step "conformance static" python3 tests/conformance.py build/static/grader/raygrade tests/data/conformance
 step "static check" bash scripts/static-check.sh build/static/grader/raygrade build/release/grader/raygrade
 step "gradescope" /usr/bin/python3 tests/gradescope_autograder.py build/release/grader/raygrade \

@@ -408,10 +408,11 @@ TEST(ClassReport, PlantedMistakesAreFoundAndNoiseIsNotClaimed) {
     ++planted;
     ++figures[1];
     int before = found;
-    auto miss = [&] {
-      if (found == before && misses[problem + " " + label].size() < 600)
-        misses[problem + " " + label] +=
-            " | " + (landed.count(key) ? group_of[key].dump() : "not grouped");
+    // Captured by name: clang 14 takes no structured binding into a lambda.
+    auto miss = [&, &now = found, &what = label, &at = key] {
+      if (now == before && misses[problem + " " + what].size() < 600)
+        misses[problem + " " + what] +=
+            " | " + (landed.count(at) ? group_of[at].dump() : "not grouped");
     };
     if (!landed.count(key)) {
       miss();
