@@ -355,7 +355,8 @@ TEST(Parts, AZeroPointPartIsNeverPartial) {
     ASSERT_NE(part(r, "normal"), nullptr) << problem;
     EXPECT_EQ(part(r, "normal")->status, PartStatus::kWrong) << problem;
     EXPECT_DOUBLE_EQ(r.score, 2);
-    for (const auto& p : result_json(r)["parts"]) EXPECT_NE(p["status"], "partial") << p;
+    const nlohmann::json graded = result_json(r);  // kept: the loop reads into it
+    for (const auto& p : graded["parts"]) EXPECT_NE(p["status"], "partial") << p;
     // Both right: right.
     GradeResult right = grade(problem, R"({"hits": [{"t": 1, "normal": [-1, 0, 0]},
       {"t": 3, "normal": [1, 0, 0]}]})");

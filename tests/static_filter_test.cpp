@@ -63,6 +63,9 @@ std::pair<Vec3d, Vec3d> near_side(SplitMix& rng, const Vec3d& base, const Vec3d&
 // centre at about the radius, triangles and polygons with the ray aimed near a point of an edge
 // or near a vertex, disks with the ray aimed near the rim, boxes with the ray aimed near an edge
 // or a corner from afar, planes with the origin near the plane or the direction nearly in it.
+// Each expression draws one random number at most, or its draws are in a braced list: the
+// operands of one expression are evaluated in an order the language leaves open, and the rays
+// (which the bounds' calibration above was measured on) must be the same whatever the compiler.
 std::vector<AccuracyCase> near_boundary_cases(Primitive p, int count, std::uint64_t seed) {
   SplitMix rng(seed);
   std::vector<AccuracyCase> out;
@@ -84,7 +87,8 @@ std::vector<AccuracyCase> near_boundary_cases(Primitive p, int count, std::uint6
       std::size_t j = static_cast<std::size_t>(rng.uniform() * 5) % v.size();
       const Vec3d& a = v[j];
       const Vec3d& b = v[(j + 1) % v.size()];
-      Vec3d target = (i % 4 == 0 ? a : a + rng.uniform() * (b - a)) + off * rng.unit_vector();
+      Vec3d aside = off * rng.unit_vector();
+      Vec3d target = (i % 4 == 0 ? a : a + rng.uniform() * (b - a)) + aside;
       out.push_back(make_case(fmt::format("edge-{}", i), "near-boundary", p, o, target - o, v));
     } else if (p == primitive_of<Box>()) {
       Vec3d lo = rng.point(1),
@@ -112,7 +116,7 @@ std::vector<AccuracyCase> near_boundary_cases(Primitive p, int count, std::uint6
                               c + (r * (1 + off)) * n - 4.0 * d, d, {c}, r));
     } else if (p == primitive_of<Cylinder>()) {
       // A ray tangent to the side, or nearly. The axis is not a unit vector.
-      Vec3d base = rng.point(1), axis = rng.uniform(0.3, 3) * rng.unit_vector();
+      Vec3d base = rng.point(1), toward = rng.unit_vector(), axis = rng.uniform(0.3, 3) * toward;
       double r = rng.uniform(0.1, 1);
       auto [at, d] = near_side(rng, base, axis, r, off, -1);
       out.push_back(make_case(fmt::format("tangent-{}", i), "near-boundary", p, at - 4.0 * d, d,
@@ -120,7 +124,8 @@ std::vector<AccuracyCase> near_boundary_cases(Primitive p, int count, std::uint6
     } else if (p == primitive_of<Cone>()) {
       // Rays near the rim circle, near the apex, and nearly tangent to the side (in the plane
       // that touches it along a line, moved off by `off`).
-      Vec3d base = rng.point(1), v = rng.uniform(0.5, 2) * rng.unit_vector(), apex = base + v;
+      Vec3d base = rng.point(1), toward = rng.unit_vector(), v = rng.uniform(0.5, 2) * toward,
+            apex = base + v;
       Vec3d e = across(rng.unit_vector(), v);
       double r = rng.uniform(0.2, 1);
       Vec3d target, d;
@@ -143,7 +148,8 @@ std::vector<AccuracyCase> near_boundary_cases(Primitive p, int count, std::uint6
     } else if (p == primitive_of<Capsule>()) {
       // Rays nearly tangent to the side or to an end, and rays aimed near the circle where the
       // side meets an end.
-      Vec3d a = rng.point(1), axis = rng.uniform(0.3, 2) * rng.unit_vector(), b = a + axis;
+      Vec3d a = rng.point(1), toward = rng.unit_vector(), axis = rng.uniform(0.3, 2) * toward,
+            b = a + axis;
       Vec3d e = across(rng.unit_vector(), axis);
       double r = rng.uniform(0.1, 1);
       Vec3d at, d;
@@ -154,14 +160,16 @@ std::vector<AccuracyCase> near_boundary_cases(Primitive p, int count, std::uint6
         at = end + (r * (1 + off)) * n;
         d = across(rng.unit_vector(), n);
       } else {
-        at = (rng.uniform() < 0.5 ? a : b) + r * e + off * rng.unit_vector();
+        Vec3d aside = off * rng.unit_vector();
+        at = (rng.uniform() < 0.5 ? a : b) + r * e + aside;
         d = at - o;
       }
       out.push_back(
           make_case(fmt::format("capsule-{}", i), "near-boundary", p, at - 4.0 * d, d, {a, b}, r));
     } else if (p == primitive_of<Triangle>()) {
       Vec3d a = rng.point(1), b = rng.point(1), c = rng.point(1);
-      Vec3d target = (i % 4 == 0 ? a : a + rng.uniform() * (b - a)) + off * rng.unit_vector();
+      Vec3d aside = off * rng.unit_vector();
+      Vec3d target = (i % 4 == 0 ? a : a + rng.uniform() * (b - a)) + aside;
       out.push_back(
           make_case(fmt::format("edge-{}", i), "near-boundary", p, o, target - o, {a, b, c}));
     } else {

@@ -61,4 +61,10 @@ json tree_field(const Scene& scene) {
 
 json fields(json list) { return {{"fields", std::move(list)}}; }
 
+json fields(std::initializer_list<json> list) {
+  json array = json::array();
+  for (const auto& f : list) array.push_back(f);
+  return fields(std::move(array));
+}
+
 }  // namespace raygrade::form

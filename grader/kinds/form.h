@@ -2,6 +2,7 @@
 // input, a column of a table, the choice of an object, a table of hits.
 #pragma once
 
+#include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -32,5 +33,9 @@ nlohmann::json tree_field(const Scene& scene);
 
 // {"fields": fields}
 nlohmann::json fields(nlohmann::json list);
+// The same from the fields written out: {field} stays a list of one field whatever the compiler
+// (a json parameter initialised from {field} is the field itself under clang, a list of it under
+// gcc).
+nlohmann::json fields(std::initializer_list<nlohmann::json> list);
 
 }  // namespace raygrade::form

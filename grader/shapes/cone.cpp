@@ -206,8 +206,10 @@ void Cone::Ladder::hard_cases(int round, SplitMix& /*shared*/, std::vector<Accur
     Random c = cone();
     Vec3d rim = c.base + c.r * c.u;
     Vec3d d = c.apex - rim;
-    Vec3d inside = c.base + (rng.uniform(0.1, 0.6) * c.h) * c.axis +
-                   (rng.uniform(-0.2, 0.2) * c.r) * c.w - (rng.uniform(0, 0.3) * c.r) * c.u;
+    // One draw per statement, in the order the stored hard cases were drawn in (the operands
+    // of one expression are evaluated in an order the language leaves open).
+    double back = rng.uniform(0, 0.3), aside = rng.uniform(-0.2, 0.2), up = rng.uniform(0.1, 0.6);
+    Vec3d inside = c.base + (up * c.h) * c.axis + (aside * c.r) * c.w - (back * c.r) * c.u;
     add(fmt::format("cone-parallel-to-side-{}", i), "cone-parallel-to-side", inside - 3.0 * d, d,
         c.base, c.apex, c.r);
   }
