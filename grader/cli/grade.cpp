@@ -345,7 +345,7 @@ std::optional<int> prepare_out(const GradeCliOptions& o, std::optional<FolderLoc
 std::optional<int> read_bulk_zips(const GradeCliOptions& o, const GradeSetup& setup,
                                   std::vector<BulkSubmission>& bulk,
                                   std::vector<Diagnostic>& errors) {
-  BulkRoster roster{&setup.roster, setup.canvas_ids, &setup.worksheet, o.moodle_worksheet};
+  BulkRoster roster{&setup.roster, setup.canvas_ids, &setup.worksheet, o.moodle_worksheet, {}, {}};
   for (const auto& p : o.submissions) {
     if (!is_zip_path(p)) continue;
     if (!setup.per_student || setup.roster.empty())

@@ -138,8 +138,10 @@ std::optional<ExactForm> exact_form(double v) {
     for (long long s = 1; s <= kMaxRootCoefficient; ++s) {
       for (long long k : kSquareFree) {
         for (long long sign : {1, -1}) {
-          double rest = q * v - static_cast<double>(sign * s) * std::sqrt(static_cast<double>(k));
-          if (near_integer(rest, q * v, n)) return reduced(ExactForm{n, sign * s, k, q});
+          double rest = static_cast<double>(q) * v -
+                        static_cast<double>(sign * s) * std::sqrt(static_cast<double>(k));
+          if (near_integer(rest, static_cast<double>(q) * v, n))
+            return reduced(ExactForm{n, sign * s, k, q});
         }
       }
     }
