@@ -408,10 +408,13 @@ TEST(ClassReport, PlantedMistakesAreFoundAndNoiseIsNotClaimed) {
     ++planted;
     ++figures[1];
     int before = found;
-    auto miss = [&] {
-      if (found == before && misses[problem + " " + label].size() < 600)
-        misses[problem + " " + label] +=
-            " | " + (landed.count(key) ? group_of[key].dump() : "not grouped");
+    // The structured bindings through init-captures: clang before 16 cannot capture them.
+    auto miss = [&, &found_ref = found, &label_ref = label, &key_ref = key] {
+      if (found_ref != before) return;
+      std::string& shown = misses[fmt::format("{} {}", problem, label_ref)];
+      if (shown.size() < 600)
+        shown +=
+            fmt::format(" | {}", landed.count(key_ref) ? group_of[key_ref].dump() : "not grouped");
     };
     if (!landed.count(key)) {
       miss();
