@@ -228,6 +228,7 @@ TEST(SoftFloat, DivisionAndSquareRootAt4096BitsAreFast) {
   std::uniform_real_distribution<double> mantissa(1.0, 2.0);
   SoftFloat one(1.0, 4096);
   std::vector<SoftFloat> xs;
+  xs.reserve(20);
   for (int k = 0; k < 20; ++k) {
     // A full 4096-bit operand: 1 / (a double), which does not terminate in binary.
     xs.push_back(SoftFloat::div(one, SoftFloat(mantissa(rng) * 3, 53), 4096, kNear));

@@ -66,7 +66,7 @@ struct StudentHit {
   std::optional<AnswerReader::Number> u, v;
 };
 
-std::string norm_name(std::string s) {
+std::string norm_name(const std::string& s) {
   std::string out;
   for (char ch : s) {
     if (ch == ' ' || ch == '_' || ch == '-') continue;
