@@ -404,7 +404,7 @@ TEST(ClassReport, PlantedMistakesAreFoundAndNoiseIsNotClaimed) {
       ++figures[3];
       continue;
     }
-    auto& [found, planted] = recall[problem + " " + label];
+    auto& [found, planted] = recall[fmt::format("{} {}", problem, label)];
     ++planted;
     ++figures[1];
     int before = found;

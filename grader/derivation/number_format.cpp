@@ -129,7 +129,7 @@ std::optional<ExactForm> exact_form(double v) {
   }
   long long n = 0;
   for (long long q = 2; q <= kMaxFractionDenominator; ++q) {
-    if (near_integer(q * v, q * v, n)) {
+    if (near_integer(static_cast<double>(q) * v, static_cast<double>(q) * v, n)) {
       if (n == 0) return std::nullopt;  // zero is no fraction; v is rounding noise about it
       return reduced(ExactForm{n, 0, 1, q});
     }

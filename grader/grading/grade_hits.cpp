@@ -389,7 +389,7 @@ void HitsGrader::grade(const AnswerReader& a, GradeResult& out) const {
   std::optional<StepsGrade> steps;
   if (a.has("steps")) {
     if (first_hit_) {
-      out.notes.push_back("Steps are not graded for first-hit problems; the final answer is.");
+      out.notes.emplace_back("Steps are not graded for first-hit problems; the final answer is.");
     } else {
       steps = grade_steps(context_, *task_, methods_, mistaken_, a.at("steps"));
       out.parts.push_back(steps->part);
@@ -1012,7 +1012,7 @@ void HitsGrader::grade_barycentric(const std::vector<StudentHit>& hits,
     return;
   }
   std::size_t d = std::max(ref_.size(), given);
-  if (credit >= static_cast<double>(d) && fb.empty()) fb.push_back("Right.");
+  if (credit >= static_cast<double>(d) && fb.empty()) fb.emplace_back("Right.");
   out.parts.push_back(make_part(context_, "barycentric", credit / static_cast<double>(d), fb));
 }
 
