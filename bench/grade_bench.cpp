@@ -72,6 +72,7 @@ std::vector<Grader> prepared_graders() {
     return out;
   }();
   std::vector<Grader> graders;
+  graders.reserve(problems.size());
   for (const auto& p : problems) graders.emplace_back(p);
   return graders;
 }

@@ -37,6 +37,10 @@ wait_background() {
 step "install" env RAYGRADE_EXTRA="${RAYGRADE_EXTRA:-} browser fuzz" bash scripts/install-deps.sh
 step "web libraries" bash scripts/fetch-web-libs.sh
 step "configure release" cmake --preset release >/dev/null
+# clang-tidy with .clang-tidy's checks over the sources the last commit changes (docs/architecture.md#clang-tidy),
+# from the tidy preset's compile database (configured only: clang, no unity batches, no
+# precompiled header).
+step "clang-tidy" bash -c 'cmake --preset tidy >/dev/null && bash scripts/tidy.sh'
 step "build release" cmake --build --preset release
 # The accessibility audit and the SCORM package's test wait for the web build: both need the
 # practice page's raygrade.js.

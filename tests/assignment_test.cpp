@@ -494,7 +494,7 @@ TEST(Assignment, TheMistakesPolicyStillNamesTheMistakeAndThePart) {
                      PartStatus::kWrong,
                      {"could not read '7.2.7': a second decimal point at character 4"}});
   r.mistakes.push_back(make_mistake("far-root", "t", "You gave t = 7.268, the far root."));
-  r.notes.push_back("The ray also hits at t = 1.057.");
+  r.notes.emplace_back("The ray also hits at t = 1.057.");
   GradeResult mistakes = r, score = r;
   apply_feedback_policy(mistakes, FeedbackPolicy::kMistakes);
   std::string lines = fmt::format("{}", fmt::join(feedback_lines(mistakes), "\n"));
@@ -824,7 +824,8 @@ TEST(Assignment, NoInputForAPartWorthNoPoints) {
         for (const auto& [column, v] : value[0].items()) keys.push_back(column);
       } else if (key == "components") {  // {"I1": {"diffuse": ""}} answers I1.diffuse
         for (const auto& [label, asked] : value.items()) {
-          for (const auto& [component, v] : asked.items()) keys.push_back(label + "." + component);
+          for (const auto& [component, v] : asked.items())
+            keys.push_back(fmt::format("{}.{}", label, component));
         }
       } else {
         keys.push_back(key);

@@ -1,5 +1,6 @@
 // Malformed input through the real binary: exit code 2, a message naming the file, the JSON
 // path and the fault, and every other problem of the run still solved and printed.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>

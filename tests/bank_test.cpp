@@ -45,7 +45,7 @@ std::string compare(const nlohmann::json& got, const nlohmann::json& want, const
         if (value == false) continue;  // "contained": false and "tie": false are the defaults
         return fmt::format("{}/{}: missing", at, key);
       }
-      std::string why = compare(got[key], value, at + "/" + key, relative);
+      std::string why = compare(got[key], value, fmt::format("{}/{}", at, key), relative);
       if (!why.empty()) return why;
     }
     return "";

@@ -98,7 +98,7 @@ class BulkSubmissions : public ::testing::Test {
   void zip(const std::string& zip,
            const std::vector<std::pair<std::string, std::string>>& entries) {
     std::string command = std::string(kZip) + "'" + zip + "'";
-    for (const auto& [name, file] : entries) command += " '" + name + "' '" + file + "'";
+    for (const auto& [name, file] : entries) command += fmt::format(" '{}' '{}'", name, file);
     auto r = run_shell(command, dir_.path());
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
@@ -135,11 +135,11 @@ TEST_F(BulkSubmissions, CanvasZipGradesAsTheFilesOneByOne) {
   std::vector<std::pair<std::string, std::string>> entries;
   for (const auto& s : students_) {
     std::string late = s.id == "s2" ? "_LATE" : "";
-    entries.push_back({fmt::format("{}{}_{}_{}_answers.json", s.canvas_name, late, s.canvas_id,
-                                   9000 + std::stoi(s.canvas_id)),
-                       "subs/" + s.id + ".json"});
+    entries.emplace_back(fmt::format("{}{}_{}_{}_answers.json", s.canvas_name, late, s.canvas_id,
+                                     9000 + std::stoi(s.canvas_id)),
+                         "subs/" + s.id + ".json");
   }
-  entries.push_back({"notes.txt", "notes.txt"});
+  entries.emplace_back("notes.txt", "notes.txt");
   zip("canvas.zip", entries);
   auto r = run_raygrade(
       "grade --assignment hw.json --roster roster-canvas.csv canvas.zip --format csv "
@@ -198,11 +198,11 @@ TEST_F(BulkSubmissions, MoodleZipGradesAsTheFilesOneByOne) {
   std::vector<std::pair<std::string, std::string>> entries;
   for (const auto& s : students_) {
     char cut = s.id == "s3" || s.id == "s5" ? '_' : '/';
-    entries.push_back(
-        {fmt::format("{}_{}_assignsubmission_file{}answers.json", s.name, s.participant, cut),
-         "subs/" + s.id + ".json"});
+    entries.emplace_back(
+        fmt::format("{}_{}_assignsubmission_file{}answers.json", s.name, s.participant, cut),
+        "subs/" + s.id + ".json");
   }
-  entries.push_back({"Ada Lovelace_101_assignsubmission_onlinetext_onlinetext.html", "notes.txt"});
+  entries.emplace_back("Ada Lovelace_101_assignsubmission_onlinetext_onlinetext.html", "notes.txt");
   zip("moodle.zip", entries);
   auto r = run_raygrade(
       "grade --assignment hw.json --roster roster.csv moodle.zip --format csv-moodle "

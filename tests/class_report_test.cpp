@@ -404,15 +404,17 @@ TEST(ClassReport, PlantedMistakesAreFoundAndNoiseIsNotClaimed) {
       ++figures[3];
       continue;
     }
-    auto& [found, planted] = recall[problem + " " + label];
+    auto& [found, planted] = recall[fmt::format("{} {}", problem, label)];
     ++planted;
     ++figures[1];
     int before = found;
-    // Captured by name: clang 14 takes no structured binding into a lambda.
-    auto miss = [&, &now = found, &what = label, &at = key] {
-      if (now == before && misses[problem + " " + what].size() < 600)
-        misses[problem + " " + what] +=
-            " | " + (landed.count(at) ? group_of[at].dump() : "not grouped");
+    // The structured bindings through init-captures: clang before 16 cannot capture them.
+    auto miss = [&, &found_ref = found, &label_ref = label, &key_ref = key] {
+      if (found_ref != before) return;
+      std::string& shown = misses[fmt::format("{} {}", problem, label_ref)];
+      if (shown.size() < 600)
+        shown +=
+            fmt::format(" | {}", landed.count(key_ref) ? group_of[key_ref].dump() : "not grouped");
     };
     if (!landed.count(key)) {
       miss();

@@ -190,7 +190,7 @@ TEST_F(HostileBatch, FilesStayInTheOutputFolderAndTextIsEscaped) {
     ++pages;
     std::string html = read_text(entry.path());
     EXPECT_EQ(html.find("<script"), std::string::npos) << entry.path();
-    EXPECT_EQ(html.find("\x1b"), std::string::npos) << entry.path();
+    EXPECT_EQ(html.find('\x1b'), std::string::npos) << entry.path();
   }
   // One page per file, a rejection included, and the index of them all.
   EXPECT_EQ(pages, kExpectedFault.size() + kFindings.size() + kWrongAnswer.size() + 11 + 1);

@@ -7,6 +7,7 @@
 #include "json/cursor.h"
 #include "json/source.h"
 #include "problems/problem.h"
+#include "test_util.h"
 
 namespace raygrade {
 namespace {

@@ -27,7 +27,7 @@
 namespace raygrade {
 namespace {
 
-const std::vector<TruthCase>& corpus() {
+const std::vector<TruthCase>& filter_corpus() {
   static const std::vector<TruthCase> cases =
       read_corpus(fmt::format("{}/tests/data/hard_cases.json", RAYGRADE_SOURCE_DIR));
   return cases;
@@ -225,7 +225,7 @@ TEST(StaticFilter, EveryPrimitiveHasOne) {
 
 TEST(StaticFilter, NeverWrongOnTheHardCorpus) {
   std::map<Primitive, int> decided;
-  for (const TruthCase& c : corpus()) {
+  for (const TruthCase& c : filter_corpus()) {
     std::optional<FilterAnswer> f = filtered_double(c.input, bound_scale());
     if (!f) continue;
     ++decided[c.input.primitive];

@@ -45,6 +45,7 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 
 std::vector<AccuracyCase> inputs(const std::vector<TruthCase>& cases) {
   std::vector<AccuracyCase> out;
+  out.reserve(cases.size());
   for (const auto& c : cases) out.push_back(c.input);
   return out;
 }

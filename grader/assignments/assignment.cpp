@@ -138,7 +138,7 @@ std::optional<std::int64_t> parse_time(std::string_view s) {
       if (!digits(s, at + 1, 2, oh) || at + 3 >= s.size() || s[at + 3] != ':' ||
           !digits(s, at + 4, 2, om) || oh > 23 || om > 59)
         return std::nullopt;
-      offset = (s[at] == '+' ? 1 : -1) * (oh * 3600 + om * 60);
+      offset = (s[at] == '+' ? 1 : -1) * (std::int64_t{oh} * 3600 + std::int64_t{om} * 60);
       at += 6;
     } else {
       return std::nullopt;  // a time without a zone is ambiguous
@@ -146,7 +146,7 @@ std::optional<std::int64_t> parse_time(std::string_view s) {
     if (at != s.size()) return std::nullopt;
   }
   return days_from_civil(y, static_cast<unsigned>(mo), static_cast<unsigned>(d)) * 86400 +
-         h * 3600 + mi * 60 + sec - offset;
+         std::int64_t{h} * 3600 + std::int64_t{mi} * 60 + sec - offset;
 }
 
 std::string utc_time_text(std::int64_t seconds) {

@@ -49,7 +49,7 @@ void apply_feedback_policy(GradeResult& r, FeedbackPolicy policy) {
   for (auto& p : r.parts) {
     std::vector<std::string> kept;
     if (p.max_points == 0) {
-      kept.push_back("Checked, not counted: this problem gives it no points.");
+      kept.emplace_back("Checked, not counted: this problem gives it no points.");
     } else if (p.status != PartStatus::kRight) {
       kept.push_back(status_sentence(p.status));
     }
@@ -64,9 +64,9 @@ void apply_feedback_policy(GradeResult& r, FeedbackPolicy policy) {
     m.message = fmt::format("{}. {}", info.title, info.explanation);
   }
   std::vector<std::string> notes;
-  if (!r.answered) notes.push_back("Not answered.");
+  if (!r.answered) notes.emplace_back("Not answered.");
   if (r.carried_forward) {
-    notes.push_back("Some credit is carried forward from your own earlier values.");
+    notes.emplace_back("Some credit is carried forward from your own earlier values.");
   }
   r.notes = std::move(notes);
 }

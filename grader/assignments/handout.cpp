@@ -191,7 +191,7 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
         i, html_escape(p.id), i + 1, html_escape(p.title.empty() ? p.id : p.title),
         points.empty() ? "" : fmt::format(" <span class=\"points\">({})</span>", points),
         html_escape(p.id), html_escape(p.statement),
-        (figure.empty() ? std::string() : "<figure>" + figure + "</figure>\n") + view_html, i);
+        figure.empty() ? view_html : fmt::format("<figure>{}</figure>\n{}", figure, view_html), i);
   }
   data["problems"] = listed;
   std::string grader_script;

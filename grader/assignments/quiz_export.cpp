@@ -89,6 +89,7 @@ void statement_of(const Problem& base, const std::vector<const Problem*>& sets, 
     auto found = named.find(expr);
     if (found == named.end()) {
       std::vector<json> values;
+      values.reserve(sets.size());
       for (const Problem* s : sets) {
         values.push_back(evaluate_expression(expr, *base.parameters, s->values, text));
       }
@@ -101,12 +102,14 @@ void statement_of(const Problem& base, const std::vector<const Problem*>& sets, 
       if (values.front().is_array()) {
         for (int k = 0; k < 3; ++k) {
           std::vector<double> component;
+          component.reserve(values.size());
           for (const json& v : values) component.push_back(v.at(static_cast<std::size_t>(k)));
           names.push_back(names_of.make(fmt::format("{}_{}", name, component_name(k))));
           q.variables.push_back(make_variable(names.back(), std::move(component)));
         }
       } else {
         std::vector<double> scalar;
+        scalar.reserve(values.size());
         for (const json& v : values) scalar.push_back(v.get<double>());
         names.push_back(plain ? names_of.parameter(name) : names_of.make(name));
         q.variables.push_back(make_variable(names.back(), std::move(scalar)));
@@ -179,7 +182,7 @@ std::vector<Asked> asked_numbers(const json& form, const std::vector<json>& answ
         }
       }
       if (count > 1 || f.value("label", "").find("any order") != std::string::npos) {
-        lost.push_back("raygrade takes the hits in any order, the quiz asks them in order of t");
+        lost.emplace_back("raygrade takes the hits in any order, the quiz asks them in order of t");
       }
     } else if (type == "rows") {
       // Each row is the answer's item whose fixed keys are the row's.
@@ -248,6 +251,7 @@ QuizTolerance tolerance_of(const Tolerance& t, const std::vector<double>& answer
 // derivation has the same steps in the same order.
 void solution_steps(const std::vector<const Problem*>& sets, QuizNames& names_of, QuizProblem& q) {
   std::vector<std::vector<SolutionPart>> derived;
+  derived.reserve(sets.size());
   for (const Problem* s : sets) derived.push_back(s->task->derive(s->method));
   auto shape = [](const std::vector<SolutionPart>& parts) {
     std::vector<std::string> names;
@@ -352,6 +356,7 @@ Quiz build_quiz(const AssignmentSpec& spec, const AssignmentBank& bank,
   }
   // Every key's problems, drawn once.
   std::vector<std::vector<Problem>> drawn;
+  drawn.reserve(keys.size());
   for (const std::string& key : keys) drawn.push_back(student_problems(spec, bank.problems, key));
 
   for (std::size_t i = 0; i < spec.problems.size(); ++i) {
@@ -374,6 +379,7 @@ Quiz build_quiz(const AssignmentSpec& spec, const AssignmentBank& bank,
 
     json form = answer_form(*sets.front());
     std::vector<json> answers;
+    answers.reserve(sets.size());
     for (const Problem* s : sets) answers.push_back(s->task->answer());
     std::vector<Asked> asked = asked_numbers(form, answers, q.lost);
     if (asked.empty()) {
@@ -422,13 +428,14 @@ Quiz build_quiz(const AssignmentSpec& spec, const AssignmentBank& bank,
                         a.label, sets.size() - part.sets.size(), sets.size()));
       }
       part.tolerance = tolerance_of(policy.for_field(a.part), part.answers, scales, a.component);
-      double w = weights > 0 ? grader.part_points(a.part) / weights : 1.0 / per_part.size();
+      double w = weights > 0 ? grader.part_points(a.part) / weights
+                             : 1.0 / static_cast<double>(per_part.size());
       part.points = total * w / per_part[a.part];
       q.parts.push_back(std::move(part));
     }
     solution_steps(sets, names_of, q);
     if (form["fields"].size() > 0) {
-      q.lost.push_back("named-mistake feedback: the platform grades each number alone");
+      q.lost.emplace_back("named-mistake feedback: the platform grades each number alone");
     }
     if (std::size_t dropped = well_formed_text(q)) quiz.notes.push_back(xml_note(q.id, dropped));
     quiz.problems.push_back(std::move(q));

@@ -84,7 +84,8 @@ std::vector<StudentIdentity> load_roster(const std::string& path,
   if (std::size_t bad = first_invalid_utf8(text); bad != std::string::npos) {
     std::size_t line_start = bad == 0 ? std::string::npos : text.rfind('\n', bad - 1);
     line_start = line_start == std::string::npos ? 0 : line_start + 1;
-    int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + bad, '\n'));
+    int line = 1 + static_cast<int>(std::count(
+                       text.begin(), text.begin() + static_cast<std::ptrdiff_t>(bad), '\n'));
     int byte = static_cast<int>(bad - line_start) + 1;
     fail(path, line, byte,
          fmt::format("byte 0x{:02X} (byte {} of line {}) is not UTF-8: save the roster as \"CSV "

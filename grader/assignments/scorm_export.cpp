@@ -140,6 +140,7 @@ LmsPackage scorm_package(const LmsExportInput& in, const std::string& out) {
 
   std::vector<ZipEntry> entries = {{"index.html", std::move(page.html), false}};
   std::vector<std::string> files;
+  files.reserve(entries.size());
   for (const auto& e : entries) files.push_back(e.name);
   entries.insert(entries.begin(), ZipEntry{"imsmanifest.xml", manifest(spec, f, files), false});
 

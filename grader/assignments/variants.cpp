@@ -33,7 +33,7 @@ Problem reread(const Problem& p) {
 
 }  // namespace
 
-std::string trimmed(std::string s) {
+std::string trimmed(const std::string& s) {
   std::size_t begin = s.find_first_not_of(" \t");
   if (begin == std::string::npos) return {};
   return s.substr(begin, s.find_last_not_of(" \t") + 1 - begin);

@@ -17,7 +17,7 @@ namespace raygrade {
 std::string student_key(const StudentIdentity& s);
 
 // `s` without the spaces and tabs at either end: how student_key and a roster's cells read text.
-std::string trimmed(std::string s);
+std::string trimmed(const std::string& s);
 // An email as compared: trimmed, ASCII letters in lower case.
 std::string email_key(const std::string& email);
 

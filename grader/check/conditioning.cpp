@@ -159,7 +159,7 @@ std::vector<Diagnostic> check_conditioning(const Problem& p, const nlohmann::jso
   }
   if (!worst) return {};
   while (culprit.size() > 1) {
-    std::size_t half = culprit.size() / 2;
+    auto half = static_cast<std::ptrdiff_t>(culprit.size() / 2);
     std::vector<std::size_t> a(culprit.begin(), culprit.begin() + half);
     std::vector<std::size_t> b(culprit.begin() + half, culprit.end());
     Finding fa = c.worse_direction(a), fb = c.worse_direction(b);

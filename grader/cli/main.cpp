@@ -25,6 +25,10 @@ bool is_resource_error(const std::error_code& code) {
 
 }  // namespace
 
+// What can still escape (memory running out while the command line's parser is built, an error
+// message that cannot be written) ends the program through std::terminate: nothing better is
+// left to do then.
+// NOLINTNEXTLINE(bugprone-exception-escape)
 int main(int argc, char** argv) {
   using namespace raygrade::cli;
   CLI::App app{"raygrade: solve, explain and grade ray-intersection exercises"};

@@ -36,6 +36,7 @@ int run_main_job(const RunOptions& o) {
     }
   }
   std::vector<std::string> kinds;
+  kinds.reserve(by_kind.size());
   for (const auto& [k, n] : by_kind) kinds.push_back(fmt::format("{} {}", n, k));
   fmt::print("Solved {} problems from {} files ({}).\n", solved, bank.files.size(),
              fmt::join(kinds, ", "));

@@ -84,7 +84,7 @@ std::string zip_archive(const std::vector<ZipEntry>& entries) {
       zip_fault(kWhat, fmt::format("{}: {}", e.name, zip_strerror(archive.get())));
   }
   if (zip_close(archive.get()) != 0) zip_fault(kWhat, zip_strerror(archive.get()));
-  archive.release();  // zip_close freed it
+  static_cast<void>(archive.release());  // zip_close freed it
   zip_stat_t st;
   if (zip_source_stat(buffer.get(), &st) != 0 || zip_source_open(buffer.get()) != 0)
     zip_fault(kWhat, zip_error_strerror(zip_source_error(buffer.get())));

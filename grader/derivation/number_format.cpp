@@ -129,7 +129,7 @@ std::optional<ExactForm> exact_form(double v) {
   }
   long long n = 0;
   for (long long q = 2; q <= kMaxFractionDenominator; ++q) {
-    if (near_integer(q * v, q * v, n)) {
+    if (near_integer(static_cast<double>(q) * v, static_cast<double>(q) * v, n)) {
       if (n == 0) return std::nullopt;  // zero is no fraction; v is rounding noise about it
       return reduced(ExactForm{n, 0, 1, q});
     }
@@ -138,8 +138,10 @@ std::optional<ExactForm> exact_form(double v) {
     for (long long s = 1; s <= kMaxRootCoefficient; ++s) {
       for (long long k : kSquareFree) {
         for (long long sign : {1, -1}) {
-          double rest = q * v - static_cast<double>(sign * s) * std::sqrt(static_cast<double>(k));
-          if (near_integer(rest, q * v, n)) return reduced(ExactForm{n, sign * s, k, q});
+          double rest = static_cast<double>(q) * v -
+                        static_cast<double>(sign * s) * std::sqrt(static_cast<double>(k));
+          if (near_integer(rest, static_cast<double>(q) * v, n))
+            return reduced(ExactForm{n, sign * s, k, q});
         }
       }
     }

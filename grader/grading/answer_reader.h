@@ -35,7 +35,9 @@ class AnswerReader {
   };
   Number number() const;
 
-  // Three typed numbers.
+  // Three typed numbers. (The index __i0 is the compiler's, in the copy constructor it writes
+  // for the array member.)
+  // NOLINTNEXTLINE(bugprone-reserved-identifier)
   struct Vector {
     bool ok = false;
     StudentNumber c[3];

@@ -113,7 +113,7 @@ GradeResult Grader::unanswered() const {
   r.title = problem_->title;
   r.answered = false;
   r.max_score = max_score();
-  r.notes.push_back("Not answered.");
+  r.notes.emplace_back("Not answered.");
   return r;
 }
 

@@ -66,7 +66,7 @@ class CameraGrader final : public KindGrader {
     if (!direction->ok) {
       fb.push_back("direction: " + direction->fault);
     } else if (length(direction->value()) == 0) {
-      fb.push_back("A direction cannot be the zero vector.");
+      fb.emplace_back("A direction cannot be the zero vector.");
     } else if (NumberVerdict dv = compare_direction(direction->c, direction_, tol).verdict;
                dv.match != Match::kWrong) {
       credit = dv.match == Match::kRight ? 1 : tol.precision_credit;
@@ -101,7 +101,7 @@ class CameraGrader final : public KindGrader {
         credit *= 0.5;
       }
     }
-    if (credit >= 1 && fb.empty()) fb.push_back("Right.");
+    if (credit >= 1 && fb.empty()) fb.emplace_back("Right.");
     out.parts.push_back(make_part(context_, "ray", credit, std::move(fb)));
   }
 

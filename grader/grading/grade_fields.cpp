@@ -63,7 +63,7 @@ class FieldsGrader final : public KindGrader {
       }
       Verdict v = grade_part(spec, *given);
       for (auto& m : v.mistakes) out.mistakes.push_back(std::move(m));
-      if (v.credit >= 1 && v.feedback.empty()) v.feedback.push_back("Right.");
+      if (v.credit >= 1 && v.feedback.empty()) v.feedback.emplace_back("Right.");
       out.parts.push_back(make_part(context_, spec.name, v.credit, std::move(v.feedback)));
     }
   }

@@ -66,7 +66,7 @@ struct StudentHit {
   std::optional<AnswerReader::Number> u, v;
 };
 
-std::string norm_name(std::string s) {
+std::string norm_name(const std::string& s) {
   std::string out;
   for (char ch : s) {
     if (ch == ' ' || ch == '_' || ch == '-') continue;
@@ -389,7 +389,7 @@ void HitsGrader::grade(const AnswerReader& a, GradeResult& out) const {
   std::optional<StepsGrade> steps;
   if (a.has("steps")) {
     if (first_hit_) {
-      out.notes.push_back("Steps are not graded for first-hit problems; the final answer is.");
+      out.notes.emplace_back("Steps are not graded for first-hit problems; the final answer is.");
     } else {
       steps = grade_steps(context_, *task_, methods_, mistaken_, a.at("steps"));
       out.parts.push_back(steps->part);
@@ -722,6 +722,7 @@ bool HitsGrader::grade_t(const std::vector<StudentHit>& hits, const StepsGrade* 
       m.feedback.push_back(readings.front().message);
     } else {
       std::vector<std::string> fit;
+      fit.reserve(readings.size());
       for (const auto& x : readings) {
         fit.push_back(x.id.empty() ? x.message
                                    : fmt::format("{} ({})", mistake_info(x.id).title, x.message));
@@ -749,9 +750,9 @@ bool HitsGrader::grade_t(const std::vector<StudentHit>& hits, const StepsGrade* 
     out.parts.push_back(missing_part(context_, "t", m.feedback.empty() ? "" : m.feedback.front()));
   } else {
     if (t_credit >= static_cast<double>(denom) && m.n_twice == 0 && m.feedback.empty()) {
-      m.feedback.push_back(n_ref == 1 ? "Right." : "Right: every hit, in any order.");
+      m.feedback.emplace_back(n_ref == 1 ? "Right." : "Right: every hit, in any order.");
     }
-    if (n_ref == 0) m.feedback.push_back("The ray does not hit this object.");
+    if (n_ref == 0) m.feedback.emplace_back("The ray does not hit this object.");
     out.parts.push_back(
         make_part(context_, "t", t_credit / static_cast<double>(denom), m.feedback));
   }
@@ -815,7 +816,7 @@ void HitsGrader::grade_point(const StudentHit& h, int jj, const std::vector<int>
     // whose point is the ray's own origin.
     Vec3d own = ray_.at(h.t->value);
     if (h.t->value == 0) {
-      tally.feedback.push_back(
+      tally.feedback.emplace_back(
           "Your t = 0 puts the point at the ray's own origin: nothing is carried forward "
           "from it.");
     } else if (compare_vector(h.point->c, own, tp).match == Match::kRight) {
@@ -861,7 +862,7 @@ void HitsGrader::grade_normal(const StudentHit& h, int jj, Tally& tally, GradeRe
   DirectionVerdict dv = compare_direction(h.normal->c, r, tn);
   double len = dv.length;
   if (len == 0) {
-    tally.feedback.push_back("A normal cannot be the zero vector.");
+    tally.feedback.emplace_back("A normal cannot be the zero vector.");
     return;
   }
   if (dv.verdict.match == Match::kRight) {
@@ -924,7 +925,7 @@ void HitsGrader::add_part(const char* name, Tally tally, std::size_t n_stu,
     return;
   }
   if (tally.credit >= static_cast<double>(d) && tally.feedback.empty())
-    tally.feedback.push_back("Right.");
+    tally.feedback.emplace_back("Right.");
   if (tally.given < n_ref) {
     tally.feedback.push_back(fmt::format(
         "The ray has {} hits; {} of them {} given.", n_ref, tally.given,
@@ -947,9 +948,9 @@ void HitsGrader::grade_barycentric(const std::vector<StudentHit>& hits,
     if (!h.barycentric && !h.u && !h.v) continue;
     ++given;
     if (match[i] < 0 || !ref_[static_cast<std::size_t>(match[i])].barycentric) {
-      fb.push_back(ref_.empty() || !ref_.front().barycentric
-                       ? "Barycentric weights belong to a triangle's hit."
-                       : "Weights of a hit that is not one are not graded.");
+      fb.emplace_back(ref_.empty() || !ref_.front().barycentric
+                          ? "Barycentric weights belong to a triangle's hit."
+                          : "Weights of a hit that is not one are not graded.");
       continue;
     }
     auto w = *ref_[static_cast<std::size_t>(match[i])].barycentric;
@@ -1011,7 +1012,7 @@ void HitsGrader::grade_barycentric(const std::vector<StudentHit>& hits,
     return;
   }
   std::size_t d = std::max(ref_.size(), given);
-  if (credit >= static_cast<double>(d) && fb.empty()) fb.push_back("Right.");
+  if (credit >= static_cast<double>(d) && fb.empty()) fb.emplace_back("Right.");
   out.parts.push_back(make_part(context_, "barycentric", credit / static_cast<double>(d), fb));
 }
 

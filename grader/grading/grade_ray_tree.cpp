@@ -111,7 +111,7 @@ class RayTreeGrader final : public KindGrader {
     std::vector<std::string> fb;
     double credit = 0;
     std::string want = root.hit ? object_name(root.object) : "";
-    if (!a.has("object")) fb.push_back("No object named.");
+    if (!a.has("object")) fb.emplace_back("No object named.");
     if (a.has("object")) {
       std::string got = a.at("object").json().is_null() ? "" : a.at("object").string();
       if (got == want) {
@@ -136,18 +136,18 @@ class RayTreeGrader final : public KindGrader {
                            : "t: " + n.fault);
         }
       } else {
-        fb.push_back("No t given.");
+        fb.emplace_back("No t given.");
       }
     } else if (!root.hit) {
       bool none = a.has("hits") && a.at("hits").items().empty();
       credit += none ? 0.5 : 0;
-      if (!none) fb.push_back("The ray hits nothing: give \"hits\": [].");
+      if (!none) fb.emplace_back("The ray hits nothing: give \"hits\": [].");
     } else {
       fb.push_back(a.has("hits") ? fmt::format("You say the ray misses; it hits {} at t = {}.",
                                                want, format_number(root.t))
                                  : "No hits given.");
     }
-    if (credit >= 1) fb.push_back("Right.");
+    if (credit >= 1) fb.emplace_back("Right.");
     out.parts.push_back(make_part(context_, "hit", credit, fb));
   }
 
@@ -216,8 +216,8 @@ class RayTreeGrader final : public KindGrader {
                                want.size() == 1 ? "y" : "ies", given.size()));
     }
     double total = static_cast<double>(want.size());
-    double credit =
-        total > 0 ? std::max(0.0, earned - kExtraNodePenalty * extra) / total : (extra ? 0 : 1);
+    double credit = total > 0 ? std::max(0.0, earned - kExtraNodePenalty * extra) / total
+                              : (extra != 0 ? 0 : 1);
     if (fb.empty()) fb.push_back(fmt::format("Right: n1 and n2 at all {} hits.", want.size()));
     out.parts.push_back(make_part(context_, "media", credit, fb));
   }
@@ -365,7 +365,10 @@ class RayTreeGrader final : public KindGrader {
       }
     }
     for (const auto* s : extra) fb.push_back(no_such_ray(*s));
-    double credit = total ? std::max(0.0, earned - kExtraNodePenalty * extra.size()) / total : 1;
+    double credit =
+        total
+            ? std::max(0.0, earned - kExtraNodePenalty * static_cast<double>(extra.size())) / total
+            : 1;
     if (fb.empty()) fb.push_back(fmt::format("Right: all {} points of the tree.", total));
     return make_part(context_, "tree", credit, fb);
   }
@@ -556,7 +559,7 @@ class RayTreeGrader final : public KindGrader {
       ColourVerdict v = grade_colour("intensity", a.at("intensity"), task_.colour_intensity(),
                                      context_.tolerance.for_field("intensity"), {});
       for (auto& m : v.mistakes) out.mistakes.push_back(std::move(m));
-      if (v.feedback.empty()) v.feedback.push_back("Right.");
+      if (v.feedback.empty()) v.feedback.emplace_back("Right.");
       out.parts.push_back(make_part(context_, "intensity", v.credit, std::move(v.feedback)));
       return;
     }

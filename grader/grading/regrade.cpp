@@ -29,7 +29,7 @@ std::string difference(const GradeResult& before, const GradeResult& after) {
                                format_points(after.max_score)));
   if (mistake_ids(before) != mistake_ids(after))
     what.push_back(fmt::format("mistakes {} → {}", mistake_ids(before), mistake_ids(after)));
-  if (what.empty()) what.push_back("feedback");
+  if (what.empty()) what.emplace_back("feedback");
   return fmt::format("{}", fmt::join(what, "; "));
 }
 

@@ -125,6 +125,7 @@ void explain_wrong_step(const std::vector<MistakenSolution>& mistaken, const std
     feedback.push_back(fmt::format("{} is wrong: see the named mistake.", step.name));
   } else if (fit.size() > 1) {
     std::vector<std::string> titles;
+    titles.reserve(fit.size());
     for (std::string_view id : fit) titles.emplace_back(mistake_info(id).title);
     feedback.push_back(fmt::format(
         "{} = {} is not right: it is {}. More than one slip gives your value, so none is "

@@ -140,7 +140,7 @@ double Cursor::number_or(std::string_view key, double fallback) const {
 
 std::string Cursor::string_or(std::string_view key, std::string fallback) const {
   auto c = find(key);
-  return c ? c->string() : fallback;
+  return c ? c->string() : std::move(fallback);
 }
 
 bool Cursor::boolean_or(std::string_view key, bool fallback) const {

@@ -90,11 +90,11 @@ FirstHit first_hit(const Ray& ray, const std::vector<NamedShape>& objects) {
   out.level = settle_first(shapes, ray, xs, out.index, out.tie);
   for (std::size_t i = 0; i < objects.size(); ++i) {
     if (xs[i].hits.empty()) {
-      out.nearest.push_back(std::nullopt);
+      out.nearest.emplace_back(std::nullopt);
       continue;
     }
     const Hit& h = xs[i].hits.front();
-    out.nearest.push_back(h);
+    out.nearest.emplace_back(h);
     if (out.level) continue;
     double tie = kTieRelative * std::max(1.0, std::abs(h.t));
     if (out.index >= 0 && std::abs(h.t - out.hit.t) <= tie) {
@@ -131,7 +131,7 @@ std::vector<std::string> FirstHitTask::methods() const {
     }
     common = keep;
   }
-  if (common.empty()) common.push_back("default");
+  if (common.empty()) common.emplace_back("default");
   return common;
 }
 
@@ -141,7 +141,7 @@ std::vector<SolutionPart> FirstHitTask::derive(std::string_view method,
   if (m == "default") m = "";
   std::vector<SolutionPart> parts;
   for (const auto& o : objects_) {
-    parts.push_back(SolutionPart{o.name, o.shape->derive(ray_, m, overrides)});
+    parts.emplace_back(o.name, o.shape->derive(ray_, m, overrides));
   }
   // The selection: every object's nearest valid t, then the smallest.
   FirstHit f = first_hit(ray_, objects_);
@@ -167,7 +167,7 @@ std::vector<SolutionPart> FirstHitTask::derive(std::string_view method,
     }
     if (f.tie) d.conclude("Another object is hit at the same t: the first in the list is named.");
   }
-  parts.push_back(SolutionPart{"The first hit", std::move(d).finish()});
+  parts.emplace_back("The first hit", std::move(d).finish());
   return parts;
 }
 

@@ -77,7 +77,7 @@ void apply_labels(RayTree& tree, const std::map<std::string, std::string>& label
 }
 
 RayTreeTask::RayTreeTask(Scene scene, Ray primary, Ask ask,
-                         std::map<std::string, std::string> labels)
+                         const std::map<std::string, std::string>& labels)
     : scene_(std::move(scene)), primary_(primary), tree_(trace(scene_, primary_, ask)) {
   apply_labels(tree_, labels);
 }
@@ -187,6 +187,8 @@ constexpr const char* kChannelTitles[3] = {"red", "green", "blue"};
 Derivation channel_steps(const RayTree& t, int channel) {
   Deriver d("whitted",
             fmt::format("The {} channel ({})", kChannelTitles[channel], kChannelNames[channel]));
+  // Backwards with reverse iterators: the code uses no <ranges> (std::views::reverse).
+  // NOLINTNEXTLINE(modernize-loop-convert)
   for (auto it = t.nodes.rbegin(); it != t.nodes.rend(); ++it) {
     const TreeNode& n = *it;
     std::string name = fmt::format("I_{}_{}", n.label, kChannelNames[channel]);

@@ -48,7 +48,7 @@ struct ComponentAsk {
 
 class RayTreeTask final : public Task {
  public:
-  RayTreeTask(Scene scene, Ray primary, Ask ask, std::map<std::string, std::string> labels);
+  RayTreeTask(Scene scene, Ray primary, Ask ask, const std::map<std::string, std::string>& labels);
   static std::unique_ptr<Task> read(const Cursor& problem);
 
   std::string_view kind() const override { return RayTreeKind::kName; }

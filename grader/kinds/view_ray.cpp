@@ -164,7 +164,7 @@ std::unique_ptr<Task> ViewRayTask::read(const Cursor& problem) {
     problem.fail("name the pixel-centre convention: \"convention\": \"center\" or \"corner\"",
                  "missing-key");
   }
-  return std::make_unique<ViewRayTask>(std::move(cam), i, j, read_pixel_convention(problem));
+  return std::make_unique<ViewRayTask>(cam, i, j, read_pixel_convention(problem));
 }
 
 nlohmann::json ViewRayTask::answer() const {

@@ -54,7 +54,7 @@ Ray view_ray(const ViewCamera& cam, double i, double j, PixelConvention conventi
 class ViewRayTask final : public Task {
  public:
   ViewRayTask(ViewCamera cam, double i, double j, PixelConvention convention)
-      : cam_(std::move(cam)), i_(i), j_(j), convention_(convention) {}
+      : cam_(cam), i_(i), j_(j), convention_(convention) {}
   static std::unique_ptr<Task> read(const Cursor& problem);
 
   std::string_view kind() const override { return ViewRayKind::kName; }

@@ -261,7 +261,7 @@ SoftFloat SoftFloat::sqrt(const SoftFloat& a, int precision, Rounding r) {
   std::int64_t e = a.e_;
   if (e % 2 != 0) m <<= 1, --e;
   // An even shift that leaves at least precision + 2 bits in the root.
-  std::int64_t shift = std::max<std::int64_t>(0, 2 * (precision + 3) - bit_length(m));
+  std::int64_t shift = std::max<std::int64_t>(0, 2 * (std::int64_t{precision} + 3) - bit_length(m));
   shift += shift % 2;
   Natural n = shifted_left(m, shift), square;
   Natural root = integer_sqrt(n, square);  // and its square, ≤ n

@@ -122,7 +122,7 @@ json part_json(const Report& in, std::size_t p, std::uint32_t name) {
       case PartStatus::kMissing: ++counts[3]; break;
     }
   }
-  double n = std::max<std::size_t>(1, in.students.size());
+  double n = static_cast<double>(std::max<std::size_t>(1, in.students.size()));
   return {{"students", in.students.size()},
           {"max_points", rounded(max_points)},
           {"mean", rounded(sum / n)},
@@ -199,7 +199,7 @@ json discrimination(const Report& in, std::size_t p) {
     rest.push_back(r);
     right.push_back(full_marks(s.answers[p]));
   }
-  double n = rest.size(), mean = 0, m1 = 0, n1 = 0;
+  double n = static_cast<double>(rest.size()), mean = 0, m1 = 0, n1 = 0;
   for (std::size_t i = 0; i < rest.size(); ++i) {
     mean += rest[i] / n;
     if (right[i]) m1 += rest[i], ++n1;
@@ -349,7 +349,7 @@ json problem_json(const Report& in, std::size_t p, unsigned jobs) {
   }
   json parts = json::object();
   for (std::uint32_t name : part_names) parts[in.tables.strings[name]] = part_json(in, p, name);
-  double n = std::max<std::size_t>(1, in.students.size());
+  double n = static_cast<double>(std::max<std::size_t>(1, in.students.size()));
   return {{"id", in.problem_ids[p]},
           {"title", p < in.problem_titles.size() ? in.problem_titles[p] : in.problem_ids[p]},
           {"students", in.students.size()},
@@ -441,8 +441,8 @@ std::size_t ClassReportBuilder::retained_bytes() const {
   constexpr std::size_t kNode = 4 * sizeof(void*);
   for (const auto& [id, k] : r.student_index) n += kNode + sizeof(std::string) + bytes(id) + 8;
   for (const auto& s : r.tables.strings) n += 2 * (sizeof(std::string) + bytes(s)) + kNode;
-  for (std::size_t p = 0; p < r.variants.size(); ++p) {
-    for (const auto& v : r.variants[p]) {
+  for (const auto& problem_variants : r.variants) {
+    for (const auto& v : problem_variants) {
       n += sizeof(VariantRow) + 2 * bytes(v.key) + kNode + sizeof(std::string);
       for (const auto& [name, value] : v.values) n += kNode + bytes(name) + value.dump().size();
     }

@@ -64,7 +64,7 @@ std::string parts_table(const json& r, const std::string& at) {
       "<th>Right</th><th>Partly</th><th>Wrong</th><th>Blank</th><th>Scores</th></tr></thead>"
       "<tbody>";
   for (const auto& [name, part] : r.at(json::json_pointer(at + "/parts")).items()) {
-    std::string p = at + "/parts/" + name;
+    std::string p = fmt::format("{}/parts/{}", at, name);
     out += fmt::format(
         "<tr><th scope=\"row\">{}</th><td>{}</td><td>{}</td><td>{}</td>{}<td>{}</td></tr>",
         text(name), num(r, p + "/students"), num(r, p + "/mean"), num(r, p + "/max_points"),

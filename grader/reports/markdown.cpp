@@ -16,7 +16,7 @@ std::string one_line(std::string s) {
 }
 
 // Text inside a ``` fence: a line of its own starting with ``` would close it early.
-std::string fence_safe(std::string s) {
+std::string fence_safe(const std::string& s) {
   std::string out;
   bool line_start = true;
   for (char c : s) {

@@ -30,6 +30,7 @@ std::string cell(std::string_view text) {
 
 std::string code_list(const std::vector<std::string>& names) {
   std::vector<std::string> quoted;
+  quoted.reserve(names.size());
   for (const auto& n : names) quoted.push_back(fmt::format("`{}`", n));
   return fmt::format("{}", fmt::join(quoted, ", "));
 }

@@ -230,7 +230,7 @@ bool local_surface(const Cursor& c, json& data, Bounds& bounds, std::vector<std:
       Triangle t(vec3_of(vertices[0]), vec3_of(vertices[1]), vec3_of(vertices[2]));
       data["objects"].push_back({{"label", std::string(Triangle::kType)}, {"shape", t.to_json()}});
     }
-    words.push_back("the triangle with its vertex normals (blue)");
+    words.emplace_back("the triangle with its vertex normals (blue)");
     for (std::size_t i = 0; i < vertices.size() && i < normals.size(); ++i) {
       if (!is_vec3(vertices[i]) || !is_vec3(normals[i])) continue;
       Vec3d v = vec3_of(vertices[i]);
@@ -251,7 +251,7 @@ bool local_surface(const Cursor& c, json& data, Bounds& bounds, std::vector<std:
                               {"to", point_json(point + 0.5 * size * n)},
                               {"role", "normal"}});
     bounds.add(point, radius);
-    words.push_back("the surface at P with its normal (blue)");
+    words.emplace_back("the surface at P with its normal (blue)");
   }
   if (incoming && length(*incoming) > 0) {
     Vec3d d = normalized(*incoming);
@@ -259,7 +259,7 @@ bool local_surface(const Cursor& c, json& data, Bounds& bounds, std::vector<std:
     data["arrows"].push_back(
         {{"from", point_json(from)}, {"to", point_json(point)}, {"role", "ray"}});
     bounds.add(from);
-    words.push_back("the incoming ray (black) arriving at P");
+    words.emplace_back("the incoming ray (black) arriving at P");
   }
   if (c.has("point") || !triangle)
     data["points"].push_back({{"at", point_json(point)}, {"label", "P"}});
@@ -267,7 +267,7 @@ bool local_surface(const Cursor& c, json& data, Bounds& bounds, std::vector<std:
     Vec3d eye = e->vec3();
     data["points"].push_back({{"at", point_json(eye)}, {"label", "eye"}});
     bounds.add(eye);
-    words.push_back("the eye (grey)");
+    words.emplace_back("the eye (grey)");
   }
   if (!lights.empty()) {
     std::vector<std::string> names;

@@ -31,7 +31,7 @@ std::string index_file(const std::vector<std::pair<const Problem*, std::string>>
     for (Format f : formats) {
       std::string ext(format_extension(f));
       if (!links.empty()) links += " · ";
-      links += "[" + ext + "](" + base + "." + ext + ")";
+      links += fmt::format("[{}]({}.{})", ext, base, ext);
     }
     std::string title = p->title;
     for (char& c : title) {
@@ -103,6 +103,7 @@ std::string solutions_command(const std::vector<std::string>& paths, const std::
     return fs::path(p).lexically_proximate(cwd).string();
   };
   std::vector<std::string> relative;
+  relative.reserve(paths.size());
   for (const auto& p : paths) relative.push_back(shown(p));
   return fmt::format("raygrade solutions {} --out {}", fmt::join(relative, " "), shown(folder));
 }

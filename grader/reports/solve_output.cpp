@@ -53,6 +53,7 @@ std::string solve_output(Bank& bank, const SolveOutputOptions& o,
     return without_negative_zeros(std::move(out)).dump(2) + "\n";
   }
   std::vector<const Solution*> list;
+  list.reserve(worked.size());
   for (const auto& w : worked) list.push_back(&w);
   return render_document(*parse_format(o.format), list);
 }

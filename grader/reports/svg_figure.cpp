@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "core/escape.h"
@@ -14,6 +15,7 @@ namespace raygrade {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kInf = std::numeric_limits<double>::infinity();
 // Directions shorter than this (they are unit or zero) count as zero: a candidate up
 // direction parallel to the main one, a cylinder seen along its axis.
 constexpr double kTinyDirection = 1e-9;
@@ -133,7 +135,7 @@ View choose_view(const Sketch& f, const std::vector<Vec3d>& pts,
     Vec3d w = c - dot(c, view.u) * view.u;
     if (length(w) < kTinyDirection * std::max(1.0, length(c))) continue;
     w = normalized(w);
-    double lo = INFINITY, hi = -INFINITY;
+    double lo = kInf, hi = -kInf;
     for (const auto& p : pts) {
       lo = std::min(lo, dot(p, w));
       hi = std::max(hi, dot(p, w));
@@ -155,7 +157,7 @@ View choose_view(const Sketch& f, const std::vector<Vec3d>& pts,
 
 // Clips the line p + s·d to the rectangle; false when it misses it.
 bool clip_line(P2 p, P2 d, P2 lo, P2 hi, P2& a, P2& b) {
-  double s0 = -INFINITY, s1 = INFINITY;
+  double s0 = -kInf, s1 = kInf;
   auto side = [&](double pc, double dc, double l, double h) {
     if (dc == 0) return pc >= l && pc <= h;
     double x = (l - pc) / dc, y = (h - pc) / dc;
@@ -289,7 +291,7 @@ struct Panel {
 Panel draw_panel(const Sketch& f, const View& view, const std::vector<Vec3d>& pts,
                  const std::vector<std::pair<Vec3d, double>>& balls, double max_w, double max_h) {
   // The frame: every sample, with a margin, not too thin either way.
-  P2 lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+  P2 lo{kInf, kInf}, hi{-kInf, -kInf};
   auto grow = [&](P2 p, double r) {
     lo = {std::min(lo.x, p.x - r), std::min(lo.y, p.y - r)};
     hi = {std::max(hi.x, p.x + r), std::max(hi.y, p.y + r)};
@@ -316,6 +318,7 @@ Panel draw_panel(const Sketch& f, const View& view, const std::vector<Vec3d>& pt
 
   auto project = [&](const std::vector<Vec3d>& v) {
     std::vector<P2> out;
+    out.reserve(v.size());
     for (const auto& p : v) out.push_back(view.at(p));
     return out;
   };

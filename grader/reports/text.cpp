@@ -55,7 +55,8 @@ void text_part(std::string& out, const SolutionPart& part, const NumberFormat& n
       out += std::string(kIndent) + step_line(v, numbers) + "\n";
       std::string note = v.step->note;
       if (name_differs_from_symbol(*v.step)) {
-        note = "[" + v.step->name + "]" + (note.empty() ? "" : " " + note);
+        note = note.empty() ? fmt::format("[{}]", v.step->name)
+                            : fmt::format("[{}] {}", v.step->name, note);
       }
       if (!note.empty()) out += std::string(kNoteIndent) + text_escape(note) + "\n";
     }

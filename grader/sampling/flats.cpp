@@ -27,7 +27,7 @@ Frame random_frame(Prng& rng) {
 }
 
 Draft flat_draft(Prng& rng, Outcome o, const Vec3d& p, const Vec3d& normal,
-                 nlohmann::ordered_json object, const std::string& text) {
+                 const nlohmann::ordered_json& object, const std::string& text) {
   Vec3d d = crossing_direction(rng, normal);
   int s = rng.range(1, 3);
   if (o == Outcome::kBehind) return intersect_draft(p + double(s) * d, d, object, text, {});
@@ -38,6 +38,7 @@ Draft flat_draft(Prng& rng, Outcome o, const Vec3d& p, const Vec3d& normal,
 
 std::string vertices_text(const std::vector<Vec3d>& v) {
   std::vector<std::string> parts;
+  parts.reserve(v.size());
   for (const auto& p : v) parts.push_back(point_text(p));
   return fmt::format("{}", fmt::join(parts, ", "));
 }

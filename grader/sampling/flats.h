@@ -25,7 +25,7 @@ Frame random_frame(Prng& rng);
 // The ray for a flat object: through `p` for a hit or an edge, with `p` behind it for
 // kBehind; for a miss the caller passes a point of the plane outside the object.
 Draft flat_draft(Prng& rng, Outcome o, const Vec3d& p, const Vec3d& normal,
-                 nlohmann::ordered_json object, const std::string& text);
+                 const nlohmann::ordered_json& object, const std::string& text);
 
 // "(0, 0, 0), (4, 0, 0), (0, 3, 0)" and the JSON list of the same vertices.
 std::string vertices_text(const std::vector<Vec3d>& v);

@@ -25,7 +25,7 @@ const std::vector<Vec3d>& lattice_sphere(int r) {
       for (int y = -r; y <= r; ++y) {
         for (int z = -r; z <= r; ++z) {
           if (x * x + y * y + z * z == r * r)
-            it->second.push_back(Vec3d{double(x), double(y), double(z)});
+            it->second.emplace_back(double(x), double(y), double(z));
         }
       }
     }
@@ -40,7 +40,7 @@ const std::vector<Vec3d>& lattice_circle(int r) {
   if (fresh) {
     for (int x = -r; x <= r; ++x) {
       for (int y = -r; y <= r; ++y) {
-        if (x * x + y * y == r * r) it->second.push_back(Vec3d{double(x), double(y), 0});
+        if (x * x + y * y == r * r) it->second.emplace_back(double(x), double(y), 0);
       }
     }
   }

@@ -73,6 +73,7 @@ std::vector<int> media_at_origin(const Scene& scene, const Ray& ray) {
   std::stable_sort(inside.begin(), inside.end(),
                    [](const auto& a, const auto& b) { return a.first > b.first; });
   std::vector<int> out;
+  out.reserve(inside.size());
   for (const auto& m : inside) out.push_back(m.second);
   return out;
 }

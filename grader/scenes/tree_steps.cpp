@@ -161,6 +161,7 @@ Derivation media_steps(const RayTree& tree, const Scene& scene) {
   Deriver d("media", "n1 and n2 by the list of media the ray is inside");
   auto list = [&](const std::vector<int>& media) {
     std::vector<std::string> names;
+    names.reserve(media.size());
     for (int m : media) names.push_back(scene.objects[m].name);
     return fmt::format("[{}]", fmt::join(names, ", "));
   };

@@ -139,7 +139,7 @@ Derivation Capsule::derive(const Ray& ray, std::string_view /*method*/,
                          square(d.sym("b_" + e)) - 4 * d.sym("a_end") * d.sym("c_" + e))
                       .scalar;
     if (disc < 0) {
-      d.note("Δ_" + e + " < 0: the ray misses the sphere around " + e + ".");
+      d.note(fmt::format("Δ_{} < 0: the ray misses the sphere around {}.", e, e));
       continue;
     }
     for (int i = 0; i < 2; ++i) {

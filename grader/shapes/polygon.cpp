@@ -123,7 +123,8 @@ bool polygon_filter(const Vec3d& o, const Vec3d& d, const std::vector<Vec3d>& ve
     terms.y += std::abs(y);
     terms.z += std::abs(z);
   }
-  const double n_ulps = (static_cast<double>(k) + 4) * u, n_underflow = k * 0x1p-1074;
+  const double n_ulps = (static_cast<double>(k) + 4) * u,
+               n_underflow = static_cast<double>(k) * 0x1p-1074;
   const Vec3d n_error{n_ulps * terms.x + n_underflow, n_ulps * terms.y + n_underflow,
                       n_ulps * terms.z + n_underflow};
   FilterAnswer plane;
@@ -155,7 +156,7 @@ Polygon::Polygon(std::vector<Vec3d> vertices)
 
 std::unique_ptr<Shape> Polygon::read(const Cursor& object) {
   std::vector<std::string> keys = common_object_keys();
-  keys.push_back("vertices");
+  keys.emplace_back("vertices");
   object.allow_only(keys);
   Cursor list = object.at("vertices");
   std::vector<Vec3d> v;

@@ -97,7 +97,7 @@ Derivation Sphere::derive_geometric(const Ray& ray, const Overrides* overrides) 
   d.step("t_hc", "t_hc", sqrt(d.sym("r2") - d.sym("d2")),
          "half the length of the chord inside the sphere");
   E scale = unit ? E() : d.sym("D_len");
-  auto root = [&](const char* name, const char* display, E value) {
+  auto root = [&](const char* name, const char* display, const E& value) {
     return d.step(name, display, unit ? value : value / scale).scalar;
   };
   double t0 = root("t0", "t_0", d.sym("t_ca") - d.sym("t_hc"));

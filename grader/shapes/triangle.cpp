@@ -19,7 +19,7 @@ constexpr double kDegenerateArea = 1e-14;
 
 std::unique_ptr<Shape> Triangle::read(const Cursor& object) {
   std::vector<std::string> keys = common_object_keys();
-  keys.push_back("vertices");
+  keys.emplace_back("vertices");
   object.allow_only(keys);
   auto items = object.at("vertices").items();
   if (items.size() != 3) {
@@ -108,9 +108,9 @@ Derivation Triangle::derive(const Ray& ray, std::string_view /*method*/,
     w_c = d.step("w_c", "w_c", d.sym("e_ab") / dot(n, n), "barycentric weight of c");
   }
   std::vector<std::string> outside;
-  if (e0 < 0) outside.push_back("e_ab");
-  if (e1 < 0) outside.push_back("e_bc");
-  if (e2 < 0) outside.push_back("e_ca");
+  if (e0 < 0) outside.emplace_back("e_ab");
+  if (e1 < 0) outside.emplace_back("e_bc");
+  if (e2 < 0) outside.emplace_back("e_ca");
   std::string reason = inside ? range_reason(ray, t)
                               : fmt::format("the plane point q lies outside the triangle ({} < 0)",
                                             fmt::join(outside, ", "));
@@ -266,7 +266,7 @@ Draft Triangle::generate(Prng& rng, std::optional<Outcome> asked) {
   int w = rng.range(3, 6), h = rng.range(3, 6);
   std::vector<Vec3d> v = {f.at(0, 0), f.at(w, 0), f.at(0, h)};
   if (rng.below(2)) std::swap(v[1], v[2]);  // either winding: the normal flips
-  std::rotate(v.begin(), v.begin() + rng.below(3), v.end());
+  std::rotate(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(rng.below(3)), v.end());
   Vec3d p;
   if (o == Outcome::kMiss) {
     p = rng.below(2) ? f.at(w, h) : f.at(-1, rng.range(1, h - 1));
