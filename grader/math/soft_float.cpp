@@ -215,11 +215,10 @@ SoftFloat::Unrounded SoftFloat::exact_quotient(const SoftFloat& a, const SoftFlo
     x.value = nan();
   } else if (a.kind_ == Kind::kInf) {
     x.value = b.kind_ == Kind::kInf ? nan() : special(Kind::kInf, x.negative);
-  } else if (b.kind_ == Kind::kInf) {
-    x.value = special(Kind::kZero, x.negative);
   } else if (b.kind_ == Kind::kZero) {
     x.value = a.kind_ == Kind::kZero ? nan() : special(Kind::kInf, x.negative);
-  } else if (a.kind_ == Kind::kZero) {
+  } else if (b.kind_ == Kind::kInf || a.kind_ == Kind::kZero) {
+    // a finite over infinity, or zero over a finite b: a zero.
     x.value = special(Kind::kZero, x.negative);
   } else {
     x.is_special = false;
