@@ -135,5 +135,14 @@ TEST(Escape, MarkdownDropsTerminalControls) {
             "a\\[2Jbcd");
 }
 
+// Braces as entities on top of html_escape, for text a platform's template would substitute
+// (Moodle's {x} and {=1+1}, PrairieLearn's {{x}}); markup escaped, controls dropped as ever.
+TEST(Escape, HtmlEscapeBracesLeavesNoBraceForATemplate) {
+  EXPECT_EQ(html_escape_braces("{=1+1} {{answer}} <b>&"),
+            "&#123;=1+1&#125; &#123;&#123;answer&#125;&#125; &lt;b&gt;&amp;");
+  EXPECT_EQ(html_escape_braces("a\x01{b\x07}"), "a&#123;b&#125;");
+  EXPECT_EQ(html_escape_braces(""), "");
+}
+
 }  // namespace
 }  // namespace raygrade

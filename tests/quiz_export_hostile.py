@@ -118,14 +118,21 @@ def lost_sets(summary, platform):
           f"export {platform} does not say which sets have no hit:\n{summary}")
 
 
-def canvas(raygrade, work, assignment, controls):
-    out = os.path.join(work, "canvas-" + assignment)
-    r = subprocess.run([raygrade, "export", "canvas", os.path.join(work, assignment), "--sets", "8",
+def export(raygrade, work, assignment, controls, platform):
+    """Exports the assignment for the platform (8 sets) and checks the command's exit, whether it
+    says characters were dropped, and that it says which sets have no hit; the output folder."""
+    out = os.path.join(work, platform + "-" + assignment)
+    r = subprocess.run([raygrade, "export", platform, os.path.join(work, assignment), "--sets", "8",
                         "--out", out], capture_output=True, text=True, errors="replace")
-    check(r.returncode == 0, f"export canvas: exit {r.returncode}: {r.stderr}")
+    check(r.returncode == 0, f"export {platform}: exit {r.returncode}: {r.stderr}")
     check(("dropped or replaced" in r.stderr) == controls,
-          f"export canvas of {assignment} says wrongly whether characters were dropped:\n{r.stderr}")
-    lost_sets(r.stderr, "canvas")
+          f"export {platform} of {assignment} says wrongly whether characters were dropped:\n{r.stderr}")
+    lost_sets(r.stderr, platform)
+    return out
+
+
+def canvas(raygrade, work, assignment, controls):
+    out = export(raygrade, work, assignment, controls, "canvas")
     unpacked = os.path.join(work, "canvas-unpacked-" + assignment)
     with zipfile.ZipFile(os.path.join(out, "hostile-canvas-qti.zip")) as z:
         z.extractall(unpacked)
@@ -183,13 +190,7 @@ def moodle_substitute(text, items):
 
 
 def moodle(raygrade, work, assignment, controls):
-    out = os.path.join(work, "moodle-" + assignment)
-    r = subprocess.run([raygrade, "export", "moodle", os.path.join(work, assignment), "--sets", "8",
-                        "--out", out], capture_output=True, text=True, errors="replace")
-    check(r.returncode == 0, f"export moodle: exit {r.returncode}: {r.stderr}")
-    check(("dropped or replaced" in r.stderr) == controls,
-          f"export moodle of {assignment} says wrongly whether characters were dropped:\n{r.stderr}")
-    lost_sets(r.stderr, "moodle")
+    out = export(raygrade, work, assignment, controls, "moodle")
     tree = well_formed(os.path.join(out, "hostile-moodle.xml"))
     if tree is None:
         return

@@ -40,19 +40,7 @@ std::string moodle_wildcard(const std::string& name) { return "{" + name + "}"; 
 // (qtype_calculated_variable_substituter::replace_expressions_in_text: a regular expression for
 // the formulas, str_replace for the names), so no brace of the text may be one; the browser
 // shows the entity as the brace.
-std::string moodle_text_html(std::string_view s) {
-  std::string out;
-  for (char c : html_escape(s)) {
-    if (c == '{') {
-      out += "&#123;";
-    } else if (c == '}') {
-      out += "&#125;";
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
+std::string moodle_text_html(std::string_view s) { return html_escape_braces(s); }
 
 std::string moodle_question_html(const QuizProblem& q, const QuizPart& part) {
   std::string statement;

@@ -17,19 +17,7 @@ using json = nlohmann::json;
 
 // Text in question.html: HTML-escaped, with braces as entities so that PrairieLearn's
 // mustache pass leaves it alone.
-std::string html_text(std::string_view s) {
-  std::string out;
-  for (char c : html_escape(s)) {
-    if (c == '{') {
-      out += "&#123;";
-    } else if (c == '}') {
-      out += "&#125;";
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
+std::string html_text(std::string_view s) { return html_escape_braces(s); }
 
 // How one input of question.html reads: its element, and where server.py puts its value in
 // the answer (raygrade.json's "inputs").

@@ -126,6 +126,20 @@ std::string xml_text(std::string_view s, std::size_t* changed) {
   return out;
 }
 
+std::string html_escape_braces(std::string_view s) {
+  std::string out;
+  for (char c : html_escape(s)) {
+    if (c == '{') {
+      out += "&#123;";
+    } else if (c == '}') {
+      out += "&#125;";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 std::string xml_escape(std::string_view s) {
   std::string out;
   for (char c : xml_text(s)) {

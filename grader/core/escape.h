@@ -11,6 +11,10 @@ namespace raygrade {
 // &, <, >, " and ' as entities, control characters other than tab and line breaks dropped:
 // safe in HTML and XML text and attribute values.
 std::string html_escape(std::string_view s);
+// html_escape's text with '{' and '}' as &#123; and &#125; too: for text a platform passes
+// through a template that substitutes braces (PrairieLearn's mustache pass, Moodle's {name}
+// and {=formula} of a calculated question); the browser shows the entity as the brace.
+std::string html_escape_braces(std::string_view s);
 // The same for XML (JUnit): the text of xml_text, with &, <, >, " and ' as entities.
 std::string xml_escape(std::string_view s);
 // Text that XML 1.0 allows, for a writer that escapes &, < and > itself (pugixml): control
