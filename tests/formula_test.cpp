@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string_view>
 
 namespace raygrade {
 namespace {
@@ -51,6 +52,22 @@ TEST(Formula, InverseTrigonometryAndDegrees) {
   EXPECT_NEAR(value_of("2atan2(1, 1) + 45deg"), 3 * pi / 4, 1e-15);
   EXPECT_FALSE(parse_formula("atan2(1)").ok);
   EXPECT_FALSE(parse_formula("30degrees").ok);
+}
+
+// The control characters U+0001 to U+0004 are characters a student cannot mean as a formula:
+// they are refused as such, never read as the glyphs √, ², ³ and π that the worked solutions
+// print (sqrt(4) is 2, 3² is 9: had they been read so, "\x01" "4" would be 2).
+TEST(Formula, ControlCharactersAreRefusedNotReadAsGlyphs) {
+  for (const char* text : {"\x01"
+                           "4",
+                           "3\x02", "3\x03", "\x04", "2*\x04", "1\x1f", "1\x7f"}) {
+    FormulaParse p = parse_formula(text);
+    EXPECT_FALSE(p.ok) << "control character accepted in byte string of length "
+                       << std::string_view(text).size();
+    EXPECT_NE(p.message.find("control character"), std::string::npos) << p.message;
+  }
+  // A tab is blank space, as before.
+  EXPECT_DOUBLE_EQ(value_of("1\t+\t2"), 3);
 }
 
 TEST(Formula, FaultsPointAtTheCharacter) {

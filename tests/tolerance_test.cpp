@@ -85,6 +85,26 @@ TEST(Tolerance, VectorsRelativeToTheirLength) {
   EXPECT_EQ(compare_vector(s, {0, 0, 7.2679}, t).match, Match::kWrong);
 }
 
+// A point far from the origin: |(1e300, 1e300, 0)| is about 1.414e300, so 0.1% of it allows
+// about 1.4e297 in each component. Squaring a component overflows double (1e600); a length
+// computed by squaring would be infinite and allow anything.
+TEST(Tolerance, AHugePointKeepsItsTolerance) {
+  Tolerance t;
+  StudentNumber right[3] = {typed("1.0001e300"), typed("1e300"), typed("0")};
+  EXPECT_EQ(compare_vector(right, {1e300, 1e300, 0}, t).match, Match::kRight);
+  StudentNumber wrong[3] = {typed("1.1e300"), typed("1e300"), typed("0")};
+  EXPECT_EQ(compare_vector(wrong, {1e300, 1e300, 0}, t).match, Match::kWrong);
+  StudentNumber top[3] = {typed("1.0000001e308"), typed("0"), typed("0")};
+  EXPECT_EQ(compare_vector(top, {1e308, 0, 0}, t).match, Match::kRight);  // within 0.1%
+  StudentNumber off[3] = {typed("1.7e308"), typed("0"), typed("0")};
+  EXPECT_EQ(compare_vector(off, {1e308, 0, 0}, t).match, Match::kWrong);
+  // A direction typed with huge components is still a direction: (1e300, 1e300, 0) is (1, 1, 0).
+  StudentNumber big[3] = {typed("1e300"), typed("1e300"), typed("0")};
+  DirectionVerdict d = compare_direction(big, {1, 1, 0}, t);
+  EXPECT_EQ(d.verdict.match, Match::kRight);
+  EXPECT_NEAR(d.length, std::sqrt(2.0) * 1e300, 1e286);
+}
+
 TEST(Tolerance, ReadFromProblem) {
   Problem p = testing::problem(R"({"id": "x", "precision": 2,
     "tolerance": {"t": {"sigfigs": 4}, "normal": {"rtol": 0.01}},

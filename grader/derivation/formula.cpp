@@ -132,6 +132,11 @@ class Parser {
       fail(kMaxFormulaLength,
            fmt::format("the answer is too long (more than {} characters)", kMaxFormulaLength));
       out.over_limit = true;
+    } else if (std::size_t at = first_control(); at != std::string_view::npos) {
+      // Controls are never part of a formula (and U+0001 to U+0004 are the parser's own
+      // markers for the glyphs √, ², ³ and π, which typed raw must not read as those glyphs).
+      fail(at, fmt::format("a control character (U+{:04X}) is not part of a formula",
+                           static_cast<unsigned char>(text_[at])));
     } else {
       skip_space();
       if (pos_ == text_.size()) {
@@ -158,6 +163,14 @@ class Parser {
 
  private:
   // --- characters
+  // The first C0 control (a tab apart) or DEL, or npos.
+  std::size_t first_control() const {
+    for (std::size_t i = 0; i < text_.size(); ++i) {
+      unsigned char c = static_cast<unsigned char>(text_[i]);
+      if ((c < 0x20 && c != '\t') || c == 0x7F) return i;
+    }
+    return std::string_view::npos;
+  }
   void skip_space() {
     while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t')) ++pos_;
   }

@@ -94,7 +94,9 @@ NumberVerdict compare_number(const StudentNumber& s, double reference, double sc
 
 NumberVerdict compare_vector(const StudentNumber (&s)[3], const Vec3d& reference,
                              const Tolerance& t, double widen) {
-  double scale = length(reference);
+  // hypot, not √(x² + y² + z²): the squares overflow from about 1e154 on, and an infinite
+  // scale would allow any answer.
+  double scale = std::hypot(reference.x, reference.y, reference.z);
   NumberVerdict out;
   out.match = Match::kRight;
   for (int i = 0; i < 3; ++i) {
@@ -115,7 +117,7 @@ DirectionVerdict compare_direction(const StudentNumber (&s)[3], const Vec3d& ref
                                    const Tolerance& t) {
   DirectionVerdict out;
   Vec3d v{s[0].value, s[1].value, s[2].value};
-  out.length = length(v);
+  out.length = std::hypot(v.x, v.y, v.z);  // no overflow of the squares (see compare_vector)
   if (!(out.length > 0) || !std::isfinite(out.length)) {
     out.length = 0;
     return out;
