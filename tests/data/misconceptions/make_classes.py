@@ -12,6 +12,7 @@ import json
 import math
 import pathlib
 import random
+import shutil
 import sys
 
 PER_SLIP = 20
@@ -627,6 +628,7 @@ def build(out, seed):
     faults = []
     for kind, problems in PROBLEMS.items():
         kdir = out / kind
+        shutil.rmtree(kdir, ignore_errors=True)  # no student left from an earlier run
         (kdir / "submissions").mkdir(parents=True, exist_ok=True)
         bank = {"title": f"Misconception class: {kind}", "problems": []}
         students = {}
