@@ -9,7 +9,7 @@ reports, per kind and per slip:
   right   how many right answers are in an explained group.
 A group is explained when it names a mistake of the catalogue or a discovered change.
 
-  measure.py RAYGRADE [--work DIR] [--json FILE] [--check] [--kind KIND]...
+  measure.py RAYGRADE [--work DIR] [--json FILE] [--check | --check-if-enabled] [--kind KIND]...
 
 --check exits 1 unless issue 48's acceptance holds: every slip at least 90% in a group of
 its own, at most 2% of random answers and no right answer explained. Whatever the
@@ -19,6 +19,7 @@ graded full marks, or a planted slip that is (the class would not test what it s
 
 import argparse
 import json
+import os
 import pathlib
 import subprocess
 import sys
@@ -114,10 +115,19 @@ def main():
     ap.add_argument("--work", help="folder for the classes and reports (default: a temporary one)")
     ap.add_argument("--json", help="write the figures here")
     ap.add_argument("--check", action="store_true", help="assert issue 48's acceptance")
+    ap.add_argument("--check-if-enabled", action="store_true",
+                    help="--check when RAYGRADE_MISCONCEPTIONS is set (and not 0) in the "
+                         "environment; else exit 77 at once (ctest's skip)")
     ap.add_argument("--kind", action="append", help="only these kinds")
     ap.add_argument("--seed", type=int, default=48)
     ap.add_argument("-j", "--jobs", type=int, default=2)
     args = ap.parse_args()
+    if args.check_if_enabled:
+        if os.environ.get("RAYGRADE_MISCONCEPTIONS", "0") in ("", "0"):
+            print("skipped: the acceptance of issue 48 is asserted only with "
+                  "RAYGRADE_MISCONCEPTIONS=1 (or -DRAYGRADE_MISCONCEPTIONS=ON)")
+            return 77
+        args.check = True
 
     tmp = None
     if args.work:
