@@ -70,8 +70,8 @@ def inverse3(m):
 SPHERE = {"O": [0, 0, 0], "D": [1, 2, 2], "C": [2, 6, 5], "r": 3}
 
 
-def sphere_hits(slip=None):
-    O, D, C, r = SPHERE["O"], SPHERE["D"], SPHERE["C"], SPHERE["r"]
+def sphere_hits(p, slip=None):
+    O, D, C, r = p["O"], p["D"], p["C"], p["r"]
     oc = sub(C, O) if slip == "oc-reversed" else sub(O, C)
     a = dot(D, D)
     b = 2 * dot(D, oc)
@@ -99,8 +99,8 @@ def sphere_hits(slip=None):
 PLANE = {"O": [1, 2, 3], "D": [1, -2, -1], "P0": [2, -3, 1], "n": [1, 2, 2]}
 
 
-def plane_hits(slip=None):
-    O, D, P0, n = PLANE["O"], PLANE["D"], PLANE["P0"], PLANE["n"]
+def plane_hits(p, slip=None):
+    O, D, P0, n = p["O"], p["D"], p["P0"], p["n"]
     num = dot(sub(P0, O), n)
     if slip == "numerator-reversed":
         num = dot(sub(O, P0), n)
@@ -128,9 +128,9 @@ def moller_trumbore(O, D, a, b, c):
     return t, u, v
 
 
-def triangle_hits(slip=None):
-    O, D = TRI["O"], TRI["D"]
-    a, b, c = TRI["V"]
+def triangle_hits(p, slip=None):
+    O, D = p["O"], p["D"]
+    a, b, c = p["V"]
     t, u, v = moller_trumbore(O, D, a, b, c)
     assert 0 <= u and 0 <= v and u + v <= 1 and t > 0
     p = add(O, mul(D, t))
@@ -161,10 +161,10 @@ def sphere_roots(O, D, C, r):
     return sorted([(-b - math.sqrt(disc)) / (2 * a), (-b + math.sqrt(disc)) / (2 * a)])
 
 
-def first_hit(slip=None):
-    O, D = FIRST["O"], FIRST["D"]
+def first_hit(p, slip=None):
+    O, D = p["O"], p["D"]
     cands = []  # (name, roots, centre, radius)
-    for name, C, r in FIRST["objects"]:
+    for name, C, r in p["objects"]:
         cands.append((name, sphere_roots(O, D, C, r), C, r))
     ahead = [(n, [t for t in rs if t > 0], C, r) for n, rs, C, r in cands]
     ahead = [x for x in ahead if x[1]]
@@ -190,10 +190,10 @@ CAM = {"eye": [1, 0, 2], "d": [0, 0, -1], "up": [0, 1, 0], "f": 3, "res": [8, 6]
        "pixel": [6, 1]}
 
 
-def camera_ray(slip=None):
-    d, up, f = CAM["d"], CAM["up"], CAM["f"]
-    resx, resy = CAM["res"]
-    x, y = CAM["pixel"]
+def camera_ray(p, slip=None):
+    d, up, f = p["d"], p["up"], p["f"]
+    resx, resy = p["res"]
+    x, y = p["pixel"]
     half = 0 if slip == "no-half-pixel" else 0.5
     if slip == "y-flipped":
         y = resy - 1 - y
@@ -202,7 +202,7 @@ def camera_ray(slip=None):
     right = cross(up, d) if slip == "right-reversed" else cross(d, up)
     ff = 1 if slip == "focal-dropped" else f
     dr = add(add(mul(d, ff), mul(right, xd)), mul(up, yd))
-    return {"ray": {"origin": CAM["eye"], "direction": dr}}
+    return {"ray": {"origin": p["eye"], "direction": dr}}
 
 
 # --- view ray (look-at camera, field of view) ----------------------------------------
@@ -211,15 +211,15 @@ VIEW = {"eye": [1, 2, 3], "target": [1, 2, 0], "up": [0, 1, 0], "fov": 70, "res"
         "pixel": [7, 1]}
 
 
-def view_ray(slip=None):
-    e = VIEW["eye"]
-    view = sub(VIEW["target"], e)
+def view_ray(p, slip=None):
+    e = p["eye"]
+    view = sub(p["target"], e)
     w = mul(unit(view), -1)
-    u = unit(cross(VIEW["up"], w))
+    u = unit(cross(p["up"], w))
     v = cross(w, u)
-    nx, ny = VIEW["res"]
-    i, j = VIEW["pixel"]
-    fov = VIEW["fov"]
+    nx, ny = p["res"]
+    i, j = p["pixel"]
+    fov = p["fov"]
     if slip == "full-fov":
         half_w = math.tan(math.radians(fov))
     elif slip == "fov-degrees":
@@ -243,8 +243,8 @@ def view_ray(slip=None):
 REFL = {"d": [2, -3, 1], "n": [1, 2, 0]}
 
 
-def reflect(slip=None):
-    d, n = REFL["d"], REFL["n"]
+def reflect(p, slip=None):
+    d, n = p["d"], p["n"]
     nh = n if slip == "normal-not-unit" else unit(n)
     k = dot(d, nh)
     if slip == "plus-sign":
@@ -263,9 +263,9 @@ def reflect(slip=None):
 REFR = {"d": [1, -1.2, 0], "n": [0, 1, 0], "n1": 1, "n2": 1.5}
 
 
-def refract(slip=None):
-    d, n = unit(REFR["d"]), unit(REFR["n"])
-    n1, n2 = REFR["n1"], REFR["n2"]
+def refract(p, slip=None):
+    d, n = unit(p["d"]), unit(p["n"])
+    n1, n2 = p["n1"], p["n2"]
     if dot(d, n) > 0:
         n = mul(n, -1)
     cos_i = -dot(d, n)
@@ -296,8 +296,8 @@ SHADE = {"P": [0, 0, 0], "N": [0, 1, 0], "eye": [-3, 4, 0], "Ia": 2, "ka": 0.1, 
                     ("C", [5, -1, 0], False)]}
 
 
-def shade(slip=None):
-    s = SHADE
+def shade(p, slip=None):
+    s = p
     P, N = s["P"], s["N"]
     V = unit(sub(s["eye"], P))
     ambient = s["ka"] * s["Ia"]
@@ -334,8 +334,8 @@ NSPH = {"C": [1, 2, -1], "r": 3, "P": [3, 1, 1]}
 NSHEAR = {"M": [[2, 1, 0], [0, 1, 0], [0, 0, 1]], "p_obj": [0.6, 0.8, 0]}
 
 
-def normal_sphere(slip=None):
-    C, P = NSPH["C"], NSPH["P"]
+def normal_sphere(p, slip=None):
+    C, P = p["C"], p["P"]
     if slip == "inward":
         return {"normal": unit(sub(C, P))}
     if slip == "point-as-normal":
@@ -343,8 +343,8 @@ def normal_sphere(slip=None):
     return {"normal": unit(sub(P, C))}
 
 
-def normal_sheared(slip=None):
-    M, n_obj = NSHEAR["M"], NSHEAR["p_obj"]  # unit sphere at the origin: n' = p'
+def normal_sheared(p, slip=None):
+    M, n_obj = p["M"], p["p_obj"]  # unit sphere at the origin: n' = p'
     if slip == "by-M":
         n = matvec(M, n_obj)
     elif slip == "inverse-not-transposed":
@@ -363,9 +363,9 @@ INTERP = {"V": [[1, 0, 0], [5, 1, 0], [2, 4, 0]],
           "T": [[0.1, 0.2], [0.9, 0.3], [0.4, 0.8]], "w": [0.5, 0.3, 0.2]}
 
 
-def interpolate(slip=None):
-    V, Ns, T = INTERP["V"], INTERP["N"], INTERP["T"]
-    P = [sum(w * v[k] for w, v in zip(INTERP["w"], V)) for k in range(3)]
+def interpolate(p, slip=None):
+    V, Ns, T = p["V"], p["N"], p["T"]
+    P = [sum(w * v[k] for w, v in zip(p["w"], V)) for k in range(3)]
     a, b, c = V
     area = norm(cross(sub(b, a), sub(c, a))) / 2
     # weights from sub-triangle areas (the point lies in the triangle)
@@ -393,8 +393,8 @@ SCHLICK = {"n1": 1.5, "n2": 1, "angle": 30}
 EXACT = {"n1": 1, "n2": 1.5, "angle": 30}
 
 
-def fresnel_schlick(slip=None):
-    n1, n2, th = SCHLICK["n1"], SCHLICK["n2"], math.radians(SCHLICK["angle"])
+def fresnel_schlick(p, slip=None):
+    n1, n2, th = p["n1"], p["n2"], math.radians(p["angle"])
     sin_t = n1 / n2 * math.sin(th)
     theta_t = math.asin(sin_t)
     r0 = (n1 - n2) / (n1 + n2)
@@ -410,8 +410,8 @@ def fresnel_schlick(slip=None):
     return {"reflectance": f, "transmittance": 1 - f, "r0": r0}
 
 
-def fresnel_exact(slip=None):
-    n1, n2, th = EXACT["n1"], EXACT["n2"], math.radians(EXACT["angle"])
+def fresnel_exact(p, slip=None):
+    n1, n2, th = p["n1"], p["n2"], math.radians(p["angle"])
     if slip == "n1-n2-swapped":
         n1, n2 = n2, n1
     ci = math.cos(th)
@@ -428,111 +428,181 @@ def fresnel_exact(slip=None):
 
 SRC = "tests/data/misconceptions (issue 48)"
 
+# A second set of numbers for each problem, so that no slip is judged on one problem alone.
+SPHERE2 = {"O": [1, -1, 2], "D": [0, 3, 4], "C": [2, 5, 9], "r": 2.5}
+PLANE2 = {"O": [0, 1, -2], "D": [2, 1, -3], "P0": [1, 4, 1], "n": [0, 3, -1]}
+TRI2 = {"O": [1, 1, 6], "D": [0.5, 0.5, -3], "V": [[0, 0, 0], [4, 0, 1], [0, 5, 0]]}
+FIRST2 = {"O": [1, 2, 0], "D": [0, 2, 0],
+          "objects": [("ball 3", [1.5, 20, 0], 2), ("ball 1", [1, 30, 0.5], 3),
+                      ("ball 2", [0.5, 12, 0], 1.5), ("ball 4", [1, -6, 0], 1)]}
+CAM2 = {"eye": [0, 1, 0], "d": [1, 0, 0], "up": [0, 0, 1], "f": 2, "res": [6, 4],
+        "pixel": [1, 3]}
+VIEW2 = {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0], "fov": 50, "res": [12, 8],
+         "pixel": [2, 6]}
+REFL2 = {"d": [-1, -2, 3], "n": [1, 1, -2]}
+REFR2 = {"d": [0.7, -1, 0.2], "n": [0, 1, 0], "n1": 1, "n2": 1.33}
+SHADE2 = {"P": [0, 0, 0], "N": [0, 0, 1], "eye": [0, 3, 4], "Ia": 1, "ka": 0.2, "kd": 0.5,
+          "ks": 0.4, "n": 8,
+          "lights": [("key", [0.3, -0.6, 0.9], False), ("top", [0, 0, 5], True),
+                     ("low", [2, 0, -1], False)]}
+NSPH2 = {"C": [-1, 0, 2], "r": 5, "P": [2, 4, 2]}
+NSHEAR2 = {"M": [[1, 0, 0], [1, 2, 0], [0, 0, 1]], "p_obj": [0.6, 0.8, 0]}
+SCHLICK2 = {"n1": 1.33, "n2": 1, "angle": 40}
+EXACT2 = {"n1": 1, "n2": 1.33, "angle": 45}
+INTERP2 = {"V": [[0, 0, 1], [3, 0, 0], [0, 6, 0]],
+           "N": [[0.8, 0, 0.6], [0, 0, 1], [0, 0.6, 0.8]],
+           "T": [[0, 0], [1, 0.2], [0.3, 0.9]], "w": [0.25, 0.35, 0.4]}
+
+
+def spec_sphere(p):
+    return {"title": "A ray meets a sphere (the direction is not a unit vector)",
+            "ray": {"origin": p["O"], "direction": p["D"]},
+            "object": {"type": "sphere", "center": p["C"], "radius": p["r"]},
+            "points": {"t": 2, "point": 1, "normal": 1}}
+
+
+def spec_plane(p):
+    return {"title": "A ray meets a plane given by a point and a normal",
+            "ray": {"origin": p["O"], "direction": p["D"]},
+            "object": {"type": "plane", "point": p["P0"], "normal": p["n"]},
+            "points": {"t": 2, "point": 1, "normal": 1}}
+
+
+def spec_triangle(p):
+    return {"title": "A ray through a triangle, with barycentric weights",
+            "ray": {"origin": p["O"], "direction": p["D"]},
+            "object": {"type": "triangle", "vertices": p["V"]},
+            "points": {"t": 2, "point": 1, "normal": 1, "barycentric": 1}}
+
+
+def spec_first_hit(p):
+    return {"kind": "first-hit", "title": "Which of four spheres is hit first?",
+            "ray": {"origin": p["O"], "direction": p["D"]},
+            "objects": [{"name": n, "type": "sphere", "center": C, "radius": r}
+                        for n, C, r in p["objects"]],
+            "points": {"object": 2, "t": 1, "point": 1, "normal": 1}}
+
+
+def spec_camera(p):
+    return {"kind": "camera-ray", "title": "The ray through a pixel's centre",
+            "camera": {"eye": p["eye"], "direction": p["d"], "up": p["up"],
+                       "focal_length": p["f"], "resolution": p["res"]},
+            "pixel": p["pixel"], "convention": "center"}
+
+
+def spec_view(p):
+    return {"kind": "view-ray", "title": "A look-at camera with a horizontal field of view",
+            "camera": {"projection": "perspective", "eye": p["eye"], "target": p["target"],
+                       "up": p["up"], "fov": p["fov"], "fov_axis": "horizontal",
+                       "resolution": p["res"], "pixel_origin": "top-left"},
+            "pixel": p["pixel"], "convention": "center"}
+
+
+def spec_reflect(p):
+    return {"kind": "reflect", "title": "Reflect a ray (the normal is not unit)",
+            "direction": p["d"], "normal": p["n"],
+            "points": {"direction": 1, "unit_direction": 1}}
+
+
+def spec_refract(p):
+    return {"kind": "refract", "title": "From air into a denser medium",
+            "direction": p["d"], "normal": p["n"], "n1": p["n1"], "n2": p["n2"],
+            "points": {"direction": 1, "total_internal_reflection": 1, "angle_of_incidence": 1,
+                       "angle_of_refraction": 1}}
+
+
+def spec_shade(p):
+    return {"kind": "shade",
+            "title": "Phong shading: a visible light, a blocked one, one below the horizon",
+            "point": p["P"], "normal": p["N"], "eye": p["eye"], "ambient_light": p["Ia"],
+            "material": {"ambient": p["ka"], "diffuse": p["kd"], "specular": p["ks"],
+                         "shininess": p["n"]},
+            "lights": [dict({"name": n, "position": q}, **({"blocked": True} if b else {}))
+                       for n, q, b in p["lights"]],
+            "points": {"intensity": 1, "ambient": 1, "diffuse": 1, "specular": 1, "lights": 1}}
+
+
+def spec_normal_sphere(p):
+    return {"kind": "normal", "title": "The normal of a sphere",
+            "object": {"type": "sphere", "center": p["C"], "radius": p["r"]}, "point": p["P"]}
+
+
+def spec_normal_sheared(p):
+    return {"kind": "normal", "title": "The normal of a sheared sphere",
+            "object": {"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                       "transform": [{"matrix": p["M"]}]},
+            "point": matvec(p["M"], p["p_obj"])}
+
+
+def spec_interpolate(p):
+    return {"kind": "interpolate", "title": "The smooth normal and texture coordinate at a point",
+            "vertices": p["V"], "normals": p["N"], "texcoords": p["T"],
+            "point": [sum(w * v[k] for w, v in zip(p["w"], p["V"])) for k in range(3)],
+            "points": {"normal": 2, "barycentric": 1, "u": 1, "v": 1}}
+
+
+def spec_schlick(p):
+    return {"kind": "fresnel", "model": "schlick", "title": "Schlick's approximation leaving a denser medium",
+            "n1": p["n1"], "n2": p["n2"], "angle": p["angle"],
+            "points": {"reflectance": 1, "transmittance": 1, "r0": 1}}
+
+
+def spec_exact(p):
+    return {"kind": "fresnel", "model": "exact", "title": "The Fresnel equations into a denser medium",
+            "n1": p["n1"], "n2": p["n2"], "angle": p["angle"],
+            "points": {"reflectance": 1, "transmittance": 1, "r_s": 1, "r_p": 1}}
+
+
+# kind -> [(problem id, its statement, the answer function, its numbers, slip group, slips)]
 PROBLEMS = {
     "intersect": [
-        ({"id": "mc-sphere", "title": "A ray meets a sphere (the direction is not a unit vector)",
-          "ray": {"origin": SPHERE["O"], "direction": SPHERE["D"]},
-          "object": {"type": "sphere", "center": SPHERE["C"], "radius": SPHERE["r"]},
-          "points": {"t": 2, "point": 1, "normal": 1}},
-         sphere_hits, "sphere",
+        ("mc-sphere", spec_sphere, sphere_hits, [SPHERE, SPHERE2], "sphere",
          ["a-taken-as-one", "half-b-mixup", "times-a", "oc-reversed", "r-not-squared"]),
-        ({"id": "mc-plane", "title": "A ray meets a plane given by a point and a normal",
-          "ray": {"origin": PLANE["O"], "direction": PLANE["D"]},
-          "object": {"type": "plane", "point": PLANE["P0"], "normal": PLANE["n"]},
-          "points": {"t": 2, "point": 1, "normal": 1}},
-         plane_hits, "plane", ["numerator-reversed", "origin-dropped", "denominator-dropped"]),
-        ({"id": "mc-triangle", "title": "A ray through a triangle, with barycentric weights",
-          "ray": {"origin": TRI["O"], "direction": TRI["D"]},
-          "object": {"type": "triangle", "vertices": TRI["V"]},
-          "points": {"t": 2, "point": 1, "normal": 1, "barycentric": 1}},
-         triangle_hits, "triangle", ["weights-rotated", "normal-reversed", "t-along-unit"]),
+        ("mc-plane", spec_plane, plane_hits, [PLANE, PLANE2], "plane",
+         ["numerator-reversed", "origin-dropped", "denominator-dropped"]),
+        ("mc-triangle", spec_triangle, triangle_hits, [TRI, TRI2], "triangle",
+         ["weights-rotated", "normal-reversed", "t-along-unit"]),
     ],
     "first-hit": [
-        ({"id": "mc-first-hit", "kind": "first-hit", "title": "Which of four spheres is hit first?",
-          "ray": {"origin": FIRST["O"], "direction": FIRST["D"]},
-          "objects": [{"name": n, "type": "sphere", "center": C, "radius": r}
-                      for n, C, r in FIRST["objects"]],
-          "points": {"object": 2, "t": 1, "point": 1, "normal": 1}},
-         first_hit, "first-hit", ["far-root", "behind-origin", "largest-t", "first-listed"]),
+        ("mc-first-hit", spec_first_hit, first_hit, [FIRST, FIRST2], "first-hit",
+         ["far-root", "behind-origin", "largest-t", "first-listed"]),
     ],
     "camera-ray": [
-        ({"id": "mc-camera-ray", "kind": "camera-ray",
-          "title": "The ray through a pixel's centre (focal length 3)",
-          "camera": {"eye": CAM["eye"], "direction": CAM["d"], "up": CAM["up"],
-                     "focal_length": CAM["f"], "resolution": CAM["res"]},
-          "pixel": CAM["pixel"], "convention": "center"},
-         camera_ray, "camera-ray",
+        ("mc-camera-ray", spec_camera, camera_ray, [CAM, CAM2], "camera-ray",
          ["no-half-pixel", "y-flipped", "right-reversed", "focal-dropped"]),
     ],
     "view-ray": [
-        ({"id": "mc-view-ray", "kind": "view-ray",
-          "title": "A look-at camera with a 70° horizontal field of view",
-          "camera": {"projection": "perspective", "eye": VIEW["eye"], "target": VIEW["target"],
-                     "up": VIEW["up"], "fov": VIEW["fov"], "fov_axis": "horizontal",
-                     "resolution": VIEW["res"], "pixel_origin": "top-left"},
-          "pixel": VIEW["pixel"], "convention": "center"},
-         view_ray, "view-ray",
+        ("mc-view-ray", spec_view, view_ray, [VIEW, VIEW2], "view-ray",
          ["full-fov", "fov-degrees", "aspect-ignored", "rows-from-bottom", "no-half-pixel"]),
     ],
     "reflect": [
-        ({"id": "mc-reflect", "kind": "reflect", "title": "Reflect a ray (the normal is not unit)",
-          "direction": REFL["d"], "normal": REFL["n"],
-          "points": {"direction": 1, "unit_direction": 1}},
-         reflect, "reflect", ["plus-sign", "no-two", "light-form", "normal-not-unit"]),
+        ("mc-reflect", spec_reflect, reflect, [REFL, REFL2], "reflect",
+         ["plus-sign", "no-two", "light-form", "normal-not-unit"]),
     ],
     "refract": [
-        ({"id": "mc-refract", "kind": "refract", "title": "From air into glass",
-          "direction": REFR["d"], "normal": REFR["n"], "n1": REFR["n1"], "n2": REFR["n2"],
-          "points": {"direction": 1, "total_internal_reflection": 1, "angle_of_incidence": 1,
-                     "angle_of_refraction": 1}},
-         refract, "refract",
+        ("mc-refract", spec_refract, refract, [REFR, REFR2], "refract",
          ["n1-n2-swapped", "angle-from-surface", "degrees-as-radians", "angles-proportional"]),
     ],
     "shade": [
-        ({"id": "mc-shade", "kind": "shade",
-          "title": "Phong shading: a visible light, a blocked one, one below the horizon",
-          "point": SHADE["P"], "normal": SHADE["N"], "eye": SHADE["eye"],
-          "ambient_light": SHADE["Ia"],
-          "material": {"ambient": SHADE["ka"], "diffuse": SHADE["kd"],
-                       "specular": SHADE["ks"], "shininess": SHADE["n"]},
-          "lights": [dict({"name": n, "position": p}, **({"blocked": True} if b else {}))
-                     for n, p, b in SHADE["lights"]],
-          "points": {"intensity": 1, "ambient": 1, "diffuse": 1, "specular": 1, "lights": 1}},
-         shade, "shade",
+        ("mc-shade", spec_shade, shade, [SHADE, SHADE2], "shade",
          ["exponent-forgotten", "reflect-sign", "no-clamp", "light-not-unit",
           "blocked-light-counted", "halfway-vector"]),
     ],
     "normal": [
-        ({"id": "mc-normal-sphere", "kind": "normal", "title": "The normal of a sphere",
-          "object": {"type": "sphere", "center": NSPH["C"], "radius": NSPH["r"]},
-          "point": NSPH["P"]},
-         normal_sphere, "normal", ["inward", "point-as-normal"]),
-        ({"id": "mc-normal-sheared", "kind": "normal", "title": "The normal of a sheared sphere",
-          "object": {"type": "sphere", "center": [0, 0, 0], "radius": 1,
-                     "transform": [{"matrix": NSHEAR["M"]}]},
-          "point": matvec(NSHEAR["M"], NSHEAR["p_obj"])},
-         normal_sheared, "normal", ["by-M", "inverse-not-transposed", "object-space"]),
+        ("mc-normal-sphere", spec_normal_sphere, normal_sphere, [NSPH, NSPH2], "normal",
+         ["inward", "point-as-normal"]),
+        ("mc-normal-sheared", spec_normal_sheared, normal_sheared, [NSHEAR, NSHEAR2], "normal",
+         ["by-M", "inverse-not-transposed", "object-space"]),
     ],
     "interpolate": [
-        ({"id": "mc-interpolate", "kind": "interpolate",
-          "title": "The smooth normal and texture coordinate at a point",
-          "vertices": INTERP["V"], "normals": INTERP["N"], "texcoords": INTERP["T"],
-          "point": [sum(w * v[k] for w, v in zip(INTERP["w"], INTERP["V"])) for k in range(3)],
-          "points": {"normal": 2, "barycentric": 1, "u": 1, "v": 1}},
-         interpolate, "interpolate",
+        ("mc-interpolate", spec_interpolate, interpolate, [INTERP, INTERP2], "interpolate",
          ["weights-rotated", "areas-not-divided", "texcoord-swapped", "v-flipped"]),
     ],
     "fresnel": [
-        ({"id": "mc-fresnel-schlick", "kind": "fresnel", "model": "schlick",
-          "title": "Schlick's approximation leaving glass at 30°",
-          "n1": SCHLICK["n1"], "n2": SCHLICK["n2"], "angle": SCHLICK["angle"],
-          "points": {"reflectance": 1, "transmittance": 1, "r0": 1}},
-         fresnel_schlick, "fresnel", ["schlick-cos-i", "r0-not-squared", "schlick-degrees"]),
-        ({"id": "mc-fresnel-exact", "kind": "fresnel", "model": "exact",
-          "title": "The Fresnel equations into glass at 30°",
-          "n1": EXACT["n1"], "n2": EXACT["n2"], "angle": EXACT["angle"],
-          "points": {"reflectance": 1, "transmittance": 1, "r_s": 1, "r_p": 1}},
-         fresnel_exact, "fresnel", ["rs-only", "not-squared", "n1-n2-swapped"]),
+        ("mc-fresnel-schlick", spec_schlick, fresnel_schlick, [SCHLICK, SCHLICK2], "fresnel",
+         ["schlick-cos-i", "r0-not-squared", "schlick-degrees"]),
+        ("mc-fresnel-exact", spec_exact, fresnel_exact, [EXACT, EXACT2], "fresnel",
+         ["rs-only", "not-squared", "n1-n2-swapped"]),
     ],
 }
 
@@ -621,6 +691,32 @@ def as_unit_directions(answer):
 
 # --- writing -------------------------------------------------------------------------
 
+def plant(kind, pid, fn, params, group, slips, write, rng):
+    """Writes one problem's students: PER_SLIP per slip, RIGHT right, RANDOM random.
+    Returns the faults found: a slip that gives the right answer or another slip's."""
+    faults = []
+    right = fn(params)
+    answers = {s: fn(params, s) for s in slips}
+    for s, a in answers.items():
+        if not differ(a, right):
+            faults.append(f"{pid}: slip {s} gives the right answer")
+        for s2, a2 in answers.items():
+            if s < s2 and not differ(a, a2):
+                faults.append(f"{pid}: slips {s} and {s2} give the same answer")
+    # half the students of the camera kinds give the ray's direction as a unit vector
+    unit_dirs = kind in ("camera-ray", "view-ray")
+    for s, a in answers.items():
+        for j in range(PER_SLIP):
+            write(pid, as_unit_directions(a) if unit_dirs and j % 2 else a,
+                  {"role": "slip", "slip": f"{group}/{s}"})
+    for j in range(RIGHT):
+        write(pid, as_unit_directions(right) if unit_dirs and j % 2 else right,
+              {"role": "right"})
+    for j in range(RANDOM):
+        write(pid, randomise(right, rng), {"role": "random"})
+    return faults
+
+
 def build(out, seed):
     rng = random.Random(seed)
     out = pathlib.Path(out)
@@ -643,29 +739,11 @@ def build(out, seed):
             (kdir / "submissions" / f"{sid}.json").write_text(json.dumps(sub_) + "\n")
             students[sid] = dict(role, problem=pid)
 
-        for spec, fn, group, slips in problems:
-            problem = dict(spec, source=SRC)
-            bank["problems"].append(problem)
-            pid = problem["id"]
-            right = fn()
-            answers = {s: fn(s) for s in slips}
-            for s, a in answers.items():
-                if not differ(a, right):
-                    faults.append(f"{pid}: slip {s} gives the right answer")
-                for s2, a2 in answers.items():
-                    if s < s2 and not differ(a, a2):
-                        faults.append(f"{pid}: slips {s} and {s2} give the same answer")
-            unit_dirs = kind in ("camera-ray", "view-ray")
-            for s, a in answers.items():
-                for k in range(PER_SLIP):
-                    # half the students give a camera ray's direction as a unit vector
-                    ans = as_unit_directions(a) if unit_dirs and k % 2 else a
-                    write(pid, ans, {"role": "slip", "slip": f"{group}/{s}"})
-            for k in range(RIGHT):
-                ans = as_unit_directions(right) if unit_dirs and k % 2 else right
-                write(pid, ans, {"role": "right"})
-            for k in range(RANDOM):
-                write(pid, randomise(right, rng), {"role": "random"})
+        for base, spec, fn, variants, group, slips in problems:
+            for k, params in enumerate(variants):
+                pid = f"{base}-{k + 1}"
+                bank["problems"].append(dict({"id": pid}, **spec(params), source=SRC))
+                faults += plant(kind, pid, fn, params, group, slips, write, rng)
         (kdir / "problems.json").write_text(json.dumps(bank, indent=1) + "\n")
         manifest["kinds"][kind] = {"students": students}
     (out / "manifest.json").write_text(json.dumps(manifest, indent=1) + "\n")
