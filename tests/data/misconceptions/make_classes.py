@@ -542,13 +542,15 @@ def spec_interpolate(p):
 
 
 def spec_schlick(p):
-    return {"kind": "fresnel", "model": "schlick", "title": "Schlick's approximation leaving a denser medium",
+    return {"kind": "fresnel", "model": "schlick",
+            "title": "Schlick's approximation leaving a denser medium",
             "n1": p["n1"], "n2": p["n2"], "angle": p["angle"],
             "points": {"reflectance": 1, "transmittance": 1, "r0": 1}}
 
 
 def spec_exact(p):
-    return {"kind": "fresnel", "model": "exact", "title": "The Fresnel equations into a denser medium",
+    return {"kind": "fresnel", "model": "exact",
+            "title": "The Fresnel equations into a denser medium",
             "n1": p["n1"], "n2": p["n2"], "angle": p["angle"],
             "points": {"reflectance": 1, "transmittance": 1, "r_s": 1, "r_p": 1}}
 
@@ -727,23 +729,25 @@ def build(out, seed):
         shutil.rmtree(kdir, ignore_errors=True)  # no student left from an earlier run
         (kdir / "submissions").mkdir(parents=True, exist_ok=True)
         bank = {"title": f"Misconception class: {kind}", "problems": []}
-        students = {}
-        number = 0
+        pending = []
 
         def write(pid, answer, role):
-            nonlocal number
-            number += 1
-            sid = f"{kind}-s{number:04d}"
-            sub_ = {"student": {"name": f"Student {number}", "id": sid},
-                    "answers": {pid: rounded(answer)}}
-            (kdir / "submissions" / f"{sid}.json").write_text(json.dumps(sub_) + "\n")
-            students[sid] = dict(role, problem=pid)
+            pending.append((pid, answer, role))
 
         for base, spec, fn, variants, group, slips in problems:
             for k, params in enumerate(variants):
                 pid = f"{base}-{k + 1}"
                 bank["problems"].append(dict({"id": pid}, **spec(params), source=SRC))
                 faults += plant(kind, pid, fn, params, group, slips, write, rng)
+        # a class in no particular order: slips, right and random answers mixed
+        rng.shuffle(pending)
+        students = {}
+        for number, (pid, answer, role) in enumerate(pending, start=1):
+            sid = f"{kind}-s{number:04d}"
+            sub_ = {"student": {"name": f"Student {number}", "id": sid},
+                    "answers": {pid: rounded(answer)}}
+            (kdir / "submissions" / f"{sid}.json").write_text(json.dumps(sub_) + "\n")
+            students[sid] = dict(role, problem=pid)
         (kdir / "problems.json").write_text(json.dumps(bank, indent=1) + "\n")
         manifest["kinds"][kind] = {"students": students}
     (out / "manifest.json").write_text(json.dumps(manifest, indent=1) + "\n")
