@@ -14,12 +14,15 @@ trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/include"
 for folder in nlohmann fmt; do ln -s "/usr/include/$folder" "$work/include/$folder"; done
 export NODE_PATH="${NODE_PATH:+$NODE_PATH:}/usr/share/nodejs"
-# Sources in a fixed order and no paths in the output: the same file on every machine.
-em++ -std=c++20 -Os -DNDEBUG -DFMT_HEADER_ONLY -fwasm-exceptions -Igrader -isystem "$work/include" \
+# Sources in a fixed order and no paths in the output: the same file on every machine. Small:
+# -Oz with link-time optimization, emmalloc, and fmt without std::locale (no format of the
+# reader groups digits by locale; the locale's facets were a third of the module): 248 KB, not
+# 412 KB with -Os alone.
+em++ -std=c++20 -Oz -flto -DNDEBUG -DFMT_HEADER_ONLY -DFMT_STATIC_THOUSANDS_SEPARATOR=0x2c -fwasm-exceptions -Igrader -isystem "$work/include" \
   web/typed_reader.cpp grader/grading/typed_box.cpp grader/grading/answer_reader.cpp \
   grader/derivation/formula.cpp grader/core/escape.cpp grader/core/error.cpp grader/json/cursor.cpp \
   -sMODULARIZE=1 -sEXPORT_NAME=createTypedReader -sSINGLE_FILE=1 -sWASM_ASYNC_COMPILATION=0 \
-  -sENVIRONMENT=web,node -sFILESYSTEM=0 -sALLOW_MEMORY_GROWTH=1 \
+  -sENVIRONMENT=web,node -sFILESYSTEM=0 -sALLOW_MEMORY_GROWTH=1 -flto -sMALLOC=emmalloc \
   -sEXPORTED_FUNCTIONS=_raygrade_read_typed -sEXPORTED_RUNTIME_METHODS=ccall \
   -o "$work/typed_reader.js"
 {
