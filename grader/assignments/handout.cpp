@@ -235,7 +235,7 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; "
-      "script-src 'unsafe-inline'{}; style-src 'unsafe-inline'; img-src data:\">\n"
+      "script-src 'unsafe-inline' 'wasm-unsafe-eval'; style-src 'unsafe-inline'; img-src data:\">\n"
       "<title>{}</title>\n<style>{}</style>\n</head>\n<body>\n<header>\n<h1>{}</h1>\n{}{}"
       "<p>Type each answer as a number or as you would write it: <code>9 - sqrt(3)</code>, "
       "<code>2√2</code>, <code>1/3</code>, <code>pi/4</code>. Each input says at once whether "
@@ -245,8 +245,7 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
       "<span id=\"saved\" class=\"muted\"></span></div>\n</main>\n"
       "<script type=\"application/json\" id=\"handout-data\">{}</script>\n{}{}<script>{}</script>\n"
       "</body>\n</html>\n",
-      practice ? " 'wasm-unsafe-eval'" : "", html_escape(title), kHandoutStyle,
-      html_escape(spec.title),
+      html_escape(title), kHandoutStyle, html_escape(spec.title),
       who.empty() ? "" : fmt::format("<p class=\"student\">For {}</p>\n", html_escape(who)),
       due_html(spec), kept, sections, script_json(data), grader_script, lms_script, kHandoutScript);
   out.template_json = json::object();

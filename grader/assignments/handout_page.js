@@ -12,177 +12,36 @@
   const storageKey = "raygrade:" + data.assignment.id + ":" + (data.student.key || "") +
     (lms ? ":lms:" + lms.learner : "");
 
-  // --- Typed numbers and formulas, read with the grammar of the grader (docs/submission-format.md)
-  const GLYPHS = {"\u2212": "-", "\u00b7": "*", "\u22c5": "*", "\u00d7": "*", "\u00f7": "/",
-                  "\u00b2": "\u00b2", "\u00b3": "\u00b3", "\u221a": "\u221a", "\u03c0": "\u03c0"};
-  const FUNCS = {};
-  for (const f of data.formula.functions) FUNCS[f] = true;
-  const MAX_LENGTH = data.formula.max_length, MAX_DEPTH = data.formula.max_depth;
-
+  // --- Typed numbers and formulas, read by the grader's own reader: its C++ (formula parser and
+  // answer reader) compiled alone to WebAssembly, typed_reader.js, put here when the build is
+  // configured (scripts/build-typed-reader.sh; docs/web.md). The page cannot read a box
+  // otherwise than the grader does.
+  /* @RAYGRADE_TYPED_READER@ */
+  const typedReader = createTypedReader();
+  const fromBits = (hex) => {
+    const b = new DataView(new ArrayBuffer(8));
+    b.setBigUint64(0, BigInt("0x" + hex));
+    return b.getFloat64(0);
+  };
+  // The grader's reading of a box's value (a string, or three for a vector) as a submission
+  // carries it: {ok, values} or {ok: false, message, fault}.
+  function readTyped(box, value, symbols) {
+    const r = JSON.parse(typedReader.ccall("raygrade_read_typed", "string",
+      ["string", "string", "string"], [box, JSON.stringify(value), (symbols || []).join(",")]));
+    if (r.ok) r.values = r.values.map(fromBits);
+    return r;
+  }
+  // What a box saves in answers.json: the text as typed, nothing when it is blank.
+  function typedValue(text) { return text.trim() === "" ? undefined : text; }
+  // A box's check: blank (nothing shown, nothing saved), or the grader's verdict on its text.
+  function boxReading(text, symbols) {
+    if (typedValue(text) === undefined) return {blank: true};
+    const r = readTyped(symbols ? "formula" : "number", text, symbols);
+    return r.ok ? {ok: true, value: r.values[0]} : {ok: false, message: r.message, fault: r.fault};
+  }
   function readFormula(text, symbols) {
-    const chars = Array.from(text).map((c) => GLYPHS[c] || c);
-    let pos = 0, failed = null;
-    const known = {};
-    for (const s of symbols || []) known[s] = true;
-    const fail = (message) => { if (!failed) failed = {message: message, column: pos + 1}; return NaN; };
-    const peek = () => (pos < chars.length ? chars[pos] : "");
-    const space = () => { while (peek() === " " || peek() === "\t") pos++; };
-    const isAlpha = (c) => /^[A-Za-z_]$/.test(c);
-    const isDigit = (c) => /^[0-9]$/.test(c);
-    const startsPrimary = (c) => c === "(" || c === "\u221a" || c === "\u03c0" || isAlpha(c);
-    const enter = (depth) => {
-      if (depth > MAX_DEPTH) fail("the answer nests more than " + MAX_DEPTH + " levels deep");
-      return !failed;
-    };
-    function expression(depth) {
-      if (!enter(depth)) return NaN;
-      let v = term(depth);
-      for (;;) {
-        space();
-        const c = peek();
-        if (failed || (c !== "+" && c !== "-")) return v;
-        pos++;
-        const w = term(depth);
-        v = c === "+" ? v + w : v - w;
-      }
-    }
-    function term(depth) {
-      let v = unary(depth);
-      for (;;) {
-        space();
-        const c = peek();
-        if (failed) return v;
-        if (c === "*" && chars[pos + 1] === "*") return v;
-        if (c === "*" || c === "/") {
-          pos++;
-          const w = unary(depth);
-          v = c === "*" ? v * w : v / w;
-        } else if (startsPrimary(c)) {
-          v = v * unary(depth);
-        } else {
-          return v;
-        }
-      }
-    }
-    function unary(depth) {
-      if (!enter(depth + 1)) return NaN;
-      space();
-      const c = peek();
-      if (c === "-" || c === "+") {
-        pos++;
-        const v = unary(depth + 1);
-        return c === "-" ? -v : v;
-      }
-      return power(depth + 1);
-    }
-    function power(depth) {
-      let v = postfix(depth);
-      space();
-      if (failed) return v;
-      const caret = peek() === "^", stars = peek() === "*" && chars[pos + 1] === "*";
-      if (caret || stars) {
-        pos += caret ? 1 : 2;
-        v = Math.pow(v, unary(depth + 1));
-      }
-      return v;
-    }
-    // "30deg", "30 deg" or "30°": degrees, as radians.
-    function degrees() {
-      let at = pos;
-      while (chars[at] === " " || chars[at] === "\t") at++;
-      let width = 0;
-      if (chars[at] === "\u00b0") width = 1;
-      else if (chars.slice(at, at + 3).join("") === "deg" && !/^[A-Za-z0-9_]$/.test(chars[at + 3] || "")) width = 3;
-      if (!width) return false;
-      pos = at + width;
-      return true;
-    }
-    function postfix(depth) {
-      let v = primary(depth);
-      for (;;) {
-        if (!failed && degrees()) { v = v * Math.PI / 180; continue; }
-        const c = peek();
-        if (failed || (c !== "\u00b2" && c !== "\u00b3")) return v;
-        pos++;
-        v = Math.pow(v, c === "\u00b2" ? 2 : 3);
-      }
-    }
-    function primary(depth) {
-      if (!enter(depth + 1)) return NaN;
-      space();
-      const c = peek();
-      if (c === "") return fail("the answer ends too early");
-      if (c === "(") {
-        pos++;
-        const v = expression(depth + 1);
-        space();
-        if (failed) return v;
-        if (peek() !== ")") return fail(pos >= chars.length ? "missing ')'" : "expected ')' but found '" + peek() + "'");
-        pos++;
-        return v;
-      }
-      if (c === "\u221a") { pos++; return Math.sqrt(postfix(depth + 1)); }
-      if (c === "\u03c0") { pos++; return Math.PI; }
-      if (isDigit(c) || c === ".") return number();
-      if (isAlpha(c)) {
-        const start = pos;
-        while (pos < chars.length && /^[A-Za-z0-9_]$/.test(chars[pos])) pos++;
-        return identifier(chars.slice(start, pos).join(""), start, depth);
-      }
-      return fail("unexpected '" + c + "'");
-    }
-    function number() {
-      const start = pos;
-      while (isDigit(peek())) pos++;
-      if (peek() === ".") { pos++; while (isDigit(peek())) pos++; }
-      if (peek() === "e" || peek() === "E") {
-        let e = pos + 1;
-        if (chars[e] === "+" || chars[e] === "-") e++;
-        if (isDigit(chars[e] || "")) { pos = e; while (isDigit(peek())) pos++; }
-      }
-      const literal = chars.slice(start, pos).join("");
-      if (literal === "." || literal === "") { pos = start; return fail("'" + literal + "' is not a number"); }
-      if (peek() === ".") return fail("a second decimal point");
-      return parseFloat(literal);
-    }
-    function identifier(name, start, depth) {
-      space();
-      if (FUNCS[name]) {
-        if (peek() !== "(") return fail("expected '(' after " + name);
-        if (name === "atan2") {
-          pos++;
-          const y = expression(depth + 1);
-          space();
-          if (failed) return NaN;
-          if (peek() !== ",") return fail("expected ',' between the two arguments, found '" + (peek() || "end") + "'");
-          pos++;
-          const x = expression(depth + 1);
-          space();
-          if (failed) return NaN;
-          if (peek() !== ")") return fail(pos >= chars.length ? "missing ')'" : "expected ')' but found '" + peek() + "'");
-          pos++;
-          return Math.atan2(y, x);
-        }
-        const x = primary(depth + 1);
-        const f = {sqrt: Math.sqrt, abs: Math.abs, sin: Math.sin, cos: Math.cos, tan: Math.tan,
-                   exp: Math.exp, ln: Math.log, log: Math.log, asin: Math.asin, acos: Math.acos,
-                   atan: Math.atan}[name];
-        return f ? f(x) : x;
-      }
-      if (name === "pi") return Math.PI;
-      if (known[name]) return 1;
-      pos = start;
-      return fail(symbols ? "unknown symbol '" + name + "' (known: " + symbols.join(", ") + ")"
-                          : "unknown name '" + name + "' (a number is expected)");
-    }
-    if (chars.length > MAX_LENGTH) return {ok: false, message: "the answer is too long (more than " + MAX_LENGTH + " characters)"};
-    space();
-    if (pos === chars.length) return {ok: false, message: "the answer is empty"};
-    const value = expression(0);
-    space();
-    if (!failed && pos < chars.length) fail("unexpected '" + chars[pos] + "'");
-    if (failed) return {ok: false, message: failed.message + " at character " + failed.column};
-    return {ok: true, value: value};
+    const r = readTyped("formula", text, symbols || []);
+    return r.ok ? {ok: true, value: r.values[0]} : {ok: false, message: r.message};
   }
 
   // --- Inputs
@@ -197,14 +56,13 @@
   }
   function check(input) {
     const hint = input.hint;
-    const text = input.value;
-    if (text.trim() === "") { hint.textContent = ""; input.classList.remove("bad"); return; }
-    const r = readFormula(text, input.symbols);
-    if (r.ok) {
+    const r = boxReading(input.value, input.symbols);
+    if (r.blank) { hint.textContent = ""; input.classList.remove("bad"); return; }
+    if (r.ok || r.fault === "finite") {
       input.classList.remove("bad");
-      hint.textContent = input.symbols ? "\u2713 reads as a formula" :
-        (isFinite(r.value) ? "\u2713 reads as " + Number(r.value.toPrecision(6)) : "no finite value");
-      hint.className = "hint " + (isFinite(r.value) || input.symbols ? "ok" : "err");
+      hint.textContent = !r.ok ? "no finite value" : input.symbols ? "\u2713 reads as a formula" :
+        "\u2713 reads as " + Number(r.value.toPrecision(6));
+      hint.className = "hint " + (r.ok ? "ok" : "err");
     } else {
       input.classList.add("bad");
       hint.textContent = "could not read this: " + r.message;
@@ -223,7 +81,7 @@
   function numberBox(name, label) {
     const input = textInput(name, label);
     return {node: el("span", {class: "cell"}, [input, input.hint]),
-            value: () => (input.value.trim() === "" ? undefined : input.value.trim())};
+            value: () => typedValue(input.value)};
   }
   function vectorBox(name, label) {
     const parts = ["x", "y", "z"].map((a) => textInput(name + "." + a, label + " " + a));
@@ -236,8 +94,8 @@
     const hints = el("span", {class: "hints"}, parts.map((p) => p.hint));
     return {node: el("span", {class: "cell"}, [node, hints]),
             value: () => {
-              const v = parts.map((p) => p.value.trim());
-              return v.every((x) => x === "") ? undefined : v;
+              const v = parts.map((p) => typedValue(p.value));
+              return v.every((x) => x === undefined) ? undefined : v.map((x) => x || "");
             }};
   }
   function yesNo(name, label) {
@@ -254,7 +112,7 @@
     if (type === "formula") {
       const input = textInput(name, label, symbols);
       return {node: el("span", {class: "cell"}, [input, input.hint]),
-              value: () => (input.value.trim() === "" ? undefined : input.value.trim())};
+              value: () => typedValue(input.value)};
     }
     return numberBox(name, label);
   }

@@ -346,8 +346,8 @@ def _reference_option(data, name, index):
 # Reading the inputs: every input is text (or a choice's key), read as raygrade reads answers.
 
 
-def _split(text, sep):
-    """Splits at `sep` outside parentheses and brackets; stripped pieces."""
+def _split(text, sep, strip=True):
+    """Splits at `sep` outside parentheses and brackets; the pieces stripped, or as typed."""
     pieces, depth, start = [], 0, 0
     for i, c in enumerate(text):
         if c in "([":
@@ -355,20 +355,27 @@ def _split(text, sep):
         elif c in ")]":
             depth -= 1
         elif c == sep and depth == 0:
-            pieces.append(text[start:i].strip())
+            pieces.append(text[start:i])
             start = i + 1
-    pieces.append(text[start:].strip())
-    return pieces
+    pieces.append(text[start:])
+    return [p.strip() for p in pieces] if strip else pieces
+
+
+# The spaces raygrade itself skips around a typed number; any other character (a no-break
+# space, a byte-order mark, a line break) is left for raygrade to refuse, as the page refuses it.
+SPACES = " \t"
 
 
 def _vector(text):
-    text = text.strip()
+    """The three numbers of a vector typed into one input, each as typed: raygrade reads them
+    (the grader's reader decides what each means; nothing is cleaned here)."""
+    text = text.strip(SPACES)
     if not text:
         return ["", "", ""]
-    if text[0] + text[-1] in ("()", "[]") and len(_split(text[1:-1], ",")) == 3:
+    if text[0] + text[-1] in ("()", "[]") and len(_split(text[1:-1], ",", False)) == 3:
         text = text[1:-1]
-    parts = _split(text, ",")
-    if len(parts) != 3 or not all(parts):
+    parts = _split(text, ",", False)
+    if len(parts) != 3 or not all(p.strip(SPACES) for p in parts):
         raise ValueError("a vector is three numbers separated by commas, like (1, 0, -2.5)")
     return parts
 
@@ -408,7 +415,8 @@ def _text(data, name):
         raise ValueError("the answer holds a character that is not text") from None
     if _depth(value) > MAX_DEPTH:
         raise ValueError("brackets are nested more than %d deep" % MAX_DEPTH)
-    return value.strip()
+    # Blank is no answer; anything else goes to raygrade as typed, as the handout page saves it.
+    return value if value.strip() else ""
 
 
 def _choice(data, inp):
@@ -447,11 +455,12 @@ def _read_input(data, inp, answer, hits, blanks):
         return
     text = _text(data, name)
     if inp.get("list"):
-        items = [] if not text else _split(text, ";")
-        if len(items) == 1 and items[0].lower() in inp.get("words", {}):
-            hits["word"] = inp["words"][items[0].lower()]
+        items = [] if not text else _split(text, ";", False)
+        word = items[0].strip().lower() if len(items) == 1 else None
+        if word in inp.get("words", {}):
+            hits["word"] = inp["words"][word]
             return
-        if any(not item for item in items):
+        if any(not item.strip(SPACES) for item in items):
             raise ValueError("an empty value between two semicolons")
         hits[inp["column"]] = [_vector(i) if kind == "vector" else i for i in items]
         blanks[inp["column"]] = ["", "", ""] if kind == "vector" else ""

@@ -16,6 +16,7 @@ Runner setup_schema(CLI::App& sub);
 Runner setup_tables(CLI::App& sub);
 Runner setup_report(CLI::App& sub);
 Runner setup_regrade(CLI::App& sub);
+Runner setup_read_typed(CLI::App& sub);
 
 const std::vector<Command>& command_table() {
   static const std::vector<Command> table = {
@@ -42,6 +43,8 @@ const std::vector<Command>& command_table() {
        &setup_schema},
       {"tables", "the docs' tables of primitives, kinds and formats, from the code's own",
        &setup_tables},
+      {"read-typed", "typed answer boxes read as the grader reads them (for tests)",
+       &setup_read_typed},
   };
   return table;
 }
