@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -15,6 +16,7 @@
 #include "core/error.h"
 #include "derivation/formula.h"
 #include "grading/change_operators.h"
+#include "grading/parts.h"
 #include "kinds/derive.h"
 
 namespace raygrade {
@@ -82,14 +84,44 @@ void flatten(const nlohmann::json& j, const nlohmann::json::json_pointer& at,
 
 // A student's number as typed: a JSON number, or a formula of numbers ("9 - sqrt(3)"); with
 // `symbols`, a formula in them too ("px^2 + py^2 - r^2"), at `values`.
-std::optional<double> student_number(const nlohmann::json& j, const SymbolTable* symbols,
-                                     const std::vector<double>& values) {
-  if (j.is_number()) return j.get<double>();
+std::optional<StudentNumber> student_number(const nlohmann::json& j, const SymbolTable* symbols,
+                                            const std::vector<double>& values) {
+  if (j.is_number()) {
+    double v = j.get<double>();
+    // The shortest text that reads back as v is what the student typed (as the grader reads it).
+    std::string text = j.is_number_float() ? fmt::format("{}", v) : j.dump();
+    return StudentNumber{v, typed_digits(text), text};
+  }
   if (!j.is_string()) return std::nullopt;
   FormulaParse p = parse_formula(j.get<std::string>(), symbols);
   if (!p.ok || (p.formula.uses_symbols && !symbols)) return std::nullopt;
   double v = p.formula.evaluate(values);
-  return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+  if (!std::isfinite(v)) return std::nullopt;
+  return StudentNumber{v, p.digits, j.get<std::string>()};
+}
+
+// One value of an answer: a number, or the three numbers of a vector, compared as the grader
+// compares it (grading/parts.h, value_rule).
+struct Group {
+  std::vector<std::size_t> leaves;  // one, or a vector's three
+  ValueRule rule;
+  int hit = -1;  // the hit it belongs to, in a set of hits (any order)
+};
+
+// The object keys on the way to a value ("hits", "point"): array indices left out.
+std::vector<std::string> object_keys(const nlohmann::json::json_pointer& path) {
+  std::vector<std::string> keys;
+  std::string s = path.to_string();
+  std::size_t at = 1;
+  while (at <= s.size() && !s.empty()) {
+    std::size_t end = s.find('/', at);
+    std::string token = s.substr(at, end == std::string::npos ? std::string::npos : end - at);
+    bool index = !token.empty() && token.find_first_not_of("0123456789") == std::string::npos;
+    if (!index) keys.push_back(token);
+    if (end == std::string::npos) break;
+    at = end + 1;
+  }
+  return keys;
 }
 
 // A derivation's step values by (part, name, occurrence).
@@ -252,20 +284,21 @@ struct ChangeSearch::Impl {
   std::size_t work = 0;         // their cost: steps and formula nodes
   bool truncated = false;       // some changes were left out for the budget
 
-  double allowed_at(std::size_t i, const std::vector<double>& numbers) const {
-    const discover_internal::Leaf& l = leaves[i];
-    const Tolerance& t = tolerance.for_field(l.field);
-    double scale = std::abs(numbers[i]);
-    if (l.component >= 0) {
-      double s2 = 0;
-      for (std::size_t k = 0; k < leaves.size(); ++k) {
-        if (leaves[k].component >= 0 && leaves[k].path.parent_pointer() == l.path.parent_pointer())
-          s2 += numbers[k] * numbers[k];
-      }
-      scale = std::sqrt(s2);
-    }
-    return allowed_error(numbers[i], scale, t);
-  }
+  std::vector<discover_internal::Group> groups;  // the answer's values
+  std::vector<std::vector<std::size_t>> hits;    // per hit of a set of hits: its groups
+
+  void make_groups(std::string_view kind);
+  // For each group, the group of `numbers` it is compared with: itself, but in a set of hits
+  // the hit of the same rank by t (hits are right in any order); `own` gives the order of the
+  // hits the group belongs to.
+  std::vector<std::size_t> counterparts(const std::vector<double>& own,
+                                        const std::vector<double>& numbers) const;
+  // The group `g` of the student's values against group `c` of `numbers`, as the grader
+  // compares them.
+  PartVerdict compare(std::size_t g, const std::vector<StudentNumber>& student, std::size_t c,
+                      const std::vector<double>& numbers) const;
+  // The chance that random numbers in place of the student's fit group `c` of `numbers`.
+  double chance(std::size_t c, const std::vector<double>& numbers) const;
 
   // `mapped`: the leaves as the change's method computes them. Returns the prediction the
   // change joined, or −1 when it moved no number or left some number undefined.
@@ -480,6 +513,7 @@ ChangeSearch::ChangeSearch(const Problem& problem) : impl_(std::make_unique<Impl
   }
   flatten(answer, nlohmann::json::json_pointer(), "", m.leaves);
   for (const auto& l : m.leaves) m.reference.push_back(l.number);
+  m.make_groups(problem.kind);
   std::vector<bool> computed(m.leaves.size(), false);
   for (std::size_t k = 0; k < methods.size(); ++k) {
     const std::string& method = methods[k];
@@ -500,59 +534,187 @@ ChangeSearch::ChangeSearch(const Problem& problem) : impl_(std::make_unique<Impl
   for (std::size_t i = 0; i < m.leaves.size(); ++i) m.computed.push_back(computed[i]);
 }
 
+void ChangeSearch::Impl::make_groups(std::string_view kind) {
+  using discover_internal::Group;
+  std::map<int, std::vector<std::size_t>> by_hit;
+  for (std::size_t i = 0; i < leaves.size(); ++i) {
+    const auto& l = leaves[i];
+    if (!l.value.is_number() || l.component > 0) continue;  // a vector's from its first
+    Group g;
+    g.leaves = {i};
+    if (l.component == 0) g.leaves = {i, i + 1, i + 2};
+    g.rule = value_rule(kind, discover_internal::object_keys(l.path), l.component == 0);
+    std::string at = l.path.to_string();
+    if (at.rfind("/hits/", 0) == 0) g.hit = std::atoi(at.c_str() + 6);
+    if (g.hit >= 0) by_hit[g.hit].push_back(groups.size());
+    groups.push_back(std::move(g));
+  }
+  // A set of hits is put in order by t: every hit the same values, one of them its t.
+  for (const auto& [h, gs] : by_hit) hits.push_back(gs);
+  for (const auto& gs : hits) {
+    bool same = gs.size() == hits.front().size() && !gs.empty() &&
+                leaves[groups[gs.front()].leaves.front()].field == "t";
+    if (!same) hits.clear();
+    if (!same) break;
+  }
+}
+
+std::vector<std::size_t> ChangeSearch::Impl::counterparts(
+    const std::vector<double>& own, const std::vector<double>& numbers) const {
+  std::vector<std::size_t> out(groups.size());
+  std::iota(out.begin(), out.end(), std::size_t{0});
+  if (hits.size() < 2) return out;
+  auto t_of = [&](const std::vector<double>& v, std::size_t h) {
+    return v[groups[hits[h].front()].leaves.front()];
+  };
+  for (std::size_t h = 0; h < hits.size(); ++h) {
+    if (std::isnan(t_of(own, h)) || std::isnan(t_of(numbers, h))) return out;
+  }
+  auto order = [&](const std::vector<double>& v) {
+    std::vector<std::size_t> o(hits.size());
+    std::iota(o.begin(), o.end(), std::size_t{0});
+    std::stable_sort(o.begin(), o.end(),
+                     [&](std::size_t a, std::size_t b) { return t_of(v, a) < t_of(v, b); });
+    return o;
+  };
+  std::vector<std::size_t> mine = order(own), theirs = order(numbers);
+  for (std::size_t k = 0; k < hits.size(); ++k) {
+    for (std::size_t q = 0; q < hits[mine[k]].size(); ++q)
+      out[hits[mine[k]][q]] = hits[theirs[k]][q];
+  }
+  return out;
+}
+
+PartVerdict ChangeSearch::Impl::compare(std::size_t g, const std::vector<StudentNumber>& student,
+                                        std::size_t c, const std::vector<double>& numbers) const {
+  const auto& mine = groups[g].leaves;
+  const auto& theirs = groups[c].leaves;
+  const Tolerance& t = tolerance.for_field(groups[g].rule.tolerance_field);
+  if (mine.size() == 1)
+    return compare_part(groups[g].rule.compare, student[mine[0]], numbers[theirs[0]], t);
+  StudentNumber s[3] = {student[mine[0]], student[mine[1]], student[mine[2]]};
+  Vec3d r{numbers[theirs[0]], numbers[theirs[1]], numbers[theirs[2]]};
+  return compare_part(groups[g].rule.compare, s, r, t);
+}
+
+double ChangeSearch::Impl::chance(std::size_t c, const std::vector<double>& numbers) const {
+  const auto& g = groups[c];
+  const Tolerance& t = tolerance.for_field(g.rule.tolerance_field);
+  // Random numbers are drawn uniformly within max(1, |reference|) of each reference number: the
+  // chance to fall in a window is the share of that range the window covers.
+  auto share = [&](std::size_t k, double centre, double half) {
+    double r = reference[g.leaves[k]], range = std::max(1.0, std::abs(r));
+    double covered = std::min(centre + half, r + range) - std::max(centre - half, r - range);
+    return std::clamp(covered / (2 * range), 0.0, 1.0);
+  };
+  if (g.leaves.size() == 1) {
+    double x = numbers[g.leaves[0]];
+    return share(0, x, allowed_error(x, x, t));
+  }
+  Vec3d v{numbers[g.leaves[0]], numbers[g.leaves[1]], numbers[g.leaves[2]]};
+  Vec3d ref{reference[g.leaves[0]], reference[g.leaves[1]], reference[g.leaves[2]]};
+  double scale = length(v);
+  bool any = g.rule.compare == Comparison::kDirection;
+  bool unit = any || g.rule.compare == Comparison::kUnitDirection;
+  std::array<double, 3> shares{};
+  for (int k = 0; k < 3; ++k) {
+    auto i = static_cast<std::size_t>(k);
+    if (!unit) {
+      shares[i] = share(i, v[k], allowed_error(v[k], scale, t));
+      continue;
+    }
+    // A direction is compared as a unit vector: in the student's numbers its window is the
+    // unit window at the length a random answer has (the reference's; 1 for a unit vector).
+    double at = any ? length(ref) : 1;
+    double u = scale > 0 ? v[k] / scale : 0;
+    shares[i] = share(i, u * at, allowed_error(u, 1, t) * at);
+  }
+  std::sort(shares.begin(), shares.end());
+  // Any positive multiple: the length is free, so the narrowest window is not counted.
+  if (any) return shares[1] * shares[2];
+  return shares[0] * shares[1] * shares[2];
+}
+
 Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
   using namespace discover_internal;  // NOLINT: this file's own functions
   const Impl& m = *impl_;
   Discovery d;
+  std::vector<StudentNumber> student(m.leaves.size());
   std::vector<double> given(m.leaves.size(), NAN);
-  bool wrong = false, compared = false;
   for (std::size_t i = 0; i < m.leaves.size(); ++i) {
     const Leaf& l = m.leaves[i];
-    if (!answer.contains(l.path)) continue;
-    const nlohmann::json& s = answer.at(l.path);
+    nlohmann::json::json_pointer at = l.path;
+    // A unit direction stands for the direction, as the grader reads it.
+    if (!answer.contains(at) && object_keys(at).back() == "direction") {
+      std::string text = at.to_string();
+      text.replace(text.rfind("direction"), 9, "unit_direction");
+      at = nlohmann::json::json_pointer(text);
+    }
+    if (!answer.contains(at)) continue;
+    const nlohmann::json& s = answer.at(at);
     if (!l.value.is_number()) {
       if (s != l.value) return d;  // a word or a verdict no change of a number explains
       continue;
     }
-    std::optional<double> x =
+    std::optional<StudentNumber> x =
         student_number(s, m.symbol_values.empty() ? nullptr : &m.symbols, m.symbol_values);
     if (!x) return d;
-    given[i] = *x;
-    compared = true;
-    if (std::abs(*x - m.reference[i]) > m.allowed_at(i, m.reference)) {
-      if (!m.computed[i]) return d;  // a number no step computes
-      wrong = true;
-    }
+    student[i] = *x;
+    given[i] = x->value;
   }
-  if (!compared || !wrong) return d;
-  // The changed answers that fit, told apart by the numbers the student gave alone; and the
-  // chance that a random answer of those numbers fits some changed answer.
+  // The values given whole, and whether one is wrong by the grader's comparison.
+  std::vector<std::size_t> complete;
+  for (std::size_t g = 0; g < m.groups.size(); ++g) {
+    bool all = true;
+    for (std::size_t i : m.groups[g].leaves) all = all && !std::isnan(given[i]);
+    if (all) complete.push_back(g);
+  }
+  bool wrong = false;
+  std::vector<std::size_t> right_at = m.counterparts(given, m.reference);
+  for (std::size_t g : complete) {
+    if (m.compare(g, student, right_at[g], m.reference).verdict.match != Match::kWrong) continue;
+    for (std::size_t i : m.groups[right_at[g]].leaves)
+      if (!m.computed[i]) return d;  // a number no step computes
+    wrong = true;
+  }
+  if (complete.empty() || !wrong) return d;
+  // The changed answers that fit, told apart by the values the student gave alone (a direction
+  // by its unit vector); and the chance that a random answer of those numbers fits some
+  // changed answer.
+  auto on_given = [&](const std::vector<double>& numbers, const std::vector<std::size_t>& at) {
+    std::vector<double> out;
+    for (std::size_t g : complete) {
+      const Group& c = m.groups[at[g]];
+      double scale = 1;
+      if (c.leaves.size() == 3 && (c.rule.compare == Comparison::kDirection))
+        scale = length(Vec3d{numbers[c.leaves[0]], numbers[c.leaves[1]], numbers[c.leaves[2]]});
+      for (std::size_t i : c.leaves) out.push_back(numbers[i] / scale);
+    }
+    return out;
+  };
   std::vector<const Prediction*> fits;
   std::size_t distinct = 0;
-  std::vector<std::vector<double>> seen(1);  // the reference's numbers fit no wrong answer
-  for (std::size_t i = 0; i < given.size(); ++i)
-    if (!std::isnan(given[i])) seen[0].push_back(m.reference[i]);
+  std::vector<std::vector<double>> seen{on_given(m.reference, right_at)};
   for (const auto& p : m.predictions) {
-    std::vector<double> on_given;
+    std::vector<std::size_t> at = m.counterparts(given, p.numbers);
     double chance = 1;
     bool fit = true;
-    for (std::size_t i = 0; i < given.size(); ++i) {
-      if (std::isnan(given[i])) continue;
-      double allowed = m.allowed_at(i, p.numbers);
-      on_given.push_back(p.numbers[i]);
-      chance *= std::min(1.0, allowed / std::max(1.0, std::abs(m.reference[i])));
-      fit = fit && std::abs(given[i] - p.numbers[i]) <= allowed;
+    for (std::size_t g : complete) {
+      chance *= m.chance(at[g], p.numbers);
+      // Right, not right to the digits given: an integer typed is not every number within ½.
+      fit = fit && m.compare(g, student, at[g], p.numbers).verdict.match == Match::kRight;
     }
+    std::vector<double> mine = on_given(p.numbers, at);
     bool repeated = std::any_of(seen.begin(), seen.end(), [&](const std::vector<double>& q) {
       for (std::size_t k = 0; k < q.size(); ++k)
-        if (!same_number(q[k], on_given[k])) return false;
+        if (!same_number(q[k], mine[k])) return false;
       return true;
     });
     if (repeated) {
       if (fit) fits.push_back(&p);
       continue;
     }
-    seen.push_back(on_given);
+    seen.push_back(std::move(mine));
     d.random_fit += chance;
     if (fit) {
       fits.push_back(&p);
