@@ -286,6 +286,7 @@ struct ChangeSearch::Impl {
 
   std::vector<discover_internal::Group> groups;  // the answer's values
   std::vector<std::vector<std::size_t>> hits;    // per hit of a set of hits: its groups
+  std::size_t hit_t = 0;                         // which of a hit's groups is its t
 
   void make_groups(std::string_view kind);
   // For each group, the group of `numbers` it is compared with: itself, but in a set of hits
@@ -551,11 +552,17 @@ void ChangeSearch::Impl::make_groups(std::string_view kind) {
   }
   // A set of hits is put in order by t: every hit the same values, one of them its t.
   for (const auto& [h, gs] : by_hit) hits.push_back(gs);
+  auto t_at = [&](const std::vector<std::size_t>& gs) {
+    for (std::size_t q = 0; q < gs.size(); ++q)
+      if (leaves[groups[gs[q]].leaves.front()].field == "t") return q;
+    return gs.size();
+  };
+  if (!hits.empty()) hit_t = t_at(hits.front());
   for (const auto& gs : hits) {
-    bool same = gs.size() == hits.front().size() && !gs.empty() &&
-                leaves[groups[gs.front()].leaves.front()].field == "t";
-    if (!same) hits.clear();
-    if (!same) break;
+    if (gs.size() != hits.front().size() || t_at(gs) != hit_t || hit_t == gs.size()) {
+      hits.clear();
+      break;
+    }
   }
 }
 
@@ -565,7 +572,7 @@ std::vector<std::size_t> ChangeSearch::Impl::counterparts(
   std::iota(out.begin(), out.end(), std::size_t{0});
   if (hits.size() < 2) return out;
   auto t_of = [&](const std::vector<double>& v, std::size_t h) {
-    return v[groups[hits[h].front()].leaves.front()];
+    return v[groups[hits[h][hit_t]].leaves.front()];
   };
   for (std::size_t h = 0; h < hits.size(); ++h) {
     if (std::isnan(t_of(own, h)) || std::isnan(t_of(numbers, h))) return out;
