@@ -679,7 +679,8 @@ Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
   bool wrong = false;
   std::vector<std::size_t> right_at = m.counterparts(given, m.reference);
   for (std::size_t g : complete) {
-    if (m.compare(g, student, right_at[g], m.reference).verdict.match != Match::kWrong) continue;
+    // Right to the digits typed but not by the tolerance is not right: a change may explain it.
+    if (m.compare(g, student, right_at[g], m.reference).verdict.match == Match::kRight) continue;
     for (std::size_t i : m.groups[right_at[g]].leaves)
       if (!m.computed[i]) return d;  // a number no step computes
     wrong = true;
