@@ -134,3 +134,25 @@ TEST(ChangeOperators, AClampRemoved) {
 
 }  // namespace change_operators_test
 }  // namespace raygrade
+
+namespace raygrade {
+namespace change_operators_test {
+
+// The camera of the bank's camera-ray variant (eye at the origin looking along (0, 0, −1), up
+// (0, 1, 0), f = 2, 8 × 6 pixels) through the centre of pixel (6, 1): x_diff = 6 + 0.5 − 4 = 2.5,
+// y_diff = 1 + 0.5 − 3 = −1.5, d × u = (1, 0, 0), d_r = f·d + x_diff·(d × u) + y_diff·u =
+// (2.5, −1.5, −2). With the half pixel left out of x_diff (the constant 0.5 for 0), x_diff = 2
+// and d_r = (2, −1.5, −2), given as twice that: any positive multiple is the same direction.
+TEST(ChangeOperators, ACameraRayGivenAsAMultiple) {
+  Planted p{"camera",
+            R"({"id": "camera", "kind": "camera-ray", "camera": {"eye": [0, 0, 0],
+                "direction": [0, 0, -1], "up": [0, 1, 0], "focal_length": 2,
+                "resolution": [8, 6]}, "pixel": [6, 1], "convention": "center"})",
+            {{"ray", {{"origin", {0, 0, 0}}, {"direction", {4, -3, -4}}}}},
+            "x_diff",
+            "constant"};
+  EXPECT_EQ(explained_by(p), "");
+}
+
+}  // namespace change_operators_test
+}  // namespace raygrade
