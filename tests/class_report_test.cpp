@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
+#include <ctime>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -584,7 +586,17 @@ TEST(ChangeSearch, WorkOnABigPolygonGrowsLinearly) {
   std::map<int, std::size_t> work;
   for (int n : {50, 100, 200}) {
     Problem p = big_polygon(n);
+    auto start = std::chrono::steady_clock::now();
+    std::clock_t cpu = std::clock();
     ChangeSearch search(p);
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    double cpu_seconds = double(std::clock() - cpu) / CLOCKS_PER_SEC;
+    std::cout << n << " vertices: " << seconds << " s (" << cpu_seconds << " s of processor), work "
+              << search.work() << ", " << search.derivations() << " derivations\n";
+    if (n == 200) {
+      EXPECT_LT(cpu_seconds, 1.0);
+    }
     work[n] = search.work();
     Discovery d = search.explain(
         json{{"hits", {{{"t", 0.4}, {"point", {0.1, 0.2, 4.2}}, {"normal", {0, 0, 1}}}}}});

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -13,6 +15,8 @@
 
 #include "core/error.h"
 #include "derivation/formula.h"
+#include "grading/change_operators.h"
+#include "grading/parts.h"
 #include "kinds/derive.h"
 
 namespace raygrade {
@@ -80,14 +84,44 @@ void flatten(const nlohmann::json& j, const nlohmann::json::json_pointer& at,
 
 // A student's number as typed: a JSON number, or a formula of numbers ("9 - sqrt(3)"); with
 // `symbols`, a formula in them too ("px^2 + py^2 - r^2"), at `values`.
-std::optional<double> student_number(const nlohmann::json& j, const SymbolTable* symbols,
-                                     const std::vector<double>& values) {
-  if (j.is_number()) return j.get<double>();
+std::optional<StudentNumber> student_number(const nlohmann::json& j, const SymbolTable* symbols,
+                                            const std::vector<double>& values) {
+  if (j.is_number()) {
+    double v = j.get<double>();
+    // The shortest text that reads back as v is what the student typed (as the grader reads it).
+    std::string text = j.is_number_float() ? fmt::format("{}", v) : j.dump();
+    return StudentNumber{v, typed_digits(text), text};
+  }
   if (!j.is_string()) return std::nullopt;
   FormulaParse p = parse_formula(j.get<std::string>(), symbols);
   if (!p.ok || (p.formula.uses_symbols && !symbols)) return std::nullopt;
   double v = p.formula.evaluate(values);
-  return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+  if (!std::isfinite(v)) return std::nullopt;
+  return StudentNumber{v, p.digits, j.get<std::string>()};
+}
+
+// One value of an answer: a number, or the three numbers of a vector, compared as the grader
+// compares it (grading/parts.h, value_rule).
+struct Group {
+  std::vector<std::size_t> leaves;  // one, or a vector's three
+  ValueRule rule;
+  int hit = -1;  // the hit it belongs to, in a set of hits (any order)
+};
+
+// The object keys on the way to a value ("hits", "point"): array indices left out.
+std::vector<std::string> object_keys(const nlohmann::json::json_pointer& path) {
+  std::vector<std::string> keys;
+  std::string s = path.to_string();
+  std::size_t at = 1;
+  while (at <= s.size() && !s.empty()) {
+    std::size_t end = s.find('/', at);
+    std::string token = s.substr(at, end == std::string::npos ? std::string::npos : end - at);
+    bool index = !token.empty() && token.find_first_not_of("0123456789") == std::string::npos;
+    if (!index) keys.push_back(token);
+    if (end == std::string::npos) break;
+    at = end + 1;
+  }
+  return keys;
 }
 
 // A derivation's step values by (part, name, occurrence).
@@ -156,152 +190,6 @@ void map_leaves(std::vector<Leaf>& leaves, const nlohmann::json& answer,
   }
 }
 
-// An alternative formula: what is evaluated, and how it is shown.
-struct Alt {
-  E eval;
-  E shown;
-  std::string kind;
-};
-
-E with_arg(const E& e, std::size_t i, const E& a) {
-  auto n = std::make_shared<ExprNode>(e.node());
-  n->args[i] = a;
-  return E(std::shared_ptr<const ExprNode>(std::move(n)));
-}
-
-E with_op(const E& e, Op op) {
-  auto n = std::make_shared<ExprNode>(e.node());
-  n->op = op;
-  return E(std::shared_ptr<const ExprNode>(std::move(n)));
-}
-
-// What the changes of a formula may use: every step's value, and the given vectors.
-struct Context {
-  Env values;
-  std::vector<std::pair<std::string, E>> given_vectors;  // name, symbol
-};
-
-// Which changes: the changes of an operator, a constant or a step's sign (tier 0), the changes
-// that put another quantity for a vector (tier 1: one per given vector, so as many as the
-// problem has vertices), or both, in the order of the formula.
-enum class Tier { kOperators, kOperands, kAll };
-
-bool in_tier(Tier want, Tier t) { return want == Tier::kAll || want == t; }
-
-void symbol_alternatives(const E& e, const Context& c, Tier tier, std::vector<Alt>& out) {
-  const ExprNode& n = e.node();
-  auto it = c.values.find(n.name);
-  if (it == c.values.end() || !it->second.is_vector()) return;
-  Vec3d v = it->second.vector;
-  constexpr double kUnit = 1e-9;  // a vector of length 1 needs no normalising
-  if (std::abs(length(v) - 1) > kUnit && in_tier(tier, Tier::kOperators)) {
-    E unit = e / norm(e);
-    out.push_back({unit, unit, "normalise"});
-  }
-  if (!in_tier(tier, Tier::kOperands)) return;
-  for (const auto& [name, symbol] : c.given_vectors) {
-    if (name != n.name) out.push_back({symbol, symbol, "vector-swap"});
-  }
-  static const char* const kAxes[] = {"x", "y", "z"};
-  std::string shown = to_text(e);
-  for (int k = 0; k < 3; ++k) {
-    if (v[k] == 0) continue;
-    E parts[3], names[3];
-    for (int i = 0; i < 3; ++i) {
-      Vec3d axis{i == 0 ? 1.0 : 0.0, i == 1 ? 1.0 : 0.0, i == 2 ? 1.0 : 0.0};
-      parts[i] = i == k ? E(0) : dot(e, vec(axis));
-      names[i] = i == k ? E(0) : sym("", shown + "_" + kAxes[i]);
-    }
-    out.push_back(
-        {tuple(parts[0], parts[1], parts[2]), tuple(names[0], names[1], names[2]), "component"});
-  }
-}
-
-// The changes at the node `e` itself.
-void local_alternatives(const E& e, const Context& c, Tier tier, std::vector<Alt>& out) {
-  const ExprNode& n = e.node();
-  if (n.op == Op::kSymbol) return symbol_alternatives(e, c, tier, out);
-  if (!in_tier(tier, Tier::kOperators)) return;
-  auto both = [&](const E& x, const char* kind) { out.push_back({x, x, kind}); };
-  const auto& a = n.args;
-  switch (n.op) {
-    case Op::kAdd:
-      both(a[0] - a[1], "sign");
-      both(a[0], "drop-term");
-      both(a[1], "drop-term");
-      break;
-    case Op::kSub:
-      both(a[0] + a[1], "sign");
-      both(a[1] - a[0], "swap");
-      both(a[0], "drop-term");
-      both(-a[1], "drop-term");
-      break;
-    case Op::kNeg: both(a[0], "sign"); break;
-    case Op::kMul:
-      if (a[0].node().op == Op::kNumber) both(a[1], "drop-term");
-      if (a[1].node().op == Op::kNumber) both(a[0], "drop-term");
-      break;
-    case Op::kDiv:
-      both(a[1] / a[0], "swap");
-      both(a[0], a[1].node().op == Op::kNorm ? "normalise" : "drop-term");
-      break;
-    case Op::kCross: both(cross(a[1], a[0]), "swap"); break;
-    case Op::kSquare: both(a[0], "square"); break;
-    case Op::kSqrt: both(a[0], "sqrt"); break;
-    case Op::kMin: both(with_op(e, Op::kMax), "other-root"); break;
-    case Op::kMax: both(with_op(e, Op::kMin), "other-root"); break;
-    case Op::kArccosDegrees: both(e * (std::numbers::pi / 180), "degrees"); break;
-    default: break;
-  }
-}
-
-// How many changes of `tier` the formula `e` has, anywhere in its tree, without making them:
-// a formula of a thousand terms has that many, and each change made copies its path.
-std::size_t count_alternatives(const E& e, const Context& c, Tier tier) {
-  if (e.empty()) return 0;
-  const ExprNode& n = e.node();
-  if (n.op == Op::kSymbol) {
-    auto it = c.values.find(n.name);
-    if (it == c.values.end() || !it->second.is_vector()) return 0;
-    Vec3d v = it->second.vector;
-    std::size_t k = 0;
-    if (std::abs(length(v) - 1) > 1e-9 && in_tier(tier, Tier::kOperators)) ++k;
-    if (in_tier(tier, Tier::kOperands)) {
-      for (const auto& g : c.given_vectors) k += g.first != n.name;
-      for (int i = 0; i < 3; ++i) k += v[i] != 0;
-    }
-    return k;
-  }
-  std::vector<Alt> local;
-  if (in_tier(tier, Tier::kOperators)) local_alternatives(e, c, Tier::kOperators, local);
-  std::size_t k = local.size();
-  for (const E& a : n.args) k += count_alternatives(a, c, tier);
-  return k;
-}
-
-// Calls `sink` with each single change of `tier` of the formula `e`, anywhere in its tree (the
-// node's own first, then each operand's), until `left` of them have been made. Returns false
-// when it stopped for `left`.
-bool each_alternative(const E& e, const Context& c, Tier tier, std::size_t& left,
-                      const std::function<void(Alt&&)>& sink) {
-  if (e.empty()) return true;
-  std::vector<Alt> local;
-  local_alternatives(e, c, tier, local);
-  for (auto& a : local) {
-    if (left == 0) return false;
-    --left;
-    sink(std::move(a));
-  }
-  if (e.node().op == Op::kSymbol) return true;  // its args are how it is shown
-  for (std::size_t i = 0; i < e.node().args.size(); ++i) {
-    bool more = each_alternative(e.node().args[i], c, tier, left, [&](Alt&& x) {
-      sink({with_arg(e, i, x.eval), with_arg(e, i, x.shown), std::move(x.kind)});
-    });
-    if (!more) return false;
-  }
-  return true;
-}
-
 // The nodes of a formula: what evaluating it costs.
 std::size_t formula_size(const E& e) {
   if (e.empty()) return 0;
@@ -338,34 +226,47 @@ struct Prediction {
   std::vector<StepChange> changes;
 };
 
+// A step to change, with the scope it is worked in: its changes' counts by tier, and how many of
+// each the budget pays for. `once`: the only step of its name and formula in the derivation,
+// so its changed value alone decides the changed derivation (changes giving one value are
+// worked once).
+struct StepPlan {
+  const Step* step = nullptr;
+  bool once = false;
+  std::size_t ops = 0, operands = 0, take_ops = 0, take_operands = 0;
+};
+
 // How many of each step's changes the budget pays for: all of them when they fit; else each
 // step an equal share of its operators' changes (the whole step negated among them) first, then
-// what is left in equal shares of its operands'.
-struct Shares {
-  std::vector<std::size_t> ops, operands, take_ops, take_operands;
-  bool truncated = false;
-};
-Shares shares(const std::vector<const Step*>& steps, const Context& c, std::size_t budget) {
-  Shares r;
-  r.ops.resize(steps.size());
-  r.operands.resize(steps.size());
+// what is left in equal shares of its operands'. Returns whether the budget cut some.
+bool share(std::vector<StepPlan>& plans, std::size_t budget) {
   std::size_t total = 0;
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    r.ops[i] = 1 + count_alternatives(steps[i]->formula, c, Tier::kOperators);  // 1: negated
-    r.operands[i] = count_alternatives(steps[i]->formula, c, Tier::kOperands);
-    total += r.ops[i] + r.operands[i];
+  std::vector<std::size_t> ops, operands;
+  for (auto& p : plans) {
+    p.take_ops = p.ops;
+    p.take_operands = p.operands;
+    total += p.ops + p.operands;
+    ops.push_back(p.ops);
+    operands.push_back(p.operands);
   }
-  r.take_ops = r.ops;
-  r.take_operands = r.operands;
-  if (total <= budget) return r;
-  r.truncated = true;
-  std::size_t level = water_level(r.ops, budget), used = 0;
-  for (std::size_t i = 0; i < steps.size(); ++i) used += r.take_ops[i] = std::min(r.ops[i], level);
-  bool all_ops = used == std::accumulate(r.ops.begin(), r.ops.end(), std::size_t{0});
-  std::size_t level1 = all_ops ? water_level(r.operands, budget - used) : 0;
-  for (std::size_t i = 0; i < steps.size(); ++i)
-    r.take_operands[i] = std::min(r.operands[i], level1);
-  return r;
+  if (total <= budget) return false;
+  std::size_t level = water_level(ops, budget), used = 0;
+  for (auto& p : plans) used += p.take_ops = std::min(p.ops, level);
+  bool all_ops = used == std::accumulate(ops.begin(), ops.end(), std::size_t{0});
+  std::size_t level1 = all_ops ? water_level(operands, budget - used) : 0;
+  for (auto& p : plans) p.take_operands = std::min(p.operands, level1);
+  return true;
+}
+
+// A value as a key of the changes already worked: equal values give equal derivations.
+std::array<double, 3> value_key(const Value& v) {
+  auto canon = [](double x) { return std::isnan(x) ? NAN : x == 0 ? 0.0 : x; };
+  if (v.is_vector()) return {canon(v.vector.x), canon(v.vector.y), canon(v.vector.z)};
+  return {canon(v.scalar), v.is_bool() ? double(v.truth) : 0.0, v.is_scalar() ? 1.0 : 2.0};
+}
+
+bool same_value(const Value& a, const Value& b) {
+  return a.kind == b.kind && value_key(a) == value_key(b);
 }
 
 }  // namespace discover_internal
@@ -383,47 +284,193 @@ struct ChangeSearch::Impl {
   std::size_t work = 0;         // their cost: steps and formula nodes
   bool truncated = false;       // some changes were left out for the budget
 
-  double allowed_at(std::size_t i, const std::vector<double>& numbers) const {
-    const discover_internal::Leaf& l = leaves[i];
-    const Tolerance& t = tolerance.for_field(l.field);
-    double scale = std::abs(numbers[i]);
-    if (l.component >= 0) {
-      double s2 = 0;
-      for (std::size_t k = 0; k < leaves.size(); ++k) {
-        if (leaves[k].component >= 0 && leaves[k].path.parent_pointer() == l.path.parent_pointer())
-          s2 += numbers[k] * numbers[k];
-      }
-      scale = std::sqrt(s2);
-    }
-    return allowed_error(numbers[i], scale, t);
-  }
+  std::vector<discover_internal::Group> groups;  // the answer's values
+  std::vector<std::vector<std::size_t>> hits;    // per hit of a set of hits: its groups
+  std::size_t hit_t = 0;                         // which of a hit's groups is its t
 
-  // `mapped`: the leaves as the change's method computes them.
-  void add(const StepChange& change, const std::vector<discover_internal::Leaf>& mapped,
-           std::vector<double> numbers) {
+  void make_groups(std::string_view kind);
+  // For each group, the group of `numbers` it is compared with: itself, but in a set of hits
+  // the hit of the same rank by t (hits are right in any order); `own` gives the order of the
+  // hits the group belongs to.
+  std::vector<std::size_t> counterparts(const std::vector<double>& own,
+                                        const std::vector<double>& numbers) const;
+  // The group `g` of the student's values against group `c` of `numbers`, as the grader
+  // compares them.
+  PartVerdict compare(std::size_t g, const std::vector<StudentNumber>& student, std::size_t c,
+                      const std::vector<double>& numbers) const;
+  // The chance that random numbers in place of the student's fit group `c` of `numbers`.
+  double chance(std::size_t c, const std::vector<double>& numbers) const;
+
+  // `mapped`: the leaves as the change's method computes them. Returns the prediction the
+  // change joined, or −1 when it moved no number or left some number undefined.
+  std::ptrdiff_t add(const StepChange& change, const std::vector<discover_internal::Leaf>& mapped,
+                     std::vector<double> numbers) {
     using discover_internal::same_number;
     bool moved = false;
     for (std::size_t i = 0; i < numbers.size(); ++i) {
-      if (!mapped[i].step.empty() && !std::isfinite(numbers[i])) return;
+      if (!mapped[i].step.empty() && !std::isfinite(numbers[i])) return -1;
       if (std::isfinite(numbers[i]) && !same_number(numbers[i], reference[i])) moved = true;
     }
-    if (!moved) return;
+    if (!moved) return -1;
     ++changes;
     for (std::size_t i = 0; i < numbers.size(); ++i)
       if (std::isnan(numbers[i])) numbers[i] = reference[i];
-    for (auto& p : predictions) {
+    for (std::size_t k = 0; k < predictions.size(); ++k) {
+      auto& p = predictions[k];
       bool same = true;
       for (std::size_t i = 0; i < numbers.size() && same; ++i)
         same = (std::isnan(numbers[i]) && std::isnan(p.numbers[i])) ||
                same_number(numbers[i], p.numbers[i]);
       if (same) {
         p.changes.push_back(change);
-        return;
+        return static_cast<std::ptrdiff_t>(k);
       }
     }
     predictions.push_back(discover_internal::Prediction{std::move(numbers), {change}});
+    return static_cast<std::ptrdiff_t>(predictions.size() - 1);
   }
+
+  void search_method(const Task& task, const std::string& method,
+                     const std::vector<SolutionPart>& right,
+                     const std::vector<discover_internal::Leaf>& mapped, std::size_t methods);
+  void search_step(const Task& task, const std::string& method,
+                   const discover_internal::StepPlan& plan, const ChangeScope& scope,
+                   const std::vector<discover_internal::Leaf>& mapped, std::size_t cost);
 };
+
+// Works the changes of one step that the budget pays for. A change is evaluated in the step's
+// scope first: one that leaves the step's value as it was moves nothing, and one that gives a
+// value another change gave joins that change's numbers, without working the derivation again.
+void ChangeSearch::Impl::search_step(const Task& task, const std::string& method,
+                                     const discover_internal::StepPlan& plan,
+                                     const ChangeScope& scope,
+                                     const std::vector<discover_internal::Leaf>& mapped,
+                                     std::size_t cost) {
+  using namespace discover_internal;  // NOLINT: this file's own functions
+  const Step* s = plan.step;
+  std::string before = to_text(s->formula);
+  std::map<std::array<double, 3>, std::ptrdiff_t> worked;  // a changed value → its prediction
+  auto try_change = [&](FormulaChange&& alt) {
+    auto change = [&] {
+      return StepChange{method, s->name, std::string(alt.kind), before, to_text(alt.shown)};
+    };
+    std::array<double, 3> key{};
+    if (plan.once) {
+      work += formula_size(alt.eval);
+      Value v;
+      try {
+        v = evaluate(alt.eval, *scope.values);
+      } catch (const EvaluationFault&) {
+        return;  // the change makes no sense here (a vector where a number was)
+      }
+      if (same_value(v, s->value)) return;  // no number moves
+      if ((v.is_scalar() && !std::isfinite(v.scalar)) ||
+          (v.is_vector() && !std::isfinite(length(v.vector))))
+        return;  // no number defined
+      key = value_key(v);
+      if (auto it = worked.find(key); it != worked.end()) {
+        if (it->second >= 0) {
+          predictions[static_cast<std::size_t>(it->second)].changes.push_back(change());
+          ++changes;
+        }
+        return;
+      }
+    }
+    ++derivations;
+    work += cost;
+    Overrides o;
+    o.formula = [&](std::string_view step, const E& f) -> std::optional<E> {
+      if (step != s->name || to_text(f) != before) return std::nullopt;
+      return alt.eval;
+    };
+    std::vector<double> numbers;
+    std::ptrdiff_t joined = -1;
+    try {
+      StepValues values = step_values(task.derive(method, &o));
+      for (const auto& l : mapped) numbers.push_back(l.step.empty() ? NAN : leaf_value(values, l));
+      joined = add(change(), mapped, std::move(numbers));
+    } catch (const Error&) {
+      // the change leaves the method's way (no root where one was)
+    } catch (const EvaluationFault&) {
+      // the change makes no sense here (a vector where a number was)
+    }
+    if (plan.once) worked[key] = joined;
+  };
+  if (plan.take_ops == plan.ops && plan.take_operands == plan.operands) {
+    std::size_t left = plan.ops + plan.operands;
+    each_change(s->formula, scope, ChangeTier::kAll, left, try_change);
+    each_step_change(s->formula, scope, ChangeTier::kAll, left, try_change);
+    return;
+  }
+  // The whole step negated first.
+  std::size_t left = plan.take_ops;
+  each_step_change(s->formula, scope, ChangeTier::kOperators, left, try_change);
+  each_change(s->formula, scope, ChangeTier::kOperators, left, try_change);
+  left = plan.take_operands;
+  each_step_change(s->formula, scope, ChangeTier::kOperands, left, try_change);
+  each_change(s->formula, scope, ChangeTier::kOperands, left, try_change);
+}
+
+// Every change of every step of one method's derivation that the budget pays for, each step in
+// its scope: the givens and steps of its part before it.
+void ChangeSearch::Impl::search_method(const Task& task, const std::string& method,
+                                       const std::vector<SolutionPart>& right,
+                                       const std::vector<discover_internal::Leaf>& mapped,
+                                       std::size_t methods) {
+  using namespace discover_internal;  // NOLINT: this file's own functions
+  // The steps to change, once each; a step of one name and formula met twice is changed
+  // everywhere at once, and worked whole for every change.
+  std::map<std::pair<std::string, std::string>, int> uses;
+  std::size_t cost = 0;     // what a changed derivation costs: its steps and formulas' nodes
+  std::size_t largest = 0;  // the largest formula, which each change is evaluated on first
+  for (const auto& part : right) {
+    for (const auto& s : part.derivation.steps) {
+      cost += 1 + formula_size(s.formula);
+      largest = std::max(largest, formula_size(s.formula));
+      if (!s.given && !s.formula.empty()) ++uses[{s.name, to_text(s.formula)}];
+    }
+  }
+  // Each step's changes counted in its scope, then shared out by the budget.
+  std::vector<StepPlan> plans;
+  auto walk = [&](const std::function<void(const Step&, const ChangeScope&)>& visit) {
+    std::set<std::pair<std::string, std::string>> seen;
+    for (const auto& part : right) {
+      Env env;
+      std::map<std::string, E, std::less<>> shown;
+      ChangeScope scope{&env, &shown};
+      for (const auto& s : part.derivation.steps) {
+        if (!s.given && !s.formula.empty() && seen.insert({s.name, to_text(s.formula)}).second)
+          visit(s, scope);
+        env[s.name] = s.value;
+        shown[s.name] = s.symbol;
+      }
+    }
+  };
+  walk([&](const Step& s, const ChangeScope& scope) {
+    StepPlan p;
+    p.step = &s;
+    p.once = uses[{s.name, to_text(s.formula)}] == 1;
+    p.ops = count_changes(s.formula, scope, ChangeTier::kOperators) +
+            count_step_changes(s.formula, scope, ChangeTier::kOperators);
+    p.operands = count_changes(s.formula, scope, ChangeTier::kOperands) +
+                 count_step_changes(s.formula, scope, ChangeTier::kOperands);
+    plans.push_back(p);
+  });
+  // A formula of n terms has a few changes per node and, for each quantity in it, one per
+  // quantity of its type in scope: n² for a polygon's Newell sum. Beyond the budget, each step
+  // gets an equal share of its operators' changes first (every change of a short step), then
+  // of its operands'.
+  // A change costs its changed formula's evaluation (its nodes and the few it puts in) and,
+  // when its value is new, a derivation.
+  constexpr std::size_t kInserted = 4;
+  std::size_t budget =
+      std::max(kMinSearchedChanges, kSearchWork / methods / (cost + largest + kInserted));
+  truncated = share(plans, budget) || truncated;
+  std::size_t i = 0;
+  walk([&](const Step&, const ChangeScope& scope) {
+    search_step(task, method, plans[i++], scope, mapped, cost);
+  });
+}
 
 ChangeSearch::~ChangeSearch() = default;
 std::size_t ChangeSearch::changes() const { return impl_->changes; }
@@ -467,6 +514,7 @@ ChangeSearch::ChangeSearch(const Problem& problem) : impl_(std::make_unique<Impl
   }
   flatten(answer, nlohmann::json::json_pointer(), "", m.leaves);
   for (const auto& l : m.leaves) m.reference.push_back(l.number);
+  m.make_groups(problem.kind);
   std::vector<bool> computed(m.leaves.size(), false);
   for (std::size_t k = 0; k < methods.size(); ++k) {
     const std::string& method = methods[k];
@@ -481,129 +529,200 @@ ChangeSearch::ChangeSearch(const Problem& problem) : impl_(std::make_unique<Impl
     map_leaves(mapped, answer, right, derive != nullptr);
     for (std::size_t i = 0; i < mapped.size(); ++i)
       computed[i] = computed[i] || !mapped[i].step.empty();
-    // The steps and formulas to change, once each.
-    Context c;
-    std::vector<const Step*> steps;
-    std::set<std::pair<std::string, std::string>> seen;
-    for (const auto& part : right) {
-      for (const auto& s : part.derivation.steps) {
-        c.values[s.name] = s.value;
-        if (s.given && s.value.is_vector()) c.given_vectors.emplace_back(s.name, s.symbol);
-        if (!s.given && !s.formula.empty() && seen.insert({s.name, to_text(s.formula)}).second)
-          steps.push_back(&s);
-      }
-    }
-    // What a changed derivation costs (its steps and their formulas' nodes), and how many
-    // changes this method's share of the budget pays for. A formula of n terms has n changes of
-    // its operators and, for each vector in it, one per given vector: n² for a polygon's
-    // Newell sum. Beyond the budget, each step gets an equal share of its operators' changes
-    // first (every change of a short step), then of its operands'.
-    std::size_t cost = 0;
-    for (const auto& part : right) {
-      for (const auto& s : part.derivation.steps) cost += 1 + formula_size(s.formula);
-    }
-    std::size_t budget = std::max(kMinSearchedChanges, kSearchWork / methods.size() / cost);
-    const auto& [ops, operands, take_ops, take_operands, cut] = shares(steps, c, budget);
-    m.truncated = m.truncated || cut;
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-      const Step* s = steps[i];
-      std::string before = to_text(s->formula);
-      auto try_change = [&](Alt&& alt) {
-        ++m.derivations;
-        m.work += cost;
-        Overrides o;
-        o.formula = [&](std::string_view step, const E& f) -> std::optional<E> {
-          if (step != s->name || to_text(f) != before) return std::nullopt;
-          return alt.eval;
-        };
-        std::vector<double> numbers;
-        try {
-          StepValues values = step_values(task.derive(method, &o));
-          for (const auto& l : mapped)
-            numbers.push_back(l.step.empty() ? NAN : leaf_value(values, l));
-        } catch (const Error&) {
-          return;  // the change leaves the method's way (no root where one was)
-        } catch (const EvaluationFault&) {
-          return;  // the change makes no sense here (a vector where a number was)
-        }
-        m.add(StepChange{method, s->name, alt.kind, before, to_text(alt.shown)}, mapped,
-              std::move(numbers));
-      };
-      Alt negated{-s->formula, -s->formula, "sign"};
-      if (take_ops[i] == ops[i] && take_operands[i] == operands[i]) {
-        // Every change of the step, in the formula's order, the whole step negated last.
-        std::size_t left = ops[i] + operands[i];
-        each_alternative(s->formula, c, Tier::kAll, left, try_change);
-        try_change(std::move(negated));
-        continue;
-      }
-      std::size_t left = take_ops[i];
-      if (left > 0) {
-        --left;
-        try_change(std::move(negated));
-      }
-      each_alternative(s->formula, c, Tier::kOperators, left, try_change);
-      left = take_operands[i];
-      each_alternative(s->formula, c, Tier::kOperands, left, try_change);
-    }
+    m.search_method(task, method, right, mapped, methods.size());
   }
   // A number some method computes can be explained; one that none computes cannot.
   for (std::size_t i = 0; i < m.leaves.size(); ++i) m.computed.push_back(computed[i]);
+}
+
+void ChangeSearch::Impl::make_groups(std::string_view kind) {
+  using discover_internal::Group;
+  std::map<int, std::vector<std::size_t>> by_hit;
+  for (std::size_t i = 0; i < leaves.size(); ++i) {
+    const auto& l = leaves[i];
+    if (!l.value.is_number() || l.component > 0) continue;  // a vector's from its first
+    Group g;
+    g.leaves = {i};
+    if (l.component == 0) g.leaves = {i, i + 1, i + 2};
+    g.rule = value_rule(kind, discover_internal::object_keys(l.path), l.component == 0);
+    std::string at = l.path.to_string();
+    if (at.rfind("/hits/", 0) == 0) g.hit = std::atoi(at.c_str() + 6);
+    if (g.hit >= 0) by_hit[g.hit].push_back(groups.size());
+    groups.push_back(std::move(g));
+  }
+  // A set of hits is put in order by t: every hit the same values, one of them its t.
+  for (const auto& [h, gs] : by_hit) hits.push_back(gs);
+  auto t_at = [&](const std::vector<std::size_t>& gs) {
+    for (std::size_t q = 0; q < gs.size(); ++q)
+      if (leaves[groups[gs[q]].leaves.front()].field == "t") return q;
+    return gs.size();
+  };
+  if (!hits.empty()) hit_t = t_at(hits.front());
+  for (const auto& gs : hits) {
+    if (gs.size() != hits.front().size() || t_at(gs) != hit_t || hit_t == gs.size()) {
+      hits.clear();
+      break;
+    }
+  }
+}
+
+std::vector<std::size_t> ChangeSearch::Impl::counterparts(
+    const std::vector<double>& own, const std::vector<double>& numbers) const {
+  std::vector<std::size_t> out(groups.size());
+  std::iota(out.begin(), out.end(), std::size_t{0});
+  if (hits.size() < 2) return out;
+  auto t_of = [&](const std::vector<double>& v, std::size_t h) {
+    return v[groups[hits[h][hit_t]].leaves.front()];
+  };
+  for (std::size_t h = 0; h < hits.size(); ++h) {
+    if (std::isnan(t_of(own, h)) || std::isnan(t_of(numbers, h))) return out;
+  }
+  auto order = [&](const std::vector<double>& v) {
+    std::vector<std::size_t> o(hits.size());
+    std::iota(o.begin(), o.end(), std::size_t{0});
+    std::stable_sort(o.begin(), o.end(),
+                     [&](std::size_t a, std::size_t b) { return t_of(v, a) < t_of(v, b); });
+    return o;
+  };
+  std::vector<std::size_t> mine = order(own), theirs = order(numbers);
+  for (std::size_t k = 0; k < hits.size(); ++k) {
+    for (std::size_t q = 0; q < hits[mine[k]].size(); ++q)
+      out[hits[mine[k]][q]] = hits[theirs[k]][q];
+  }
+  return out;
+}
+
+PartVerdict ChangeSearch::Impl::compare(std::size_t g, const std::vector<StudentNumber>& student,
+                                        std::size_t c, const std::vector<double>& numbers) const {
+  const auto& mine = groups[g].leaves;
+  const auto& theirs = groups[c].leaves;
+  const Tolerance& t = tolerance.for_field(groups[g].rule.tolerance_field);
+  if (mine.size() == 1)
+    return compare_part(groups[g].rule.compare, student[mine[0]], numbers[theirs[0]], t);
+  StudentNumber s[3] = {student[mine[0]], student[mine[1]], student[mine[2]]};
+  Vec3d r{numbers[theirs[0]], numbers[theirs[1]], numbers[theirs[2]]};
+  return compare_part(groups[g].rule.compare, s, r, t);
+}
+
+double ChangeSearch::Impl::chance(std::size_t c, const std::vector<double>& numbers) const {
+  const auto& g = groups[c];
+  const Tolerance& t = tolerance.for_field(g.rule.tolerance_field);
+  // Random numbers are drawn uniformly within max(1, |reference|) of each reference number: the
+  // chance to fall in a window is the share of that range the window covers.
+  auto share = [&](std::size_t k, double centre, double half) {
+    double r = reference[g.leaves[k]], range = std::max(1.0, std::abs(r));
+    double covered = std::min(centre + half, r + range) - std::max(centre - half, r - range);
+    return std::clamp(covered / (2 * range), 0.0, 1.0);
+  };
+  if (g.leaves.size() == 1) {
+    double x = numbers[g.leaves[0]];
+    return share(0, x, allowed_error(x, x, t));
+  }
+  Vec3d v{numbers[g.leaves[0]], numbers[g.leaves[1]], numbers[g.leaves[2]]};
+  Vec3d ref{reference[g.leaves[0]], reference[g.leaves[1]], reference[g.leaves[2]]};
+  double scale = length(v);
+  bool any = g.rule.compare == Comparison::kDirection;
+  bool unit = any || g.rule.compare == Comparison::kUnitDirection;
+  std::array<double, 3> shares{};
+  for (int k = 0; k < 3; ++k) {
+    auto i = static_cast<std::size_t>(k);
+    if (!unit) {
+      shares[i] = share(i, v[k], allowed_error(v[k], scale, t));
+      continue;
+    }
+    // A direction is compared as a unit vector: in the student's numbers its window is the
+    // unit window at the length a random answer has (the reference's; 1 for a unit vector).
+    double at = any ? length(ref) : 1;
+    double u = scale > 0 ? v[k] / scale : 0;
+    shares[i] = share(i, u * at, allowed_error(u, 1, t) * at);
+  }
+  std::sort(shares.begin(), shares.end());
+  // Any positive multiple: the length is free, so the narrowest window is not counted.
+  if (any) return shares[1] * shares[2];
+  return shares[0] * shares[1] * shares[2];
 }
 
 Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
   using namespace discover_internal;  // NOLINT: this file's own functions
   const Impl& m = *impl_;
   Discovery d;
+  std::vector<StudentNumber> student(m.leaves.size());
   std::vector<double> given(m.leaves.size(), NAN);
-  bool wrong = false, compared = false;
   for (std::size_t i = 0; i < m.leaves.size(); ++i) {
     const Leaf& l = m.leaves[i];
-    if (!answer.contains(l.path)) continue;
-    const nlohmann::json& s = answer.at(l.path);
+    nlohmann::json::json_pointer at = l.path;
+    // A unit direction stands for the direction, as the grader reads it.
+    if (!answer.contains(at) && object_keys(at).back() == "direction") {
+      std::string text = at.to_string();
+      text.replace(text.rfind("direction"), 9, "unit_direction");
+      at = nlohmann::json::json_pointer(text);
+    }
+    if (!answer.contains(at)) continue;
+    const nlohmann::json& s = answer.at(at);
     if (!l.value.is_number()) {
       if (s != l.value) return d;  // a word or a verdict no change of a number explains
       continue;
     }
-    std::optional<double> x =
+    std::optional<StudentNumber> x =
         student_number(s, m.symbol_values.empty() ? nullptr : &m.symbols, m.symbol_values);
     if (!x) return d;
-    given[i] = *x;
-    compared = true;
-    if (std::abs(*x - m.reference[i]) > m.allowed_at(i, m.reference)) {
-      if (!m.computed[i]) return d;  // a number no step computes
-      wrong = true;
-    }
+    student[i] = *x;
+    given[i] = x->value;
   }
-  if (!compared || !wrong) return d;
-  // The changed answers that fit, told apart by the numbers the student gave alone; and the
-  // chance that a random answer of those numbers fits some changed answer.
+  // The values given whole, and whether one is wrong by the grader's comparison.
+  std::vector<std::size_t> complete;
+  for (std::size_t g = 0; g < m.groups.size(); ++g) {
+    bool all = true;
+    for (std::size_t i : m.groups[g].leaves) all = all && !std::isnan(given[i]);
+    if (all) complete.push_back(g);
+  }
+  bool wrong = false;
+  std::vector<std::size_t> right_at = m.counterparts(given, m.reference);
+  for (std::size_t g : complete) {
+    // Right to the digits typed but not by the tolerance is not right: a change may explain it.
+    if (m.compare(g, student, right_at[g], m.reference).verdict.match == Match::kRight) continue;
+    for (std::size_t i : m.groups[right_at[g]].leaves)
+      if (!m.computed[i]) return d;  // a number no step computes
+    wrong = true;
+  }
+  if (complete.empty() || !wrong) return d;
+  // The changed answers that fit, told apart by the values the student gave alone (a direction
+  // by its unit vector); and the chance that a random answer of those numbers fits some
+  // changed answer.
+  auto on_given = [&](const std::vector<double>& numbers, const std::vector<std::size_t>& at) {
+    std::vector<double> out;
+    for (std::size_t g : complete) {
+      const Group& c = m.groups[at[g]];
+      double scale = 1;
+      if (c.leaves.size() == 3 && (c.rule.compare == Comparison::kDirection))
+        scale = length(Vec3d{numbers[c.leaves[0]], numbers[c.leaves[1]], numbers[c.leaves[2]]});
+      for (std::size_t i : c.leaves) out.push_back(numbers[i] / scale);
+    }
+    return out;
+  };
   std::vector<const Prediction*> fits;
   std::size_t distinct = 0;
-  std::vector<std::vector<double>> seen(1);  // the reference's numbers fit no wrong answer
-  for (std::size_t i = 0; i < given.size(); ++i)
-    if (!std::isnan(given[i])) seen[0].push_back(m.reference[i]);
+  std::vector<std::vector<double>> seen{on_given(m.reference, right_at)};
   for (const auto& p : m.predictions) {
-    std::vector<double> on_given;
+    std::vector<std::size_t> at = m.counterparts(given, p.numbers);
     double chance = 1;
     bool fit = true;
-    for (std::size_t i = 0; i < given.size(); ++i) {
-      if (std::isnan(given[i])) continue;
-      double allowed = m.allowed_at(i, p.numbers);
-      on_given.push_back(p.numbers[i]);
-      chance *= std::min(1.0, allowed / std::max(1.0, std::abs(m.reference[i])));
-      fit = fit && std::abs(given[i] - p.numbers[i]) <= allowed;
+    for (std::size_t g : complete) {
+      chance *= m.chance(at[g], p.numbers);
+      // Right, not right to the digits given: an integer typed is not every number within ½.
+      fit = fit && m.compare(g, student, at[g], p.numbers).verdict.match == Match::kRight;
     }
+    std::vector<double> mine = on_given(p.numbers, at);
     bool repeated = std::any_of(seen.begin(), seen.end(), [&](const std::vector<double>& q) {
       for (std::size_t k = 0; k < q.size(); ++k)
-        if (!same_number(q[k], on_given[k])) return false;
+        if (!same_number(q[k], mine[k])) return false;
       return true;
     });
     if (repeated) {
       if (fit) fits.push_back(&p);
       continue;
     }
-    seen.push_back(on_given);
+    seen.push_back(std::move(mine));
     d.random_fit += chance;
     if (fit) {
       fits.push_back(&p);
@@ -620,6 +739,11 @@ Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
     d.verdict = Discovery::Verdict::kExplained;
     for (const Prediction* p : fits)
       d.changes.insert(d.changes.end(), p->changes.begin(), p->changes.end());
+    // The simplest change first: of the operators' ranks, the lowest.
+    std::stable_sort(d.changes.begin(), d.changes.end(),
+                     [](const StepChange& a, const StepChange& b) {
+                       return change_rank(a.kind) < change_rank(b.kind);
+                     });
   }
   return d;
 }

@@ -67,7 +67,8 @@ class CameraGrader final : public KindGrader {
       fb.push_back("direction: " + direction->fault);
     } else if (length(direction->value()) == 0) {
       fb.emplace_back("A direction cannot be the zero vector.");
-    } else if (NumberVerdict dv = compare_direction(direction->c, direction_, tol).verdict;
+    } else if (NumberVerdict dv =
+                   compare_part(Comparison::kDirection, direction->c, direction_, tol).verdict;
                dv.match != Match::kWrong) {
       credit = dv.match == Match::kRight ? 1 : tol.precision_credit;
       if (dv.match == Match::kInsufficientPrecision) fb.push_back("direction: " + dv.message);

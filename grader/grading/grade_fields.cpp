@@ -32,7 +32,7 @@ Vec3d vec_of(const nlohmann::json& j) {
 }
 
 // Relative difference of two lengths above which a right direction's length is remarked on.
-constexpr double kLengthNoteTolerance = 1e-3;
+constexpr double kLengthNoteTolerance = kUnitAnswerLength;
 
 class FieldsGrader final : public KindGrader {
  public:
@@ -133,7 +133,7 @@ class FieldsGrader final : public KindGrader {
     if (s.json().is_null()) return {0, {fmt::format("{} is {}, not none.", name, shown(ref))}};
     auto n = s.number();
     if (!n.value) return {0, {fmt::format("{}: {}", name, n.fault)}};
-    NumberVerdict v = compare_number(*n.value, ref, ref, tol);
+    NumberVerdict v = compare_part(Comparison::kScalar, *n.value, ref, tol).verdict;
     if (v.match == Match::kRight) return {1, {}};
     if (v.match == Match::kInsufficientPrecision) {
       return {tol.precision_credit, {fmt::format("{}: {}", name, v.message)}};
@@ -199,7 +199,7 @@ class FieldsGrader final : public KindGrader {
     AnswerReader::Vector v = s.vector();
     if (!v.ok) return {0, {fmt::format("{}: {}", name, v.fault)}};
     const Tolerance& tol = context_.tolerance.for_field(name);
-    NumberVerdict verdict = compare_vector(v.c, ref, tol);
+    NumberVerdict verdict = compare_part(Comparison::kPoint, v.c, ref, tol).verdict;
     if (verdict.match == Match::kRight) return {1, {}};
     if (verdict.match == Match::kInsufficientPrecision) {
       return {tol.precision_credit, {fmt::format("{}: {}", name, verdict.message)}};
@@ -218,10 +218,16 @@ class FieldsGrader final : public KindGrader {
     }
     AnswerReader::Vector v = s.vector();
     if (!v.ok) return {0, {fmt::format("{}: {}", name, v.fault)}};
-    DirectionVerdict d = compare_direction(v.c, ref, context_.tolerance.for_field(name));
+    PartVerdict d = compare_part(spec.compare, v.c, ref, context_.tolerance.for_field(name));
     if (d.length == 0)
       return {0, {fmt::format("{}: a direction cannot be the zero vector.", name)}};
     Vec3d unit = normalized(ref);
+    if (d.not_unit) {
+      return {0,
+              {fmt::format("Your {} points the right way but has length {}; a unit vector "
+                           "has length 1: {}.",
+                           name, number(d.length), format_vector(unit, numbers_))}};
+    }
     if (d.verdict.match == Match::kWrong) {
       if (std::optional<Verdict> m = normal_mistake(name, v, ref, d.opposite)) return *m;
       if (d.opposite) {
@@ -240,15 +246,7 @@ class FieldsGrader final : public KindGrader {
       out.credit = context_.tolerance.for_field(name).precision_credit;
       out.feedback.push_back(fmt::format("{}: {}", name, d.verdict.message));
     }
-    if (spec.compare == Comparison::kUnitDirection) {
-      if (std::abs(d.length - 1) > kLengthNoteTolerance) {
-        return {0,
-                {fmt::format("Your {} points the right way but has length {}; a unit vector "
-                             "has length 1: {}.",
-                             name, number(d.length), format_vector(unit, numbers_))}};
-      }
-      return out;
-    }
+    if (spec.compare == Comparison::kUnitDirection) return out;
     double ref_length = length(ref);
     bool usual = std::abs(d.length - 1) <= kLengthNoteTolerance ||
                  std::abs(d.length - ref_length) <= kLengthNoteTolerance * ref_length;

@@ -636,7 +636,8 @@ HitsGrader::TMatch HitsGrader::match_t(const std::vector<StudentHit>& hits) cons
       NumberVerdict best_verdict;
       for (std::size_t j = 0; j < n_ref; ++j) {
         if (m.used[j] || nearer_another_t(value, j)) continue;
-        NumberVerdict v = compare_number(*hits[i].t, ref_[j].t, ref_[j].t, tt, widen_[j]);
+        NumberVerdict v =
+            compare_part(Comparison::kHits, *hits[i].t, ref_[j].t, tt, widen_[j]).verdict;
         if (v.match != wanted) continue;
         if (best >= 0 &&
             std::abs(value - ref_[j].t) >= std::abs(value - ref_[static_cast<std::size_t>(best)].t))
@@ -793,7 +794,8 @@ void HitsGrader::grade_point(const StudentHit& h, int jj, const std::vector<int>
     tally.feedback.push_back("point: " + h.point->fault);
   } else if (jj >= 0) {
     auto j = static_cast<std::size_t>(jj);
-    NumberVerdict v = compare_vector(h.point->c, ref_[j].point, tp, widen_point(j));
+    NumberVerdict v =
+        compare_part(Comparison::kPoint, h.point->c, ref_[j].point, tp, widen_point(j)).verdict;
     if (v.match != Match::kWrong && nearer_another_point(h.point->value(), j)) {
       v.match = Match::kWrong;
     }
@@ -859,7 +861,7 @@ void HitsGrader::grade_normal(const StudentHit& h, int jj, Tally& tally, GradeRe
   // Graded as a direction: any positive multiple of the unit normal is right, and its
   // digits are judged as any number's.
   Vec3d r = ref_[j].normal;
-  DirectionVerdict dv = compare_direction(h.normal->c, r, tn);
+  PartVerdict dv = compare_part(Comparison::kDirection, h.normal->c, r, tn);
   double len = dv.length;
   if (len == 0) {
     tally.feedback.emplace_back("A normal cannot be the zero vector.");

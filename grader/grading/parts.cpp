@@ -26,4 +26,32 @@ std::vector<std::pair<std::string, double>> default_points(std::string_view kind
   return out;
 }
 
+ValueRule value_rule(std::string_view kind, const std::vector<std::string>& keys, bool vector) {
+  ValueRule r;
+  r.compare = vector ? Comparison::kPoint : Comparison::kScalar;
+  if (keys.empty()) return r;
+  std::string field = keys.back() == "unit_direction" ? "direction" : keys.back();
+  auto numbers = [&](Comparison c) {
+    if (!vector) return Comparison::kScalar;  // a number of any part, and each t of a set of hits
+    if (c == Comparison::kDirection || c == Comparison::kUnitDirection) return c;
+    return Comparison::kPoint;
+  };
+  if (const PartSpec* p = find_part(kind, field)) {
+    r.compare = numbers(p->compare);
+    r.tolerance_field = field;
+    return r;
+  }
+  r.tolerance_field = keys.front();
+  const PartSpec* whole = find_part(kind, keys.front());
+  if (keys.front() == "unit_direction" && !whole) {
+    // A camera's unit direction stands for its ray's direction.
+    for (const auto& p : kind_parts(kind)) {
+      if (p.compare == Comparison::kDirection) whole = &p;
+    }
+    if (whole) r.tolerance_field = whole->name;
+  }
+  if (whole && field != "origin" && field != "point") r.compare = numbers(whole->compare);
+  return r;
+}
+
 }  // namespace raygrade

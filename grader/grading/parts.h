@@ -23,4 +23,16 @@ const PartSpec* find_part(std::string_view kind, std::string_view name);
 std::vector<std::pair<std::string, double>> default_points(std::string_view kind,
                                                            const std::vector<std::string>& names);
 
+// How the graders compare one value of a kind's answer: the rule of its part, and the field
+// whose tolerance applies. `keys` are the object keys on the way to the value ({"hits",
+// "point"}, {"ray", "direction"}, {"reflected_direction"}); `vector`: three numbers. A value
+// named as a part ("point", "normal" of a hit) takes that part's rule and tolerance; one inside
+// a part (a camera's ray: "origin" a point, "direction" by the part's rule) takes its part's
+// tolerance; a unit direction given for a direction is compared as the direction.
+struct ValueRule {
+  Comparison compare = Comparison::kScalar;
+  std::string tolerance_field;
+};
+ValueRule value_rule(std::string_view kind, const std::vector<std::string>& keys, bool vector);
+
 }  // namespace raygrade

@@ -146,6 +146,45 @@ DirectionVerdict compare_direction(const StudentNumber (&s)[3], const Vec3d& ref
   return out;
 }
 
+PartVerdict compare_part(Comparison /*how*/, const StudentNumber& s, double reference,
+                         const Tolerance& t, double widen) {
+  // A number of any part: relative to its own size.
+  PartVerdict out;
+  out.verdict = compare_number(s, reference, reference, t, widen);
+  return out;
+}
+
+PartVerdict compare_part(Comparison how, const StudentNumber (&s)[3], const Vec3d& reference,
+                         const Tolerance& t, double widen) {
+  PartVerdict out;
+  if (how != Comparison::kDirection && how != Comparison::kUnitDirection) {
+    out.verdict = compare_vector(s, reference, t, widen);
+    return out;
+  }
+  // A unit direction whose reference is not of length 1 (a changed derivation's, in the mistake
+  // search; the grader's is always a unit vector) is that vector's numbers, or its unit vector.
+  if (how == Comparison::kUnitDirection && std::abs(length(reference) - 1) > kUnitAnswerLength) {
+    out.verdict = compare_vector(s, reference, t, widen);
+    if (out.verdict.match != Match::kWrong) return out;
+    PartVerdict unit = compare_part(how, s, normalized(reference), t, widen);
+    return unit;
+  }
+  DirectionVerdict d = compare_direction(s, reference, t);
+  out.verdict = d.verdict;
+  out.length = d.length;
+  out.opposite = d.opposite;
+  if (d.length == 0) {
+    out.verdict.match = Match::kWrong;
+    return out;
+  }
+  if (how == Comparison::kUnitDirection && d.verdict.match != Match::kWrong &&
+      std::abs(d.length - 1) > kUnitAnswerLength) {
+    out.verdict.match = Match::kWrong;
+    out.not_unit = true;
+  }
+  return out;
+}
+
 std::string describe(const Tolerance& t) {
   switch (t.mode) {
     case ToleranceMode::kDecimals: return plural(t.digits, "decimal place", "decimal places");

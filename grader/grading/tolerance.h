@@ -74,6 +74,26 @@ struct DirectionVerdict {
 DirectionVerdict compare_direction(const StudentNumber (&s)[3], const Vec3d& reference,
                                    const Tolerance& t);
 
+// How far a unit vector's length may be from 1 (relative) and still be a unit vector.
+constexpr double kUnitAnswerLength = 1e-3;
+
+// One value of an answer against its reference by the rule of its part (Comparison): a number
+// by the tolerance (kScalar, and each t of kHits); three numbers each by the tolerance relative
+// to the vector's length (kPoint, kWeights); any positive multiple of the reference
+// (kDirection); the reference scaled to length 1 (kUnitDirection). The graders and the mistake
+// search (grading/discover.h) both compare through it, so that a change explains an answer
+// exactly when the grader would count the change's numbers right.
+struct PartVerdict {
+  NumberVerdict verdict;
+  double length = 0;      // a direction's length (0: the zero vector, never right)
+  bool opposite = false;  // a direction that is a positive multiple of −reference
+  bool not_unit = false;  // kUnitDirection: the right way, but not of length 1 (kWrong)
+};
+PartVerdict compare_part(Comparison how, const StudentNumber& s, double reference,
+                         const Tolerance& t, double widen = 0);
+PartVerdict compare_part(Comparison how, const StudentNumber (&s)[3], const Vec3d& reference,
+                         const Tolerance& t, double widen = 0);
+
 // "relative 0.1%", "3 significant figures", "2 decimal places".
 std::string describe(const Tolerance& t);
 
