@@ -29,6 +29,17 @@ Value coefficient_value(double v, const std::optional<Vec3d>& rgb) {
   return rgb ? Value(*rgb) : Value(v);
 }
 
+// The sum of a term over the lights as a step (with one light, its term is the sum).
+std::optional<E> sum_of_terms(Deriver& d, const std::vector<E>& terms, const std::string& name,
+                              const std::string& shown, const std::string& why) {
+  if (terms.empty()) return std::nullopt;
+  if (terms.size() == 1) return terms.front();
+  E total = terms.front();
+  for (std::size_t k = 1; k < terms.size(); ++k) total = total + terms[k];
+  d.step(name, shown, total, why);
+  return d.sym(name);
+}
+
 }  // namespace
 
 std::unique_ptr<Task> ShadeTask::read(const Cursor& problem) {
@@ -308,21 +319,11 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
            "s·k_s·I_p·max(0, R·V)^n: no highlight when R·V ≤ 0");
     highlight.push_back(d.sym("specular_" + i));
   }
-  // The sums of a term over the lights (with one light, its term is the sum).
-  auto sum = [&](const std::vector<E>& terms, const std::string& name, const std::string& shown,
-                 const std::string& why) -> std::optional<E> {
-    if (terms.empty()) return std::nullopt;
-    if (terms.size() == 1) return terms.front();
-    E total = terms.front();
-    for (std::size_t k = 1; k < terms.size(); ++k) total = total + terms[k];
-    d.step(name, shown, total, why);
-    return d.sym(name);
-  };
   std::vector<E> parts = {d.sym("ambient")};
-  if (auto x = sum(diffuse, "diffuse", "I_d", "the diffuse terms of every light")) {
+  if (auto x = sum_of_terms(d, diffuse, "diffuse", "I_d", "the diffuse terms of every light")) {
     parts.push_back(*x);
   }
-  if (auto x = sum(highlight, "specular", "I_s", "the specular terms of every light")) {
+  if (auto x = sum_of_terms(d, highlight, "specular", "I_s", "the specular terms of every light")) {
     parts.push_back(*x);
   }
   E total = parts.front();
