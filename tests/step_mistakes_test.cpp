@@ -101,6 +101,11 @@ constexpr const char* kViewRay = R"({"id": "v", "kind": "view-ray", "convention"
              "bounds": [-2, 2, -1.5, 1.5], "resolution": [8, 6], "pixel_origin": "bottom-left"},
   "pixel": [2, 1]})";
 
+constexpr const char* kViewRayCorner = R"({"id": "v", "kind": "view-ray", "convention": "corner",
+  "camera": {"eye": [0, 0, 0], "direction": [0, 0, -1], "up": [0, 1, 0], "focal_length": 1,
+             "bounds": [-2, 2, -1.5, 1.5], "resolution": [8, 6], "pixel_origin": "bottom-left"},
+  "pixel": [2, 1]})";
+
 // d = (0.6, −0.8, 0) into n2 = 1.5 from n1 = 1 through the floor n = (0, 1, 0): cos θi = 0.8.
 // With η = n2/n1 = 1.5 instead of 1/1.5: k = 1 − 2.25·(1 − 0.64) = 0.19 and
 // t = 1.5·d + (1.5·0.8 − √0.19)·n = (0.9, −√0.19, 0) = (0.9, −0.435889894354, 0).
@@ -142,6 +147,10 @@ const std::map<Pair, Plant>& plants() {
         R"({"hits": [{"t": 5, "normal": [0, 0, -16]}]})"}},
       {{"cross-order", "camera-ray"}, {kCamera, R"({"ray": {"direction": [2, 2, -4]}})"}},
       {{"cross-order", "view-ray"}, {kViewRay, R"({"direction": [0.75, -0.75, -1]})"}},
+      // The same pixel at its corner: u_s = −2 + 2·0.5 = −1, v_s = −1.5 + 1·0.5 = −1, so
+      // D = (−1, −1, −1); a corner problem answered at the centre gives (−0.75, −0.75, −1).
+      {{"pixel-corner", "view-ray"}, {kViewRay, R"({"direction": [-1, -1, -1]})"}},
+      {{"pixel-centre", "view-ray"}, {kViewRayCorner, R"({"direction": [-0.75, -0.75, -1]})"}},
       {{"n1-n2-swapped", "refract"}, {kRefract, R"({"direction": [0.9, -0.435889894354, 0]})"}},
       {{"n1-n2-swapped", "fresnel"}, {kFresnel, R"({"reflectance": 1})"}},
       // A ray from the centre of a glass ball leaves it once: from 1.5 into the air's 1.

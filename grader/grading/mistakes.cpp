@@ -233,6 +233,41 @@ std::optional<E> lit_point_ambient_only(std::string_view /*step*/, const E& f) {
   return shadow_factors_as(f, 0);
 }
 
+// An image-plane coordinate's pixel count (the column i or the row j) in the steps u_s and
+// v_s, as `change` turns it: without the half pixel (i + 0.5 → i), or with it (i → i + 0.5).
+std::optional<E> pixel_count(std::string_view step, const E& f, bool centre_to_corner) {
+  if (step != "u_s" && step != "v_s") return std::nullopt;
+  bool changed = false;
+  E g = rewrite_tree(f, [&](const E& x) -> std::optional<E> {
+    const ExprNode& n = x.node();
+    bool count = is_symbol(x, "i") || is_symbol(x, "j");
+    bool half = n.op == Op::kAdd && (is_symbol(n.args[0], "i") || is_symbol(n.args[0], "j")) &&
+                n.args[1].node().op == Op::kNumber && n.args[1].node().number == 0.5;
+    if (centre_to_corner && half) {
+      changed = true;
+      return n.args[0];
+    }
+    if (!centre_to_corner && count) {
+      changed = true;
+      return x + 0.5;
+    }
+    return std::nullopt;
+  });
+  if (!changed) return std::nullopt;
+  return g;
+}
+
+// A centre problem's pixel taken at its corner, and a corner problem's at its centre.
+std::optional<E> pixel_corner(std::string_view step, const E& f) {
+  return pixel_count(step, f, true);
+}
+std::optional<E> pixel_centre(std::string_view step, const E& f) {
+  // Only where the formula has no half pixel already.
+  std::optional<E> corner = pixel_count(step, f, true);
+  if (corner) return std::nullopt;
+  return pixel_count(step, f, false);
+}
+
 // Two derivations differ in some step's value.
 bool same_value(const Value& a, const Value& b) {
   constexpr double kSame = 1e-12;  // far below any tolerance; above rounding noise
@@ -267,6 +302,8 @@ const std::vector<FormulaMistake>& formula_mistakes() {
         {"n1-n2-swapped", &n1_n2_swapped},
         {"diffuse-in-shadow", &diffuse_in_shadow},
         {"lit-point-ambient-only", &lit_point_ambient_only},
+        {"pixel-corner", &pixel_corner},
+        {"pixel-centre", &pixel_centre},
     };
     for_each_primitive_mistake([&](const PrimitiveMistake& own) {
       m.push_back({own.info.id, own.rewrite});
