@@ -85,7 +85,8 @@ TEST(ShadeKind, TermByTerm) {
 }
 
 // The same point with k_s = 0: light A still gives its diffuse 0.4, and the specular term,
-// whose coefficient is 0, is neither listed nor worked (no R_1, no specular_1).
+// whose coefficient is 0, is neither listed nor worked (no specular_1). R_1 is worked: the
+// answer gives each light's R·V.
 TEST(ShadeKind, NoSpecularTermWhenItsCoefficientIsZero) {
   std::string text = testing::kTwoLightShade;
   text.replace(text.find("\"specular\": 0.3"), 15, "\"specular\": 0  ");
@@ -95,7 +96,8 @@ TEST(ShadeKind, NoSpecularTermWhenItsCoefficientIsZero) {
   EXPECT_NEAR(a["intensity"].get<double>(), 0.6, 1e-15);
   auto parts = p.task->derive("");
   EXPECT_EQ(parts[0].derivation.find("specular_1"), nullptr);
-  EXPECT_EQ(parts[0].derivation.find("R_1"), nullptr);
+  ASSERT_NE(parts[0].derivation.find("RV_1"), nullptr);
+  EXPECT_NEAR(parts[0].derivation.find("RV_1")->value.scalar, 1, 1e-15);  // R = V
   const Step* total = parts[0].derivation.find("I");
   ASSERT_NE(total, nullptr);
   EXPECT_NEAR(total->value.scalar, 0.6, 1e-15);

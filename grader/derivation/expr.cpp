@@ -81,6 +81,17 @@ E cross_written_out(const E& a, const E& b) {
 E tuple(const E& x, const E& y, const E& z) { return wrap(make(Op::kTuple, {x, y, z})); }
 E sqrt(const E& a) { return wrap(make(Op::kSqrt, {a})); }
 E arccos_degrees(const E& a) { return wrap(make(Op::kArccosDegrees, {a})); }
+E arcsin_degrees(const E& a) { return wrap(make(Op::kArcsinDegrees, {a})); }
+E cos(const E& a) { return wrap(make(Op::kCos, {a})); }
+E tan(const E& a) { return wrap(make(Op::kTan, {a})); }
+E pow(const E& a, const E& b) { return wrap(make(Op::kPow, {a, b})); }
+E hadamard(const E& a, const E& b) { return wrap(make(Op::kHadamard, {a, b})); }
+E pi() {
+  auto n = make(Op::kNumber);
+  n->number = std::numbers::pi;
+  n->base = "pi";
+  return wrap(n);
+}
 E square(const E& a) { return wrap(make(Op::kSquare, {a})); }
 E abs(const E& a) { return wrap(make(Op::kAbs, {a})); }
 E norm(const E& a) { return wrap(make(Op::kNorm, {a})); }
@@ -150,6 +161,15 @@ Value evaluate(const E& e, const Env& env) {
     case Op::kAbs: return std::abs(scalar(arg(0)));
     case Op::kArccosDegrees:
       return std::acos(std::clamp(scalar(arg(0)), -1.0, 1.0)) * (180 / std::numbers::pi);
+    case Op::kArcsinDegrees:
+      return std::asin(std::clamp(scalar(arg(0)), -1.0, 1.0)) * (180 / std::numbers::pi);
+    case Op::kCos: return std::cos(scalar(arg(0)));
+    case Op::kTan: return std::tan(scalar(arg(0)));
+    case Op::kPow: return std::pow(scalar(arg(0)), scalar(arg(1)));
+    case Op::kHadamard: {
+      Vec3d a = vector(arg(0)), b = vector(arg(1));
+      return Vec3d{a.x * b.x, a.y * b.y, a.z * b.z};
+    }
     case Op::kNorm: return length_at_any_scale(vector(arg(0)));
     case Op::kMin:
     case Op::kMax: {
@@ -188,10 +208,14 @@ int precedence(const ExprNode& n, const RenderOptions& o) {
     case Op::kSub: return 1;
     case Op::kMul: return n.implicit ? 3 : 2;
     case Op::kDot:
-    case Op::kCross: return 2;
+    case Op::kCross:
+    case Op::kHadamard: return 2;
     case Op::kNeg: return 3;
-    case Op::kSquare: return 4;
-    case Op::kNumber: return prints_negative(n.number, o.numbers) ? 3 : 5;
+    case Op::kSquare:
+    case Op::kPow: return 4;
+    case Op::kNumber:
+      if (!n.base.empty()) return 5;
+      return prints_negative(n.number, o.numbers) ? 3 : 5;
     case Op::kSymbol:
       if (o.substitute) {
         auto it = o.substitute->find(n.name);
@@ -217,7 +241,8 @@ struct Dialect {
   std::function<std::string(const std::string&)> square;
   std::function<std::string(const std::string&)> abs;
   std::function<std::string(const std::string&)> norm;
-  std::function<std::string(const std::string&, const std::string&)> call;  // min(a, b)
+  std::function<std::string(const std::string&, const std::string&)> call;   // min(a, b)
+  std::function<std::string(const std::string&, const std::string&)> power;  // a^b
   std::string comma;
 };
 
@@ -280,7 +305,9 @@ std::optional<E> cross_components(const ExprNode& n, const RenderOptions& o) {
 std::string render(const E& e, const Dialect& d, const RenderOptions& o, bool leading) {
   const ExprNode& n = e.node();
   switch (n.op) {
-    case Op::kNumber: return render_number(n.number, d, o, leading);
+    case Op::kNumber:
+      if (!n.base.empty()) return d.symbol(n);  // a named constant: π
+      return render_number(n.number, d, o, leading);
     case Op::kVector: return render_value(Value(n.vector), d, o, leading);
     case Op::kSymbol:
       if (o.substitute) {
@@ -309,6 +336,12 @@ std::string render(const E& e, const Dialect& d, const RenderOptions& o, bool le
     case Op::kSquare: return d.square(child(n.args[0], 5, d, o, true));
     case Op::kAbs: return d.abs(render(n.args[0], d, o));
     case Op::kArccosDegrees: return d.call("arccos", render(n.args[0], d, o));
+    case Op::kArcsinDegrees: return d.call("arcsin", render(n.args[0], d, o));
+    case Op::kCos: return d.call("cos", render(n.args[0], d, o));
+    case Op::kTan: return d.call("tan", render(n.args[0], d, o));
+    case Op::kHadamard:
+      return child(n.args[0], 3, d, o, leading) + d.op("⊙") + child(n.args[1], 3, d, o, false);
+    case Op::kPow: return d.power(child(n.args[0], 5, d, o, true), render(n.args[1], d, o));
     case Op::kNorm: return d.norm(render(n.args[0], d, o));
     case Op::kMin:
     case Op::kMax: {
@@ -345,7 +378,7 @@ std::string xml_escape(const std::string& s) {
 std::string latex_part(const std::string& s) {
   if (s.size() <= 1) return s;
   if (s == "lambda" || s == "alpha" || s == "beta" || s == "gamma" || s == "theta" ||
-      s == "Delta" || s == "eta" || s == "mu") {
+      s == "Delta" || s == "eta" || s == "mu" || s == "pi") {
     return "\\" + s;
   }
   return "\\text{" + s + "}";
@@ -353,17 +386,17 @@ std::string latex_part(const std::string& s) {
 
 std::string text_part(const std::string& s) {
   static const std::map<std::string, std::string> greek = {
-      {"lambda", "λ"}, {"alpha", "α"}, {"beta", "β"}, {"gamma", "γ"},
-      {"theta", "θ"},  {"Delta", "Δ"}, {"eta", "η"},  {"mu", "μ"}};
+      {"lambda", "λ"}, {"alpha", "α"}, {"beta", "β"}, {"gamma", "γ"}, {"theta", "θ"},
+      {"Delta", "Δ"},  {"eta", "η"},   {"mu", "μ"},   {"pi", "π"}};
   auto it = greek.find(s);
   return it == greek.end() ? s : it->second;
 }
 
 const std::string& latex_op(const std::string& t) {
   static const std::map<std::string, std::string> ops = {
-      {"+", " + "},       {"−", " - "}, {"-", "-"},      {"·", " \\cdot "},
-      {"×", " \\times "}, {"<", " < "}, {">", " > "},    {"≤", " \\le "},
-      {"≥", " \\ge "},    {"=", " = "}, {"≠", " \\ne "}, {"≈", " \\approx "}};
+      {"+", " + "},    {"−", " - "},        {"-", "-"},       {"·", " \\cdot "}, {"×", " \\times "},
+      {"<", " < "},    {">", " > "},        {"≤", " \\le "},  {"≥", " \\ge "},   {"=", " = "},
+      {"≠", " \\ne "}, {"≈", " \\approx "}, {"⊙", " \\odot "}};
   auto it = ops.find(t);
   return it == ops.end() ? t : it->second;
 }
@@ -393,6 +426,7 @@ const Dialect& latex_dialect() {
       [](const std::string& f, const std::string& a) {
         return "\\" + f + "\\left(" + a + "\\right)";
       },
+      [](const std::string& a, const std::string& b) { return "{" + a + "}^{" + b + "}"; },
       ", "};
   return d;
 }
@@ -441,6 +475,9 @@ const Dialect& mathml_dialect() {
       [](const std::string& f, const std::string& a) {
         return mrow("<mi>" + f + "</mi>" + mo("(") + a + mo(")"));
       },
+      [](const std::string& a, const std::string& b) {
+        return "<msup>" + mrow(a) + mrow(b) + "</msup>";
+      },
       "<mo>,</mo>"};
   return d;
 }
@@ -477,6 +514,10 @@ const Dialect& text_dialect() {
       [](const std::string& a) { return "|" + a + "|"; },
       [](const std::string& a) { return "‖" + a + "‖"; },
       [](const std::string& f, const std::string& a) { return f + "(" + a + ")"; },
+      [](const std::string& a, const std::string& b) {
+        bool simple = b.find(' ') == std::string::npos;
+        return a + "^" + (simple ? b : "(" + b + ")");
+      },
       ", "};
   return d;
 }

@@ -36,6 +36,11 @@ enum class Op {
   kCompare,        // a relation shown as "a < b", "a ≥ b"; evaluates to a verdict
   kTuple,          // a vector from three scalar formulas: ⟨a, b, c⟩
   kArccosDegrees,  // arccos(x) in degrees, x clamped to [−1, 1] (rounding may push it past)
+  kArcsinDegrees,  // arcsin(x) in degrees, x clamped to [−1, 1]
+  kCos,            // cos(x), x in radians
+  kTan,            // tan(x), x in radians
+  kPow,            // a^b of scalars (a Phong exponent)
+  kHadamard,       // a ⊙ b: two vectors (colours) multiplied component by component
 };
 
 struct ExprNode;
@@ -88,6 +93,17 @@ E tuple(const E& x, const E& y, const E& z);
 E sqrt(const E& a);
 // The angle whose cosine is `a`, in degrees: arccos(a).
 E arccos_degrees(const E& a);
+// The angle whose sine is `a`, in degrees: arcsin(a).
+E arcsin_degrees(const E& a);
+// The cosine and tangent of an angle in radians.
+E cos(const E& a);
+E tan(const E& a);
+// a raised to the power b.
+E pow(const E& a, const E& b);
+// a ⊙ b: the componentwise product of two colours.
+E hadamard(const E& a, const E& b);
+// The number π, shown as π (an angle in degrees times π/180 is the same angle in radians).
+E pi();
 E square(const E& a);
 E abs(const E& a);
 E norm(const E& a);

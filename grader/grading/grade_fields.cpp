@@ -8,6 +8,7 @@
 #include <numbers>
 #include <set>
 
+#include "core/error.h"
 #include "derivation/number_format.h"
 #include "grading/grade_colour.h"
 #include "grading/kind_grader.h"
@@ -41,6 +42,7 @@ class FieldsGrader final : public KindGrader {
         reference_(p.task->answer()),
         normal_task_(dynamic_cast<const NormalTask*>(p.task.get())) {
     context_.problem = &p;
+    prepare_step_mistakes(*p.task);
     context_.tolerance = read_tolerance_policy(p);
     if (p.precision >= 0) numbers_.decimals = p.precision;
     std::vector<std::string> names;
@@ -62,6 +64,7 @@ class FieldsGrader final : public KindGrader {
         continue;
       }
       Verdict v = grade_part(spec, *given);
+      step_mistake(spec, *given, v);
       for (auto& m : v.mistakes) out.mistakes.push_back(std::move(m));
       if (v.credit >= 1 && v.feedback.empty()) v.feedback.emplace_back("Right.");
       out.parts.push_back(make_part(context_, spec.name, v.credit, std::move(v.feedback)));
@@ -100,6 +103,64 @@ class FieldsGrader final : public KindGrader {
       case Comparison::kPoint: return grade_point(spec.name, s, vec_of(*ref));
       case Comparison::kNames: return grade_names(spec.name, s, *ref);
       default: return grade_scalar(spec.name, s, ref->get<double>());
+    }
+  }
+
+  // The worked solution, and the solutions a catalogued mistake of one of its steps gives
+  // (grading/mistakes.h): a part's wrong value is matched against the same step of each.
+  void prepare_step_mistakes(const Task& task) {
+    std::vector<std::string> methods = task.methods();
+    if (methods.empty()) return;
+    try {
+      right_ = task.derive(methods.front(), nullptr);
+    } catch (const Error&) {
+      return;
+    }
+    for (auto& m : mistaken_solutions(task)) {
+      if (m.method == methods.front()) mistaken_.push_back(std::move(m));
+    }
+  }
+
+  // A wrong part whose value is what a mistaken step gives names the mistake, and earns the
+  // mistake's credit when that is more than the part had.
+  void step_mistake(const PartSpec& spec, const AnswerReader& s, Verdict& v) const {
+    if (v.credit >= 1 || !v.mistakes.empty() || mistaken_.empty()) return;
+    if (!reference_.contains(spec.name) || s.json().is_null()) return;
+    const Step* step = find_answer_step(right_, reference_.at(spec.name));
+    if (!step) return;
+    const Tolerance& tol = context_.tolerance.for_field(spec.name);
+    for (const auto& m : mistaken_) {
+      const Step* changed = find_step(m.parts, step->name);
+      if (!changed || changed->value.kind != step->value.kind ||
+          same_step_value(changed->value, step->value)) {
+        continue;
+      }
+      std::string yours;
+      if (changed->value.is_scalar() && s.json().is_number()) {
+        auto n = s.number();
+        if (!n.value ||
+            compare_number(*n.value, changed->value.scalar, changed->value.scalar, tol).match !=
+                Match::kRight) {
+          continue;
+        }
+        yours = n.value->text;
+      } else if (changed->value.is_vector() && s.json().is_array()) {
+        AnswerReader::Vector x = s.vector();
+        if (!x.ok) continue;
+        bool direction =
+            spec.compare == Comparison::kDirection || spec.compare == Comparison::kUnitDirection;
+        Match match = direction ? compare_direction(x.c, changed->value.vector, tol).verdict.match
+                                : compare_vector(x.c, changed->value.vector, tol).match;
+        if (match != Match::kRight) continue;
+        yours = format_vector(x.value(), numbers_);
+      } else {
+        continue;
+      }
+      std::string msg =
+          fmt::format("your {} {} is what the derivation gives with this slip.", spec.name, yours);
+      v.mistakes.push_back(make_mistake(m.id, spec.name, msg));
+      v.credit = std::max(v.credit, mistake_info(m.id).credit);
+      return;
     }
   }
 
@@ -353,7 +414,9 @@ class FieldsGrader final : public KindGrader {
   static inline const nlohmann::json kNull = nullptr;
   std::string kind_;
   nlohmann::json reference_;
-  const NormalTask* normal_task_;  // for a normal problem's named mistakes
+  const NormalTask* normal_task_;           // for a normal problem's named mistakes
+  std::vector<SolutionPart> right_;         // the worked solution, by the first method
+  std::vector<MistakenSolution> mistaken_;  // it with each catalogued mistake of a step
   NumberFormat numbers_;
 };
 

@@ -155,7 +155,11 @@ std::optional<E> discriminant_sign(std::string_view step, const E& f) {
 }
 
 std::optional<E> b_sign(std::string_view step, const E& f) {
-  if (step != "b") return std::nullopt;
+  // A step b that only negates another quantity (a camera's bottom edge b = −t) is not a
+  // quadratic's b.
+  if (step != "b" || (f.node().op == Op::kNeg && f.node().args[0].node().op == Op::kSymbol)) {
+    return std::nullopt;
+  }
   return -f;
 }
 
@@ -182,6 +186,86 @@ std::optional<E> r_not_squared(std::string_view /*step*/, const E& f) {
   });
   if (!changed) return std::nullopt;
   return g;
+}
+
+// The symbol `name` as a formula writes it, or nothing.
+std::optional<E> symbol_in(const E& e, std::string_view name) {
+  if (e.empty()) return std::nullopt;
+  if (is_symbol(e, name)) return e;
+  for (const auto& a : e.node().args) {
+    if (auto s = symbol_in(a, name)) return s;
+  }
+  return std::nullopt;
+}
+
+// n1 and n2 exchanged in every step that has both: the ratio η = n1/n2 (and Fresnel's R_s,
+// R_p, R0) with the indices of the two media the wrong way round.
+std::optional<E> n1_n2_swapped(std::string_view /*step*/, const E& f) {
+  std::optional<E> n1 = symbol_in(f, "n1"), n2 = symbol_in(f, "n2");
+  if (!n1 || !n2) return std::nullopt;
+  return rewrite_tree(f, [&](const E& x) -> std::optional<E> {
+    if (is_symbol(x, "n1")) return *n2;
+    if (is_symbol(x, "n2")) return *n1;
+    return std::nullopt;
+  });
+}
+
+// Every light's shadow factor s (shadow_1, shadow_2, ...: 1 when its shadow ray reaches it, 0
+// when it is blocked) replaced by `value`.
+std::optional<E> shadow_factors_as(const E& f, double value) {
+  bool changed = false;
+  E g = rewrite_tree(f, [&](const E& x) -> std::optional<E> {
+    if (x.node().op != Op::kSymbol || !x.node().name.starts_with("shadow_")) return std::nullopt;
+    changed = true;
+    return E(value);
+  });
+  if (!changed) return std::nullopt;
+  return g;
+}
+
+// A blocked light's terms counted: its shadow factor taken as 1.
+std::optional<E> diffuse_in_shadow(std::string_view /*step*/, const E& f) {
+  return shadow_factors_as(f, 1);
+}
+
+// A lit light's terms left out: every shadow factor taken as 0, only the ambient term left.
+std::optional<E> lit_point_ambient_only(std::string_view /*step*/, const E& f) {
+  return shadow_factors_as(f, 0);
+}
+
+// An image-plane coordinate's pixel count (the column i or the row j) in the steps u_s and
+// v_s, as `change` turns it: without the half pixel (i + 0.5 → i), or with it (i → i + 0.5).
+std::optional<E> pixel_count(std::string_view step, const E& f, bool centre_to_corner) {
+  if (step != "u_s" && step != "v_s") return std::nullopt;
+  bool changed = false;
+  E g = rewrite_tree(f, [&](const E& x) -> std::optional<E> {
+    const ExprNode& n = x.node();
+    bool count = is_symbol(x, "i") || is_symbol(x, "j");
+    bool half = n.op == Op::kAdd && (is_symbol(n.args[0], "i") || is_symbol(n.args[0], "j")) &&
+                n.args[1].node().op == Op::kNumber && n.args[1].node().number == 0.5;
+    if (centre_to_corner && half) {
+      changed = true;
+      return n.args[0];
+    }
+    if (!centre_to_corner && count) {
+      changed = true;
+      return x + 0.5;
+    }
+    return std::nullopt;
+  });
+  if (!changed) return std::nullopt;
+  return g;
+}
+
+// A centre problem's pixel taken at its corner, and a corner problem's at its centre.
+std::optional<E> pixel_corner(std::string_view step, const E& f) {
+  return pixel_count(step, f, true);
+}
+std::optional<E> pixel_centre(std::string_view step, const E& f) {
+  // Only where the formula has no half pixel already.
+  std::optional<E> corner = pixel_count(step, f, true);
+  if (corner) return std::nullopt;
+  return pixel_count(step, f, false);
 }
 
 // Two derivations differ in some step's value.
@@ -215,6 +299,11 @@ const std::vector<FormulaMistake>& formula_mistakes() {
         {"b-sign", &b_sign},
         {"r-not-squared", &r_not_squared},
         {"cross-order", &cross_order},
+        {"n1-n2-swapped", &n1_n2_swapped},
+        {"diffuse-in-shadow", &diffuse_in_shadow},
+        {"lit-point-ambient-only", &lit_point_ambient_only},
+        {"pixel-corner", &pixel_corner},
+        {"pixel-centre", &pixel_centre},
     };
     for_each_primitive_mistake([&](const PrimitiveMistake& own) {
       m.push_back({own.info.id, own.rewrite});
@@ -249,6 +338,45 @@ std::vector<MistakenSolution> mistaken_solutions(const Task& task) {
     }
   }
   return out;
+}
+
+bool same_step_value(const Value& a, const Value& b) { return same_value(a, b); }
+
+const Step* find_answer_step(const std::vector<SolutionPart>& parts, const nlohmann::json& value) {
+  Value v;
+  if (value.is_number()) {
+    v = Value(value.get<double>());
+  } else if (value.is_array() && value.size() == 3 && value[0].is_number() &&
+             value[1].is_number() && value[2].is_number()) {
+    v = Value(Vec3d{value[0].get<double>(), value[1].get<double>(), value[2].get<double>()});
+  } else {
+    return nullptr;
+  }
+  // The reference answer and the derivation compute a number by the same formula, but not
+  // always in the same order: they agree far below any tolerance, not to the last bit.
+  constexpr double kAgree = 1e-9;
+  auto agree = [&](const Value& s) {
+    if (s.kind != v.kind) return false;
+    if (s.is_scalar()) return std::abs(s.scalar - v.scalar) <= kAgree * (1 + std::abs(v.scalar));
+    return length(s.vector - v.vector) <= kAgree * (1 + length(v.vector));
+  };
+  const Step* found = nullptr;
+  for (const auto& part : parts) {
+    for (const auto& s : part.derivation.steps) {
+      if (!s.given && agree(s.value)) found = &s;
+    }
+  }
+  return found;
+}
+
+const Step* find_step(const std::vector<SolutionPart>& parts, std::string_view name) {
+  const Step* found = nullptr;
+  for (const auto& part : parts) {
+    for (const auto& s : part.derivation.steps) {
+      if (s.name == name) found = &s;
+    }
+  }
+  return found;
 }
 
 std::vector<double> derivation_roots(const Derivation& d) {

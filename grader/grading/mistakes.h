@@ -40,6 +40,14 @@ struct MistakenSolution {
 // Every formula mistake that changes something in some method of the task's solution.
 std::vector<MistakenSolution> mistaken_solutions(const Task& task);
 
+// The computed step whose value is a number of the reference answer (a number, or a triple as
+// a vector): the last such step of the solution, or null when no step computes it.
+const Step* find_answer_step(const std::vector<SolutionPart>& parts, const nlohmann::json& value);
+// The last step named `name` in a solution's parts, or null.
+const Step* find_step(const std::vector<SolutionPart>& parts, std::string_view name);
+// Two values of one step agree (a mistaken derivation leaves it as it was).
+bool same_step_value(const Value& a, const Value& b);
+
 // The roots a derivation computes (steps t0, t1, t, t_enter, t_exit, t_bottom, t_top).
 std::vector<double> derivation_roots(const Derivation& d);
 

@@ -77,6 +77,7 @@ std::vector<SolutionPart> CameraRayTask::derive(std::string_view /*method*/,
   }
   Value dr = d.step("d_r", "d_r", f * dir + d.sym("x_diff") * d.sym("v") + d.sym("y_diff") * u,
                     "f·d reaches the image plane's centre; then move across and up");
+  d.step("d_r_hat", "d_r_hat", d.sym("d_r") / norm(d.sym("d_r")), "the direction as a unit vector");
   d.conclude(Sentence(fmt::format("The ray through pixel ({}, {}) starts at the eye ",
                                   format_number(x_), format_number(y_)))
                  .value(cam_.eye)

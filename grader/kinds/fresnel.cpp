@@ -69,12 +69,13 @@ std::vector<SolutionPart> FresnelTask::derive(std::string_view /*method*/,
   E n2 = d.given("n2", "n_2", n2_, "the index on the far side");
   d.step("eta", "eta", n1 / n2);
   if (angle_) {
-    d.given("theta_i", "theta_i", *angle_, "the angle of incidence, in degrees");
-    d.given("cos_i", "cos_i", cos_i(), fmt::format("cos {}°", format_number(*angle_)));
+    E theta = d.given("theta_i", "theta_i", *angle_, "the angle of incidence, in degrees");
+    d.step("cos_i", "cos_i", cos(theta * pi() / 180), "cos θi, the angle in radians");
   } else {
     E D = d.given("d", "d", d_, "the incoming direction");
     E N = d.given("n", "n", n_, "the surface normal");
     d.step("cos_i", "cos_i", abs(dot(D, N)) / (norm(D) * norm(N)), "cos θi = |d·n|/(|d||n|)");
+    d.step("theta_i", "theta_i", arccos_degrees(d.sym("cos_i")), "the angle of incidence");
   }
   Value k = d.step("k", "k", 1 - square(d.sym("eta")) * (1 - square(d.sym("cos_i"))),
                    "1 − η²·sin²θi = cos²θt (Snell's law)");
@@ -84,6 +85,7 @@ std::vector<SolutionPart> FresnelTask::derive(std::string_view /*method*/,
   }
   bool tir = k.scalar < 0;
   fresnel_steps(d, model_, tir);
+  if (!tir) d.step("theta_t", "theta_t", arccos_degrees(d.sym("cos_t")), "the angle of refraction");
   Value f = d.value("F");
   d.step("T", "T", 1 - d.sym("F"), "the transmitted share, 1 − F");
   d.conclude(Sentence(tir ? "Total internal reflection: the reflectance is F = "

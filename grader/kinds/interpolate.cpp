@@ -151,6 +151,7 @@ std::vector<SolutionPart> InterpolateTask::derive(std::string_view /*method*/,
   d.step("w_c", "w_c", dot(cross(d.sym("e_1"), d.sym("AP")), d.sym("n")) / d.sym("nn"),
          "the share of the area across from C");
   d.step("w_a", "w_a", 1 - d.sym("w_b") - d.sym("w_c"), "the weights sum to 1");
+  d.step("w", "w", tuple(d.sym("w_a"), d.sym("w_b"), d.sym("w_c")), "the weights (w_a, w_b, w_c)");
   std::array<E, 3> Nh = N;
   for (int i = 0; i < 3; ++i) {
     if (unit(n_[i])) continue;

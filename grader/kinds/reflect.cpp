@@ -32,6 +32,7 @@ std::vector<SolutionPart> ReflectTask::derive(std::string_view /*method*/,
   Value r = d.step("r", "r", D - 2 * d.sym("d_dot_n") * Nh,
                    "remove that component twice: the tangential part stays, the normal part "
                    "flips");
+  d.step("r_hat", "r_hat", d.sym("r") / norm(d.sym("r")), "r as a unit vector");
   d.conclude(Sentence("The reflected direction is r = ")
                  .value(r)
                  .text(" (same length as d; the normal's orientation does not matter)."));

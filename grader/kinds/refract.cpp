@@ -58,9 +58,9 @@ std::vector<SolutionPart> RefractTask::derive(std::string_view /*method*/,
   double theta_i = d.step("theta_i", "theta_i", arccos_degrees(d.sym("cos_i")),
                           "θi = arccos(cos θi), in degrees")
                        .scalar;
-  if (auto c = critical_angle_degrees(n1_, n2_)) {
-    d.note(fmt::format("Going into a lower index, the critical angle is asin(n₂/n₁) = {}°.",
-                       format_number(*c)));
+  if (n1_ > n2_) {
+    d.step("theta_c", "theta_c", arcsin_degrees(n2 / n1),
+           "going into a lower index, the critical angle: arcsin(n₂/n₁)");
   }
   if (k.scalar < 0) {
     d.note("k < 0: sin θt would exceed 1.");

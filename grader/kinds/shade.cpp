@@ -18,17 +18,26 @@ Vec3d to_light(const Light& l, const Vec3d& p) {
 }
 
 // a·b for two quantities of a derivation: a colour times a colour is the componentwise product
-// a ⊙ b, written out channel by channel; otherwise a number scales a number or a colour.
+// a ⊙ b; otherwise a number scales a number or a colour.
 E times(const E& a, const Value& av, const E& b, const Value& bv) {
   if (!av.is_vector() || !bv.is_vector()) return a * b;
-  const Vec3d& x = av.vector;
-  const Vec3d& y = bv.vector;
-  return tuple(E(x.x) * E(y.x), E(x.y) * E(y.y), E(x.z) * E(y.z));
+  return hadamard(a, b);
 }
 
 // A coefficient of the material as the derivation gives it: a number, or a colour.
 Value coefficient_value(double v, const std::optional<Vec3d>& rgb) {
   return rgb ? Value(*rgb) : Value(v);
+}
+
+// The sum of a term over the lights as a step (with one light, its term is the sum).
+std::optional<E> sum_of_terms(Deriver& d, const std::vector<E>& terms, const std::string& name,
+                              const std::string& shown, const std::string& why) {
+  if (terms.empty()) return std::nullopt;
+  if (terms.size() == 1) return terms.front();
+  E total = terms.front();
+  for (std::size_t k = 1; k < terms.size(); ++k) total = total + terms[k];
+  d.step(name, shown, total, why);
+  return d.sym(name);
 }
 
 }  // namespace
@@ -74,7 +83,7 @@ std::unique_ptr<Task> ShadeTask::read(const Cursor& problem) {
     lights.push_back({read_light(light, static_cast<int>(i)), blocked});
   }
   if (!surface) {
-    return std::make_unique<ShadeTask>(point, normalized(normal), eye, m, ia, std::move(lights));
+    return std::make_unique<ShadeTask>(point, normal, eye, m, ia, std::move(lights));
   }
   // The colour at the point: in the object's space, then the pattern's.
   Vec3d c = surface->uniform;
@@ -89,8 +98,7 @@ std::unique_ptr<Task> ShadeTask::read(const Cursor& problem) {
   folded.diffuse_rgb = Vec3d{kd.x * c.x, kd.y * c.y, kd.z * c.z};
   folded.ambient = std::max({folded.ambient_rgb->x, folded.ambient_rgb->y, folded.ambient_rgb->z});
   folded.diffuse = std::max({folded.diffuse_rgb->x, folded.diffuse_rgb->y, folded.diffuse_rgb->z});
-  auto task =
-      std::make_unique<ShadeTask>(point, normalized(normal), eye, folded, ia, std::move(lights));
+  auto task = std::make_unique<ShadeTask>(point, normal, eye, folded, ia, std::move(lights));
   task->set_surface(*surface, object, m);
   return task;
 }
@@ -224,7 +232,9 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
   Deriver d("phong", "The Phong model, term by term", overrides);
   bool rgb = colour();
   E P = d.given("P", "P", point_, "the point");
-  E N = d.given("N", "N", normal_, "the unit normal");
+  E N = d.given("n", "N_0", given_normal_, "the surface normal as given");
+  d.step("N", "N", N / norm(N), "the unit normal");
+  N = d.sym("N");
   E Eye = d.given("E", "E", eye_, "the eye");
   d.step("V", "V", (Eye - P) / norm(Eye - P), "toward the viewer");
   if (rgb) {
@@ -232,6 +242,20 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
         "Intensities are colours [r, g, b], worked channel by channel: a number acts on every "
         "channel alike, and a colour times a colour is the componentwise product ⊙.");
   }
+  // A material's coefficient as given, or (with a surface colour) times the colour C.
+  auto coefficient = [&](const std::string& name, const std::string& shown, double base,
+                         const std::optional<Vec3d>& base_rgb, double folded,
+                         const std::optional<Vec3d>& folded_rgb) -> std::pair<E, Value> {
+    if (!surface_) {
+      Value v = coefficient_value(folded, folded_rgb);
+      return {d.given(name, shown, v), v};
+    }
+    Value b = coefficient_value(base, base_rgb);
+    E g = d.given(name + "_0", shown + "0", b, "as given");
+    Value c = d.value("C");
+    Value v = d.step(name, shown, times(g, b, d.sym("C"), c), shown + " ⊙ C");
+    return {d.sym(name), v};
+  };
   if (surface_) {
     surface_steps(d);
     d.note(fmt::format(
@@ -240,17 +264,25 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
         colour_text(Intensity{base_.ambient, base_.ambient_rgb}.rgb()),
         colour_text(Intensity{base_.diffuse, base_.diffuse_rgb}.rgb())));
   }
-  Value ka_v = coefficient_value(m_.ambient, m_.ambient_rgb);
-  E ka = d.given("k_a", "k_a", ka_v, surface_ ? "k_a ⊙ C" : "");
+  auto [ka, ka_v] =
+      coefficient("k_a", "k_a", base_.ambient, base_.ambient_rgb, m_.ambient, m_.ambient_rgb);
   // With colours, the lights are colours too (a number as [I, I, I]).
   Value ia_v = rgb ? Value(ambient_light_.rgb()) : Value(ambient_light_.value);
   E ia = d.given("I_a", "I_a", ia_v, "the ambient light");
-  std::vector<E> sum;
   d.step("ambient", "I_amb", times(ka, ka_v, ia, ia_v),
          ka_v.is_vector() ? "k_a ⊙ I_a: the ambient term always applies"
                           : "the ambient term always applies");
-  sum.push_back(d.sym("ambient"));
-  Value kd_v = coefficient_value(m_.diffuse, m_.diffuse_rgb);
+  auto [kd, kd_v] =
+      coefficient("k_d", "k_d", base_.diffuse, base_.diffuse_rgb, m_.diffuse, m_.diffuse_rgb);
+  bool specular = m_.specular > 0;
+  E ks, shininess;
+  Value ks_v;
+  if (specular) {
+    ks_v = coefficient_value(m_.specular, m_.specular_rgb);
+    ks = d.given("k_s", "k_s", ks_v);
+    shininess = d.given("shininess", "n", m_.shininess, "the shininess exponent");
+  }
+  std::vector<E> diffuse, highlight;
   for (std::size_t k = 0; k < lights_.size(); ++k) {
     const Light& l = lights_[k].light;
     std::string i = std::to_string(k + 1);
@@ -261,51 +293,42 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
       E dir = d.given("dL_" + i, "d_L" + i, l.direction, fmt::format("light {}", l.name));
       d.step("L_" + i, "L_" + i, -dir / norm(dir), "toward the light");
     }
-    Value nl = d.step("NL_" + i, "N·L_" + i, dot(N, d.sym("L_" + i)));
-    if (lights_[k].blocked || nl.scalar <= 0) {
-      d.note(
-          lights_[k].blocked
-              ? fmt::format("The shadow ray to {} is blocked: no diffuse or specular term.", l.name)
-              : "N·L ≤ 0: the light is behind the surface.");
-      continue;
-    }
+    Value nl_v = d.step("NL_" + i, "N·L_" + i, dot(N, d.sym("L_" + i)));
+    E nl = d.sym("NL_" + i);
+    d.step("R_" + i, "R_" + i, 2 * nl * N - d.sym("L_" + i), "the mirror direction of the light");
+    d.step("RV_" + i, "R·V_" + i, dot(d.sym("R_" + i), d.sym("V")));
+    bool blocked = lights_[k].blocked;
+    E s = d.given("shadow_" + i, "s_" + i, Value(blocked ? 0 : 1),
+                  blocked ? fmt::format("the shadow ray to {} is blocked", l.name)
+                          : fmt::format("the shadow ray reaches {}", l.name));
+    if (nl_v.scalar <= 0) d.note("N·L ≤ 0: the light is behind the surface.");
     Value ip_v = rgb ? Value(l.colour ? *l.colour : Vec3d{l.intensity, l.intensity, l.intensity})
                      : Value(l.intensity);
     E ip = d.given("Ip_" + i, "I_p" + i, ip_v);
-    if (kd_v.is_vector()) {
-      d.step("diffuse_" + i, "I_d" + i, times(vec(kd_v.vector), kd_v, ip, ip_v) * d.sym("NL_" + i),
-             fmt::format("k_d ⊙ I_p·(N·L) with k_d = {}", colour_text(kd_v.vector)));
-    } else {
-      d.step("diffuse_" + i, "I_d" + i, m_.diffuse * ip * d.sym("NL_" + i),
-             fmt::format("k_d·I_p·(N·L) with k_d = {}", format_number(m_.diffuse)));
-    }
-    sum.push_back(d.sym("diffuse_" + i));
-    if (m_.specular == 0) {
+    d.step("diffuse_" + i, "I_d" + i, s * times(kd, kd_v, ip, ip_v) * max({E(0), nl}),
+           kd_v.is_vector() ? "s·(k_d ⊙ I_p)·max(0, N·L): none when blocked or behind"
+                            : "s·k_d·I_p·max(0, N·L): none when blocked or behind");
+    diffuse.push_back(d.sym("diffuse_" + i));
+    if (!specular) {
       d.note(fmt::format("k_s = 0: no specular term for {}.", l.name));
       continue;
     }
-    d.step("R_" + i, "R_" + i, 2 * d.sym("NL_" + i) * N - d.sym("L_" + i),
-           "the mirror direction of the light");
-    Value rv = d.step("RV_" + i, "R·V_" + i, dot(d.sym("R_" + i), d.sym("V")));
-    Vec3d spec{};
-    for (int c = 0; c < (rgb ? 3 : 1); ++c) {
-      Material mc = channel(m_, c);
-      PhongLight p = phong_light(normal_, normalized(d.value("L_" + i).vector), d.value("V").vector,
-                                 channel(l, c).intensity, mc.diffuse, mc.specular, m_.shininess);
-      spec[c] = rv.scalar > 0 ? p.specular : 0.0;
-    }
-    std::string why = rv.scalar > 0 ? fmt::format("k_s{}I_p·(R·V)^n with k_s = {}, n = {}",
-                                                  m_.specular_rgb ? " ⊙ " : "·",
-                                                  m_.specular_rgb ? colour_text(*m_.specular_rgb)
-                                                                  : format_number(m_.specular),
-                                                  format_number(m_.shininess))
-                                    : "R·V ≤ 0: no highlight";
-    d.given("specular_" + i, "I_s" + i, rgb ? Value(spec) : Value(spec.x), why);
-    sum.push_back(d.sym("specular_" + i));
+    if (nl_v.scalar <= 0) continue;
+    d.step("specular_" + i, "I_s" + i,
+           s * times(ks, ks_v, ip, ip_v) * pow(max({E(0), d.sym("RV_" + i)}), shininess),
+           "s·k_s·I_p·max(0, R·V)^n: no highlight when R·V ≤ 0");
+    highlight.push_back(d.sym("specular_" + i));
   }
-  E total = sum.front();
-  for (std::size_t k = 1; k < sum.size(); ++k) total = total + sum[k];
-  Value t = d.step("I", "I", total, "the sum of the terms that apply");
+  std::vector<E> parts = {d.sym("ambient")};
+  if (auto x = sum_of_terms(d, diffuse, "diffuse", "I_d", "the diffuse terms of every light")) {
+    parts.push_back(*x);
+  }
+  if (auto x = sum_of_terms(d, highlight, "specular", "I_s", "the specular terms of every light")) {
+    parts.push_back(*x);
+  }
+  E total = parts.front();
+  for (std::size_t k = 1; k < parts.size(); ++k) total = total + parts[k];
+  Value t = d.step("I", "I", total, "the sum of the terms");
   d.conclude(rgb ? fmt::format("The colour at P is I = {} (r, g, b).", colour_text(t.vector))
                  : fmt::format("The intensity at P is I = {}.", format_number(t.scalar)));
   if (!rgb) return {SolutionPart{"", std::move(d).finish()}};

@@ -31,10 +31,12 @@ struct ShadeLight {
 
 class ShadeTask final : public Task {
  public:
+  // `normal` as the problem gives it (any length).
   ShadeTask(Vec3d point, Vec3d normal, Vec3d eye, Material m, Intensity ambient_light,
             std::vector<ShadeLight> lights)
       : point_(point),
-        normal_(normal),
+        normal_(normalized(normal)),
+        given_normal_(normal),
         eye_(eye),
         m_(m),
         ambient_light_(ambient_light),
@@ -55,7 +57,7 @@ class ShadeTask final : public Task {
   void set_surface(SurfaceColour surface, Transform object, Material base);
 
  private:
-  Vec3d point_, normal_, eye_;
+  Vec3d point_, normal_, given_normal_, eye_;
   Material m_;
 
   // The surface colour at the point, worked as steps (from the pattern, when there is one).

@@ -214,10 +214,12 @@ std::vector<SolutionPart> ViewRayTask::derive(std::string_view /*method*/,
   E ny = d.given("ny", "n_y", c.ny, "rows");
   E dist = d.given("d", "d", c.focal_length, "the image plane's distance along −w");
   if (c.fov) {
-    d.given("fov", "θ", *c.fov,
-            fmt::format("the {} field of view, in degrees",
-                        c.fov_vertical ? "vertical" : "horizontal"));
-    E tan_half = d.given("tan_half", "tan(θ/2)", std::tan(*c.fov / 2 * std::numbers::pi / 180));
+    E fov = d.given("fov", "θ", *c.fov,
+                    fmt::format("the {} field of view, in degrees",
+                                c.fov_vertical ? "vertical" : "horizontal"));
+    d.step("fov_rad", "θ_rad", fov * pi() / 180, "the field of view in radians");
+    d.step("tan_half", "tan(θ/2)", tan(d.sym("fov_rad") / 2), "half the field of view's tangent");
+    E tan_half = d.sym("tan_half");
     if (c.fov_vertical) {
       d.step("t", "t", dist * tan_half, "the top edge: d·tan(θ/2)");
       d.step("b", "b", -d.sym("t"));
@@ -262,6 +264,8 @@ std::vector<SolutionPart> ViewRayTask::derive(std::string_view /*method*/,
     dir = d.step("direction", "D", -dist * d.sym("w") + us * d.sym("u") + vs * d.sym("v"),
                  "to the pixel on the image plane: −d·w + u_s·u + v_s·v");
   }
+  d.step("unit_direction", "D_hat", d.sym("direction") / norm(d.sym("direction")),
+         "the direction as a unit vector");
   d.conclude(Sentence(fmt::format("The ray through pixel ({}, {}) starts at ", format_number(i_),
                                   format_number(j_)))
                  .value(o)

@@ -41,6 +41,10 @@ Reflectance fresnel_reflectance(FresnelModel model, double cos_i, double n1, dou
 
 void fresnel_steps(Deriver& d, FresnelModel model, bool total_internal_reflection) {
   E n1 = d.sym("n1"), n2 = d.sym("n2");
+  if (model == FresnelModel::kSchlick) {
+    d.step("R0", "R_0", square(n1 - n2) / square(n1 + n2),
+           "the reflectance at normal incidence, ((n₁ − n₂)/(n₁ + n₂))²");
+  }
   if (total_internal_reflection) {
     d.given("F", "F", 1.0,
             "total internal reflection (k < 0): all the light is reflected, the reflectance is 1");
@@ -49,8 +53,6 @@ void fresnel_steps(Deriver& d, FresnelModel model, bool total_internal_reflectio
   d.step("cos_t", "cos_t", sqrt(d.sym("k")), "cos θt = √k");
   E ci = d.sym("cos_i"), ct = d.sym("cos_t");
   if (model == FresnelModel::kSchlick) {
-    d.step("R0", "R_0", square(n1 - n2) / square(n1 + n2),
-           "the reflectance at normal incidence, ((n₁ − n₂)/(n₁ + n₂))²");
     bool denser_first = d.scalar("n1") > d.scalar("n2");
     E c = denser_first ? ct : ci;
     E x = 1 - c;
