@@ -7,13 +7,16 @@ the platform receives the score, and it is the score `raygrade grade` gives the 
 Screenshots land in OUT.
 
 Usage: browser_test.py [OUT]   ($RAYGRADE names the binary; exits 77 without Chromium)"""
-import json
 import os
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+# tests/lti holds platform.py, a name of the standard library: look there last.
 sys.path = [d for d in sys.path if os.path.abspath(d or ".") != HERE] + [HERE]
+
+import json
+import time
+
 sys.path.append(os.path.dirname(HERE))
 import requests  # noqa: E402
 

@@ -72,8 +72,8 @@ class Process(subprocess.Popen):
     def __init__(self, args, log, env=None):
         self.log = log
         self.lines = []
-        super().__init__(args, stdout=subprocess.PIPE, stderr=open(log, "ab"), text=True,
-                         env=env)
+        with open(log, "ab") as err:
+            super().__init__(args, stdout=subprocess.PIPE, stderr=err, text=True, env=env)
 
     def stderr_text(self):
         with open(self.log, errors="replace") as f:
@@ -94,6 +94,11 @@ class Process(subprocess.Popen):
             except subprocess.TimeoutExpired:
                 self.kill()
                 self.wait()
+        if self.stdout:
+            try:
+                self.stdout.close()
+            except (OSError, ValueError):
+                pass
 
 
 def start_platform(state, public_host=None, port=0):

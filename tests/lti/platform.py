@@ -110,8 +110,7 @@ class Platform:
         self.lock = threading.RLock()
         self.issuer = None
         self.key = self._load_key("platform-key.json", "platform-1")
-        # A second key the platform never publishes: tokens signed with it must be refused.
-        self.other_key = self._load_key("other-key.json", "not-published")
+        self._other_key = None
         self.data = {"registrations": {}, "links": {}, "lineitems": {}, "contexts": {},
                      "scores": []}
         path = os.path.join(state_dir, "state.json")
@@ -127,6 +126,14 @@ class Platform:
         self.faults = {"token": 0, "scores": 0}
         self.calls = {"token": {"ok": 0, "refused": 0, "failed": 0},
                       "scores": {"ok": 0, "refused": 0, "failed": 0}}
+
+    @property
+    def other_key(self):
+        """A second key the platform never publishes: tokens signed with it must be refused."""
+        with self.lock:
+            if self._other_key is None:
+                self._other_key = self._load_key("other-key.json", "not-published")
+            return self._other_key
 
     def _load_key(self, name, kid):
         path = os.path.join(self.dir, name)
@@ -612,6 +619,7 @@ def autopost(action, fields):
 class Handler(BaseHTTPRequestHandler):
     platform = None
     protocol_version = "HTTP/1.1"
+    disable_nagle_algorithm = True  # headers and body leave at once, not a delayed ACK apart
 
     def log_message(self, fmt, *args):
         if os.environ.get("PLATFORM_VERBOSE"):

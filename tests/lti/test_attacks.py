@@ -8,13 +8,15 @@ browser. And the cookies' attributes that make a launch work across two sites.
 
 Usage: test_attacks.py [unittest options]   ($RAYGRADE names the binary)"""
 import os
-import re
 import sys
-import time
-import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+# tests/lti holds platform.py, a name of the standard library: look there last.
 sys.path = [d for d in sys.path if os.path.abspath(d or ".") != HERE] + [HERE]
+
+import re
+import unittest
+
 import requests  # noqa: E402
 
 import ltitest  # noqa: E402

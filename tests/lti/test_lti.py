@@ -5,17 +5,19 @@ their own numbers, submissions graded as `raygrade grade` grades the same answer
 scores the platform receives by AGS, each once.
 
 Usage: test_lti.py [unittest options]   ($RAYGRADE names the binary)"""
-import copy
 import os
 import sys
-import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 # tests/lti holds platform.py, a name of the standard library: look there last.
 sys.path = [d for d in sys.path if os.path.abspath(d or ".") != HERE] + [HERE]
+
+import copy
+import unittest
+
 import ltitest  # noqa: E402
 from ltitest import (ASSIGNMENT, LTI, assignment_points, browser, cli_grade, launch,  # noqa: E402
-                     parse, solve, student_key)
+                     solve, student_key)
 
 SCORE_SCOPE = "https://purl.imsglobal.org/spec/lti-ags/scope/score"
 
