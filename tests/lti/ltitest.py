@@ -1,7 +1,7 @@
 """What the LTI tests share: starting the test platform and `raygrade serve`, a browser made of a
 requests.Session, the launch flow through both, and a look into the tool's SQLite database.
 
-The binary is $RAYGRADE (ctest passes it), else build/release/raygrade of the repository."""
+The binary is $RAYGRADE (ctest passes it), else build/release/grader/raygrade of the repository."""
 import glob
 import html.parser
 import http.cookiejar
@@ -24,7 +24,7 @@ import requests
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-RAYGRADE = os.environ.get("RAYGRADE", os.path.join(ROOT, "build", "release", "raygrade"))
+RAYGRADE = os.environ.get("RAYGRADE", os.path.join(ROOT, "build", "release", "grader", "raygrade"))
 ASSIGNMENTS = os.path.join(ROOT, "assignments")
 ASSIGNMENT = "homework-rays.json"
 LTI = "https://purl.imsglobal.org/spec/lti/claim/"
@@ -82,8 +82,11 @@ class Process(subprocess.Popen):
     def drain(self):
         """Keeps reading standard output in the background so the child never blocks on it."""
         def run():
-            for line in self.stdout:
-                self.lines.append(line)
+            try:
+                for line in self.stdout:
+                    self.lines.append(line)
+            except (OSError, ValueError):  # closed by stop()
+                pass
         threading.Thread(target=run, daemon=True).start()
 
     def stop(self):
