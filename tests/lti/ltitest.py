@@ -131,21 +131,24 @@ def start_tool(data, assignments=ASSIGNMENTS, port=None, host="127.0.0.1", env=N
     return proc, url
 
 
-class LoopbackPolicy(http.cookiejar.DefaultCookiePolicy):
-    """A browser's cookie rules for Secure cookies: sent over https, and over http to loopback
-    (127.0.0.1, localhost), which browsers count as a secure context."""
+_return_ok_secure = http.cookiejar.DefaultCookiePolicy.return_ok_secure
 
-    def return_ok_secure(self, cookie, request):
-        host = urllib.parse.urlsplit(request.get_full_url()).hostname
-        if cookie.secure and host in ("127.0.0.1", "localhost"):
-            return True
-        return super().return_ok_secure(cookie, request)
+
+def _loopback_is_secure(policy, cookie, request):
+    """A browser's rule for Secure cookies: sent over https, and over http to loopback
+    (127.0.0.1, localhost), which browsers count as a secure context. requests builds a fresh
+    cookie jar (default policy) for every request, so the rule is set on the policy class."""
+    host = urllib.parse.urlsplit(request.get_full_url()).hostname
+    if cookie.secure and host in ("127.0.0.1", "localhost"):
+        return True
+    return _return_ok_secure(policy, cookie, request)
+
+
+http.cookiejar.DefaultCookiePolicy.return_ok_secure = _loopback_is_secure
 
 
 def browser():
-    s = requests.Session()
-    s.cookies.set_policy(LoopbackPolicy())
-    return s
+    return requests.Session()
 
 
 class FormParser(html.parser.HTMLParser):
@@ -296,7 +299,11 @@ def cli_grade(student, answers, folder, assignment=ASSIGNMENT):
 
 
 def total_of(report):
-    """(score, max) of a `raygrade grade --format json` report."""
+    """(score, max) of a `raygrade grade --format json` report: {"submissions": [{"score",
+    "max_score", ...}]} for one submission."""
+    if "submissions" in report:
+        (one,) = report["submissions"]
+        return one["score"], one["max_score"]
     for a, b in (("score", "max"), ("score", "max_score"), ("points", "max_points"),
                  ("total", "max"), ("score", "out_of")):
         if a in report and b in report:

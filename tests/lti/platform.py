@@ -23,7 +23,8 @@ Platform endpoints (as the specifications name them):
 Test controls (JSON answers unless said otherwise):
   POST /test/registration-token            {"token", "openid_configuration"}: one registration
   GET  /test/state                         registrations, links, line items, contexts
-  GET  /test/scores                        every score POST received, in order
+  GET  /test/scores                        every score POST received, in order ("repeat": true
+                                           when the same score had come before)
   GET  /test/calls                         how many /token and /scores calls came, by outcome
   POST /test/fail {"endpoint": "token"|"scores", "times": N}   answer 503 to the next N calls
   GET|POST /test/launch?user=U&role=Learner|Instructor&context=C&link=L&message=resource|deeplink
@@ -577,8 +578,12 @@ class Platform:
         if not valid_timestamp(body["timestamp"]):
             raise Refused(400, "timestamp is not ISO 8601 with a time zone")
         with self.lock:
+            # The same score sent again (same user, timestamp and values): AGS keeps the result
+            # of the latest timestamp, so a repeat changes nothing; recorded, marked as such.
+            again = any(s["lineitem"] == item["id"] and s["body"] == body
+                        for s in self.data["scores"])
             self.data["scores"].append({"lineitem": item["id"], "received": time.time(),
-                                        "body": body})
+                                        "body": body, "repeat": again})
             self.save()
 
     def results(self, cid, n):
