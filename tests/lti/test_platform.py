@@ -69,7 +69,7 @@ class PlatformTest(unittest.TestCase):
         self.tmp = tempfile.mkdtemp(prefix="raygrade-platform-")
         self.proc, self.p = ltitest.start_platform(self.tmp)
         self.tool = FakeTool()
-        self.addCleanup(self.proc.stop)
+        self.addCleanup(lambda: self.proc.stop())
         self.addCleanup(self.tool.server.shutdown)
         self.addCleanup(shutil.rmtree, self.tmp, True)
 
