@@ -325,9 +325,9 @@ class LtiCase(unittest.TestCase):
         self.data = os.path.join(self.tmp, "data")
         self.pstate = os.path.join(self.tmp, "platform")
         os.makedirs(self.pstate)
+        self.addCleanup(self.cleanup)
         self.pproc, self.platform = start_platform(self.pstate, self.public_host)
         self.tproc, self.tool = start_tool(self.data, env=self.tool_env)
-        self.addCleanup(self.cleanup)
 
     def cleanup(self):
         for proc in (getattr(self, "tproc", None), getattr(self, "pproc", None)):
