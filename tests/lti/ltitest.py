@@ -109,7 +109,11 @@ def start_platform(state, public_host=None, port=0):
     if public_host:
         args += ["--public-host", public_host]
     proc = Process(args, os.path.join(state, "platform.log"))
-    url = read_line(proc, r"^platform: (\S+)")[1]
+    try:
+        url = read_line(proc, r"^platform: (\S+)")[1]
+    except RuntimeError:
+        proc.stop()
+        raise
     proc.drain()
     return proc, url
 
@@ -124,9 +128,14 @@ def start_tool(data, assignments=ASSIGNMENTS, port=None, host="127.0.0.1", env=N
     proc = Process([RAYGRADE, "serve", "--data", data, "--listen", f"127.0.0.1:{port}",
                     "--public-url", url, "--assignments", assignments],
                    os.path.join(data, "..", f"serve-{port}.log"), full_env)
-    read_line(proc, r"^raygrade serve: listening on http://127\.0\.0\.1:\d+")
-    for name in ("registration", "login", "launch", "JWKS"):
-        read_line(proc, rf"^{name} URL: ")
+    try:
+        read_line(proc, r"^raygrade serve: listening on http://127\.0\.0\.1:\d+")
+        for name, path in (("registration", "register"), ("login", "login"),
+                           ("launch", "launch"), ("JWKS", "jwks")):
+            read_line(proc, rf"^{name} URL: {re.escape(url)}/lti/{path}$")
+    except RuntimeError:
+        proc.stop()
+        raise
     proc.drain()
     return proc, url
 
