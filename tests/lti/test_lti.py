@@ -128,6 +128,30 @@ class FlowTest(ltitest.LtiCase):
         self.assertEqual(student_key(again), students["ada"][2])
         self.assertNotEqual(again["launch"], students["ada"][1]["launch"])
 
+    def test_line_item_made_by_the_tool(self):
+        """A link placed without a line item (the launch carries lineitems, not lineitem): the
+        tool creates the line item of the resource link by AGS, once, and scores go there."""
+        import requests
+        self.register()
+        link = requests.post(f"{self.platform}/test/link", json={
+            "title": "Homework", "custom": {"assignment": ASSIGNMENT}}, timeout=30).json()
+        self.assertIsNone(link["lineitem"])
+        for user in ("ada", "alan"):
+            s = browser()
+            r, data = launch(self.platform, s, user=user, role="Learner", link=link["id"])
+            self.assertEqual(r.status_code, 200, r.text[:300])
+            r = self.submit(s, data, solve(student_key(data)))
+            self.assertEqual(r.status_code, 200, r.text[:300])
+        scores = self.wait_scores(2)
+        items = list(self.state()["lineitems"].values())
+        self.assertEqual(len(items), 1, items)
+        self.assertEqual(items[0]["resourceLinkId"], link["id"])
+        self.assertAlmostEqual(items[0]["scoreMaximum"], assignment_points(), places=9)
+        self.assertEqual({x["lineitem"] for x in scores}, {items[0]["id"]})
+        self.assertEqual(sorted(x["body"]["userId"] for x in scores), ["ada", "alan"])
+        for x in scores:
+            self.assertAlmostEqual(x["body"]["scoreGiven"], x["body"]["scoreMaximum"], places=9)
+
     def test_instructor_page(self):
         self.register()
         link = self.deep_link()
