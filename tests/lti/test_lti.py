@@ -163,6 +163,10 @@ class FlowTest(ltitest.LtiCase):
             self.assertIn(f"{self.tool}{path}", r.text)
         report = s.get(f"{self.tool}/lti/report", params={"launch": data["launch"]}, timeout=60)
         self.assertEqual(report.status_code, 200, report.text[:300])
+        book = s.get(f"{self.tool}/lti/gradebook.csv", params={"launch": data["launch"]},
+                     timeout=60)
+        self.assertEqual(book.status_code, 200, book.text[:300])
+        self.assertTrue(book.headers.get("Content-Type", "").startswith("text/csv"))
         # A student's session cannot read the report.
         student = browser()
         r, sdata = launch(self.platform, student, user="ada", role="Learner", link=link["id"])
