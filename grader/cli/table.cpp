@@ -16,6 +16,9 @@ Runner setup_schema(CLI::App& sub);
 Runner setup_tables(CLI::App& sub);
 Runner setup_report(CLI::App& sub);
 Runner setup_regrade(CLI::App& sub);
+#ifdef RAYGRADE_HAS_SERVE
+Runner setup_serve(CLI::App& sub);
+#endif
 
 const std::vector<Command>& command_table() {
   static const std::vector<Command> table = {
@@ -42,6 +45,10 @@ const std::vector<Command>& command_table() {
        &setup_schema},
       {"tables", "the docs' tables of primitives, kinds and formats, from the code's own",
        &setup_tables},
+#ifdef RAYGRADE_HAS_SERVE
+      {"serve", "an LTI 1.3 tool: students launch, submit and get graded from any LMS",
+       &setup_serve},
+#endif
   };
   return table;
 }
