@@ -23,10 +23,11 @@ nlohmann::json answers_of(const SubmissionRecord& r) {
   return a.is_object() ? a : nlohmann::json::object();
 }
 
-// One student of the report: their last answers graded again as their own variant.
-ClassStudent report_student(const CatalogEntry& e, const SubmissionRecord& r) {
+// One student of the report: their last answers graded again as their own variant,
+// `problems` (which the student's answers point into: they must outlive the report's add).
+ClassStudent report_student(const CatalogEntry& e, const SubmissionRecord& r,
+                            const std::vector<Problem>& problems) {
   std::string key = student_key_of(r.issuer, r.sub);
-  std::vector<Problem> problems = student_problems(e.spec, e.bank.problems, key);
   Assignment graders(problems);
   nlohmann::json answers = answers_of(r);
   auto file = parse_json_text("answers.json", nlohmann::json{{"answers", answers}}.dump(),
@@ -74,7 +75,11 @@ std::string class_report_page(const CatalogEntry& e, const std::vector<Submissio
   }
   ClassReportBuilder report(e.title(), ids, titles, e.bank.problems);
   // The variants of a student live while they are added: the builder keeps their numbers.
-  for (const auto& r : last_per_student(all)) report.add(report_student(e, r));
+  for (const auto& r : last_per_student(all)) {
+    std::vector<Problem> problems =
+        student_problems(e.spec, e.bank.problems, student_key_of(r.issuer, r.sub));
+    report.add(report_student(e, r, problems));
+  }
   return class_report_html(report.json(1));
 }
 
