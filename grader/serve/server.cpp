@@ -561,7 +561,10 @@ void LtiServer::Impl::on_regrade(const httplib::Request& req, httplib::Response&
 
 LtiServer::LtiServer(ServeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
 
-LtiServer::~LtiServer() { stop(); }
+LtiServer::~LtiServer() {
+  stop();
+  impl_->outbox->stop();
+}
 
 int LtiServer::bind(const std::string& host, int port) {
   bool bound = port == 0 ? (port = impl_->http.bind_to_any_port(host)) > 0
@@ -581,10 +584,7 @@ void LtiServer::run() {
   impl_->outbox->stop();
 }
 
-void LtiServer::stop() {
-  impl_->http.stop();
-  impl_->outbox->stop();
-}
+void LtiServer::stop() { impl_->http.stop(); }
 
 const std::vector<Diagnostic>& LtiServer::warnings() const { return impl_->catalog.errors(); }
 
