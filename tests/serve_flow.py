@@ -29,7 +29,9 @@ C = "https://purl.imsglobal.org/spec/lti/claim/"
 LEARNER = ["http://purl.imsglobal.org/vocab/lis/v2/membership#Learner"]
 INSTRUCTOR = ["http://purl.imsglobal.org/vocab/lis/v2/membership#Instructor"]
 KEY = jwk.JWK.generate(kty="RSA", size=2048, kid="platform-1")
-SCORES, REGISTRATIONS = [], []
+SCORES, REGISTRATIONS, LINE_ITEMS = [], [], []
+# Answers of 503 still to give, by endpoint; "down": every score refused.
+FAILURES = {"token": 1, "scores": 2, "down": False}
 
 
 class Platform(BaseHTTPRequestHandler):
@@ -51,12 +53,24 @@ class Platform(BaseHTTPRequestHandler):
                               "registration_endpoint": ISS + "/register"})
         elif self.path == "/jwks":
             self.answer(200, {"keys": [json.loads(KEY.export_public())]})
+        elif self.path.startswith("/ags/course-2/lineitems"):
+            self.answer(200, LINE_ITEMS)
         else:
             self.answer(404)
 
     def do_POST(self):
         body = self.rfile.read(int(self.headers.get("Content-Length", 0)))
-        if self.path == "/token":
+        if self.path == "/token" and FAILURES["token"] > 0:
+            FAILURES["token"] -= 1
+            self.answer(503)
+        elif self.path.endswith("/scores") and (FAILURES["down"] or FAILURES["scores"] > 0):
+            FAILURES["scores"] -= 1
+            self.answer(503)
+        elif self.path == "/ags/course-2/lineitems":
+            item = dict(json.loads(body), id=ISS + "/ags/course-2/lineitems/%d" % (len(LINE_ITEMS) + 1))
+            LINE_ITEMS.append(item)
+            self.answer(201, item)
+        elif self.path == "/token":
             form = urllib.parse.parse_qs(body.decode())
             assertion = jwt.JWT(jwt=form["client_assertion"][0], key=TOOL_KEYS[0], algs=["RS256"])
             claims = json.loads(assertion.claims)
@@ -103,7 +117,7 @@ def login(client_id):
     return q["state"][0], q["nonce"][0], cookie_of(r, "raygrade_state")
 
 
-def launch_claims(sub, roles, nonce, client_id="client-1", deployment="dep-1"):
+def launch_claims(sub, roles, nonce, client_id="client-1", deployment="dep-1", ags=None):
     now = int(time.time())
     return {"iss": ISS, "aud": client_id, "sub": sub, "exp": now + 300, "iat": now,
             "nonce": nonce, "name": "Student " + sub, C + "deployment_id": deployment,
@@ -112,7 +126,7 @@ def launch_claims(sub, roles, nonce, client_id="client-1", deployment="dep-1"):
             C + "target_link_uri": TOOL + "/lti/launch",
             C + "custom": {"assignment": "homework-rays.json"},
             "https://purl.imsglobal.org/spec/lti-ags/claim/endpoint":
-                {"lineitem": ISS + "/ags/course-1/lineitems/7"}}
+                ags or {"lineitem": ISS + "/ags/course-1/lineitems/7"}}
 
 
 def post_launch(token, state, state_cookie):
@@ -135,6 +149,27 @@ def reference_answers(student):
                           "--student", student, "--format", "json"],
                          check=True, capture_output=True, text=True).stdout
     return {s["id"]: s["answer"] for s in json.loads(out)["solutions"]}
+
+
+def submit_as(sub, ags=None):
+    """A launch and a submission of the student's own answers; the submission's answer."""
+    state, nonce, cookie = login("client-1")
+    r = post_launch(id_token(launch_claims(sub, LEARNER, nonce, ags=ags)), state, cookie)
+    check(r.status_code == 200, f"{sub}'s launch answers 200 (got {r.status_code})")
+    launch = launch_json(r.text)
+    body = {"launch": launch["launch"], "csrf": launch["csrf"],
+            "answers": reference_answers(launch["student"])}
+    r = requests.post(launch["submit"], json=body,
+                      headers={"Cookie": "raygrade_session=" + cookie_of(r, "raygrade_session")})
+    check(r.status_code == 200, f"{sub}'s submission answers 200 ({r.text[:200]})")
+    return r.json()
+
+
+def wait_for_scores(count, seconds=20):
+    deadline = time.time() + seconds
+    while len(SCORES) < count and time.time() < deadline:
+        time.sleep(0.05)
+    time.sleep(0.3)  # a score sent twice would come now
 
 
 def students_flow():
@@ -240,6 +275,40 @@ def registration_and_deep_link():
           item["custom"]["assignment"] == "homework-rays.json", "the link and its line item")
 
 
+def start_server():
+    server = subprocess.Popen([RAYGRADE, "serve", "--data", DATA, "--listen", "127.0.0.1:0",
+                               "--assignments", os.path.join(SOURCE, "assignments")],
+                              stdout=subprocess.PIPE, text=True,
+                              env=dict(os.environ, RAYGRADE_OUTBOX_BASE_MS="50"))
+    lines = [server.stdout.readline().strip() for _ in range(5)]
+    tool = re.match(r"raygrade serve: listening on (http://127\.0\.0\.1:\d+)$", lines[0])[1]
+    check(lines[1:] == [f"registration URL: {tool}/lti/register",
+                        f"login URL: {tool}/lti/login", f"launch URL: {tool}/lti/launch",
+                        f"JWKS URL: {tool}/lti/jwks"], f"the printed URLs: {lines}")
+    return server, tool
+
+
+def outbox_flow():
+    wait_for_scores(3)
+    got = {(s[3]["userId"], s[3]["scoreGiven"], s[3]["scoreMaximum"]) for s in SCORES}
+    # The token endpoint failed once and the scores twice: each score still arrives, once.
+    check(got == {("s1", 21, 21), ("s2", 21, 21), ("s3", 21, 21)} and len(SCORES) == 3,
+          f"each score reaches the platform once: {SCORES}")
+    path, kind, auth, score = SCORES[0]
+    check(path == "/ags/course-1/lineitems/7/scores" and
+          kind == "application/vnd.ims.lis.v1.score+json" and auth == "Bearer T-client-1",
+          "the score's URL, type and token")
+    check(re.fullmatch(r"\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d\.\d{3}Z", score["timestamp"]) and
+          score["activityProgress"] == "Completed" and
+          score["gradingProgress"] == "FullyGraded", "the score's fields")
+    # A link with the context's line items only: the tool makes the link's line item.
+    submit_as("s4", {"lineitems": ISS + "/ags/course-2/lineitems"})
+    wait_for_scores(4)
+    check(len(LINE_ITEMS) == 1 and LINE_ITEMS[0]["resourceLinkId"] == "link-1" and
+          LINE_ITEMS[0]["scoreMaximum"] == 21, f"one line item made: {LINE_ITEMS}")
+    check(SCORES[3][0] == "/ags/course-2/lineitems/1/scores", "the score goes to the new item")
+
+
 def main():
     global ISS, TOOL, TOOL_KEYS
     shutil.rmtree(WORK, ignore_errors=True)
@@ -251,34 +320,27 @@ def main():
                     "--client-id", "client-1", "--deployment-id", "dep-1", "--auth-url",
                     ISS + "/auth", "--token-url", ISS + "/token", "--jwks-url", ISS + "/jwks"],
                    check=True)
-    server = subprocess.Popen([RAYGRADE, "serve", "--data", DATA, "--listen", "127.0.0.1:0",
-                               "--assignments", os.path.join(SOURCE, "assignments")],
-                              stdout=subprocess.PIPE, text=True,
-                              env=dict(os.environ, RAYGRADE_OUTBOX_BASE_MS="50"))
+    server, TOOL = start_server()
     try:
-        lines = [server.stdout.readline().strip() for _ in range(5)]
-        TOOL = re.match(r"raygrade serve: listening on (http://127\.0\.0\.1:\d+)$", lines[0])[1]
-        check(lines[1:] == [f"registration URL: {TOOL}/lti/register",
-                            f"login URL: {TOOL}/lti/login", f"launch URL: {TOOL}/lti/launch",
-                            f"JWKS URL: {TOOL}/lti/jwks"], f"the printed URLs: {lines}")
         TOOL_KEYS = [jwk.JWKSet.from_json(requests.get(TOOL + "/lti/jwks").text)]
         students_flow()
         attacks()
         instructor_flow()
         registration_and_deep_link()
-        deadline = time.time() + 20
-        while len(SCORES) < 3 and time.time() < deadline:
-            time.sleep(0.1)
-        got = {(s[3]["userId"], s[3]["scoreGiven"], s[3]["scoreMaximum"]) for s in SCORES}
-        check(got == {("s1", 21, 21), ("s2", 21, 21), ("s3", 21, 21)} and len(SCORES) == 3,
-              f"each score reaches the platform once: {SCORES}")
-        path, kind, auth, score = SCORES[0]
-        check(path == "/ags/course-1/lineitems/7/scores" and
-              kind == "application/vnd.ims.lis.v1.score+json" and auth == "Bearer T-client-1",
-              "the score's URL, type and token")
-        check(re.fullmatch(r"\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d\.\d{3}Z", score["timestamp"]) and
-              score["activityProgress"] == "Completed" and
-              score["gradingProgress"] == "FullyGraded", "the score's fields")
+        outbox_flow()
+        # The platform down: a score acknowledged, then the server killed; after a restart
+        # the score is delivered, once, and the tool's key is the same.
+        FAILURES["down"] = True
+        submit_as("s5")
+        server.kill()
+        server.wait()
+        FAILURES["down"] = False
+        server, TOOL = start_server()
+        check(jwk.JWKSet.from_json(requests.get(TOOL + "/lti/jwks").text).export() ==
+              TOOL_KEYS[0].export(), "the tool's key survives a restart")
+        wait_for_scores(5)
+        check(len(SCORES) == 5 and SCORES[4][3]["userId"] == "s5",
+              "a score left in the outbox by a killed server is delivered after a restart")
     finally:
         server.terminate()
         code = server.wait(timeout=20)
