@@ -151,14 +151,17 @@ def reference_answers(student):
     return {s["id"]: s["answer"] for s in json.loads(out)["solutions"]}
 
 
-def submit_as(sub, ags=None):
-    """A launch and a submission of the student's own answers; the submission's answer."""
+def submit_as(sub, ags=None, change=None):
+    """A launch and a submission of the student's own answers (`change` may alter them); the
+    submission's answer."""
     state, nonce, cookie = login("client-1")
     r = post_launch(id_token(launch_claims(sub, LEARNER, nonce, ags=ags)), state, cookie)
     check(r.status_code == 200, f"{sub}'s launch answers 200 (got {r.status_code})")
     launch = launch_json(r.text)
     body = {"launch": launch["launch"], "csrf": launch["csrf"],
             "answers": reference_answers(launch["student"])}
+    if change:
+        change(body["answers"])
     r = requests.post(launch["submit"], json=body,
                       headers={"Cookie": "raygrade_session=" + cookie_of(r, "raygrade_session")})
     check(r.status_code == 200, f"{sub}'s submission answers 200 ({r.text[:200]})")
@@ -309,6 +312,39 @@ def outbox_flow():
     check(SCORES[3][0] == "/ags/course-2/lineitems/1/scores", "the score goes to the new item")
 
 
+def regrade_flow():
+    """A student's t of the sphere off by 0.5; a bank whose sphere takes t within 1: the
+    regrade finds that student's score changed, and sends the new one."""
+    def nudge(answers):
+        answers["variant-sphere"]["hits"][0]["t"] += 0.5
+    before = submit_as("s6", change=nudge)
+    check(before["score"] < 21, f"an answer off by 0.5 loses points ({before['score']})")
+    wait_for_scores(5)
+    state, nonce, cookie = login("client-1")
+    r = post_launch(id_token(launch_claims("teacher", INSTRUCTOR, nonce)), state, cookie)
+    launch, session = launch_json(r.text), cookie_of(r, "raygrade_session")
+    files = []
+    for folder, _, names in os.walk(os.path.join(SOURCE, "problems")):
+        for name in sorted(names):
+            path = os.path.join(folder, name)
+            text = open(path).read()
+            if name == "variants.json":
+                bank = json.loads(text)
+                for p in bank["problems"]:
+                    if p["id"] == "variant-sphere":
+                        p["tolerance"] = {"atol": 1, "rtol": 0}
+                text = json.dumps(bank)
+            rel = os.path.relpath(path, os.path.join(SOURCE, "problems")).replace("/", "-")
+            files.append(("bank", (rel, text, "application/json")))
+    r = requests.post(TOOL + "/lti/regrade", files=files + [
+        ("launch", (None, launch["launch"])), ("csrf", (None, launch["csrf"]))],
+        headers={"Cookie": "raygrade_session=" + session})
+    check(r.status_code == 200 and "1 students" in r.text, f"one score changes: {r.text[-400:]}")
+    wait_for_scores(6)
+    check(len(SCORES) == 6 and SCORES[5][3]["userId"] == "s6" and
+          SCORES[5][3]["scoreGiven"] == 21, f"the changed score is sent: {SCORES[4:]}")
+
+
 def main():
     global ISS, TOOL, TOOL_KEYS
     shutil.rmtree(WORK, ignore_errors=True)
@@ -328,6 +364,7 @@ def main():
         instructor_flow()
         registration_and_deep_link()
         outbox_flow()
+        regrade_flow()
         # The platform down: a score acknowledged, then the server killed; after a restart
         # the score is delivered, once, and the tool's key is the same.
         FAILURES["down"] = True
@@ -338,8 +375,8 @@ def main():
         server, TOOL = start_server()
         check(jwk.JWKSet.from_json(requests.get(TOOL + "/lti/jwks").text).export() ==
               TOOL_KEYS[0].export(), "the tool's key survives a restart")
-        wait_for_scores(5)
-        check(len(SCORES) == 5 and SCORES[4][3]["userId"] == "s5",
+        wait_for_scores(7)
+        check(len(SCORES) == 7 and SCORES[6][3]["userId"] == "s5",
               "a score left in the outbox by a killed server is delivered after a restart")
     finally:
         server.terminate()

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <set>
 
 #include "assignments/feedback.h"
 #include "assignments/variants.h"
 #include "core/atomic_file.h"
+#include "core/escape.h"
 #include "grading/outputs.h"
 #include "json/source.h"
 #include "reports/class_report.h"
@@ -94,13 +96,17 @@ std::string gradebook_of(const CatalogEntry& e, const std::vector<SubmissionReco
 }
 
 std::vector<Regraded> regrade_with(const CatalogEntry& e, const std::vector<SubmissionRecord>& all,
-                                   const std::string& bank_text, const std::string& data_dir) {
-  std::filesystem::path folder = std::filesystem::path(data_dir) / "banks";
+                                   const std::vector<BankFile>& files,
+                                   const std::string& data_dir) {
+  std::filesystem::path folder = std::filesystem::path(data_dir) / "banks" / random_token(9);
   std::filesystem::create_directories(folder);
-  std::filesystem::path file = folder / (random_token(9) + ".json");
-  write_file_atomically(file.string(), bank_text, false);
+  std::set<std::string> taken;
+  for (const auto& f : files) {
+    std::string name = f.name.ends_with(".json") ? f.name.substr(0, f.name.size() - 5) : f.name;
+    write_file_atomically(folder / (unique_file_name(name, taken) + ".json"), f.text, false);
+  }
   AssignmentSpec spec = e.spec;
-  spec.bank = {file.string()};
+  spec.bank = {folder.string()};
   AssignmentBank bank = load_assignment_bank(spec);
   if (bank.problems.size() != spec.problems.size()) {
     std::string why =

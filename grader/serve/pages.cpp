@@ -133,7 +133,7 @@ std::string instructor_page(const std::string& title, const std::string& public_
       "<form method=\"post\" action=\"{}/lti/regrade\" enctype=\"multipart/form-data\">"
       "<input type=\"hidden\" name=\"launch\" value=\"{}\">"
       "<input type=\"hidden\" name=\"csrf\" value=\"{}\">"
-      "<input type=\"file\" name=\"bank\" accept=\".json\"> "
+      "<input type=\"file\" name=\"bank\" accept=\".json\" multiple> "
       "<button type=\"submit\">Regrade and send changed scores</button></form>\n",
       html_escape(title), submissions, attr(public_url), attr(id), attr(public_url), attr(id),
       attr(public_url), attr(id), attr(csrf));
