@@ -4,10 +4,12 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <set>
 
 #include "assignments/feedback.h"
 #include "assignments/variants.h"
 #include "core/atomic_file.h"
+#include "core/escape.h"
 #include "grading/outputs.h"
 #include "json/source.h"
 #include "reports/class_report.h"
@@ -23,10 +25,11 @@ nlohmann::json answers_of(const SubmissionRecord& r) {
   return a.is_object() ? a : nlohmann::json::object();
 }
 
-// One student of the report: their last answers graded again as their own variant.
-ClassStudent report_student(const CatalogEntry& e, const SubmissionRecord& r) {
+// One student of the report: their last answers graded again as their own variant,
+// `problems` (which the student's answers point into: they must outlive the report's add).
+ClassStudent report_student(const CatalogEntry& e, const SubmissionRecord& r,
+                            const std::vector<Problem>& problems) {
   std::string key = student_key_of(r.issuer, r.sub);
-  std::vector<Problem> problems = student_problems(e.spec, e.bank.problems, key);
   Assignment graders(problems);
   nlohmann::json answers = answers_of(r);
   auto file = parse_json_text("answers.json", nlohmann::json{{"answers", answers}}.dump(),
@@ -74,7 +77,11 @@ std::string class_report_page(const CatalogEntry& e, const std::vector<Submissio
   }
   ClassReportBuilder report(e.title(), ids, titles, e.bank.problems);
   // The variants of a student live while they are added: the builder keeps their numbers.
-  for (const auto& r : last_per_student(all)) report.add(report_student(e, r));
+  for (const auto& r : last_per_student(all)) {
+    std::vector<Problem> problems =
+        student_problems(e.spec, e.bank.problems, student_key_of(r.issuer, r.sub));
+    report.add(report_student(e, r, problems));
+  }
   return class_report_html(report.json(1));
 }
 
@@ -89,13 +96,17 @@ std::string gradebook_of(const CatalogEntry& e, const std::vector<SubmissionReco
 }
 
 std::vector<Regraded> regrade_with(const CatalogEntry& e, const std::vector<SubmissionRecord>& all,
-                                   const std::string& bank_text, const std::string& data_dir) {
-  std::filesystem::path folder = std::filesystem::path(data_dir) / "banks";
+                                   const std::vector<BankFile>& files,
+                                   const std::string& data_dir) {
+  std::filesystem::path folder = std::filesystem::path(data_dir) / "banks" / random_token(9);
   std::filesystem::create_directories(folder);
-  std::filesystem::path file = folder / (random_token(9) + ".json");
-  write_file_atomically(file.string(), bank_text, false);
+  std::set<std::string> taken;
+  for (const auto& f : files) {
+    std::string name = f.name.ends_with(".json") ? f.name.substr(0, f.name.size() - 5) : f.name;
+    write_file_atomically(folder / (unique_file_name(name, taken) + ".json"), f.text, false);
+  }
   AssignmentSpec spec = e.spec;
-  spec.bank = {file.string()};
+  spec.bank = {folder.string()};
   AssignmentBank bank = load_assignment_bank(spec);
   if (bank.problems.size() != spec.problems.size()) {
     std::string why =

@@ -27,11 +27,17 @@ struct Regraded {
   double max_score = 0;
 };
 
-// Each student's last submission graded with `bank_text` (one bank file, kept in
-// DIR/banks/) in place of the assignment's bank: the students whose score it changes. Throws
-// Refusal (400) when the bank cannot be read or lacks a problem of the assignment.
+// A bank file sent for a regrade: its name and text.
+struct BankFile {
+  std::string name;
+  std::string text;
+};
+
+// Each student's last submission graded with `bank` (the files of a bank, kept in a new folder
+// of DIR/banks/) in place of the assignment's bank: the students whose score it changes.
+// Throws Refusal (400) when the bank cannot be read or lacks a problem of the assignment.
 std::vector<Regraded> regrade_with(const CatalogEntry& entry,
                                    const std::vector<SubmissionRecord>& all,
-                                   const std::string& bank_text, const std::string& data_dir);
+                                   const std::vector<BankFile>& bank, const std::string& data_dir);
 
 }  // namespace raygrade::serve

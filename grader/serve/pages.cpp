@@ -38,7 +38,10 @@ constexpr std::string_view kSubmitScript = R"JS(
         h.textContent = (p.title || p.problem) + ": " + p.score + " / " + p.max_score;
         out.appendChild(h);
         const lines = [];
-        for (const part of p.parts || []) lines.push(part.name + " (" + part.status + "): " + (part.feedback || ""));
+        for (const part of p.parts || []) {
+          const said = Array.isArray(part.feedback) ? part.feedback.join(" ") : part.feedback || "";
+          lines.push(part.name + " (" + part.status + "): " + said);
+        }
         for (const m of p.mistakes || []) lines.push(m.message);
         for (const n of p.notes || []) lines.push(n);
         for (const line of lines) {
@@ -90,6 +93,11 @@ std::string student_page(const std::string& handout_html, const nlohmann::json& 
                       "<script>" +
                       std::string(kSubmitScript) + "</script>\n";
   std::string html = handout_html;
+  // The handout's policy allows no connection (a page of its own, offline); this one sends
+  // its answers to the tool that served it, and nowhere else.
+  constexpr std::string_view kNone = "default-src 'none'; ";
+  if (std::size_t csp = html.find(kNone); csp != std::string::npos)
+    html.insert(csp + kNone.size(), "connect-src 'self'; ");
   std::size_t end = html.rfind("</body>");
   if (end == std::string::npos) return html + extra;
   return html.insert(end, extra);
@@ -133,7 +141,7 @@ std::string instructor_page(const std::string& title, const std::string& public_
       "<form method=\"post\" action=\"{}/lti/regrade\" enctype=\"multipart/form-data\">"
       "<input type=\"hidden\" name=\"launch\" value=\"{}\">"
       "<input type=\"hidden\" name=\"csrf\" value=\"{}\">"
-      "<input type=\"file\" name=\"bank\" accept=\".json\"> "
+      "<input type=\"file\" name=\"bank\" accept=\".json\" multiple> "
       "<button type=\"submit\">Regrade and send changed scores</button></form>\n",
       html_escape(title), submissions, attr(public_url), attr(id), attr(public_url), attr(id),
       attr(public_url), attr(id), attr(csrf));

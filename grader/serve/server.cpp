@@ -533,7 +533,10 @@ void LtiServer::Impl::on_regrade(const httplib::Request& req, httplib::Response&
   std::string csrf = field("csrf");
   LaunchRecord l = instructor_launch(req, field("launch"), &csrf);
   const CatalogEntry& e = entry_of(l);
-  std::string bank = field("bank");
+  std::vector<BankFile> bank;
+  auto [from, to] = req.files.equal_range("bank");
+  for (auto it = from; it != to; ++it)
+    if (!it->second.content.empty()) bank.push_back({it->second.filename, it->second.content});
   if (bank.empty()) throw Refusal(400, "no bank file was sent");
   auto subs = store->submissions(l.issuer, l.client_id, l.resource_link_id, l.assignment);
   std::vector<Regraded> changed = regrade_with(e, subs, bank, options.data_dir);
@@ -561,7 +564,10 @@ void LtiServer::Impl::on_regrade(const httplib::Request& req, httplib::Response&
 
 LtiServer::LtiServer(ServeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
 
-LtiServer::~LtiServer() { stop(); }
+LtiServer::~LtiServer() {
+  stop();
+  impl_->outbox->stop();
+}
 
 int LtiServer::bind(const std::string& host, int port) {
   bool bound = port == 0 ? (port = impl_->http.bind_to_any_port(host)) > 0
@@ -581,10 +587,7 @@ void LtiServer::run() {
   impl_->outbox->stop();
 }
 
-void LtiServer::stop() {
-  impl_->http.stop();
-  impl_->outbox->stop();
-}
+void LtiServer::stop() { impl_->http.stop(); }
 
 const std::vector<Diagnostic>& LtiServer::warnings() const { return impl_->catalog.errors(); }
 

@@ -32,6 +32,7 @@ class LtiServer {
   int bind(const std::string& host, int port);
   // Serves until stop(), delivering scores from the outbox meanwhile.
   void run();
+  // Makes run() return (from any thread); the outbox stops as run() returns.
   void stop();
   // The public URL, without a trailing slash (known once bound when none was given).
   const std::string& public_url() const;
