@@ -47,7 +47,13 @@ def fill(driver, form, right):
         el.clear()
         el.send_keys(value)
 
-    problems = form["problems"] if isinstance(form, dict) and "problems" in form else form
+    # The launch data's form: {problem id: answer form} (or a list of {"id", "form"}).
+    if isinstance(form, dict) and "problems" in form:
+        problems = form["problems"]
+    elif isinstance(form, dict):
+        problems = [{"id": pid, "form": f} for pid, f in form.items()]
+    else:
+        problems = form
     done = {}
     for p in problems:
         pid = p["id"]
@@ -130,7 +136,7 @@ def main():
             typed_answers = fill(driver, data["form"], solve(key))
             if not typed_answers:
                 failures.append("no problem's inputs could be filled")
-            buttons = driver.find_elements(By.CSS_SELECTOR, "button[type=submit], input[type=submit], #submit")
+            buttons = driver.find_elements(By.CSS_SELECTOR, "#raygrade-submit")
             if not buttons:
                 failures.append("no submit button")
             else:
@@ -138,6 +144,8 @@ def main():
                 buttons[0].click()
             scores = case.wait_scores(1, 30)
             time.sleep(0.5)
+            for shown in driver.find_elements(By.ID, "raygrade-result"):
+                driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", shown)
             driver.save_screenshot(os.path.join(OUT, "student-feedback.png"))
             if len(scores) != 1:
                 failures.append(f"the platform has {len(scores)} scores, not 1")

@@ -156,8 +156,19 @@ def _loopback_is_secure(policy, cookie, request):
 http.cookiejar.DefaultCookiePolicy.return_ok_secure = _loopback_is_secure
 
 
+_BROWSERS = []
+
+
 def browser():
-    return requests.Session()
+    """A new browser: its own cookies and connections (closed at the test's end)."""
+    s = requests.Session()
+    _BROWSERS.append(s)
+    return s
+
+
+def close_browsers():
+    while _BROWSERS:
+        _BROWSERS.pop().close()
 
 
 class FormParser(html.parser.HTMLParser):
@@ -339,6 +350,7 @@ class LtiCase(unittest.TestCase):
         self.tproc, self.tool = start_tool(self.data, env=self.tool_env)
 
     def cleanup(self):
+        close_browsers()
         for proc in (getattr(self, "tproc", None), getattr(self, "pproc", None)):
             if proc:
                 proc.stop()

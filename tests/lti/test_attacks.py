@@ -182,7 +182,7 @@ class AnotherBrowserTest(AttackCase):
             "Alan's launch with Ada's CSRF token": (alan, his["launch"], hers["csrf"]),
             "Ada's CSRF token with Alan's launch, in Ada's browser": (ada, his["launch"],
                                                                        hers["csrf"]),
-            "Ada's launch and token without any cookie": (requests.Session(), hers["launch"],
+            "Ada's launch and token without any cookie": (browser(), hers["launch"],
                                                           hers["csrf"]),
             "no CSRF token": (ada, hers["launch"], ""),
         }
