@@ -1,7 +1,10 @@
 // `raygrade serve`: the LTI 1.3 tool's endpoints (docs/lti.md).
 #include "serve/server.h"
 
+#include <arpa/inet.h>
 #include <httplib.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 
 #include <algorithm>
 #include <chrono>
@@ -35,6 +38,26 @@ constexpr std::int64_t kJwksRefetchMs = 5000;
 constexpr std::size_t kMaxBody = 8u << 20;
 
 std::int64_t now_seconds() { return now_ms() / 1000; }
+
+// cpp-httplib 0.11 (Debian's shared library, its backlog compiled in) listens with a queue of
+// 5 connections: a class submitting at once sees the rest of its connections dropped and sent
+// again a second later, or reset. Listening again on the socket bound to `port` widens it.
+void widen_backlog(int port) {
+  for (int fd = 0; fd < 1024; ++fd) {
+    int accepting = 0;
+    socklen_t size = sizeof accepting;
+    if (getsockopt(fd, SOL_SOCKET, SO_ACCEPTCONN, &accepting, &size) != 0 || !accepting) continue;
+    sockaddr_storage address{};
+    socklen_t length = sizeof address;
+    if (getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) != 0) continue;
+    int bound = -1;
+    if (address.ss_family == AF_INET)
+      bound = ntohs(reinterpret_cast<const sockaddr_in*>(&address)->sin_port);
+    if (address.ss_family == AF_INET6)
+      bound = ntohs(reinterpret_cast<const sockaddr_in6*>(&address)->sin6_port);
+    if (bound == port) ::listen(fd, SOMAXCONN);
+  }
+}
 
 std::string cookie(const httplib::Request& req, const std::string& name) {
   std::string header = req.get_header_value("Cookie");
@@ -576,6 +599,7 @@ int LtiServer::bind(const std::string& host, int port) {
     throw Error(Diagnostic{host, "", 0, 0, Severity::kError,
                            fmt::format("cannot listen on {}:{}", host, port), "listen"});
   }
+  widen_backlog(port);
   if (impl_->options.public_url.empty())
     impl_->set_public_url(fmt::format("http://{}:{}", host, port));
   return port;
