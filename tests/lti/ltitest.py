@@ -360,6 +360,9 @@ class LtiCase(unittest.TestCase):
             shutil.rmtree(self.tmp, ignore_errors=True)
 
     def restart_tool(self, kill=False):
+        # Browsers' connections to the old server go with it (their cookies stay).
+        for s in _BROWSERS:
+            s.close()
         if kill:
             self.tproc.send_signal(signal.SIGKILL)
             self.tproc.wait()
