@@ -6,7 +6,10 @@ submission to its graded answer, the time until the platform has every score, an
 peak resident memory (VmHWM of /proc/PID/status). Loopback only; bounded (every request has a
 timeout, the whole run a deadline) and stops by itself.
 
-Usage: bench/lti_load.py [--students 200] [--raygrade build/release/grader/raygrade]"""
+Browsers keep their connections to the tool open between requests; --close makes each student
+close them after each answer, to tell the server's handling of idle connections from its grading.
+
+Usage: bench/lti_load.py [--students 200] [--close] [--raygrade build/release/grader/raygrade]"""
 import os
 import sys
 
@@ -48,6 +51,9 @@ def main():
     ap.add_argument("--students", type=int, default=200)
     ap.add_argument("--raygrade", default=None)
     ap.add_argument("--deadline", type=float, default=600, help="seconds for the whole run")
+    ap.add_argument("--close", action="store_true",
+                    help="each student closes its connections once launched and once answered"
+                         " (no idle keep-alive connections, unlike a browser)")
     args = ap.parse_args()
     if args.raygrade:
         os.environ["RAYGRADE"] = os.path.abspath(args.raygrade)
@@ -76,6 +82,8 @@ def main():
                                             link=link)
             if r.status_code != 200 or not launch_data:
                 raise RuntimeError(f"launch {i}: {r.status_code} {r.text[:200]}")
+            if args.close:
+                b.close()
             return b, launch_data
 
         t0 = time.time()
@@ -99,6 +107,8 @@ def main():
             except (requests.RequestException, ValueError) as e:
                 ok, r = False, e
             elapsed = time.perf_counter() - t
+            if args.close:
+                b.close()
             with lock:
                 (times if ok else failures).append(elapsed if ok else str(r)[:200])
 
@@ -137,6 +147,7 @@ def main():
             "all_answers_s": round(wall, 3), "all_scores_at_platform_s": round(all_scores, 3),
             "scores_received": len(scores), "server_peak_rss_kib": hwm,
             "server_sampled_rss_kib": peak_rss[0], "cores": os.cpu_count(),
+            "connections": "closed after each answer" if args.close else "kept alive, as a browser",
         }
         print(json.dumps(result, indent=1))
         for f in failures[:5]:
