@@ -1,8 +1,9 @@
 // raygrade serve: the LTI 1.3 tool (docs/lti.md); `raygrade serve register` stores a platform
 // registered by hand.
 #include <fmt/format.h>
-#include <signal.h>
+#include <pthread.h>
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <thread>
@@ -52,10 +53,12 @@ int run_serve(const ServeCliOptions& o) {
   }
   // SIGINT and SIGTERM stop the server from a thread of their own: every thread started
   // from here on inherits the blocked mask, so that the signals reach that thread alone.
+  // SIGUSR1 ends that thread when the server stopped otherwise.
   sigset_t stop_signals;
   sigemptyset(&stop_signals);
   sigaddset(&stop_signals, SIGINT);
   sigaddset(&stop_signals, SIGTERM);
+  sigaddset(&stop_signals, SIGUSR1);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
   serve::LtiServer server(options);
   for (const auto& w : server.warnings())
@@ -75,7 +78,7 @@ int run_serve(const ServeCliOptions& o) {
   });
   server.run();
   // Stopped by a signal: the waiter has returned. Stopped otherwise: wake it.
-  pthread_kill(waiter.native_handle(), SIGTERM);
+  pthread_kill(waiter.native_handle(), SIGUSR1);
   waiter.join();
   return kExitOk;
 }

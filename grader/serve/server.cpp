@@ -31,7 +31,7 @@ namespace {
 // How long a login may take between /lti/login and /lti/launch.
 constexpr std::int64_t kLoginSeconds = 600;
 // How long a launch's session lasts.
-constexpr std::int64_t kSessionSeconds = 8 * 3600;
+constexpr std::int64_t kSessionSeconds = std::int64_t{8} * 3600;
 // The least time between two fetches of one platform's JWKS for a kid it did not hold.
 constexpr std::int64_t kJwksRefetchMs = 5000;
 // The largest request body: a submission's answers, or a bank for a regrade.
@@ -221,7 +221,7 @@ struct LtiServer::Impl {
         [](const httplib::Request&, httplib::Response& res, std::exception_ptr e) {
           std::string why = "the tool failed on this request";
           try {
-            std::rethrow_exception(e);
+            std::rethrow_exception(std::move(e));
           } catch (const std::exception& x) {
             why += std::string(": ") + x.what();
           } catch (...) {
