@@ -6,9 +6,11 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <mutex>
 #include <thread>
 
 #include "cli/command.h"
+#include "serve/outbox.h"
 #include "serve/server.h"
 
 namespace raygrade::cli {
@@ -42,7 +44,14 @@ int run_serve(const ServeCliOptions& o) {
     return kExitBadInput;
   }
   std::string host = o.listen.substr(0, colon);
-  serve::ServeOptions options{o.data, o.public_url, o.assignments, 1000};
+  serve::ServeOptions options{o.data, o.public_url, o.assignments, 1000, nullptr};
+  // One line per request and per score not delivered, on standard error, with the time.
+  std::mutex log_mutex;
+  options.log = [&log_mutex](const std::string& line) {
+    std::string now = serve::iso_time_ms(serve::now_ms());
+    std::lock_guard lock(log_mutex);
+    fmt::print(stderr, "{} {}\n", now, line);
+  };
   if (const char* base = std::getenv("RAYGRADE_OUTBOX_BASE_MS")) {
     try {
       options.outbox_base_ms = std::max(1L, std::stol(base));

@@ -82,13 +82,18 @@ bool same_secret(const std::string& a, const std::string& b) {
   return diff == 0;
 }
 
+// The header a refusal's reason travels in to the server's log (the page says it too).
+constexpr const char* kReasonHeader = "X-Raygrade-Refusal";
+
 void send_refusal(httplib::Response& res, const Refusal& r) {
   res.status = r.status();
+  res.set_header(kReasonHeader, r.what());
   res.set_content(refusal_page(r.status(), r.what()), "text/html; charset=utf-8");
 }
 
 void send_json_refusal(httplib::Response& res, const Refusal& r) {
   res.status = r.status();
+  res.set_header(kReasonHeader, r.what());
   res.set_content(nlohmann::json{{"error", r.what()}}.dump(), "application/json");
 }
 
@@ -159,7 +164,7 @@ struct LtiServer::Impl {
                              "database"});
     }
     if (!options.public_url.empty()) set_public_url(options.public_url);
-    outbox = std::make_unique<Outbox>(*store, key.get(), kid, options.outbox_base_ms);
+    outbox = std::make_unique<Outbox>(*store, key.get(), kid, options.outbox_base_ms, options.log);
     routes();
   }
 
@@ -185,6 +190,13 @@ struct LtiServer::Impl {
 
   void routes() {
     http.set_payload_max_length(kMaxBody);
+    if (options.log) {
+      http.set_logger([this](const httplib::Request& req, const httplib::Response& res) {
+        std::string line = fmt::format("{} {} {}", req.method, req.path, res.status);
+        if (res.has_header(kReasonHeader)) line += ": " + res.get_header_value(kReasonHeader);
+        options.log(line);
+      });
+    }
     http.Get("/lti/jwks", [this](const httplib::Request&, httplib::Response& res) {
       nlohmann::json jwks = {{"keys", {public_jwk(key.get(), kid)}}};
       res.set_content(jwks.dump(), "application/json");
