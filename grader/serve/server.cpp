@@ -34,6 +34,11 @@ constexpr std::int64_t kLoginSeconds = 600;
 constexpr std::int64_t kSessionSeconds = std::int64_t{8} * 3600;
 // The least time between two fetches of one platform's JWKS for a kid it did not hold.
 constexpr std::int64_t kJwksRefetchMs = 5000;
+// Threads answering requests. cpp-httplib gives each connection a thread for as long as it is
+// kept alive: its default of 8 would let 8 idle browsers hold up a class.
+constexpr std::size_t kWorkers = 32;
+// Seconds an idle kept-alive connection holds its thread (cpp-httplib's default is 5).
+constexpr time_t kKeepAliveSeconds = 1;
 // The largest request body: a submission's answers, or a bank for a regrade.
 constexpr std::size_t kMaxBody = 8u << 20;
 
@@ -190,6 +195,8 @@ struct LtiServer::Impl {
 
   void routes() {
     http.set_payload_max_length(kMaxBody);
+    http.new_task_queue = [] { return new httplib::ThreadPool(kWorkers); };
+    http.set_keep_alive_timeout(kKeepAliveSeconds);
     if (options.log) {
       http.set_logger([this](const httplib::Request& req, const httplib::Response& res) {
         std::string line = fmt::format("{} {} {}", req.method, req.path, res.status);
