@@ -200,6 +200,13 @@ def students_flow():
         check(r.json()["score"] == 21 and r.json()["max"] == 21, f"{sub} scores 21 of 21")
     check(len({json.dumps(a, sort_keys=True) for a in answers.values()}) == 3,
           "three students, three sets of numbers")
+    state, nonce, cookie = login("client-1")
+    r = post_launch(id_token(launch_claims("s1", LEARNER, nonce)), state, cookie)
+    last = launch_json(r.text).get("last", {})
+    check(last.get("score") == 21 and last.get("max") == 21, f"a new launch shows the last score: {last}")
+    state, nonce, cookie = login("client-1")
+    r = post_launch(id_token(launch_claims("s9", LEARNER, nonce)), state, cookie)
+    check("last" not in launch_json(r.text), "a student who has not submitted has no last score")
     return answers
 
 

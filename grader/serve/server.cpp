@@ -464,6 +464,14 @@ void LtiServer::Impl::launch_page(const LaunchRecord& l, httplib::Response& res)
   launch["form"] = forms;
   launch["student"] = student;
   launch["role"] = "learner";
+  // What the student's last submission to this link scored: points are shown under every
+  // feedback policy.
+  for (const auto& s : store->submissions(l.issuer, l.client_id, l.resource_link_id, l.assignment))
+    if (s.sub == l.sub)
+      launch["last"] = {{"submission", s.id},
+                        {"score", s.score},
+                        {"max", s.max_score},
+                        {"at", iso_utc_time(s.created)}};
   Handout h = make_handout(e.spec, problems, &who);
   res.set_content(student_page(h.html, launch), "text/html; charset=utf-8");
 }
