@@ -30,6 +30,7 @@ LEARNER = ["http://purl.imsglobal.org/vocab/lis/v2/membership#Learner"]
 INSTRUCTOR = ["http://purl.imsglobal.org/vocab/lis/v2/membership#Instructor"]
 KEY = jwk.JWK.generate(kty="RSA", size=2048, kid="platform-1")
 SCORES, REGISTRATIONS, LINE_ITEMS = [], [], []
+SESSIONS = {}  # student: (the last submission's body, the session cookie)
 # Answers of 503 still to give, by endpoint; "down": every score refused.
 FAILURES = {"token": 1, "scores": 2, "down": False}
 
@@ -162,9 +163,10 @@ def submit_as(sub, ags=None, change=None):
             "answers": reference_answers(launch["student"])}
     if change:
         change(body["answers"])
-    r = requests.post(launch["submit"], json=body,
-                      headers={"Cookie": "raygrade_session=" + cookie_of(r, "raygrade_session")})
+    session = cookie_of(r, "raygrade_session")
+    r = requests.post(launch["submit"], json=body, headers={"Cookie": "raygrade_session=" + session})
     check(r.status_code == 200, f"{sub}'s submission answers 200 ({r.text[:200]})")
+    SESSIONS[sub] = (body, session)
     return r.json()
 
 
@@ -198,6 +200,13 @@ def students_flow():
         check(r.json()["score"] == 21 and r.json()["max"] == 21, f"{sub} scores 21 of 21")
     check(len({json.dumps(a, sort_keys=True) for a in answers.values()}) == 3,
           "three students, three sets of numbers")
+    state, nonce, cookie = login("client-1")
+    r = post_launch(id_token(launch_claims("s1", LEARNER, nonce)), state, cookie)
+    last = launch_json(r.text).get("last", {})
+    check(last.get("score") == 21 and last.get("max") == 21, f"a new launch shows the last score: {last}")
+    state, nonce, cookie = login("client-1")
+    r = post_launch(id_token(launch_claims("s9", LEARNER, nonce)), state, cookie)
+    check("last" not in launch_json(r.text), "a student who has not submitted has no last score")
     return answers
 
 
@@ -378,6 +387,14 @@ def main():
         wait_for_scores(7)
         check(len(SCORES) == 7 and SCORES[6][3]["userId"] == "s5",
               "a score left in the outbox by a killed server is delivered after a restart")
+        # The session survives the restart: s5 submits again from the same page.
+        body, session = SESSIONS["s5"]
+        r = requests.post(TOOL + "/lti/submit", json=body,
+                          headers={"Cookie": "raygrade_session=" + session})
+        check(r.status_code == 200 and r.json()["score"] == 21, "a session kept over a restart")
+        with sqlite3.connect(os.path.join(DATA, "raygrade.sqlite")) as db:
+            acknowledged = db.execute("SELECT COUNT(*) FROM submissions").fetchone()[0]  # s1-s6, s5 twice
+        check(acknowledged == 7, f"every acknowledged submission is stored ({acknowledged})")
     finally:
         server.terminate()
         code = server.wait(timeout=20)

@@ -1,6 +1,10 @@
 // The LTI tool's grading of stored submissions: the same points as `raygrade grade`, the class
 // report and the gradebook of each student's last submission.
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 
 #include "serve/catalog.h"
 #include "serve/instructor.h"
@@ -30,6 +34,21 @@ TEST(ServeCatalog, OffersTheFoldersAssignmentsWithTheirPoints) {
   // 3+2+3+2+2+1+2+3+1+2.
   EXPECT_DOUBLE_EQ(c.find("lab-ray-tree.json")->points(), 3);
   EXPECT_DOUBLE_EQ(c.find("homework-rays.json")->points(), 21);
+}
+
+TEST(ServeCatalog, AssignmentPointsOverrideTheBanks) {
+  auto dir = std::filesystem::temp_directory_path() /
+             ("raygrade-serve-catalog-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "one.json")
+      << R"({"assignment": "one", "bank": ")" RAYGRADE_SOURCE_DIR
+         R"(/problems", "problems": [{"id": "variant-sphere", "points": 7.5}]})";
+  std::ofstream(dir / "notes.json") << R"({"not": "an assignment"})";
+  Catalog c(dir.string());
+  ASSERT_EQ(c.entries().size(), 1u);
+  EXPECT_DOUBLE_EQ(c.find("one.json")->points(), 7.5);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(ServeInstructor, LastSubmissionOfEachStudentInFirstSubmissionOrder) {

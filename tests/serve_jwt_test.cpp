@@ -234,7 +234,8 @@ json resource_link() {
 }
 
 // 200 when the claims pass, else the refusal's status.
-int claims_status(const json& payload, raygrade::serve::LaunchExpectation e = expectation()) {
+int claims_status(const json& payload,
+                  const raygrade::serve::LaunchExpectation& e = expectation()) {
   try {
     raygrade::serve::check_launch_claims(payload, e);
   } catch (const Refusal& r) {
@@ -320,8 +321,8 @@ TEST(LaunchClaims, MessageTypeAndVersionAreChecked) {
 }
 
 TEST(LaunchClaims, RequiredClaimsOfAResourceLink) {
-  for (std::string missing : {std::string("sub"), kClaim + "roles", kClaim + "resource_link",
-                              kClaim + "target_link_uri", kClaim + "deployment_id"}) {
+  for (const std::string& missing : {std::string("sub"), kClaim + "roles", kClaim + "resource_link",
+                                     kClaim + "target_link_uri", kClaim + "deployment_id"}) {
     json p = resource_link();
     p.erase(missing);
     EXPECT_EQ(claims_status(p), 401) << missing;

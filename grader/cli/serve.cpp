@@ -1,13 +1,16 @@
 // raygrade serve: the LTI 1.3 tool (docs/lti.md); `raygrade serve register` stores a platform
 // registered by hand.
 #include <fmt/format.h>
-#include <signal.h>
+#include <pthread.h>
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <mutex>
 #include <thread>
 
 #include "cli/command.h"
+#include "serve/outbox.h"
 #include "serve/server.h"
 
 namespace raygrade::cli {
@@ -41,7 +44,14 @@ int run_serve(const ServeCliOptions& o) {
     return kExitBadInput;
   }
   std::string host = o.listen.substr(0, colon);
-  serve::ServeOptions options{o.data, o.public_url, o.assignments, 1000};
+  serve::ServeOptions options{o.data, o.public_url, o.assignments, 1000, nullptr};
+  // One line per request and per score not delivered, on standard error, with the time.
+  std::mutex log_mutex;
+  options.log = [&log_mutex](const std::string& line) {
+    std::string now = serve::iso_time_ms(serve::now_ms());
+    std::lock_guard lock(log_mutex);
+    fmt::print(stderr, "{} {}\n", now, line);
+  };
   if (const char* base = std::getenv("RAYGRADE_OUTBOX_BASE_MS")) {
     try {
       options.outbox_base_ms = std::max(1L, std::stol(base));
@@ -52,10 +62,12 @@ int run_serve(const ServeCliOptions& o) {
   }
   // SIGINT and SIGTERM stop the server from a thread of their own: every thread started
   // from here on inherits the blocked mask, so that the signals reach that thread alone.
+  // SIGUSR1 ends that thread when the server stopped otherwise.
   sigset_t stop_signals;
   sigemptyset(&stop_signals);
   sigaddset(&stop_signals, SIGINT);
   sigaddset(&stop_signals, SIGTERM);
+  sigaddset(&stop_signals, SIGUSR1);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
   serve::LtiServer server(options);
   for (const auto& w : server.warnings())
@@ -75,7 +87,7 @@ int run_serve(const ServeCliOptions& o) {
   });
   server.run();
   // Stopped by a signal: the waiter has returned. Stopped otherwise: wake it.
-  pthread_kill(waiter.native_handle(), SIGTERM);
+  pthread_kill(waiter.native_handle(), SIGUSR1);
   waiter.join();
   return kExitOk;
 }

@@ -56,8 +56,13 @@ std::string iso_time_ms(std::int64_t ms) {
                      tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec, ms % 1000);
 }
 
-Outbox::Outbox(Store& store, EVP_PKEY* tool_key, std::string kid, std::int64_t base_ms)
-    : store_(store), key_(tool_key), kid_(std::move(kid)), base_ms_(base_ms) {}
+Outbox::Outbox(Store& store, EVP_PKEY* tool_key, std::string kid, std::int64_t base_ms,
+               std::function<void(const std::string&)> log)
+    : store_(store),
+      key_(tool_key),
+      kid_(std::move(kid)),
+      base_ms_(base_ms),
+      log_(std::move(log)) {}
 
 Outbox::~Outbox() { stop(); }
 
@@ -106,6 +111,10 @@ void Outbox::loop() {
         store_.mark_delivered(row.id);
       } catch (const std::exception& e) {
         int attempts = row.attempts + 1;
+        if (log_) {
+          log_(fmt::format("score {} for {} (attempt {}) not delivered: {}", row.id, row.user_id,
+                           attempts, e.what()));
+        }
         try {
           store_.retry_later(row.id, attempts, now_ms() + outbox_delay_ms(attempts, base_ms_),
                              e.what());

@@ -4,6 +4,7 @@
 
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <string>
@@ -27,7 +28,9 @@ std::int64_t now_ms();
 
 class Outbox {
  public:
-  Outbox(Store& store, EVP_PKEY* tool_key, std::string kid, std::int64_t base_ms);
+  // `log`, when set, is told of each score that could not be delivered, and why.
+  Outbox(Store& store, EVP_PKEY* tool_key, std::string kid, std::int64_t base_ms,
+         std::function<void(const std::string&)> log = nullptr);
   ~Outbox();
   Outbox(const Outbox&) = delete;
   Outbox& operator=(const Outbox&) = delete;
@@ -48,6 +51,7 @@ class Outbox {
   EVP_PKEY* key_;
   std::string kid_;
   std::int64_t base_ms_;
+  std::function<void(const std::string&)> log_;
   std::mutex mutex_;
   std::condition_variable cv_;
   bool stopping_ = false;

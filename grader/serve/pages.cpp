@@ -17,6 +17,10 @@ constexpr std::string_view kSubmitScript = R"JS(
   const launch = JSON.parse(document.getElementById("raygrade-launch").textContent);
   const button = document.getElementById("raygrade-submit");
   const out = document.getElementById("raygrade-result");
+  if (launch.last) {
+    out.textContent = "Your last submission (" + launch.last.submission + ", " + launch.last.at +
+        ") scored " + launch.last.score + " / " + launch.last.max + ".";
+  }
   button.addEventListener("click", async () => {
     button.disabled = true;
     out.textContent = "Sending...";

@@ -31,9 +31,14 @@ namespace {
 // How long a login may take between /lti/login and /lti/launch.
 constexpr std::int64_t kLoginSeconds = 600;
 // How long a launch's session lasts.
-constexpr std::int64_t kSessionSeconds = 8 * 3600;
+constexpr std::int64_t kSessionSeconds = std::int64_t{8} * 3600;
 // The least time between two fetches of one platform's JWKS for a kid it did not hold.
 constexpr std::int64_t kJwksRefetchMs = 5000;
+// Threads answering requests. cpp-httplib gives each connection a thread for as long as it is
+// kept alive: its default of 8 would let 8 idle browsers hold up a class.
+constexpr std::size_t kWorkers = 32;
+// Seconds an idle kept-alive connection holds its thread (cpp-httplib's default is 5).
+constexpr time_t kKeepAliveSeconds = 1;
 // The largest request body: a submission's answers, or a bank for a regrade.
 constexpr std::size_t kMaxBody = 8u << 20;
 
@@ -82,13 +87,18 @@ bool same_secret(const std::string& a, const std::string& b) {
   return diff == 0;
 }
 
+// The header a refusal's reason travels in to the server's log (the page says it too).
+constexpr const char* kReasonHeader = "X-Raygrade-Refusal";
+
 void send_refusal(httplib::Response& res, const Refusal& r) {
   res.status = r.status();
+  res.set_header(kReasonHeader, r.what());
   res.set_content(refusal_page(r.status(), r.what()), "text/html; charset=utf-8");
 }
 
 void send_json_refusal(httplib::Response& res, const Refusal& r) {
   res.status = r.status();
+  res.set_header(kReasonHeader, r.what());
   res.set_content(nlohmann::json{{"error", r.what()}}.dump(), "application/json");
 }
 
@@ -159,7 +169,7 @@ struct LtiServer::Impl {
                              "database"});
     }
     if (!options.public_url.empty()) set_public_url(options.public_url);
-    outbox = std::make_unique<Outbox>(*store, key.get(), kid, options.outbox_base_ms);
+    outbox = std::make_unique<Outbox>(*store, key.get(), kid, options.outbox_base_ms, options.log);
     routes();
   }
 
@@ -185,6 +195,15 @@ struct LtiServer::Impl {
 
   void routes() {
     http.set_payload_max_length(kMaxBody);
+    http.new_task_queue = [] { return new httplib::ThreadPool(kWorkers); };
+    http.set_keep_alive_timeout(kKeepAliveSeconds);
+    if (options.log) {
+      http.set_logger([this](const httplib::Request& req, const httplib::Response& res) {
+        std::string line = fmt::format("{} {} {}", req.method, req.path, res.status);
+        if (res.has_header(kReasonHeader)) line += ": " + res.get_header_value(kReasonHeader);
+        options.log(line);
+      });
+    }
     http.Get("/lti/jwks", [this](const httplib::Request&, httplib::Response& res) {
       nlohmann::json jwks = {{"keys", {public_jwk(key.get(), kid)}}};
       res.set_content(jwks.dump(), "application/json");
@@ -221,7 +240,7 @@ struct LtiServer::Impl {
         [](const httplib::Request&, httplib::Response& res, std::exception_ptr e) {
           std::string why = "the tool failed on this request";
           try {
-            std::rethrow_exception(e);
+            std::rethrow_exception(std::move(e));
           } catch (const std::exception& x) {
             why += std::string(": ") + x.what();
           } catch (...) {
@@ -445,6 +464,14 @@ void LtiServer::Impl::launch_page(const LaunchRecord& l, httplib::Response& res)
   launch["form"] = forms;
   launch["student"] = student;
   launch["role"] = "learner";
+  // What the student's last submission to this link scored: points are shown under every
+  // feedback policy.
+  for (const auto& s : store->submissions(l.issuer, l.client_id, l.resource_link_id, l.assignment))
+    if (s.sub == l.sub)
+      launch["last"] = {{"submission", s.id},
+                        {"score", s.score},
+                        {"max", s.max_score},
+                        {"at", iso_utc_time(s.created)}};
   Handout h = make_handout(e.spec, problems, &who);
   res.set_content(student_page(h.html, launch), "text/html; charset=utf-8");
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,6 +18,9 @@ struct ServeOptions {
   std::string public_url;
   std::string assignments_dir;         // the assignment files offered
   std::int64_t outbox_base_ms = 1000;  // the first retry of a score; doubled up to 30 s
+  // Told one line per request answered (method, path, status, and why for a refusal) and per
+  // score that could not be delivered; the caller decides where it goes.
+  std::function<void(const std::string&)> log;
 };
 
 class LtiServer {
