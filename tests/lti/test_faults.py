@@ -57,9 +57,9 @@ class FaultCase(ltitest.LtiCase):
             r, data = launch(self.platform, s, user=f"student-{i:02d}", role="Learner",
                              link=self.link)
             self.assertEqual(r.status_code, 200, r.text[:300])
-            # The browser's idle connections closed (its cookies kept): cpp-httplib gives each
-            # open connection a worker of its 8 for up to 5 s, so 50 idle browsers would queue
-            # the next ones for seconds (bench/lti_load.py measures that case).
+            # The browser's idle connections closed (its cookies kept): each open connection
+            # holds a worker of the server for a while, and 50 idle browsers would queue the
+            # next ones (bench/lti_load.py measures that case; this test is about faults).
             s.close()
             out.append((f"student-{i:02d}", s, data))
         return out
