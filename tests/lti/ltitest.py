@@ -119,8 +119,20 @@ def start_platform(state, public_host=None, port=0):
 
 
 def start_tool(data, assignments=ASSIGNMENTS, port=None, host="127.0.0.1", env=None):
-    """`raygrade serve` on a free port of loopback; returns (process, public URL)."""
-    port = port or free_port()
+    """`raygrade serve` on a free port of loopback; returns (process, public URL). The port is
+    chosen before the server binds it (its public URL names it), so another program may take
+    it in between: then a new port, twice at most."""
+    if port:
+        return _start_tool(data, assignments, port, host, env)
+    for attempt in range(3):
+        try:
+            return _start_tool(data, assignments, free_port(), host, env)
+        except RuntimeError:
+            if attempt == 2:
+                raise
+
+
+def _start_tool(data, assignments, port, host, env):
     os.makedirs(data, exist_ok=True)
     url = f"http://{host}:{port}"
     full_env = dict(os.environ)
