@@ -344,6 +344,12 @@ TEST(LaunchClaims, DeepLinkingNeedsItsSettings) {
   EXPECT_EQ(c.deep_link_return_url, "https://lms.example/dl");
   EXPECT_EQ(c.deep_link_data, "opaque");
   EXPECT_TRUE(c.instructor());
+  // Deep Linking 2.0: the tool may return only the types the platform accepts.
+  auto& settings = p["https://purl.imsglobal.org/spec/lti-dl/claim/deep_linking_settings"];
+  settings["accept_types"] = {"file", "html"};
+  EXPECT_EQ(claims_status(p), 401);
+  settings["accept_types"] = {"link", "ltiResourceLink"};
+  EXPECT_EQ(claims_status(p), 200);
 }
 
 }  // namespace serve_jwt_test

@@ -16,12 +16,25 @@ using raygrade::serve::LoginState;
 using raygrade::serve::OutboxRow;
 using raygrade::serve::SubmissionRecord;
 
-std::string fresh_dir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() /
-             ("raygrade-serve-" + name + "-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  return dir.string();
-}
+// A folder of its own for one test's database, removed at the end of the test.
+class FreshDir {
+ public:
+  explicit FreshDir(const std::string& name)
+      : path_(std::filesystem::temp_directory_path() /
+              ("raygrade-serve-" + name + "-" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(path_);
+  }
+  ~FreshDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  FreshDir(const FreshDir&) = delete;
+  FreshDir& operator=(const FreshDir&) = delete;
+  std::string str() const { return path_.string(); }
+
+ private:
+  std::filesystem::path path_;
+};
 
 LaunchRecord launch(const std::string& id) {
   LaunchRecord l;
@@ -40,7 +53,8 @@ LaunchRecord launch(const std::string& id) {
 }
 
 TEST(ServeStore, AStateCompletesOneLaunchOnly) {
-  auto store = raygrade::serve::open_sqlite_store(fresh_dir("state"));
+  FreshDir dir("state");
+  auto store = raygrade::serve::open_sqlite_store(dir.str());
   store->add_login_state(LoginState{"st", "br", "no", "https://lms.example", "tool-1", 1000});
   ASSERT_TRUE(store->find_login_state("st", 999));
   EXPECT_FALSE(store->find_login_state("st", 1000));  // its time has run out
@@ -52,7 +66,8 @@ TEST(ServeStore, AStateCompletesOneLaunchOnly) {
 }
 
 TEST(ServeStore, ReopenedDatabaseKeepsEverythingAtItsSchemaVersion) {
-  std::string dir = fresh_dir("reopen");
+  FreshDir fresh("reopen");
+  std::string dir = fresh.str();
   {
     auto store = raygrade::serve::open_sqlite_store(dir);
     store->set_tool_key("k1", "pem-1");
@@ -99,7 +114,8 @@ TEST(ServeStore, ReopenedDatabaseKeepsEverythingAtItsSchemaVersion) {
 }
 
 TEST(ServeStore, ScoreWaitsForItsNextTryAndIsDeliveredOnce) {
-  auto store = raygrade::serve::open_sqlite_store(fresh_dir("outbox"));
+  FreshDir dir("outbox");
+  auto store = raygrade::serve::open_sqlite_store(dir.str());
   OutboxRow o;
   o.lineitem = "https://lms.example/li/1";
   store->add_score(o);

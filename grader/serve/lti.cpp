@@ -81,6 +81,11 @@ void read_deep_linking(const nlohmann::json& p, LaunchClaims& c) {
   if (c.deep_link_return_url.empty())
     refuse("the deep linking request's settings have no deep_link_return_url");
   c.deep_link_data = optional_string(*settings, "data");
+  // The tool returns resource links alone: a platform that takes none cannot be answered.
+  auto accept = settings->find("accept_types");
+  if (accept != settings->end() && accept->is_array() &&
+      std::find(accept->begin(), accept->end(), "ltiResourceLink") == accept->end())
+    refuse("the platform accepts no ltiResourceLink in this deep linking request");
 }
 
 }  // namespace
