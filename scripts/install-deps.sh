@@ -9,6 +9,8 @@ packages=(
   python3-jsonschema pkg-config clang-format strace
   libgmp-dev file nodejs libboost-dev
   libzip-dev libpugixml-dev libxml2-utils libutf8proc-dev
+  # raygrade serve (RAYGRADE_SERVE), and its tests' stand-in platforms
+  libcpp-httplib-dev libssl-dev libsqlite3-dev python3-jwcrypto python3-requests
 )
 # npm fetches the browser libraries the build bundles (scripts/fetch-web-libs.sh). Debian ships
 # it as its own package; a nodejs from elsewhere (NodeSource) carries it already.

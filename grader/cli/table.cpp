@@ -17,6 +17,9 @@ Runner setup_tables(CLI::App& sub);
 Runner setup_report(CLI::App& sub);
 Runner setup_regrade(CLI::App& sub);
 Runner setup_read_typed(CLI::App& sub);
+#ifdef RAYGRADE_HAS_SERVE
+Runner setup_serve(CLI::App& sub);
+#endif
 
 const std::vector<Command>& command_table() {
   static const std::vector<Command> table = {
@@ -45,6 +48,10 @@ const std::vector<Command>& command_table() {
        &setup_tables},
       {"read-typed", "typed answer boxes read as the grader reads them (for tests)",
        &setup_read_typed},
+#ifdef RAYGRADE_HAS_SERVE
+      {"serve", "an LTI 1.3 tool: students launch, submit and get graded from any LMS",
+       &setup_serve},
+#endif
   };
   return table;
 }

@@ -1,0 +1,29 @@
+// Requests the tool makes of a platform (its OpenID configuration, JWKS, token endpoint and
+// line items), with cpp-httplib's client.
+#pragma once
+
+#include <map>
+#include <string>
+
+namespace raygrade::serve {
+
+struct HttpAnswer {
+  int status = 0;  // 0: no answer (the connection failed)
+  std::string body;
+  std::string content_type;
+  std::string error;  // why there was no answer
+};
+
+using HttpHeaders = std::multimap<std::string, std::string>;
+
+// "http://host:port" and "/path?query" of a URL; throws Refusal (400) when it is not http(s).
+std::pair<std::string, std::string> split_url(const std::string& url);
+
+HttpAnswer http_get(const std::string& url, const HttpHeaders& headers = {});
+HttpAnswer http_post(const std::string& url, const std::string& body,
+                     const std::string& content_type, const HttpHeaders& headers = {});
+
+// Form fields as application/x-www-form-urlencoded.
+std::string form_encode(const std::map<std::string, std::string>& fields);
+
+}  // namespace raygrade::serve

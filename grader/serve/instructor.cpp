@@ -1,0 +1,132 @@
+// The instructor's report, gradebook and regrade over the stored submissions.
+#include "serve/instructor.h"
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "assignments/feedback.h"
+#include "assignments/variants.h"
+#include "core/atomic_file.h"
+#include "core/escape.h"
+#include "grading/outputs.h"
+#include "json/source.h"
+#include "reports/class_report.h"
+#include "serve/jwt.h"
+#include "serve/lti.h"
+
+namespace raygrade::serve {
+
+namespace {
+
+nlohmann::json answers_of(const SubmissionRecord& r) {
+  nlohmann::json a = nlohmann::json::parse(r.answers, nullptr, false);
+  return a.is_object() ? a : nlohmann::json::object();
+}
+
+// One student of the report: their last answers graded again as their own variant,
+// `problems` (which the student's answers point into: they must outlive the report's add).
+ClassStudent report_student(const CatalogEntry& e, const SubmissionRecord& r,
+                            const std::vector<Problem>& problems) {
+  std::string key = student_key_of(r.issuer, r.sub);
+  Assignment graders(problems);
+  nlohmann::json answers = answers_of(r);
+  auto file = parse_json_text("answers.json", nlohmann::json{{"answers", answers}}.dump(),
+                              JsonLimits::submission());
+  SubmissionGrade g = graders.grade(file);
+  ClassStudent s{key, r.sub, "", {}};
+  for (std::size_t p = 0; p < problems.size(); ++p) {
+    ClassAnswer a;
+    for (const auto& res : g.results)
+      if (res.problem_id == problems[p].id) a.result = res;
+    if (a.result.problem_id.empty()) {
+      a.result.problem_id = problems[p].id;
+      a.result.answered = false;
+    }
+    const AssignmentProblem& ap = e.spec.problems[p];
+    if (ap.points) scale_points(a.result, *ap.points);
+    if (answers.contains(problems[p].id)) a.answer = answers[problems[p].id];
+    a.variant = &problems[p];
+    s.answers.push_back(std::move(a));
+  }
+  return s;
+}
+
+}  // namespace
+
+std::vector<SubmissionRecord> last_per_student(const std::vector<SubmissionRecord>& all) {
+  std::vector<SubmissionRecord> out;
+  std::map<std::string, std::size_t> at;
+  for (const auto& r : all) {
+    auto [it, fresh] = at.emplace(r.sub, out.size());
+    if (fresh) {
+      out.push_back(r);
+    } else {
+      out[it->second] = r;
+    }
+  }
+  return out;
+}
+
+std::string class_report_page(const CatalogEntry& e, const std::vector<SubmissionRecord>& all) {
+  std::vector<std::string> ids, titles;
+  for (const Problem* p : e.bank.problems) {
+    ids.push_back(p->id);
+    titles.push_back(p->title);
+  }
+  ClassReportBuilder report(e.title(), ids, titles, e.bank.problems);
+  // The variants of a student live while they are added: the builder keeps their numbers.
+  for (const auto& r : last_per_student(all)) {
+    std::vector<Problem> problems =
+        student_problems(e.spec, e.bank.problems, student_key_of(r.issuer, r.sub));
+    report.add(report_student(e, r, problems));
+  }
+  return class_report_html(report.json(1));
+}
+
+std::string gradebook_of(const CatalogEntry& e, const std::vector<SubmissionRecord>& all) {
+  std::string csv = gradebook_csv_header(e.grader->problem_ids());
+  for (const auto& r : last_per_student(all)) {
+    StudentIdentity who{"", student_key_of(r.issuer, r.sub), ""};
+    SubmissionGrade g = grade_answers(e, who, answers_of(r), r.created);
+    csv += gradebook_csv_row(g, e.grader->problem_ids());
+  }
+  return csv;
+}
+
+std::vector<Regraded> regrade_with(const CatalogEntry& e, const std::vector<SubmissionRecord>& all,
+                                   const std::vector<BankFile>& files,
+                                   const std::string& data_dir) {
+  std::filesystem::path folder = std::filesystem::path(data_dir) / "banks" / random_token(9);
+  std::filesystem::create_directories(folder);
+  std::set<std::string> taken;
+  for (const auto& f : files) {
+    std::string name = f.name.ends_with(".json") ? f.name.substr(0, f.name.size() - 5) : f.name;
+    write_file_atomically(folder / (unique_file_name(name, taken) + ".json"), f.text, false);
+  }
+  AssignmentSpec spec = e.spec;
+  spec.bank = {folder.string()};
+  AssignmentBank bank = load_assignment_bank(spec);
+  if (bank.problems.size() != spec.problems.size()) {
+    std::string why =
+        bank.errors.empty() ? "it lacks a problem of the assignment" : bank.errors.front().message;
+    throw Refusal(400, "the new bank cannot grade this assignment: " + why);
+  }
+  AssignmentGradeOptions options;
+  options.feedback = FeedbackPolicy::kFull;
+  AssignmentGrader grader(spec, bank.problems, options);
+  std::vector<Regraded> changed;
+  for (const auto& r : last_per_student(all)) {
+    StudentIdentity who{"", student_key_of(r.issuer, r.sub), ""};
+    nlohmann::json submission = {{"answers", answers_of(r)}};
+    SubmissionGrade g =
+        grader.grade_handed_in("answers.json", submission.dump(), r.created, who, "the LTI launch");
+    // Points are sums of a few parts' points: a change below a millionth is rounding.
+    if (g.gradable && std::abs(g.score - r.score) > 1e-6)
+      changed.push_back({r.sub, r.score, g.score, g.max_score});
+  }
+  return changed;
+}
+
+}  // namespace raygrade::serve

@@ -1,0 +1,148 @@
+// What `raygrade serve` keeps: one interface over the database, so that a backend other than
+// SQLite (PostgreSQL) can take its place. Every method is one transaction; a method returns
+// only after its transaction is committed.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raygrade::serve {
+
+// A platform the tool trusts: its issuer and the client_id it gave the tool, its endpoints and
+// the deployments registered.
+struct Registration {
+  std::int64_t id = 0;
+  std::string issuer;
+  std::string client_id;
+  std::string auth_url;
+  std::string token_url;
+  std::string jwks_url;
+  std::vector<std::string> deployments;
+};
+
+// A login begun: the state and nonce sent to the platform, and the browser it was sent to.
+struct LoginState {
+  std::string state;
+  std::string browser;  // the raygrade_state cookie of that browser
+  std::string nonce;
+  std::string issuer;
+  std::string client_id;
+  std::int64_t expires = 0;  // seconds since 1970 UTC
+};
+
+// A launch that passed every check, and the browser session it opened.
+struct LaunchRecord {
+  std::string launch_id;
+  std::string session;  // the raygrade_session cookie
+  std::string csrf;
+  std::string issuer;
+  std::string client_id;
+  std::string deployment_id;
+  std::string sub;
+  std::string name;
+  std::string roles;  // JSON array
+  bool instructor = false;
+  std::string message_type;
+  std::string context_id;
+  std::string resource_link_id;
+  std::string assignment;  // the assignment's file name in the assignments folder
+  std::string lineitem;
+  std::string lineitems;
+  std::string deep_link_return_url;
+  std::string deep_link_data;
+  std::int64_t expires = 0;
+};
+
+struct SubmissionRecord {
+  std::int64_t id = 0;
+  std::string launch_id;
+  std::string issuer;
+  std::string client_id;
+  std::string sub;
+  std::string context_id;
+  std::string resource_link_id;
+  std::string assignment;
+  std::string answers;  // the submission as graded (JSON)
+  std::string result;   // the graded submission, every detail (JSON)
+  double score = 0;
+  double max_score = 0;
+  std::int64_t created = 0;
+};
+
+// A score to send to a platform's line item.
+struct OutboxRow {
+  std::int64_t id = 0;
+  std::int64_t submission_id = 0;
+  std::string issuer;
+  std::string client_id;
+  std::string lineitem;  // empty: found or made from lineitems and the resource link
+  std::string lineitems;
+  std::string resource_link_id;
+  std::string label;
+  std::string user_id;
+  double score = 0;
+  double max_score = 0;
+  std::string timestamp;  // ISO 8601 with milliseconds, Z
+  int attempts = 0;
+  std::int64_t next_try_ms = 0;
+  bool delivered = false;
+  std::string last_error;
+};
+
+class Store {
+ public:
+  virtual ~Store() = default;
+
+  // Adds the registration, or the deployment to the registration of the same issuer and client.
+  virtual std::int64_t add_registration(const Registration& r) = 0;
+  virtual std::optional<Registration> find_registration(const std::string& issuer,
+                                                        const std::string& client_id) = 0;
+  virtual std::vector<Registration> registrations(const std::string& issuer) = 0;
+
+  // The tool's signing key: kid and PKCS#8 PEM. set_tool_key keeps the first one stored.
+  virtual std::optional<std::pair<std::string, std::string>> tool_key() = 0;
+  virtual void set_tool_key(const std::string& kid, const std::string& pem) = 0;
+
+  virtual void add_login_state(const LoginState& s) = 0;
+  // A state not yet used whose time has not run out.
+  virtual std::optional<LoginState> find_login_state(const std::string& state,
+                                                     std::int64_t now) = 0;
+  // Uses the state (once only) and stores the launch, in one transaction; false, storing
+  // nothing, when the state was used already.
+  virtual bool complete_launch(const std::string& state, const LaunchRecord& launch) = 0;
+  virtual std::optional<LaunchRecord> find_launch(const std::string& launch_id) = 0;
+
+  // Stores the submission and its score to send (when there is a line item), in one
+  // transaction; the submission's id.
+  virtual std::int64_t add_submission(const SubmissionRecord& s,
+                                      const std::optional<OutboxRow>& score) = 0;
+  // Every submission to the assignment in that resource link, oldest first.
+  virtual std::vector<SubmissionRecord> submissions(const std::string& issuer,
+                                                    const std::string& client_id,
+                                                    const std::string& resource_link_id,
+                                                    const std::string& assignment) = 0;
+
+  // Scores not delivered whose next try is due, oldest first.
+  virtual std::vector<OutboxRow> due_scores(std::int64_t now_ms, int limit) = 0;
+  virtual void mark_delivered(std::int64_t id) = 0;
+  virtual void retry_later(std::int64_t id, int attempts, std::int64_t next_try_ms,
+                           const std::string& error) = 0;
+  virtual std::vector<OutboxRow> outbox() = 0;
+  virtual void add_score(const OutboxRow& score) = 0;
+
+  // The line item found or made for a resource link.
+  virtual std::optional<std::string> line_item(const std::string& issuer,
+                                               const std::string& client_id,
+                                               const std::string& resource_link_id) = 0;
+  virtual void set_line_item(const std::string& issuer, const std::string& client_id,
+                             const std::string& resource_link_id, const std::string& url) = 0;
+};
+
+// The SQLite database DIR/raygrade.sqlite (made when missing): WAL, synchronous=FULL, the schema
+// brought to the current version at opening. Safe to use from several threads.
+std::unique_ptr<Store> open_sqlite_store(const std::string& dir);
+
+}  // namespace raygrade::serve
