@@ -594,9 +594,8 @@ TEST(ChangeSearch, WorkOnABigPolygonGrowsLinearly) {
     double cpu_seconds = double(std::clock() - cpu) / CLOCKS_PER_SEC;
     std::cout << n << " vertices: " << seconds << " s (" << cpu_seconds << " s of processor), work "
               << search.work() << ", " << search.derivations() << " derivations\n";
-    if (n == 200) {
-      EXPECT_LT(cpu_seconds, 1.0);
-    }
+    // The time is printed, not asserted (docs/report.md quotes it as a benchmark): the work
+    // below is what the test holds to, the same on any machine and under any sanitizer.
     work[n] = search.work();
     Discovery d = search.explain(
         json{{"hits", {{{"t", 0.4}, {"point", {0.1, 0.2, 4.2}}, {"normal", {0, 0, 1}}}}}});
