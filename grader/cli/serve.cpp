@@ -85,12 +85,12 @@ int run_serve(const ServeCliOptions& o) {
   int bound = server.bind(host, port);
   const std::string& url = server.public_url();
   fmt::print("raygrade serve: listening on http://{}:{}\n", host, bound);
-  fmt::print("database: {}\n",
-             o.database.empty() ? o.data + "/raygrade.sqlite" : serve::redacted_url(o.database));
   fmt::print("registration URL: {}/lti/register\n", url);
   fmt::print("login URL: {}/lti/login\n", url);
   fmt::print("launch URL: {}/lti/launch\n", url);
   fmt::print("JWKS URL: {}/lti/jwks\n", url);
+  fmt::print("database: {}\n",
+             o.database.empty() ? o.data + "/raygrade.sqlite" : serve::redacted_url(o.database));
   std::fflush(stdout);
   std::thread waiter([&] {
     int signal = 0;
