@@ -161,6 +161,9 @@ class SqliteStore : public Store {
     sqlite3_busy_timeout(db_, 5000);
     exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL; PRAGMA foreign_keys=ON;");
     migrate();
+    // One server per SQLite database: claims still held were the previous process's, killed
+    // before it could give them back; its scores are sent at once rather than after the lease.
+    exec("UPDATE outbox SET claimed_until = 0 WHERE claimed_until != 0");
   }
   ~SqliteStore() override { sqlite3_close(db_); }
 
