@@ -54,7 +54,14 @@ def main():
     ap.add_argument("--close", action="store_true",
                     help="each student closes its connections once launched and once answered"
                          " (no idle keep-alive connections, unlike a browser)")
+    ap.add_argument("--postgresql", action="store_true", help="the tool on PostgreSQL")
+    ap.add_argument("--servers", type=int, default=1,
+                    help="servers on one PostgreSQL database (with --postgresql)")
     args = ap.parse_args()
+    if args.servers > 1 and not args.postgresql:
+        ap.error("several servers share a PostgreSQL database: add --postgresql")
+    if args.postgresql:
+        os.environ["RAYGRADE_TEST_DATABASE"] = "postgresql"
     if args.raygrade:
         os.environ["RAYGRADE"] = os.path.abspath(args.raygrade)
     import requests
@@ -65,6 +72,12 @@ def main():
     os.makedirs(pstate)
     pproc, platform = ltitest.start_platform(pstate)
     tproc, tool = ltitest.start_tool(data)
+    procs, tools = [tproc], [tool]
+    for i in range(1, args.servers):
+        p, t = ltitest.start_tool(os.path.join(tmp, f"data-{i}"), public_url=tool,
+                                  database=ltitest.database_url(data))
+        procs.append(p)
+        tools.append(t)
     try:
         s = ltitest.browser()
         t = s.post(f"{platform}/test/registration-token", timeout=30).json()
@@ -95,12 +108,13 @@ def main():
         times, failures = [], []
         lock = threading.Lock()
 
-        def hand_in(student):
+        def hand_in(student, server):
             b, launch_data = student
+            submit = launch_data["submit"].replace(tool, tools[server], 1)
             barrier.wait(timeout=120)
             t = time.perf_counter()
             try:
-                r = b.post(launch_data["submit"], json={"launch": launch_data["launch"],
+                r = b.post(submit, json={"launch": launch_data["launch"],
                                                         "csrf": launch_data["csrf"],
                                                         "answers": answers}, timeout=120)
                 ok = r.status_code == 200 and "score" in r.json()
@@ -117,11 +131,13 @@ def main():
 
         def sample():
             while not done.is_set():
-                peak_rss[0] = max(peak_rss[0], proc_status(tproc.pid, "VmRSS") or 0)
+                peak_rss[0] = max(peak_rss[0],
+                                  sum(proc_status(p.pid, "VmRSS") or 0 for p in procs))
                 time.sleep(0.02)
         sampler = threading.Thread(target=sample, daemon=True)
         sampler.start()
-        threads = [threading.Thread(target=hand_in, args=(x,), daemon=True) for x in students]
+        threads = [threading.Thread(target=hand_in, args=(x, i % len(tools)), daemon=True)
+                   for i, x in enumerate(students)]
         t0 = time.time()
         for th in threads:
             th.start()
@@ -137,16 +153,18 @@ def main():
             time.sleep(0.1)
         all_scores = time.time() - t0
         done.set()
-        hwm = proc_status(tproc.pid, "VmHWM")
+        hwm = [proc_status(p.pid, "VmHWM") for p in procs]
         result = {
             "students": args.students, "graded": len(times), "failed": len(failures),
+            "database": "postgresql" if args.postgresql else "sqlite", "servers": len(procs),
+            "answers_per_s": round(len(times) / wall, 1) if wall else None,
             "launch_s": round(launch_seconds, 2),
             "median_s": round(statistics.median(times), 3) if times else None,
             "p99_s": round(percentile(times, 99), 3) if times else None,
             "max_s": round(max(times), 3) if times else None,
             "all_answers_s": round(wall, 3), "all_scores_at_platform_s": round(all_scores, 3),
-            "scores_received": len(scores), "server_peak_rss_kib": hwm,
-            "server_sampled_rss_kib": peak_rss[0], "cores": os.cpu_count(),
+            "scores_received": len(scores), "servers_peak_rss_kib": hwm,
+            "servers_sampled_rss_kib": peak_rss[0], "cores": os.cpu_count(),
             "connections": "closed after each answer" if args.close else "kept alive, as a browser",
         }
         print(json.dumps(result, indent=1))
@@ -154,7 +172,8 @@ def main():
             print("failure:", f, file=sys.stderr)
         return 0 if not failures else 1
     finally:
-        tproc.stop()
+        for p in procs:
+            p.stop()
         pproc.stop()
         shutil.rmtree(tmp, ignore_errors=True)
 

@@ -9,8 +9,10 @@ packages=(
   python3-jsonschema pkg-config clang-format strace
   libgmp-dev file nodejs libboost-dev
   libzip-dev libpugixml-dev libxml2-utils libutf8proc-dev
-  # raygrade serve (RAYGRADE_SERVE), and its tests' stand-in platforms
+  # raygrade serve (RAYGRADE_SERVE), and its tests' stand-in platforms; PostgreSQL's client
+  # library, and its server for the tests on a throwaway cluster (tests/lti/pgcluster.py)
   libcpp-httplib-dev libssl-dev libsqlite3-dev python3-jwcrypto python3-requests
+  libpq-dev postgresql
 )
 # npm fetches the browser libraries the build bundles (scripts/fetch-web-libs.sh). Debian ships
 # it as its own package; a nodejs from elsewhere (NodeSource) carries it already.

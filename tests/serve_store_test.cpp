@@ -1,11 +1,17 @@
-// The LTI tool's database: a state is used once, a submission and its score are stored
-// together, the outbox's delays, and a reopened database keeps everything.
+// The LTI tool's database, on each backend: a state is used once, a submission and its score
+// are stored together, a score is claimed by one sender at a time, a reopened database keeps
+// everything, a database of a newer schema is refused. The PostgreSQL cases run when
+// RAYGRADE_TEST_PG_HOST and RAYGRADE_TEST_PG_PORT name a server (tests/lti/pgcluster.py starts
+// a throwaway one: ctest -R serve_store_pg); they are skipped otherwise.
 #include <gtest/gtest.h>
+#include <libpq-fe.h>
 #include <sqlite3.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 
+#include "core/error.h"
 #include "serve/outbox.h"
 #include "serve/store.h"
 
@@ -14,6 +20,7 @@ namespace serve_store_test {
 using raygrade::serve::LaunchRecord;
 using raygrade::serve::LoginState;
 using raygrade::serve::OutboxRow;
+using raygrade::serve::Store;
 using raygrade::serve::SubmissionRecord;
 
 // A folder of its own for one test's database, removed at the end of the test.
@@ -52,9 +59,74 @@ LaunchRecord launch(const std::string& id) {
   return l;
 }
 
-TEST(ServeStore, AStateCompletesOneLaunchOnly) {
-  FreshDir dir("state");
-  auto store = raygrade::serve::open_sqlite_store(dir.str());
+// The database of one test on one backend: a fresh SQLite folder or a fresh PostgreSQL
+// database, and a way to run SQL on it behind the store's back.
+class Backend {
+ public:
+  Backend(const std::string& kind, const std::string& name) : kind_(kind), dir_(name) {
+    if (kind_ != "postgresql") return;
+    const char* host = std::getenv("RAYGRADE_TEST_PG_HOST");
+    const char* port = std::getenv("RAYGRADE_TEST_PG_PORT");
+    if (!host || !port) return;
+    std::string db = "store_" + name + "_" + std::to_string(::getpid());
+    admin_ = fmt::format("host={} port={} user=raygrade dbname=postgres", host, port);
+    conninfo_ = fmt::format("host={} port={} user=raygrade dbname={}", host, port, db);
+    url_ = fmt::format("postgresql://raygrade@/{}?host={}&port={}", db, host, port);
+    exec_on(admin_, "DROP DATABASE IF EXISTS " + db);
+    exec_on(admin_, "CREATE DATABASE " + db);
+  }
+  bool available() const { return kind_ == "sqlite" || !url_.empty(); }
+  std::unique_ptr<Store> open() const { return raygrade::serve::open_store(url_, dir_.str()); }
+  // The first column of the first row of `sql`, as text.
+  std::string query(const std::string& sql) const {
+    if (kind_ == "postgresql") return exec_on(conninfo_, sql);
+    sqlite3* db = nullptr;
+    sqlite3_open((dir_.str() + "/raygrade.sqlite").c_str(), &db);
+    sqlite3_stmt* st = nullptr;
+    std::string out;
+    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &st, nullptr) == SQLITE_OK &&
+        sqlite3_step(st) == SQLITE_ROW && sqlite3_column_text(st, 0))
+      out = reinterpret_cast<const char*>(sqlite3_column_text(st, 0));
+    sqlite3_finalize(st);
+    sqlite3_close(db);
+    return out;
+  }
+
+ private:
+  static std::string exec_on(const std::string& conninfo, const std::string& sql) {
+    PGconn* c = PQconnectdb(conninfo.c_str());
+    PGresult* r = PQexec(c, sql.c_str());
+    std::string out = PQntuples(r) > 0 ? PQgetvalue(r, 0, 0) : "";
+    EXPECT_TRUE(PQresultStatus(r) == PGRES_TUPLES_OK || PQresultStatus(r) == PGRES_COMMAND_OK)
+        << sql << ": " << PQerrorMessage(c);
+    PQclear(r);
+    PQfinish(c);
+    return out;
+  }
+
+  std::string kind_;
+  FreshDir dir_;
+  std::string admin_, conninfo_, url_;
+};
+
+class ServeStore : public ::testing::TestWithParam<std::string> {
+ protected:
+  // The backend for this test, named after it; skips the test when it has no server.
+  std::unique_ptr<Backend> backend(const std::string& name) {
+    auto b = std::make_unique<Backend>(GetParam(), name);
+    return b;
+  }
+};
+
+#define RAYGRADE_NEED(b)                                                 \
+  if (!(b)->available()) {                                               \
+    GTEST_SKIP() << "no PostgreSQL server (RAYGRADE_TEST_PG_HOST/PORT)"; \
+  }
+
+TEST_P(ServeStore, AStateCompletesOneLaunchOnly) {
+  auto b = backend("state");
+  RAYGRADE_NEED(b);
+  auto store = b->open();
   store->add_login_state(LoginState{"st", "br", "no", "https://lms.example", "tool-1", 1000});
   ASSERT_TRUE(store->find_login_state("st", 999));
   EXPECT_FALSE(store->find_login_state("st", 1000));  // its time has run out
@@ -65,11 +137,11 @@ TEST(ServeStore, AStateCompletesOneLaunchOnly) {
   EXPECT_FALSE(store->find_launch("b"));  // refused: nothing stored
 }
 
-TEST(ServeStore, ReopenedDatabaseKeepsEverythingAtItsSchemaVersion) {
-  FreshDir fresh("reopen");
-  std::string dir = fresh.str();
+TEST_P(ServeStore, ReopenedDatabaseKeepsEverythingAtItsSchemaVersion) {
+  auto b = backend("reopen");
+  RAYGRADE_NEED(b);
   {
-    auto store = raygrade::serve::open_sqlite_store(dir);
+    auto store = b->open();
     store->set_tool_key("k1", "pem-1");
     store->set_tool_key("k2", "pem-2");  // the first key stays
     store->add_registration({0, "https://lms.example", "tool-1", "a", "t", "j", {"d1"}});
@@ -80,7 +152,7 @@ TEST(ServeStore, ReopenedDatabaseKeepsEverythingAtItsSchemaVersion) {
     s.sub = "s1";
     s.resource_link_id = "rl-1";
     s.assignment = "hw.json";
-    s.score = 3;
+    s.score = 2.0 / 3.0;
     s.max_score = 4;
     OutboxRow o;
     o.lineitem = "https://lms.example/li/1";
@@ -88,44 +160,99 @@ TEST(ServeStore, ReopenedDatabaseKeepsEverythingAtItsSchemaVersion) {
     o.max_score = 4;
     store->add_submission(s, o);
   }
-  auto store = raygrade::serve::open_sqlite_store(dir);
+  auto store = b->open();
   EXPECT_EQ(store->tool_key()->first, "k1");
   auto r = store->find_registration("https://lms.example", "tool-1");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->deployments, (std::vector<std::string>{"d1", "d2"}));
   auto subs = store->submissions("https://lms.example", "tool-1", "rl-1", "hw.json");
   ASSERT_EQ(subs.size(), 1u);
+  EXPECT_EQ(subs[0].score, 2.0 / 3.0);  // every bit of the double, not 15 digits
   auto out = store->outbox();
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].submission_id, subs[0].id);
-  sqlite3* db = nullptr;
-  sqlite3_open((dir + "/raygrade.sqlite").c_str(), &db);
-  sqlite3_stmt* st = nullptr;
-  sqlite3_prepare_v2(db, "SELECT COUNT(*), MAX(version) FROM schema_version", -1, &st, nullptr);
-  ASSERT_EQ(sqlite3_step(st), SQLITE_ROW);
-  EXPECT_EQ(sqlite3_column_int(st, 0), 1);  // migrated once, not again at reopening
-  EXPECT_EQ(sqlite3_column_int(st, 1), 1);
-  sqlite3_finalize(st);
-  sqlite3_prepare_v2(db, "PRAGMA journal_mode", -1, &st, nullptr);
-  ASSERT_EQ(sqlite3_step(st), SQLITE_ROW);
-  EXPECT_STREQ(reinterpret_cast<const char*>(sqlite3_column_text(st, 0)), "wal");
-  sqlite3_finalize(st);
-  sqlite3_close(db);
+  // Migrated once to each version, not again at reopening: versions 1 and 2 (the outbox's
+  // claims).
+  EXPECT_EQ(b->query("SELECT COUNT(*) FROM schema_version"), "2");
+  EXPECT_EQ(b->query("SELECT MAX(version) FROM schema_version"), "2");
+  EXPECT_EQ(raygrade::serve::kSchemaVersion, 2);
+  if (GetParam() == "sqlite") {
+    EXPECT_EQ(b->query("PRAGMA journal_mode"), "wal");
+  }
 }
 
-TEST(ServeStore, ScoreWaitsForItsNextTryAndIsDeliveredOnce) {
-  FreshDir dir("outbox");
-  auto store = raygrade::serve::open_sqlite_store(dir.str());
+TEST_P(ServeStore, ScoreWaitsForItsNextTryAndIsDeliveredOnce) {
+  auto b = backend("outbox");
+  RAYGRADE_NEED(b);
+  auto store = b->open();
   OutboxRow o;
   o.lineitem = "https://lms.example/li/1";
   store->add_score(o);
-  auto due = store->due_scores(0, 10);
+  auto due = store->claim_scores(0, 100, 10);
   ASSERT_EQ(due.size(), 1u);
   store->retry_later(due[0].id, 1, 5000, "HTTP 503");
-  EXPECT_TRUE(store->due_scores(4999, 10).empty());
-  ASSERT_EQ(store->due_scores(5000, 10).size(), 1u);
+  EXPECT_TRUE(store->claim_scores(4999, 100, 10).empty());
+  ASSERT_EQ(store->claim_scores(5000, 100, 10).size(), 1u);
   store->mark_delivered(due[0].id);
-  EXPECT_TRUE(store->due_scores(1'000'000, 10).empty());
+  EXPECT_TRUE(store->claim_scores(1'000'000, 100, 10).empty());
+}
+
+TEST_P(ServeStore, AClaimedScoreIsOneSendersUntilItsLeaseRunsOut) {
+  auto b = backend("claim");
+  RAYGRADE_NEED(b);
+  auto first = b->open();
+  auto second = b->open();  // another process on the same database
+  for (int i = 0; i < 3; ++i) first->add_score(OutboxRow{});
+  auto mine = first->claim_scores(1000, 500, 2);  // held until 1500
+  ASSERT_EQ(mine.size(), 2u);
+  EXPECT_LT(mine[0].id, mine[1].id);
+  EXPECT_EQ(mine[0].claimed_until_ms, 1500);
+  auto theirs = second->claim_scores(1200, 500, 10);  // held until 1700
+  ASSERT_EQ(theirs.size(), 1u);                       // the third only
+  EXPECT_GT(theirs[0].id, mine[1].id);
+  EXPECT_TRUE(second->claim_scores(1499, 500, 10).empty());
+  // The first sender was killed: at 1500 its claims are anyone's.
+  EXPECT_EQ(second->claim_scores(1500, 500, 10).size(), 2u);
+  // Given back by a sender that stops: free at once.
+  second->release_claim(mine[0].id);
+  EXPECT_EQ(first->claim_scores(1500, 500, 10).size(), 1u);
+}
+
+TEST_P(ServeStore, ADatabaseOfANewerSchemaIsRefused) {
+  auto b = backend("newer");
+  RAYGRADE_NEED(b);
+  b->open();  // made at the current version
+  b->query("INSERT INTO schema_version VALUES (3)");
+  try {
+    b->open();
+    ADD_FAILURE() << "a database of schema version 3 was opened";
+  } catch (const raygrade::Error& e) {
+    EXPECT_NE(e.diagnostic().message.find("schema is version 3, newer than this raygrade knows "
+                                          "(version 2)"),
+              std::string::npos)
+        << e.diagnostic().message;
+  }
+}
+
+std::string backend_name(const ::testing::TestParamInfo<std::string>& p) { return p.param; }
+
+INSTANTIATE_TEST_SUITE_P(Backends, ServeStore, ::testing::Values("sqlite", "postgresql"),
+                         backend_name);
+
+TEST(ServeDatabase, UrlShownWithoutItsPassword) {
+  using raygrade::serve::redacted_url;
+  EXPECT_EQ(redacted_url("postgresql://ray:s3cret@db.example.edu:5433/raygrade"),
+            "postgresql://ray:***@db.example.edu:5433/raygrade");
+  EXPECT_EQ(redacted_url("postgresql://ray@db.example.edu/raygrade"),
+            "postgresql://ray@db.example.edu/raygrade");
+  EXPECT_EQ(redacted_url("postgresql:///raygrade?host=/run/postgresql"),
+            "postgresql:///raygrade?host=/run/postgresql");
+}
+
+TEST(ServeDatabase, OnlyPostgresUrlsOrSqlite) {
+  EXPECT_TRUE(raygrade::serve::is_postgres_url("postgres://db/x"));
+  EXPECT_TRUE(raygrade::serve::is_postgres_url("postgresql://db/x"));
+  EXPECT_THROW(raygrade::serve::open_store("mysql://db/x", "/nonexistent"), raygrade::Error);
 }
 
 TEST(ServeOutbox, DelayDoublesFromTheBaseUpToThirtySeconds) {

@@ -12,6 +12,7 @@
 #include "cli/command.h"
 #include "serve/outbox.h"
 #include "serve/server.h"
+#include "serve/store.h"
 
 namespace raygrade::cli {
 // Named rather than anonymous: a unity batch shares one anonymous namespace.
@@ -19,6 +20,7 @@ namespace serve_internal {
 
 struct ServeCliOptions {
   std::string data;
+  std::string database;
   std::string listen = "127.0.0.1:0";
   std::string public_url;
   std::string assignments;
@@ -44,7 +46,11 @@ int run_serve(const ServeCliOptions& o) {
     return kExitBadInput;
   }
   std::string host = o.listen.substr(0, colon);
-  serve::ServeOptions options{o.data, o.public_url, o.assignments, 1000, nullptr};
+  serve::ServeOptions options;
+  options.data_dir = o.data;
+  options.public_url = o.public_url;
+  options.assignments_dir = o.assignments;
+  options.database = o.database;
   // One line per request and per score not delivered, on standard error, with the time.
   std::mutex log_mutex;
   options.log = [&log_mutex](const std::string& line) {
@@ -52,11 +58,15 @@ int run_serve(const ServeCliOptions& o) {
     std::lock_guard lock(log_mutex);
     fmt::print(stderr, "{} {}\n", now, line);
   };
-  if (const char* base = std::getenv("RAYGRADE_OUTBOX_BASE_MS")) {
+  // The outbox's first retry and its lease, shortened by the tests.
+  for (auto [name, value] : {std::pair{"RAYGRADE_OUTBOX_BASE_MS", &options.outbox_base_ms},
+                             std::pair{"RAYGRADE_OUTBOX_LEASE_MS", &options.outbox_lease_ms}}) {
+    const char* text = std::getenv(name);
+    if (!text) continue;
     try {
-      options.outbox_base_ms = std::max(1L, std::stol(base));
+      *value = std::max(1L, std::stol(text));
     } catch (const std::exception&) {
-      fmt::print(stderr, "raygrade serve: RAYGRADE_OUTBOX_BASE_MS is not a number of ms\n");
+      fmt::print(stderr, "raygrade serve: {} is not a number of ms\n", name);
       return kExitBadInput;
     }
   }
@@ -79,6 +89,8 @@ int run_serve(const ServeCliOptions& o) {
   fmt::print("login URL: {}/lti/login\n", url);
   fmt::print("launch URL: {}/lti/launch\n", url);
   fmt::print("JWKS URL: {}/lti/jwks\n", url);
+  fmt::print("database: {}\n",
+             o.database.empty() ? o.data + "/raygrade.sqlite" : serve::redacted_url(o.database));
   std::fflush(stdout);
   std::thread waiter([&] {
     int signal = 0;
@@ -94,14 +106,15 @@ int run_serve(const ServeCliOptions& o) {
 
 int run_register(const ServeCliOptions& o) {
   const serve::ManualRegistration& r = o.registration;
-  if (o.data.empty() || r.issuer.empty() || r.client_id.empty() || r.deployment_id.empty() ||
-      r.auth_url.empty() || r.token_url.empty() || r.jwks_url.empty()) {
+  if ((o.data.empty() && o.database.empty()) || r.issuer.empty() || r.client_id.empty() ||
+      r.deployment_id.empty() || r.auth_url.empty() || r.token_url.empty() || r.jwks_url.empty()) {
     fmt::print(stderr,
-               "raygrade serve register: give --data, --issuer, --client-id, --deployment-id, "
+               "raygrade serve register: give --data (or --database), --issuer, --client-id, "
+               "--deployment-id, "
                "--auth-url, --token-url and --jwks-url\n");
     return kExitBadInput;
   }
-  serve::register_platform(o.data, r);
+  serve::register_platform(o.data, o.database, r);
   fmt::print(stderr, "Registered {} (client {}, deployment {}).\n", r.issuer, r.client_id,
              r.deployment_id);
   return kExitOk;
@@ -113,12 +126,16 @@ Runner setup_serve(CLI::App& sub) {
   using namespace serve_internal;  // NOLINT: this file's own functions
   auto o = std::make_shared<ServeCliOptions>();
   sub.add_option("--data", o->data, "the folder of the database (made when missing)");
+  sub.add_option("--database", o->database,
+                 "a PostgreSQL URL (postgresql://HOST/NAME) shared by several servers; default: "
+                 "SQLite in the data folder");
   sub.add_option("--listen", o->listen, "HOST:PORT to listen on (port 0: any free port)");
   sub.add_option("--public-url", o->public_url,
                  "the URL browsers and platforms reach it at (default: http://HOST:PORT bound)");
   sub.add_option("--assignments", o->assignments, "the folder of assignment files offered");
   CLI::App* reg = sub.add_subcommand("register", "store a platform registered by hand");
-  reg->add_option("--data", o->data, "the folder of the database")->required();
+  reg->add_option("--data", o->data, "the folder of the SQLite database");
+  reg->add_option("--database", o->database, "a PostgreSQL URL, rather than SQLite in --data");
   reg->add_option("--issuer", o->registration.issuer, "the platform's issuer")->required();
   reg->add_option("--client-id", o->registration.client_id, "the client id it gave the tool")
       ->required();

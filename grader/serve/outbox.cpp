@@ -57,12 +57,13 @@ std::string iso_time_ms(std::int64_t ms) {
 }
 
 Outbox::Outbox(Store& store, EVP_PKEY* tool_key, std::string kid, std::int64_t base_ms,
-               std::function<void(const std::string&)> log)
+               std::function<void(const std::string&)> log, std::int64_t lease_ms)
     : store_(store),
       key_(tool_key),
       kid_(std::move(kid)),
       base_ms_(base_ms),
-      log_(std::move(log)) {}
+      log_(std::move(log)),
+      lease_ms_(lease_ms) {}
 
 Outbox::~Outbox() { stop(); }
 
@@ -87,6 +88,11 @@ void Outbox::wake() {
   cv_.notify_all();
 }
 
+bool Outbox::stopping() {
+  std::lock_guard lock(mutex_);
+  return stopping_;
+}
+
 void Outbox::loop() {
   for (;;) {
     {
@@ -95,33 +101,45 @@ void Outbox::loop() {
       if (stopping_) return;
       woken_ = false;
     }
-    std::vector<OutboxRow> due;
+    std::vector<OutboxRow> claimed;
+    std::int64_t claimed_at = now_ms();
     try {
-      due = store_.due_scores(now_ms(), kBatch);
+      claimed = store_.claim_scores(claimed_at, lease_ms_, kBatch);
     } catch (const std::exception&) {
       continue;  // the database is busy or failing: the next pass tries again
     }
-    for (const OutboxRow& row : due) {
-      {
-        std::lock_guard lock(mutex_);
-        if (stopping_) return;
-      }
-      try {
-        deliver(row);
-        store_.mark_delivered(row.id);
-      } catch (const std::exception& e) {
-        int attempts = row.attempts + 1;
-        if (log_) {
-          log_(fmt::format("score {} for {} (attempt {}) not delivered: {}", row.id, row.user_id,
-                           attempts, e.what()));
+    for (std::size_t i = 0; i < claimed.size(); ++i) {
+      // A score is begun only with more than half its lease left; the rest go back.
+      if (stopping() || now_ms() - claimed_at > lease_ms_ / 2) {
+        for (; i < claimed.size(); ++i) {
+          try {
+            store_.release_claim(claimed[i].id);
+          } catch (const std::exception&) {
+            // Left claimed: another sender takes it when the lease runs out.
+          }
         }
-        try {
-          store_.retry_later(row.id, attempts, now_ms() + outbox_delay_ms(attempts, base_ms_),
-                             e.what());
-        } catch (const std::exception&) {
-          // Left as it was: tried again at the next pass.
-        }
+        break;
       }
+      send(claimed[i]);
+    }
+  }
+}
+
+void Outbox::send(const OutboxRow& row) {
+  try {
+    deliver(row);
+    store_.mark_delivered(row.id);
+  } catch (const std::exception& e) {
+    int attempts = row.attempts + 1;
+    if (log_) {
+      log_(fmt::format("score {} for {} (attempt {}) not delivered: {}", row.id, row.user_id,
+                       attempts, e.what()));
+    }
+    try {
+      store_.retry_later(row.id, attempts, now_ms() + outbox_delay_ms(attempts, base_ms_),
+                         e.what());
+    } catch (const std::exception&) {
+      // Left claimed: tried again when the lease runs out.
     }
   }
 }

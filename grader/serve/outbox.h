@@ -17,6 +17,11 @@ namespace raygrade::serve {
 
 // The longest wait between two tries of one score.
 inline constexpr std::int64_t kOutboxMaxDelayMs = 30000;
+// How long a sender holds the scores it claimed (store.h, claim_scores) by default. A delivery
+// is at most five HTTP calls of 10 s each (http_client.cpp), and a score is only begun while
+// more than half the lease is left, so no other process takes a score being sent; a process
+// killed while holding scores delays them by this much.
+inline constexpr std::int64_t kOutboxLeaseMs = 300000;
 
 // The delay before try `attempts` + 1 of a score after `attempts` failed ones: `base_ms`,
 // doubled each time, at most kOutboxMaxDelayMs.
@@ -28,9 +33,11 @@ std::int64_t now_ms();
 
 class Outbox {
  public:
-  // `log`, when set, is told of each score that could not be delivered, and why.
+  // `log`, when set, is told of each score that could not be delivered, and why. Scores are
+  // claimed for `lease_ms` at a time, so that several processes share one outbox.
   Outbox(Store& store, EVP_PKEY* tool_key, std::string kid, std::int64_t base_ms,
-         std::function<void(const std::string&)> log = nullptr);
+         std::function<void(const std::string&)> log = nullptr,
+         std::int64_t lease_ms = kOutboxLeaseMs);
   ~Outbox();
   Outbox(const Outbox&) = delete;
   Outbox& operator=(const Outbox&) = delete;
@@ -42,6 +49,9 @@ class Outbox {
 
  private:
   void loop();
+  // Sends one claimed score and notes the outcome.
+  void send(const OutboxRow& row);
+  bool stopping();
   // Sends one score; throws std::runtime_error saying why it could not.
   void deliver(const OutboxRow& row);
   std::string access_token(const Registration& r, const std::string& scope);
@@ -52,6 +62,7 @@ class Outbox {
   std::string kid_;
   std::int64_t base_ms_;
   std::function<void(const std::string&)> log_;
+  std::int64_t lease_ms_;
   std::mutex mutex_;
   std::condition_variable cv_;
   bool stopping_ = false;

@@ -157,7 +157,7 @@ struct LtiServer::Impl {
 
   explicit Impl(ServeOptions o)
       : options(std::move(o)),
-        store(open_sqlite_store(options.data_dir)),
+        store(open_store(options.database, options.data_dir)),
         catalog(options.assignments_dir) {
     if (!store->tool_key()) store->set_tool_key(random_token(12), generate_rsa_pem());
     auto [k, pem] = *store->tool_key();
@@ -169,7 +169,8 @@ struct LtiServer::Impl {
                              "database"});
     }
     if (!options.public_url.empty()) set_public_url(options.public_url);
-    outbox = std::make_unique<Outbox>(*store, key.get(), kid, options.outbox_base_ms, options.log);
+    outbox = std::make_unique<Outbox>(*store, key.get(), kid, options.outbox_base_ms, options.log,
+                                      options.outbox_lease_ms);
     routes();
   }
 
@@ -644,8 +645,9 @@ const std::vector<Diagnostic>& LtiServer::warnings() const { return impl_->catal
 
 const std::string& LtiServer::public_url() const { return impl_->options.public_url; }
 
-void register_platform(const std::string& data_dir, const ManualRegistration& m) {
-  auto store = open_sqlite_store(data_dir);
+void register_platform(const std::string& data_dir, const std::string& database,
+                       const ManualRegistration& m) {
+  auto store = open_store(database, data_dir);
   store->add_registration(Registration{
       0, m.issuer, m.client_id, m.auth_url, m.token_url, m.jwks_url, {m.deployment_id}});
 }

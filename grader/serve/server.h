@@ -13,7 +13,7 @@
 namespace raygrade::serve {
 
 struct ServeOptions {
-  std::string data_dir;  // the database and the tool's key
+  std::string data_dir;  // the SQLite database and the tool's key, and scratch files
   // How browsers and platforms reach the tool; empty: http://HOST:PORT of the address bound.
   std::string public_url;
   std::string assignments_dir;         // the assignment files offered
@@ -21,6 +21,11 @@ struct ServeOptions {
   // Told one line per request answered (method, path, status, and why for a refusal) and per
   // score that could not be delivered; the caller decides where it goes.
   std::function<void(const std::string&)> log;
+  // A PostgreSQL URL (postgresql://…): the database is there, shared with other servers,
+  // rather than SQLite in data_dir.
+  std::string database;
+  std::int64_t outbox_lease_ms = 300000;  // kOutboxLeaseMs (outbox.h): how long a sender
+                                          // holds the scores it claimed
 };
 
 class LtiServer {
@@ -52,6 +57,8 @@ class LtiServer {
 struct ManualRegistration {
   std::string issuer, client_id, deployment_id, auth_url, token_url, jwks_url;
 };
-void register_platform(const std::string& data_dir, const ManualRegistration& r);
+// Stores it in `database` when given (a PostgreSQL URL), else in SQLite in `data_dir`.
+void register_platform(const std::string& data_dir, const std::string& database,
+                       const ManualRegistration& r);
 
 }  // namespace raygrade::serve

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <mutex>
 
@@ -13,7 +14,8 @@ namespace raygrade::serve {
 
 namespace {
 
-// The schema, one entry per version: a database at version v runs the entries after v.
+// The schema, one entry per version: a database at version v runs the entries after v. The
+// same versions as PostgreSQL's (postgres_store.cpp), in SQLite's words.
 const char* const kMigrations[] = {
     R"(CREATE TABLE registrations (
          id INTEGER PRIMARY KEY, issuer TEXT NOT NULL, client_id TEXT NOT NULL,
@@ -53,7 +55,10 @@ const char* const kMigrations[] = {
        CREATE TABLE line_items (
          issuer TEXT NOT NULL, client_id TEXT NOT NULL, resource_link_id TEXT NOT NULL,
          url TEXT NOT NULL, PRIMARY KEY (issuer, client_id, resource_link_id));)",
+    // 2: several senders share the outbox; a score is held by one until claimed_until.
+    R"(ALTER TABLE outbox ADD COLUMN claimed_until INTEGER NOT NULL DEFAULT 0;)",
 };
+static_assert(std::size(kMigrations) == kSchemaVersion, "one migration per schema version");
 
 class Statement {
  public:
@@ -114,7 +119,8 @@ const char* const kLaunchColumns =
     "deep_link_return_url, deep_link_data, expires";
 const char* const kOutboxColumns =
     "id, submission_id, issuer, client_id, lineitem, lineitems, resource_link_id, label, "
-    "user_id, score, max_score, timestamp, attempts, next_try_ms, delivered, last_error";
+    "user_id, score, max_score, timestamp, attempts, next_try_ms, delivered, last_error, "
+    "claimed_until";
 
 OutboxRow read_outbox(const Statement& s) {
   OutboxRow r;
@@ -134,6 +140,7 @@ OutboxRow read_outbox(const Statement& s) {
   r.next_try_ms = s.integer(13);
   r.delivered = s.integer(14) != 0;
   r.last_error = s.text(15);
+  r.claimed_until_ms = s.integer(16);
   return r;
 }
 
@@ -154,6 +161,9 @@ class SqliteStore : public Store {
     sqlite3_busy_timeout(db_, 5000);
     exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL; PRAGMA foreign_keys=ON;");
     migrate();
+    // One server per SQLite database: claims still held were the previous process's, killed
+    // before it could give them back; its scores are sent at once rather than after the lease.
+    exec("UPDATE outbox SET claimed_until = 0 WHERE claimed_until != 0");
   }
   ~SqliteStore() override { sqlite3_close(db_); }
 
@@ -376,16 +386,29 @@ class SqliteStore : public Store {
     return out;
   }
 
-  std::vector<OutboxRow> due_scores(std::int64_t now_ms, int limit) override {
+  std::vector<OutboxRow> claim_scores(std::int64_t now_ms, std::int64_t lease_ms,
+                                      int limit) override {
     std::lock_guard lock(mutex_);
+    Transaction t(*this);
     std::string sql = fmt::format(
-        "SELECT {} FROM outbox WHERE delivered = 0 AND next_try_ms <= ? ORDER BY id LIMIT ?",
+        "UPDATE outbox SET claimed_until = ? WHERE id IN (SELECT id FROM outbox WHERE "
+        "delivered = 0 AND next_try_ms <= ? AND claimed_until <= ? ORDER BY id LIMIT ?) "
+        "RETURNING {}",
         kOutboxColumns);
-    Statement s(db_, sql.c_str(), file_);
-    s.bind(now_ms).bind(std::int64_t{limit});
     std::vector<OutboxRow> out;
-    while (s.step()) out.push_back(read_outbox(s));
+    {
+      Statement s(db_, sql.c_str(), file_);
+      s.bind(now_ms + lease_ms).bind(now_ms).bind(now_ms).bind(std::int64_t{limit});
+      while (s.step()) out.push_back(read_outbox(s));
+    }
+    t.commit();
+    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
     return out;
+  }
+
+  void release_claim(std::int64_t id) override {
+    std::lock_guard lock(mutex_);
+    Statement(db_, "UPDATE outbox SET claimed_until = 0 WHERE id = ?", file_).bind(id).run();
   }
 
   std::vector<OutboxRow> outbox() override {
@@ -406,7 +429,9 @@ class SqliteStore : public Store {
 
   void mark_delivered(std::int64_t id) override {
     std::lock_guard lock(mutex_);
-    Statement(db_, "UPDATE outbox SET delivered = 1, last_error = '' WHERE id = ?", file_)
+    Statement(db_,
+              "UPDATE outbox SET delivered = 1, last_error = '', claimed_until = 0 WHERE id = ?",
+              file_)
         .bind(id)
         .run();
   }
@@ -414,7 +439,9 @@ class SqliteStore : public Store {
   void retry_later(std::int64_t id, int attempts, std::int64_t next_try_ms,
                    const std::string& error) override {
     std::lock_guard lock(mutex_);
-    Statement(db_, "UPDATE outbox SET attempts = ?, next_try_ms = ?, last_error = ? WHERE id = ?",
+    Statement(db_,
+              "UPDATE outbox SET attempts = ?, next_try_ms = ?, last_error = ?, claimed_until = 0 "
+              "WHERE id = ?",
               file_)
         .bind(std::int64_t{attempts})
         .bind(next_try_ms)
@@ -504,14 +531,11 @@ class SqliteStore : public Store {
       Statement s(db_, "SELECT MAX(version) FROM schema_version", file_);
       if (s.step()) version = s.integer(0);
     }
-    constexpr auto kCount = static_cast<std::int64_t>(std::size(kMigrations));
-    if (version > kCount) {
-      throw Error(Diagnostic{file_, "", 0, 0, Severity::kError,
-                             "the database was made by a newer raygrade (schema version " +
-                                 std::to_string(version) + ")",
-                             "database"});
+    if (version > kSchemaVersion) {
+      throw Error(
+          Diagnostic{file_, "", 0, 0, Severity::kError, newer_schema_message(version), "database"});
     }
-    for (; version < kCount; ++version) {
+    for (; version < kSchemaVersion; ++version) {
       Transaction t(*this);
       exec(kMigrations[version]);
       Statement(db_, "INSERT INTO schema_version VALUES (?)", file_).bind(version + 1).run();

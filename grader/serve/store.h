@@ -1,6 +1,7 @@
-// What `raygrade serve` keeps: one interface over the database, so that a backend other than
-// SQLite (PostgreSQL) can take its place. Every method is one transaction; a method returns
-// only after its transaction is committed.
+// What `raygrade serve` keeps: one interface over the database, with two backends, SQLite (one
+// server) and PostgreSQL (several servers sharing one database). Every method is one
+// transaction; a method returns only after its transaction is committed. Everything above this
+// interface is the same code whichever backend holds the data.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +11,11 @@
 #include <vector>
 
 namespace raygrade::serve {
+
+// The version of the schema this raygrade writes: both backends have one migration per version
+// (a check in each says so), run in order at opening. A database of a higher version, made by
+// a newer raygrade, is refused rather than used.
+inline constexpr std::int64_t kSchemaVersion = 2;
 
 // A platform the tool trusts: its issuer and the client_id it gave the tool, its endpoints and
 // the deployments registered.
@@ -88,6 +94,7 @@ struct OutboxRow {
   std::string timestamp;  // ISO 8601 with milliseconds, Z
   int attempts = 0;
   std::int64_t next_try_ms = 0;
+  std::int64_t claimed_until_ms = 0;  // a sender holds it until then (0: nobody)
   bool delivered = false;
   std::string last_error;
 };
@@ -125,8 +132,14 @@ class Store {
                                                     const std::string& resource_link_id,
                                                     const std::string& assignment) = 0;
 
-  // Scores not delivered whose next try is due, oldest first.
-  virtual std::vector<OutboxRow> due_scores(std::int64_t now_ms, int limit) = 0;
+  // Claims up to `limit` scores not delivered whose next try is due and that no sender holds
+  // (or whose sender's claim ran out), oldest first: each is held until now_ms + lease_ms, so
+  // that no other process sends it meanwhile. A process killed while holding scores leaves
+  // them to another once the lease has run out.
+  virtual std::vector<OutboxRow> claim_scores(std::int64_t now_ms, std::int64_t lease_ms,
+                                              int limit) = 0;
+  // Gives back a claimed score not tried (the sender is stopping).
+  virtual void release_claim(std::int64_t id) = 0;
   virtual void mark_delivered(std::int64_t id) = 0;
   virtual void retry_later(std::int64_t id, int attempts, std::int64_t next_try_ms,
                            const std::string& error) = 0;
@@ -144,5 +157,23 @@ class Store {
 // The SQLite database DIR/raygrade.sqlite (made when missing): WAL, synchronous=FULL, the schema
 // brought to the current version at opening. Safe to use from several threads.
 std::unique_ptr<Store> open_sqlite_store(const std::string& dir);
+
+// The PostgreSQL database at `url` (postgresql://… or postgres://…, libpq's connection URI),
+// brought to the current schema version at opening (one process at a time: an advisory lock).
+// A small pool of connections; safe to use from several threads and several processes.
+std::unique_ptr<Store> open_postgres_store(const std::string& url);
+
+// True for a URL open_postgres_store takes.
+bool is_postgres_url(const std::string& database);
+
+// `database` when it is given (a PostgreSQL URL), else SQLite in `dir`. Throws Error for a
+// database that is neither.
+std::unique_ptr<Store> open_store(const std::string& database, const std::string& dir);
+
+// The URL without its password, to be shown or logged.
+std::string redacted_url(const std::string& url);
+
+// Why a database of schema `version` (> kSchemaVersion) is refused, and what to do.
+std::string newer_schema_message(std::int64_t version);
 
 }  // namespace raygrade::serve

@@ -1,7 +1,10 @@
 """What the LTI tests share: starting the test platform and `raygrade serve`, a browser made of a
-requests.Session, the launch flow through both, and a look into the tool's SQLite database.
+requests.Session, the launch flow through both, and a look into the tool's database.
 
-The binary is $RAYGRADE (ctest passes it), else build/release/grader/raygrade of the repository."""
+The binary is $RAYGRADE (ctest passes it), else build/release/grader/raygrade of the repository.
+RAYGRADE_TEST_DATABASE=postgresql runs the tool on PostgreSQL rather than SQLite: one
+throwaway cluster for the whole test file (pgcluster.py), a new database for each data folder."""
+import atexit
 import glob
 import html.parser
 import http.cookiejar
@@ -32,6 +35,31 @@ LTI = "https://purl.imsglobal.org/spec/lti/claim/"
 # spent by a refusal, so tables of logins are left out).
 STORED = re.compile(r"session|submission|user|outbox|score|line_?item|launch(?!_?state)", re.I)
 NOT_STORED = re.compile(r"nonce|state|login|registration|key|meta|schema", re.I)
+BACKEND = os.environ.get("RAYGRADE_TEST_DATABASE", "sqlite")
+if BACKEND not in ("sqlite", "postgresql"):
+    raise SystemExit(f"RAYGRADE_TEST_DATABASE is sqlite or postgresql, not {BACKEND!r}")
+_CLUSTER = None
+_DATABASES = {}  # data folder: its PostgreSQL URL
+
+
+def cluster():
+    """The test file's PostgreSQL cluster, started at first use and stopped at exit."""
+    global _CLUSTER
+    if _CLUSTER is None:
+        import pgcluster
+        _CLUSTER = pgcluster.Cluster().start()
+        atexit.register(_CLUSTER.stop)
+    return _CLUSTER
+
+
+def database_url(data):
+    """The PostgreSQL URL of a data folder's database (made at first use), or None on SQLite."""
+    if BACKEND != "postgresql":
+        return None
+    key = os.path.abspath(data)
+    if key not in _DATABASES:
+        _DATABASES[key] = cluster().new_database()
+    return _DATABASES[key]
 
 
 def assignment_points(name=ASSIGNMENT):
@@ -118,28 +146,33 @@ def start_platform(state, public_host=None, port=0):
     return proc, url
 
 
-def start_tool(data, assignments=ASSIGNMENTS, port=None, host="127.0.0.1", env=None):
+def start_tool(data, assignments=ASSIGNMENTS, port=None, host="127.0.0.1", env=None,
+               public_url=None, database=None):
     """`raygrade serve` on a free port of loopback; returns (process, public URL). The port is
     chosen before the server binds it (its public URL names it), so another program may take
-    it in between: then a new port, twice at most."""
+    it in between: then a new port, twice at most. On PostgreSQL, the database is data's own
+    unless `database` names another (several servers on one database)."""
     if port:
-        return _start_tool(data, assignments, port, host, env)
+        return _start_tool(data, assignments, port, host, env, public_url, database)
     for attempt in range(3):
         try:
-            return _start_tool(data, assignments, free_port(), host, env)
+            return _start_tool(data, assignments, free_port(), host, env, public_url, database)
         except RuntimeError:
             if attempt == 2:
                 raise
 
 
-def _start_tool(data, assignments, port, host, env):
+def _start_tool(data, assignments, port, host, env, public_url, database):
     os.makedirs(data, exist_ok=True)
-    url = f"http://{host}:{port}"
+    url = public_url or f"http://{host}:{port}"
     full_env = dict(os.environ)
     full_env.update(env or {})
-    proc = Process([RAYGRADE, "serve", "--data", data, "--listen", f"127.0.0.1:{port}",
-                    "--public-url", url, "--assignments", assignments],
-                   os.path.join(data, "..", f"serve-{port}.log"), full_env)
+    args = [RAYGRADE, "serve", "--data", data, "--listen", f"127.0.0.1:{port}",
+            "--public-url", url, "--assignments", assignments]
+    database = database or database_url(data)
+    if database:
+        args += ["--database", database]
+    proc = Process(args, os.path.join(data, "..", f"serve-{port}.log"), full_env)
     try:
         read_line(proc, r"^raygrade serve: listening on http://127\.0\.0\.1:\d+")
         for name, path in (("registration", "register"), ("login", "login"),
@@ -149,6 +182,8 @@ def _start_tool(data, assignments, port, host, env):
         proc.stop()
         raise
     proc.drain()
+    # The tests on PostgreSQL are on PostgreSQL: no SQLite database beside.
+    assert not (database and os.path.exists(os.path.join(data, "raygrade.sqlite"))), data
     return proc, url
 
 
@@ -282,7 +317,7 @@ def launch(platform, s, options=None, **params):
     return r, (launch_json(r.text) if r.status_code == 200 else None)
 
 
-def database(data):
+def sqlite_file(data):
     """The SQLite database file of the tool's data folder."""
     for pattern in ("*.sqlite3", "*.sqlite", "*.db"):
         found = sorted(glob.glob(os.path.join(data, pattern)))
@@ -291,19 +326,37 @@ def database(data):
     raise AssertionError(f"no SQLite database in {data}: {os.listdir(data)}")
 
 
-def row_counts(data):
-    """{table: rows} of the tables holding what a launch or a submission stores."""
-    con = sqlite3.connect(f"file:{database(data)}?mode=ro", uri=True, timeout=10)
+def query(data, sql):
+    """The rows of `sql` on the tool's database of a data folder (SQLite or PostgreSQL), each
+    a tuple of text."""
+    url = database_url(data)
+    if url:
+        return [tuple(row) for row in cluster().query(url, sql)]
+    con = sqlite3.connect(f"file:{sqlite_file(data)}?mode=ro", uri=True, timeout=10)
     try:
-        tables = [r[0] for r in con.execute("SELECT name FROM sqlite_master WHERE type='table'")]
-        counts = {t: con.execute(f'SELECT COUNT(*) FROM "{t}"').fetchone()[0] for t in tables
-                  if STORED.search(t) and not NOT_STORED.search(t)}
-        # Not an empty comparison: the tables of launches and submissions are among them.
-        assert any("launch" in t or "session" in t for t in counts), tables
-        assert any("submission" in t for t in counts), tables
-        return counts
+        return [tuple("" if x is None else str(x) for x in row) for row in con.execute(sql)]
     finally:
         con.close()
+
+
+def tables(data):
+    """The names of the tool's tables."""
+    if database_url(data):
+        sql = "SELECT tablename FROM pg_tables WHERE schemaname = 'public'"
+    else:
+        sql = "SELECT name FROM sqlite_master WHERE type='table'"
+    return [r[0] for r in query(data, sql)]
+
+
+def row_counts(data):
+    """{table: rows} of the tables holding what a launch or a submission stores."""
+    names = tables(data)
+    counts = {t: int(query(data, f'SELECT COUNT(*) FROM "{t}"')[0][0]) for t in names
+              if STORED.search(t) and not NOT_STORED.search(t)}
+    # Not an empty comparison: the tables of launches and submissions are among them.
+    assert any("launch" in t or "session" in t for t in counts), names
+    assert any("submission" in t for t in counts), names
+    return counts
 
 
 def student_key(launch):

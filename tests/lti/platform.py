@@ -27,6 +27,7 @@ Test controls (JSON answers unless said otherwise):
                                            when the same score had come before)
   GET  /test/calls                         how many /token and /scores calls came, by outcome
   POST /test/fail {"endpoint": "token"|"scores", "times": N}   answer 503 to the next N calls
+  POST /test/slow {"seconds": S}           each score POST answered S seconds late (recorded first)
   GET|POST /test/launch?user=U&role=Learner|Instructor&context=C&link=L&message=resource|deeplink
        [&client_id=..][&name=..][&email=..]; a POST JSON body may add "claims" (merged into the
        id_token, a null value removes the claim), "header" (merged into the JOSE header),
@@ -125,6 +126,7 @@ class Platform:
         self.jtis = set()       # client assertion jti seen
         self.dl_nonces = set()  # deep linking response nonces seen
         self.faults = {"token": 0, "scores": 0}
+        self.slow_scores = 0.0  # seconds a score's answer waits
         self.calls = {"token": {"ok": 0, "refused": 0, "failed": 0},
                       "scores": {"ok": 0, "refused": 0, "failed": 0}}
 
@@ -777,6 +779,8 @@ class Handler(BaseHTTPRequestHandler):
                 raise
             with p.lock:
                 p.calls["scores"]["ok"] += 1
+            if p.slow_scores:
+                time.sleep(p.slow_scores)  # a platform slow to answer: the tool still waits
             return self.send(200, b"", "text/plain")
         if len(parts) == 5 and parts[4] == "results" and method == "GET":
             p.bearer(self.headers.get("Authorization"), [SCOPE_RESULT])
@@ -802,6 +806,9 @@ class Handler(BaseHTTPRequestHandler):
         if what == "calls":
             with p.lock:
                 return self.send(200, {"calls": p.calls, "faults": p.faults})
+        if what == "slow" and method == "POST":
+            p.slow_scores = float(body["seconds"])
+            return self.send(200, {"seconds": p.slow_scores})
         if what == "fail" and method == "POST":
             with p.lock:
                 p.faults[body["endpoint"]] = int(body["times"])
