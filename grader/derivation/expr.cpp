@@ -93,7 +93,7 @@ E pi() {
   n->base = "pi";
   return wrap(n);
 }
-E radians(const E& a) { return a * pi() / 180; }
+E radians(const E& a) { return wrap(make(Op::kRadians, {a})); }
 E square(const E& a) { return wrap(make(Op::kSquare, {a})); }
 E abs(const E& a) { return wrap(make(Op::kAbs, {a})); }
 E norm(const E& a) { return wrap(make(Op::kNorm, {a})); }
@@ -167,6 +167,7 @@ Value evaluate(const E& e, const Env& env) {
       return std::asin(std::clamp(scalar(arg(0)), -1.0, 1.0)) * (180 / std::numbers::pi);
     case Op::kCos: return std::cos(scalar(arg(0)));
     case Op::kSin: return std::sin(scalar(arg(0)));
+    case Op::kRadians: return scalar(arg(0)) * std::numbers::pi / 180;
     case Op::kTan: return std::tan(scalar(arg(0)));
     case Op::kPow: return std::pow(scalar(arg(0)), scalar(arg(1)));
     case Op::kHadamard: {
@@ -342,6 +343,7 @@ std::string render(const E& e, const Dialect& d, const RenderOptions& o, bool le
     case Op::kArcsinDegrees: return d.call("arcsin", render(n.args[0], d, o));
     case Op::kCos: return d.call("cos", render(n.args[0], d, o));
     case Op::kSin: return d.call("sin", render(n.args[0], d, o));
+    case Op::kRadians: return render(n.args[0] * pi() / 180, d, o, leading);
     case Op::kTan: return d.call("tan", render(n.args[0], d, o));
     case Op::kHadamard:
       return child(n.args[0], 3, d, o, leading) + d.op("⊙") + child(n.args[1], 3, d, o, false);

@@ -39,6 +39,7 @@ enum class Op {
   kArcsinDegrees,  // arcsin(x) in degrees, x clamped to [−1, 1]
   kCos,            // cos(x), x in radians
   kSin,            // sin(x), x in radians
+  kRadians,        // an angle in degrees in radians, x·π/180: one conversion, shown so
   kTan,            // tan(x), x in radians
   kPow,            // a^b of scalars (a Phong exponent)
   kHadamard,       // a ⊙ b: two vectors (colours) multiplied component by component
@@ -106,7 +107,7 @@ E pow(const E& a, const E& b);
 E hadamard(const E& a, const E& b);
 // The number π, shown as π (an angle in degrees times π/180 is the same angle in radians).
 E pi();
-// An angle in degrees in radians: a·π/180.
+// An angle in degrees in radians: a·π/180, as one operation (kRadians).
 E radians(const E& a);
 E square(const E& a);
 E abs(const E& a);

@@ -143,6 +143,7 @@ void operator_changes(const E& e, Out& out) {
       break;
     case Op::kCos: add(out, with_op(e, Op::kSin), "function"); break;
     case Op::kSin: add(out, with_op(e, Op::kCos), "function"); break;
+    case Op::kRadians: add(out, a[0], "degrees"); break;
     default: break;
   }
   // An angle in degrees taken to radians, x·π/180: the conversion left out (degrees read as

@@ -380,7 +380,7 @@ struct ChangeSearch::Impl {
   std::vector<Everywhere> everywhere;
   std::set<std::pair<std::size_t, std::size_t>> everywhere_seen;
   // The form hashes of the method's steps: the first step (name and formula) with each, and
-  // whether another has it too.
+  // whether the form is met more than once (in that step or another).
   std::map<std::size_t, std::pair<std::string, bool>> forms;
 };
 
@@ -396,13 +396,12 @@ void ChangeSearch::Impl::search_step(const Task& task, const std::string& method
   const Step* s = plan.step;
   std::string before = to_text(s->formula);
   std::map<std::array<double, 3>, std::ptrdiff_t> worked;  // a changed value → its prediction
-  std::string self = s->name + "\n" + before;
-  // A change of a node whose form another step has too is made everywhere later.
+  // A change of a node whose form is met more than once is made everywhere later.
   auto remember_everywhere = [&](const FormulaChange& alt, const StepChange& change) {
     if (!made_everywhere(alt)) return;
     std::size_t h = form_hash(alt.from);
     auto it = forms.find(h);
-    if (it == forms.end() || (!it->second.second && it->second.first == self)) return;
+    if (it == forms.end() || !it->second.second) return;
     // Once per change of a form: the same change of each light's L is one change everywhere.
     if (!everywhere_seen.insert({h, form_hash(alt.to)}).second) return;
     StepChange c = change;
@@ -545,7 +544,7 @@ void ChangeSearch::Impl::search_method(const Task& task, const std::string& meth
     std::string self = s.name + "\n" + to_text(s.formula);
     for (std::size_t h : hashes) {
       auto [it, fresh] = forms.emplace(h, std::pair{self, false});
-      if (!fresh && it->second.first != self) it->second.second = true;
+      if (!fresh) it->second.second = true;  // met twice, in this step or another
     }
   });
   std::size_t start = work;
