@@ -156,3 +156,144 @@ TEST(ChangeOperators, ACameraRayGivenAsAMultiple) {
 
 }  // namespace change_operators_test
 }  // namespace raygrade
+
+namespace raygrade {
+namespace change_operators_test {
+
+// Whether the search explains `answer` by a change in `step` made in every step of its form.
+std::string explained_everywhere(const char* problem, const json& answer, const char* step) {
+  Problem p = testing::problem(problem);
+  ChangeSearch search(p);
+  Discovery d = search.explain(answer);
+  std::string seen = to_string(d.verdict);
+  for (const auto& c : d.changes) {
+    if (c.everywhere && c.step == step) return "";
+    seen += " | " + c.kind + ": " + c.text();
+  }
+  return seen;
+}
+
+// A slip in a formula used twice is made twice. The sphere of centre (0, 0, 10), radius 5, from
+// O = (3, 0, 0) along D = (0, 0, 2): f = O − C = (3, 0, −10), a = D·D = 4, b = 2·(D·f) = −40,
+// c = f·f − r² = 84, Δ = b² − 4ac = 256, t = (40 ∓ 16)/(2·4) = 3 and 7. Divided by 2 and
+// multiplied by a ((−b ∓ √Δ)/2·a) in both roots: t = 12·4 = 48 and 28·4 = 112, P = (3, 0, 2t).
+// One root alone changed (48 and 7) is a single change; both need the change everywhere.
+TEST(ChangeOperators, AChangeMadeInEveryStepOfItsForm) {
+  const char* sphere = R"({"id": "sphere", "ray": {"origin": [3, 0, 0], "direction": [0, 0, 2]},
+      "object": {"type": "sphere", "center": [0, 0, 10], "radius": 5}})";
+  json both = {
+      {"hits", {{{"t", 48}, {"point", {3, 0, 96}}}, {{"t", 112}, {"point", {3, 0, 224}}}}}};
+  std::string t0 = explained_everywhere(sphere, both, "t0");
+  std::string t1 = explained_everywhere(sphere, both, "t1");
+  EXPECT_TRUE(t0.empty() || t1.empty()) << t0;
+}
+
+// The form of a node alike for the quantities of one indexed family: L_2 = (S_2 − P)/‖S_2 − P‖
+// changed as L_1's (S_1 − P)/‖S_1 − P‖ → S_1 − P is S_2 − P; with S_2 = (0, 9, 0) and P = 0,
+// (0, 9, 0) rather than (0, 1, 0).
+TEST(ChangeOperators, TheChangeOfOneLightMadeForAnother) {
+  E p = sym("P");
+  E from = (sym("S_1") - p) / norm(sym("S_1") - p);
+  E to = sym("S_1") - p;
+  E l2 = (sym("S_2") - p) / norm(sym("S_2") - p);
+  std::optional<E> changed = change_everywhere(l2, from, to, form_hash(from));
+  ASSERT_TRUE(changed.has_value());
+  Env values{{"P", Value(Vec3d{0, 0, 0})}, {"S_2", Value(Vec3d{0, 9, 0})}};
+  Value v = evaluate(*changed, values);
+  EXPECT_EQ(v.vector.y, 9);
+  // A formula of another form is left alone.
+  EXPECT_FALSE(change_everywhere(sym("S_2") - p, from, to, form_hash(from)).has_value());
+  // One quantity of a family for the same-indexed one of another, carried over: c_1 → r_1
+  // makes c_2 · n into r_2 · n, (1, 2, 3)·(0, 1, 0) = 2 rather than (5, 7, 9)·(0, 1, 0) = 7.
+  E c1 = sym("c_1"), r1 = sym("r_1");
+  FormulaChange swap{r1, r1, "vector-swap", c1, r1};
+  ASSERT_TRUE(made_everywhere(swap));
+  std::optional<E> m2 = change_everywhere(dot(sym("c_2"), sym("n")), c1, r1, form_hash(c1));
+  ASSERT_TRUE(m2.has_value());
+  Env more{
+      {"c_2", Value(Vec3d{5, 7, 9})}, {"r_2", Value(Vec3d{1, 2, 3})}, {"n", Value(Vec3d{0, 1, 0})}};
+  EXPECT_EQ(evaluate(*m2, more).scalar, 2);
+  // Not one of a family for another of the same family (S_1 for S_2 is one quantity for another).
+  FormulaChange same{sym("S_2"), sym("S_2"), "vector-swap", sym("S_1"), sym("S_2")};
+  EXPECT_FALSE(made_everywhere(same));
+}
+
+// Which object is hit first, under a change: three spheres along the x axis from the origin,
+// listed "mid" (centre (7, 0, 0), r = 1: t = 6), "near" ((4, 0, 0), r = 1: t = 3) and "far"
+// ((10, 1, 0), r = 2: t_ca = 10, d² = 1, t_hc = √3, t = 10 − √3 = 8.267949, N = (P − C)/r =
+// (−0.866025, −0.5, 0)). "near" is hit first. The largest t for the smallest names "far" with
+// its own hit (min → max of t_first); the first listed for the nearest names "mid" (the
+// minimum left out, its first argument kept). Names compare as the grader compares them.
+TEST(ChangeOperators, AnotherObjectHitFirstUnderAChange) {
+  const char* problem = R"({"id": "first", "kind": "first-hit",
+      "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]}, "objects": [
+      {"name": "mid", "type": "sphere", "center": [7, 0, 0], "radius": 1},
+      {"name": "near", "type": "sphere", "center": [4, 0, 0], "radius": 1},
+      {"name": "far", "type": "sphere", "center": [10, 1, 0], "radius": 2}]})";
+  Planted largest{
+      "other-root",
+      problem,
+      {{"object", "Far"},
+       {"hits",
+        {{{"t", 8.267949}, {"point", {8.267949, 0, 0}}, {"normal", {-0.866025, -0.5, 0}}}}}},
+      "t_first",
+      "other-root"};
+  EXPECT_EQ(explained_by(largest), "");
+  Planted listed{
+      "clamp",
+      problem,
+      {{"object", "mid"}, {"hits", {{{"t", 6}, {"point", {6, 0, 0}}, {"normal", {-1, 0, 0}}}}}},
+      "t_first",
+      "clamp"};
+  EXPECT_EQ(explained_by(listed), "");
+  // The far sphere's numbers with the near one's name fit no change.
+  json mixed = {
+      {"object", "near"},
+      {"hits", {{{"t", 8.267949}, {"point", {8.267949, 0, 0}}, {"normal", {-0.866025, -0.5, 0}}}}}};
+  ChangeSearch search(testing::problem(problem));
+  EXPECT_NE(search.explain(mixed).verdict, Discovery::Verdict::kExplained);
+}
+
+}  // namespace change_operators_test
+}  // namespace raygrade
+
+namespace raygrade {
+namespace change_operators_test {
+
+// Air into glass (n1 = 1, n2 = 1.5, η = 2/3) along d = (1, −2, 0) at n = (0, 1, 0), worked on
+// the angles: cos θi = 2/√5, θi = 26.565051°, sin θt = η·sin θi = 0.298142, θt = 17.346065°,
+// t = sin θt·(1, 0, 0) − cos θt·(0, 1, 0) = (0.298142, −0.954521, 0).
+constexpr const char* kIntoGlass = R"({"id": "refract", "kind": "refract",
+    "direction": [1, -2, 0], "normal": [0, 1, 0], "n1": 1, "n2": 1.5})";
+
+json refracted(double theta_i, double theta_t, double x, double y) {
+  return {{"total_internal_reflection", false},
+          {"angle_of_incidence", theta_i},
+          {"angle_of_refraction", theta_t},
+          {"direction", {x, y, 0}}};
+}
+
+TEST(ChangeOperators, TheAnglesOfSnellsLaw) {
+  const Planted planted[] = {
+      // The ratio applied to the angles (arcsin(η·sin θi) taken as η·arcsin(sin θi)):
+      // θt = (2/3)·26.565051° = 17.710034°, t = (0.304200, −0.952608, 0).
+      {"linear", kIntoGlass, refracted(26.565051, 17.710034, 0.304200, -0.952608), "theta_t",
+       "linear"},
+      // sin of θi in degrees read as radians: sin(26.565051) = 0.990426, sin θt = 0.660284,
+      // θt = 41.321540°, t = (0.660284, −0.751016, 0).
+      {"degrees", kIntoGlass, refracted(26.565051, 41.321540, 0.660284, -0.751016), "theta_t",
+       "degrees"},
+      // θi from the surface, 63.434949°, carried through: sin θt = (2/3)·0.894427 = 0.596285,
+      // θt = 36.604276°, t = (0.596285, −0.802773, 0).
+      {"function", kIntoGlass, refracted(63.434949, 36.604276, 0.596285, -0.802773), "theta_i",
+       "function"},
+      // cos for sin along the surface: t = cos θt·(1, 0, 0) − cos θt·(0, 1, 0)
+      // = (0.954521, −0.954521, 0).
+      {"sin-cos", kIntoGlass, refracted(26.565051, 17.346065, 0.954521, -0.954521), "t",
+       "function"},
+  };
+  for (const Planted& p : planted) EXPECT_EQ(explained_by(p), "") << p.what;
+}
+
+}  // namespace change_operators_test
+}  // namespace raygrade

@@ -83,6 +83,7 @@ E sqrt(const E& a) { return wrap(make(Op::kSqrt, {a})); }
 E arccos_degrees(const E& a) { return wrap(make(Op::kArccosDegrees, {a})); }
 E arcsin_degrees(const E& a) { return wrap(make(Op::kArcsinDegrees, {a})); }
 E cos(const E& a) { return wrap(make(Op::kCos, {a})); }
+E sin(const E& a) { return wrap(make(Op::kSin, {a})); }
 E tan(const E& a) { return wrap(make(Op::kTan, {a})); }
 E pow(const E& a, const E& b) { return wrap(make(Op::kPow, {a, b})); }
 E hadamard(const E& a, const E& b) { return wrap(make(Op::kHadamard, {a, b})); }
@@ -92,6 +93,7 @@ E pi() {
   n->base = "pi";
   return wrap(n);
 }
+E radians(const E& a) { return wrap(make(Op::kRadians, {a})); }
 E square(const E& a) { return wrap(make(Op::kSquare, {a})); }
 E abs(const E& a) { return wrap(make(Op::kAbs, {a})); }
 E norm(const E& a) { return wrap(make(Op::kNorm, {a})); }
@@ -164,6 +166,8 @@ Value evaluate(const E& e, const Env& env) {
     case Op::kArcsinDegrees:
       return std::asin(std::clamp(scalar(arg(0)), -1.0, 1.0)) * (180 / std::numbers::pi);
     case Op::kCos: return std::cos(scalar(arg(0)));
+    case Op::kSin: return std::sin(scalar(arg(0)));
+    case Op::kRadians: return scalar(arg(0)) * std::numbers::pi / 180;
     case Op::kTan: return std::tan(scalar(arg(0)));
     case Op::kPow: return std::pow(scalar(arg(0)), scalar(arg(1)));
     case Op::kHadamard: {
@@ -338,6 +342,8 @@ std::string render(const E& e, const Dialect& d, const RenderOptions& o, bool le
     case Op::kArccosDegrees: return d.call("arccos", render(n.args[0], d, o));
     case Op::kArcsinDegrees: return d.call("arcsin", render(n.args[0], d, o));
     case Op::kCos: return d.call("cos", render(n.args[0], d, o));
+    case Op::kSin: return d.call("sin", render(n.args[0], d, o));
+    case Op::kRadians: return render(n.args[0] * pi() / 180, d, o, leading);
     case Op::kTan: return d.call("tan", render(n.args[0], d, o));
     case Op::kHadamard:
       return child(n.args[0], 3, d, o, leading) + d.op("⊙") + child(n.args[1], 3, d, o, false);

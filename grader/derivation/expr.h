@@ -38,6 +38,8 @@ enum class Op {
   kArccosDegrees,  // arccos(x) in degrees, x clamped to [−1, 1] (rounding may push it past)
   kArcsinDegrees,  // arcsin(x) in degrees, x clamped to [−1, 1]
   kCos,            // cos(x), x in radians
+  kSin,            // sin(x), x in radians
+  kRadians,        // an angle in degrees in radians, x·π/180: one conversion, shown so
   kTan,            // tan(x), x in radians
   kPow,            // a^b of scalars (a Phong exponent)
   kHadamard,       // a ⊙ b: two vectors (colours) multiplied component by component
@@ -95,8 +97,9 @@ E sqrt(const E& a);
 E arccos_degrees(const E& a);
 // The angle whose sine is `a`, in degrees: arcsin(a).
 E arcsin_degrees(const E& a);
-// The cosine and tangent of an angle in radians.
+// The cosine, sine and tangent of an angle in radians.
 E cos(const E& a);
+E sin(const E& a);
 E tan(const E& a);
 // a raised to the power b.
 E pow(const E& a, const E& b);
@@ -104,6 +107,8 @@ E pow(const E& a, const E& b);
 E hadamard(const E& a, const E& b);
 // The number π, shown as π (an angle in degrees times π/180 is the same angle in radians).
 E pi();
+// An angle in degrees in radians: a·π/180, as one operation (kRadians).
+E radians(const E& a);
 E square(const E& a);
 E abs(const E& a);
 E norm(const E& a);

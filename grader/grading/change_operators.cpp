@@ -12,9 +12,9 @@ const std::vector<std::string_view>& change_kinds() {
   // The changes an earlier search made (and its tests name) first, in its order; then the
   // insertions, the replacements of a quantity, and the exchanges.
   static const std::vector<std::string_view> k = {
-      "sign",      "drop-term",  "swap",        "square",   "sqrt",     "abs",
-      "normalise", "other-root", "degrees",     "function", "clamp",    "operator",
-      "constant",  "factor",     "vector-swap", "operand",  "exchange", "component"};
+      "sign",       "drop-term",   "swap",     "square",   "sqrt",     "abs",      "normalise",
+      "other-root", "degrees",     "function", "linear",   "clamp",    "operator", "constant",
+      "factor",     "vector-swap", "operand",  "exchange", "component"};
   return k;
 }
 
@@ -75,7 +75,7 @@ E without_arg(const E& e, std::size_t i) {
 
 using Out = std::vector<FormulaChange>;
 
-void add(Out& out, const E& e, std::string_view kind) { out.push_back({e, e, kind}); }
+void add(Out& out, const E& e, std::string_view kind) { out.push_back({e, e, kind, {}, {}}); }
 
 // An arithmetic operator replaced by another, a factor or a term deleted, operands swapped, a
 // function for its sibling, a clamp removed.
@@ -126,13 +126,41 @@ void operator_changes(const E& e, Out& out) {
         if (!is(a[i], Op::kNumber)) continue;
         add(out, a.size() == 2 ? a[1 - i] : without_arg(e, i), "clamp");
       }
+      // min(a, b, …) → a: the comparison left out, the first kept (the first object listed
+      // for the nearest).
+      if (a.size() > 1 &&
+          std::none_of(a.begin(), a.end(), [](const E& x) { return is(x, Op::kNumber); }))
+        add(out, a[0], "clamp");
       break;
     case Op::kArccosDegrees:
       add(out, e * (std::numbers::pi / 180), "degrees");
       // arcsin(x) = 90° − arccos(x): the angle from the surface instead of from the normal.
       add(out, E(90) - e, "function");
       break;
+    case Op::kArcsinDegrees:
+      add(out, e * (std::numbers::pi / 180), "degrees");
+      add(out, with_op(e, Op::kArccosDegrees), "function");
+      break;
+    case Op::kCos: add(out, with_op(e, Op::kSin), "function"); break;
+    case Op::kSin: add(out, with_op(e, Op::kCos), "function"); break;
+    case Op::kRadians: add(out, a[0], "degrees"); break;
     default: break;
+  }
+  // An angle in degrees taken to radians, x·π/180: the conversion left out (degrees read as
+  // radians).
+  if (n.op == Op::kDiv && is(a[1], Op::kNumber) && a[1].node().number == 180 &&
+      is(a[0], Op::kMul)) {
+    const auto& m = a[0].node().args;
+    for (std::size_t i = 0; i < 2; ++i)
+      if (is(m[i], Op::kNumber) && m[i].node().base == "pi") add(out, m[1 - i], "degrees");
+  }
+  // A function taken as linear: f(a·b) → a·f(b) (θt = η·θi for arcsin(η·sin θi), √(ab) as a√b).
+  bool function = n.op == Op::kSin || n.op == Op::kCos || n.op == Op::kTan ||
+                  n.op == Op::kArcsinDegrees || n.op == Op::kArccosDegrees || n.op == Op::kSqrt;
+  if (function && is(a[0], Op::kMul)) {
+    const auto& m = a[0].node().args;
+    add(out, m[0] * with_arg(e, 0, m[1]), "linear");
+    add(out, with_arg(e, 0, m[0]) * m[1], "linear");
   }
 }
 
@@ -188,8 +216,11 @@ void operand_changes(const E& e, const ChangeScope& s, Out& out) {
       parts[i] = i == k ? E(0) : dot(e, vec(axis));
       names[i] = i == k ? E(0) : sym("", shown + "_" + kAxes[i]);
     }
-    out.push_back(
-        {tuple(parts[0], parts[1], parts[2]), tuple(names[0], names[1], names[2]), "component"});
+    out.push_back({tuple(parts[0], parts[1], parts[2]),
+                   tuple(names[0], names[1], names[2]),
+                   "component",
+                   {},
+                   {}});
   }
 }
 
@@ -230,12 +261,14 @@ bool each(const E& e, const ChangeScope& s, ChangeTier tier, bool root, std::siz
   for (auto& c : local) {
     if (left == 0) return false;
     --left;
+    c.from = e;
+    c.to = c.eval;
     sink(std::move(c));
   }
   if (is(e, Op::kSymbol)) return true;  // its args are how it is shown
   for (std::size_t i = 0; i < e.node().args.size(); ++i) {
     bool more = each(e.node().args[i], s, tier, false, left, [&](FormulaChange&& x) {
-      sink({with_arg(e, i, x.eval), with_arg(e, i, x.shown), x.kind});
+      sink({with_arg(e, i, x.eval), with_arg(e, i, x.shown), x.kind, x.from, x.to});
     });
     if (!more) return false;
   }
@@ -298,7 +331,144 @@ void exchange_pairs(const E& e, const ChangeScope& s, Sink sink) {
   }
 }
 
+// The family of a quantity: its name with a trailing index made alike (S_1, S_2 → S_#).
+std::string family(std::string_view name) {
+  std::size_t end = name.size();
+  while (end > 0 && name[end - 1] >= '0' && name[end - 1] <= '9') --end;
+  if (end == name.size()) return std::string(name);
+  return std::string(name.substr(0, end)) + "#";
+}
+
+std::size_t mix(std::size_t h, std::size_t v) {
+  return h ^ (v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2));
+}
+
+// A node's own part of its form: its operator, number, relation, or its quantity's family.
+std::size_t node_hash(const ExprNode& n) {
+  std::size_t h = mix(0, static_cast<std::size_t>(n.op));
+  if (n.op == Op::kSymbol) return mix(h, std::hash<std::string>{}(family(n.name)));
+  h = mix(h, std::hash<double>{}(n.number));
+  for (int k = 0; k < 3; ++k) h = mix(h, std::hash<double>{}(n.vector[k]));
+  return mix(h, std::hash<std::string>{}(n.relation));
+}
+
+// Whether `y` has the form of `x`; `names` maps each quantity of `x` to the one of `y` in its
+// place (one for each).
+bool same_form(const E& x, const E& y, std::map<std::string, E, std::less<>>& names) {
+  const ExprNode &a = x.node(), &b = y.node();
+  if (a.op != b.op) return false;
+  if (a.op == Op::kSymbol) {
+    if (family(a.name) != family(b.name)) return false;
+    auto [it, fresh] = names.emplace(a.name, y);
+    return fresh || it->second.node().name == b.name;
+  }
+  if (a.number != b.number || a.relation != b.relation || a.args.size() != b.args.size())
+    return false;
+  for (int k = 0; k < 3; ++k)
+    if (a.vector[k] != b.vector[k]) return false;
+  for (std::size_t i = 0; i < a.args.size(); ++i)
+    if (!same_form(a.args[i], b.args[i], names)) return false;
+  return true;
+}
+
+// The index a quantity's name ends in ("1" of S_1; "" for none).
+std::string_view index_of(std::string_view name) {
+  std::size_t end = name.size();
+  while (end > 0 && name[end - 1] >= '0' && name[end - 1] <= '9') --end;
+  return name.substr(end);
+}
+
+// `to` with the quantities named in `names` replaced, and every other quantity whose index one
+// of them had re-indexed as it was (c_1 → r_1 made for c_2 is r_2).
+E reindexed(const E& to, const std::map<std::string, E, std::less<>>& names) {
+  std::map<std::string, std::string, std::less<>> indices;
+  for (const auto& [x, y] : names) {
+    std::string_view a = index_of(x), b = index_of(y.node().name);
+    if (!a.empty() && !b.empty() && a != b) indices.emplace(std::string(a), std::string(b));
+  }
+  std::function<E(const E&)> walk = [&](const E& e) -> E {
+    if (e.empty()) return e;
+    if (is(e, Op::kSymbol)) {
+      const std::string& name = e.node().name;
+      if (auto it = names.find(name); it != names.end()) return it->second;
+      std::string_view index = index_of(name);
+      auto re = indices.find(index);
+      if (index.empty() || re == indices.end()) return e;
+      return sym(name.substr(0, name.size() - index.size()) + re->second);
+    }
+    E out = e;
+    for (std::size_t i = 0; i < e.node().args.size(); ++i) {
+      E a = walk(e.node().args[i]);
+      if (&a.node() != &e.node().args[i].node()) out = with_arg(out, i, a);
+    }
+    return out;
+  };
+  return walk(to);
+}
+
+// The form hash of `e`, each node's pushed to `all` when given; with `from`, the nodes of its
+// form replaced in `out` (`changed` set).
+std::size_t walk_forms(const E& e, std::vector<std::size_t>* all, const E* from, const E* to,
+                       std::size_t target, E& out, bool& changed) {
+  const ExprNode& n = e.node();
+  std::size_t h = node_hash(n);
+  out = e;
+  if (n.op != Op::kSymbol) {
+    for (std::size_t i = 0; i < n.args.size(); ++i) {
+      E a;
+      bool c = false;
+      h = mix(h, walk_forms(n.args[i], all, from, to, target, a, c));
+      if (c) {
+        out = with_arg(out, i, a);
+        changed = true;
+      }
+    }
+  }
+  if (all) all->push_back(h);
+  if (from && h == target) {
+    std::map<std::string, E, std::less<>> names;
+    if (same_form(*from, e, names)) {
+      out = reindexed(*to, names);
+      changed = true;
+    }
+  }
+  return h;
+}
+
 }  // namespace change_operators_internal
+
+bool made_everywhere(const FormulaChange& c) {
+  using namespace change_operators_internal;  // NOLINT: this file's own functions
+  if (c.from.empty() || c.to.empty() || is(c.from, Op::kNumber)) return false;
+  if (!is(c.from, Op::kSymbol)) return true;
+  // A quantity of an indexed family (S_1, c_1), for its like in every step: not for another of
+  // its own family (that is one quantity for another, not a slip made each time).
+  const std::string& name = c.from.node().name;
+  if (family(name) == name) return false;
+  return !is(c.to, Op::kSymbol) || family(c.to.node().name) != family(name);
+}
+
+std::size_t form_hash(const E& e) {
+  E out;
+  bool changed = false;
+  return change_operators_internal::walk_forms(e, nullptr, nullptr, nullptr, 0, out, changed);
+}
+
+void form_hashes(const E& e, std::vector<std::size_t>& out) {
+  if (e.empty()) return;
+  E ignored;
+  bool changed = false;
+  change_operators_internal::walk_forms(e, &out, nullptr, nullptr, 0, ignored, changed);
+}
+
+std::optional<E> change_everywhere(const E& formula, const E& from, const E& to, std::size_t hash) {
+  if (formula.empty()) return std::nullopt;
+  E out;
+  bool changed = false;
+  change_operators_internal::walk_forms(formula, nullptr, &from, &to, hash, out, changed);
+  if (!changed) return std::nullopt;
+  return out;
+}
 
 bool each_change(const E& e, const ChangeScope& scope, ChangeTier tier, std::size_t& left,
                  const std::function<void(FormulaChange&&)>& sink) {
@@ -315,7 +485,7 @@ bool each_step_change(const E& e, const ChangeScope& scope, ChangeTier tier, std
   if (tier != ChangeTier::kOperands) {
     if (left == 0) return false;
     --left;
-    sink({-e, -e, "sign"});
+    sink({-e, -e, "sign", {}, {}});
   }
   if (tier == ChangeTier::kOperators) return true;
   bool more = true;
@@ -327,7 +497,7 @@ bool each_step_change(const E& e, const ChangeScope& scope, ChangeTier tier, std
     --left;
     std::map<std::string, E, std::less<>> to{{a, scope.symbols->at(b)}, {b, scope.symbols->at(a)}};
     E changed = substitute(e, to);
-    sink({changed, changed, "exchange"});
+    sink({changed, changed, "exchange", {}, {}});
   });
   return more;
 }

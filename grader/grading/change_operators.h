@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,6 +23,9 @@ struct FormulaChange {
   E eval;
   E shown;
   std::string_view kind;
+  // The node changed and what it became (empty for a change of the whole step): the change
+  // made again wherever the step's form recurs (change_everywhere).
+  E from, to;
 };
 
 // What the changes of one step may use: the quantities in scope when the step is worked (the
@@ -57,5 +61,20 @@ std::size_t count_changes(const E& e, const ChangeScope& scope, ChangeTier tier)
 bool each_step_change(const E& e, const ChangeScope& scope, ChangeTier tier, std::size_t& left,
                       const std::function<void(FormulaChange&&)>& sink);
 std::size_t count_step_changes(const E& e, const ChangeScope& scope, ChangeTier tier);
+
+// A slip a student makes in a formula they apply more than once (the root's denominator 2a in
+// both roots, the light vector of every light) is made every time. The form of a node: its
+// operators and numbers, with the quantities of one indexed family (S_1, S_2, …) alike. Equal
+// forms have equal hashes.
+std::size_t form_hash(const E& e);
+// `formula` with every node of the form of `from` replaced by `to`, the quantities of `to` that
+// `from` names renamed to the ones of the node it replaces (S_1 − P → S_2 − P in L_2). Nothing
+// when no node of `formula` has that form. `hash` is form_hash(from).
+std::optional<E> change_everywhere(const E& formula, const E& from, const E& to, std::size_t hash);
+// Whether `c` is made again wherever its node's form recurs: a change of a node that is not a
+// number, nor a quantity without an index (the index carries over: c_1 → r_1 is c_2 → r_2).
+bool made_everywhere(const FormulaChange& c);
+// Every node's form_hash in `e` (not in how symbols are shown).
+void form_hashes(const E& e, std::vector<std::size_t>& out);
 
 }  // namespace raygrade

@@ -22,7 +22,8 @@
 namespace raygrade {
 
 std::string StepChange::text() const {
-  return fmt::format("{} = {} → {} = {}", step, before, step, after);
+  return fmt::format("{} = {} → {} = {}{}", step, before, step, after,
+                     everywhere ? ", and alike in every step of that form" : "");
 }
 
 const char* to_string(Discovery::Verdict v) {
@@ -284,6 +285,33 @@ struct ChangeSearch::Impl {
   std::size_t work = 0;         // their cost: steps and formula nodes
   bool truncated = false;       // some changes were left out for the budget
 
+  // An answer that names the object hit first (first-hit): its name's leaf, and the objects'
+  // names (the headings of the derivation's parts). A change that makes another object's hit
+  // the first names that object, and the hit's numbers are that object's (follow_object).
+  std::ptrdiff_t name_leaf = -1;
+  std::vector<std::string> objects;
+  // For the method searched: the reference object's part, the leaf that picks the object (the
+  // first hit's t) and the step of each object's part whose value it takes.
+  struct Follow {
+    bool active = false;
+    std::size_t part = 0;
+    std::size_t selector = 0;
+    std::string step;
+    int occurrence = 0;
+  } follow;
+  // Whether the object that `numbers` names is `named` (none named: yes), by the grader's rule.
+  bool names_fit(const std::optional<std::string>& named,
+                 const std::vector<double>& numbers) const {
+    if (!named) return true;
+    auto k = static_cast<std::size_t>(numbers[static_cast<std::size_t>(name_leaf)]);
+    return k < objects.size() && same_object_name(*named, objects[k]);
+  }
+  void find_follow(const std::vector<SolutionPart>& right,
+                   const std::vector<discover_internal::Leaf>& mapped);
+  void follow_object(const discover_internal::StepValues& values,
+                     const std::vector<discover_internal::Leaf>& mapped,
+                     std::vector<double>& numbers) const;
+
   std::vector<discover_internal::Group> groups;  // the answer's values
   std::vector<std::vector<std::size_t>> hits;    // per hit of a set of hits: its groups
   std::size_t hit_t = 0;                         // which of a hit's groups is its t
@@ -336,6 +364,24 @@ struct ChangeSearch::Impl {
   void search_step(const Task& task, const std::string& method,
                    const discover_internal::StepPlan& plan, const ChangeScope& scope,
                    const std::vector<discover_internal::Leaf>& mapped, std::size_t cost);
+  // Works one changed derivation: `override` gives each step's changed formula. Returns the
+  // prediction the change joined (−1: none).
+  std::ptrdiff_t work_change(const Task& task, const std::string& method, const StepChange& change,
+                             const Overrides& override,
+                             const std::vector<discover_internal::Leaf>& mapped, std::size_t cost);
+
+  // The changes whose changed node's form recurs in another step of the derivation, made again
+  // in every step of that form once the method's single changes are worked.
+  struct Everywhere {
+    StepChange change;
+    E from, to;
+    std::size_t hash = 0;
+  };
+  std::vector<Everywhere> everywhere;
+  std::set<std::pair<std::size_t, std::size_t>> everywhere_seen;
+  // The form hashes of the method's steps: the first step (name and formula) with each, and
+  // whether the form is met more than once (in that step or another).
+  std::map<std::size_t, std::pair<std::string, bool>> forms;
 };
 
 // Works the changes of one step that the budget pays for. A change is evaluated in the step's
@@ -350,11 +396,24 @@ void ChangeSearch::Impl::search_step(const Task& task, const std::string& method
   const Step* s = plan.step;
   std::string before = to_text(s->formula);
   std::map<std::array<double, 3>, std::ptrdiff_t> worked;  // a changed value → its prediction
+  // A change of a node whose form is met more than once is made everywhere later.
+  auto remember_everywhere = [&](const FormulaChange& alt, const StepChange& change) {
+    if (!made_everywhere(alt)) return;
+    std::size_t h = form_hash(alt.from);
+    auto it = forms.find(h);
+    if (it == forms.end() || !it->second.second) return;
+    // Once per change of a form: the same change of each light's L is one change everywhere.
+    if (!everywhere_seen.insert({h, form_hash(alt.to)}).second) return;
+    StepChange c = change;
+    c.everywhere = true;
+    everywhere.push_back({std::move(c), alt.from, alt.to, h});
+  };
   auto try_change = [&](FormulaChange&& alt) {
     auto change = [&] {
       return StepChange{method, s->name, std::string(alt.kind), before, to_text(alt.shown)};
     };
     std::array<double, 3> key{};
+    remember_everywhere(alt, change());
     if (plan.once) {
       work += formula_size(alt.eval);
       Value v;
@@ -376,24 +435,12 @@ void ChangeSearch::Impl::search_step(const Task& task, const std::string& method
         return;
       }
     }
-    ++derivations;
-    work += cost;
     Overrides o;
     o.formula = [&](std::string_view step, const E& f) -> std::optional<E> {
       if (step != s->name || to_text(f) != before) return std::nullopt;
       return alt.eval;
     };
-    std::vector<double> numbers;
-    std::ptrdiff_t joined = -1;
-    try {
-      StepValues values = step_values(task.derive(method, &o));
-      for (const auto& l : mapped) numbers.push_back(l.step.empty() ? NAN : leaf_value(values, l));
-      joined = add(change(), mapped, std::move(numbers));
-    } catch (const Error&) {
-      // the change leaves the method's way (no root where one was)
-    } catch (const EvaluationFault&) {
-      // the change makes no sense here (a vector where a number was)
-    }
+    std::ptrdiff_t joined = work_change(task, method, change(), o, mapped, cost);
     if (plan.once) worked[key] = joined;
   };
   if (plan.take_ops == plan.ops && plan.take_operands == plan.operands) {
@@ -409,6 +456,27 @@ void ChangeSearch::Impl::search_step(const Task& task, const std::string& method
   left = plan.take_operands;
   each_step_change(s->formula, scope, ChangeTier::kOperands, left, try_change);
   each_change(s->formula, scope, ChangeTier::kOperands, left, try_change);
+}
+
+std::ptrdiff_t ChangeSearch::Impl::work_change(const Task& task, const std::string& method,
+                                               const StepChange& change, const Overrides& override,
+                                               const std::vector<discover_internal::Leaf>& mapped,
+                                               std::size_t cost) {
+  using namespace discover_internal;  // NOLINT: this file's own functions
+  ++derivations;
+  work += cost;
+  try {
+    StepValues values = step_values(task.derive(method, &override));
+    std::vector<double> numbers;
+    for (const auto& l : mapped) numbers.push_back(l.step.empty() ? NAN : leaf_value(values, l));
+    follow_object(values, mapped, numbers);
+    return add(change, mapped, std::move(numbers));
+  } catch (const Error&) {
+    // the change leaves the method's way (no root where one was)
+  } catch (const EvaluationFault&) {
+    // the change makes no sense here (a vector where a number was)
+  }
+  return -1;
 }
 
 // Every change of every step of one method's derivation that the budget pays for, each step in
@@ -466,10 +534,33 @@ void ChangeSearch::Impl::search_method(const Task& task, const std::string& meth
   std::size_t budget =
       std::max(kMinSearchedChanges, kSearchWork / methods / (cost + largest + kInserted));
   truncated = share(plans, budget) || truncated;
+  // The form of every node of every step, for the changes made everywhere.
+  forms.clear();
+  everywhere.clear();
+  everywhere_seen.clear();
+  walk([&](const Step& s, const ChangeScope&) {
+    std::vector<std::size_t> hashes;
+    form_hashes(s.formula, hashes);
+    std::string self = s.name + "\n" + to_text(s.formula);
+    for (std::size_t h : hashes) {
+      auto [it, fresh] = forms.emplace(h, std::pair{self, false});
+      if (!fresh) it->second.second = true;  // met twice, in this step or another
+    }
+  });
+  std::size_t start = work;
   std::size_t i = 0;
   walk([&](const Step&, const ChangeScope& scope) {
     search_step(task, method, plans[i++], scope, mapped, cost);
   });
+  // Then each change again in every step of its node's form, while the budget lasts.
+  for (const auto& e : everywhere) {
+    if (work - start + cost > kSearchWork / methods) break;
+    Overrides o;
+    o.formula = [&](std::string_view, const E& f) {
+      return change_everywhere(f, e.from, e.to, e.hash);
+    };
+    work_change(task, method, e.change, o, mapped, cost);
+  }
 }
 
 ChangeSearch::~ChangeSearch() = default;
@@ -529,10 +620,68 @@ ChangeSearch::ChangeSearch(const Problem& problem) : impl_(std::make_unique<Impl
     map_leaves(mapped, answer, right, derive != nullptr);
     for (std::size_t i = 0; i < mapped.size(); ++i)
       computed[i] = computed[i] || !mapped[i].step.empty();
+    m.find_follow(right, mapped);
     m.search_method(task, method, right, mapped, methods.size());
   }
   // A number some method computes can be explained; one that none computes cannot.
   for (std::size_t i = 0; i < m.leaves.size(); ++i) m.computed.push_back(computed[i]);
+}
+
+void ChangeSearch::Impl::find_follow(const std::vector<SolutionPart>& right,
+                                     const std::vector<discover_internal::Leaf>& mapped) {
+  using namespace discover_internal;  // NOLINT: this file's own functions
+  follow = Follow{};
+  if (name_leaf < 0) {
+    // The leaf "object" whose value is the heading of a part: the object hit first.
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+      if (leaves[i].field != "object" || !leaves[i].value.is_string()) continue;
+      for (std::size_t p = 0; p < right.size(); ++p) {
+        if (right[p].heading != leaves[i].value.get<std::string>()) continue;
+        name_leaf = static_cast<std::ptrdiff_t>(i);
+        reference[i] = static_cast<double>(p);
+      }
+    }
+    if (name_leaf < 0) return;
+    for (const auto& part : right) objects.push_back(part.heading);
+  }
+  if (right.size() != objects.size()) return;
+  auto part = static_cast<std::size_t>(reference[static_cast<std::size_t>(name_leaf)]);
+  // The selector: a leaf computed outside the object's part whose value a step of that part
+  // has (the first hit's t, the object's t0).
+  for (std::size_t i = 0; i < mapped.size() && !follow.active; ++i) {
+    if (mapped[i].step.empty() || mapped[i].part == part || mapped[i].component >= 0) continue;
+    std::map<std::string, int> seen;
+    for (const auto& s : right[part].derivation.steps) {
+      int occ = seen[s.name]++;
+      if (s.given || !s.value.is_scalar() || !same_number(s.value.scalar, reference[i])) continue;
+      follow = Follow{true, part, i, s.name, occ};
+    }
+  }
+}
+
+void ChangeSearch::Impl::follow_object(const discover_internal::StepValues& values,
+                                       const std::vector<discover_internal::Leaf>& mapped,
+                                       std::vector<double>& numbers) const {
+  using namespace discover_internal;  // NOLINT: this file's own functions
+  if (!follow.active) return;
+  double t = numbers[follow.selector];
+  auto name = static_cast<std::size_t>(name_leaf);
+  numbers[name] = static_cast<double>(follow.part);
+  if (same_number(t, reference[follow.selector])) return;
+  for (std::size_t p = 0; p < objects.size(); ++p) {
+    auto it = values.find({p, follow.step, follow.occurrence});
+    if (it == values.end() || !it->second.is_scalar() || !same_number(it->second.scalar, t))
+      continue;
+    // That object is hit first: the hit's numbers are its own.
+    numbers[name] = static_cast<double>(p);
+    for (std::size_t i = 0; i < mapped.size(); ++i) {
+      if (mapped[i].step.empty() || mapped[i].part != follow.part) continue;
+      Leaf l = mapped[i];
+      l.part = p;
+      numbers[i] = leaf_value(values, l);
+    }
+    return;
+  }
 }
 
 void ChangeSearch::Impl::make_groups(std::string_view kind) {
@@ -646,6 +795,7 @@ Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
   using namespace discover_internal;  // NOLINT: this file's own functions
   const Impl& m = *impl_;
   Discovery d;
+  std::optional<std::string> named;  // the object the student names, in a first-hit answer
   std::vector<StudentNumber> student(m.leaves.size());
   std::vector<double> given(m.leaves.size(), NAN);
   for (std::size_t i = 0; i < m.leaves.size(); ++i) {
@@ -659,6 +809,10 @@ Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
     }
     if (!answer.contains(at)) continue;
     const nlohmann::json& s = answer.at(at);
+    if (static_cast<std::ptrdiff_t>(i) == m.name_leaf && s.is_string()) {
+      named = s.get<std::string>();  // the object hit first: a change may move it
+      continue;
+    }
     if (!l.value.is_number()) {
       if (s != l.value) return d;  // a word or a verdict no change of a number explains
       continue;
@@ -676,7 +830,7 @@ Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
     for (std::size_t i : m.groups[g].leaves) all = all && !std::isnan(given[i]);
     if (all) complete.push_back(g);
   }
-  bool wrong = false;
+  bool wrong = !m.names_fit(named, m.reference);
   std::vector<std::size_t> right_at = m.counterparts(given, m.reference);
   for (std::size_t g : complete) {
     // Right to the digits typed but not by the tolerance is not right: a change may explain it.
@@ -698,6 +852,7 @@ Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
         scale = length(Vec3d{numbers[c.leaves[0]], numbers[c.leaves[1]], numbers[c.leaves[2]]});
       for (std::size_t i : c.leaves) out.push_back(numbers[i] / scale);
     }
+    if (named) out.push_back(numbers[static_cast<std::size_t>(m.name_leaf)]);
     return out;
   };
   std::vector<const Prediction*> fits;
@@ -712,6 +867,12 @@ Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
       // Right, not right to the digits given: an integer typed is not every number within ½.
       fit = fit && m.compare(g, student, at[g], p.numbers).verdict.match == Match::kRight;
     }
+    // Another object named: a random answer names it one time in as many as there are objects.
+    if (named) {
+      auto nl = static_cast<std::size_t>(m.name_leaf);
+      if (p.numbers[nl] != m.reference[nl]) chance /= static_cast<double>(m.objects.size());
+    }
+    fit = fit && m.names_fit(named, p.numbers);
     std::vector<double> mine = on_given(p.numbers, at);
     bool repeated = std::any_of(seen.begin(), seen.end(), [&](const std::vector<double>& q) {
       for (std::size_t k = 0; k < q.size(); ++k)

@@ -40,10 +40,13 @@ struct StepChange {
                        // vector-swap, component
   std::string before;  // the step's formula as the worked solution writes it ("2·(D · f)")
   std::string after;   // the changed formula ("2·(D · C)")
-  // "b = 2·(D · f) → b = 2·(D · C)"
+  // The change made in every step where the changed part's form recurs (the same slip in both
+  // roots, for every light): change_operators.h, change_everywhere.
+  bool everywhere = false;
+  // "b = 2·(D · f) → b = 2·(D · C)", and "…, and alike in every step of its form"
   std::string text() const;
   // The same for every variant of a problem: the step and its changed formula in symbols.
-  std::string key() const { return step + " = " + after; }
+  std::string key() const { return step + " = " + after + (everywhere ? " (everywhere)" : ""); }
 };
 
 // What the search made of one wrong answer.

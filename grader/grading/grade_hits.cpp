@@ -66,14 +66,7 @@ struct StudentHit {
   std::optional<AnswerReader::Number> u, v;
 };
 
-std::string norm_name(const std::string& s) {
-  std::string out;
-  for (char ch : s) {
-    if (ch == ' ' || ch == '_' || ch == '-') continue;
-    out += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  }
-  return out;
-}
+std::string norm_name(const std::string& s) { return name_as_compared(s); }
 
 class HitsGrader final : public KindGrader {
  public:

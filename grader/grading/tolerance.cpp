@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <cmath>
 
 namespace raygrade {
@@ -279,6 +280,19 @@ TolerancePolicy read_tolerance_policy(const Problem& p) {
     policy.fields[field] = read_modes(f, policy.base);
   }
   return policy;
+}
+
+std::string name_as_compared(const std::string& s) {
+  std::string out;
+  for (char ch : s) {
+    if (ch == ' ' || ch == '_' || ch == '-') continue;
+    out += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  }
+  return out;
+}
+
+bool same_object_name(const std::string& a, const std::string& b) {
+  return name_as_compared(a) == name_as_compared(b);
 }
 
 }  // namespace raygrade

@@ -94,6 +94,11 @@ PartVerdict compare_part(Comparison how, const StudentNumber& s, double referenc
 PartVerdict compare_part(Comparison how, const StudentNumber (&s)[3], const Vec3d& reference,
                          const Tolerance& t, double widen = 0);
 
+// An object's name as the graders compare it (Comparison::kName): case, spaces, '-' and '_'
+// ignored. The first-hit grader and the mistake search both compare names by it.
+std::string name_as_compared(const std::string& s);
+bool same_object_name(const std::string& a, const std::string& b);
+
 // "relative 0.1%", "3 significant figures", "2 decimal places".
 std::string describe(const Tolerance& t);
 

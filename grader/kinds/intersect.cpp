@@ -145,7 +145,7 @@ std::vector<SolutionPart> FirstHitTask::derive(std::string_view method,
   }
   // The selection: every object's nearest valid t, then the smallest.
   FirstHit f = first_hit(ray_, objects_);
-  Deriver d("nearest", "The first hit: the smallest valid t", nullptr);
+  Deriver d("nearest", "The first hit: the smallest valid t", overrides);
   std::vector<E> ts;
   for (std::size_t i = 0; i < objects_.size(); ++i) {
     if (!f.nearest[i]) continue;

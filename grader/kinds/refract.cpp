@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/error.h"
 #include "derivation/number_format.h"
 #include "kinds/form.h"
 #include "kinds/sketch.h"
@@ -38,8 +39,51 @@ nlohmann::json RefractTask::answer() const {
   return j;
 }
 
-std::vector<SolutionPart> RefractTask::derive(std::string_view /*method*/,
+std::vector<SolutionPart> RefractTask::derive_angles(const Overrides* overrides) const {
+  auto not_here = [](const std::string& why) {
+    return Error(Diagnostic{"", "", 0, 0, Severity::kError, why, "method-not-applicable"});
+  };
+  Deriver d("angles", "Refraction by Snell's law on the angles", overrides);
+  E D = d.given("d", "d", d_, "the incoming direction");
+  E N = d.given("n", "n", n_, "the surface normal");
+  E n1 = d.given("n1", "n_1", n1_, "the index on the incoming side");
+  E n2 = d.given("n2", "n_2", n2_, "the index on the far side");
+  d.step("d_hat", "d_hat", D / norm(D));
+  bool flip = dot(d_, n_) > 0;
+  d.step("n_hat", "n_hat", flip ? -N / norm(N) : N / norm(N),
+         "the unit normal, facing the incoming ray");
+  d.step("eta", "eta", n1 / n2);
+  d.step("cos_i", "cos_i", -dot(d.sym("d_hat"), d.sym("n_hat")), "cos θi");
+  double theta_i = d.step("theta_i", "theta_i", arccos_degrees(d.sym("cos_i")),
+                          "θi = arccos(cos θi), in degrees, from the normal")
+                       .scalar;
+  // Snell's law, sin θt = η·sin θi, in one step: the student's θt follows from θi.
+  if (!(std::abs(d.scalar("eta") * std::sin(theta_i * std::numbers::pi / 180)) <= 1))
+    throw not_here("sin θt > 1: no refracted ray");
+  double theta_t =
+      d.step("theta_t", "theta_t", arcsin_degrees(d.sym("eta") * sin(radians(d.sym("theta_i")))),
+             "Snell's law: θt = arcsin(η·sin θi), in degrees")
+          .scalar;
+  // Along the surface, the way the ray travels: d̂ with its part along n̂ taken out.
+  E along = d.sym("d_hat") + d.sym("cos_i") * d.sym("n_hat");
+  Value s = d.step("s", "s", along / norm(along), "along the surface, the side the ray travels");
+  if (!std::isfinite(length(s.vector))) throw not_here("the ray runs along the normal");
+  E theta = radians(d.sym("theta_t"));
+  Value t = d.step("t", "t", sin(theta) * d.sym("s") - cos(theta) * d.sym("n_hat"),
+                   "t = sin θt·s − cos θt·n̂");
+  d.conclude(Sentence("The refracted direction is t = ")
+                 .value(t)
+                 .text(" (θi = ")
+                 .value(theta_i)
+                 .text("°, θt = ")
+                 .value(theta_t)
+                 .text("°)."));
+  return {SolutionPart{"", std::move(d).finish()}};
+}
+
+std::vector<SolutionPart> RefractTask::derive(std::string_view method,
                                               const Overrides* overrides) const {
+  if (method == "angles") return derive_angles(overrides);
   Deriver d("vector", "Refraction by Snell's law", overrides);
   E D = d.given("d", "d", d_, "the incoming direction");
   E N = d.given("n", "n", n_, "the surface normal");

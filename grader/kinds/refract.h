@@ -28,13 +28,16 @@ class RefractTask final : public Task {
 
   std::string_view kind() const override { return RefractKind::kName; }
   nlohmann::json answer() const override;
-  std::vector<std::string> methods() const override { return {"vector"}; }
+  // "vector": t = η·d̂ + (η·cos θi − √k)·n̂; "angles": Snell's law on the angles, sin θt =
+  // η·sin θi, and t from θt (not for a ray along the normal, nor past the critical angle).
+  std::vector<std::string> methods() const override { return {"vector", "angles"}; }
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
   Sketch sketch() const override;
 
  private:
   Vec3d facing_normal() const;  // unit, against d
+  std::vector<SolutionPart> derive_angles(const Overrides* overrides) const;
   Vec3d d_, n_;
   double n1_, n2_;
 };
