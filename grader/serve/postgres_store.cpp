@@ -111,6 +111,7 @@ class Connection {
   PgResult run(const std::string& sql, const Args&... args) {
     std::vector<std::string> texts = {as_param(args)...};
     std::vector<const char*> values;
+    values.reserve(texts.size());
     for (const auto& t : texts) values.push_back(t.c_str());
     PGresult* r = PQexecParams(c_, sql.c_str(), static_cast<int>(values.size()), nullptr,
                                values.data(), nullptr, nullptr, 0);
@@ -405,6 +406,7 @@ class PostgresStore : public Store {
           "ORDER BY id",
           issuer, client_id, resource_link_id, assignment);
       std::vector<SubmissionRecord> out;
+      out.reserve(static_cast<std::size_t>(s.rows()));
       for (int i = 0; i < s.rows(); ++i) {
         out.push_back({s.integer(i, 0), s.text(i, 1), s.text(i, 2), s.text(i, 3), s.text(i, 4),
                        s.text(i, 5), s.text(i, 6), s.text(i, 7), s.text(i, 8), s.text(i, 9),
@@ -425,6 +427,7 @@ class PostgresStore : public Store {
                       kOutboxColumns),
           now_ms + lease_ms, now_ms, limit);
       std::vector<OutboxRow> out;
+      out.reserve(static_cast<std::size_t>(s.rows()));
       for (int i = 0; i < s.rows(); ++i) out.push_back(read_outbox(s, i));
       std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
       return out;
@@ -442,6 +445,7 @@ class PostgresStore : public Store {
     return transaction([&](Connection& c) {
       PgResult s = c.run(fmt::format("SELECT {} FROM outbox ORDER BY id", kOutboxColumns));
       std::vector<OutboxRow> out;
+      out.reserve(static_cast<std::size_t>(s.rows()));
       for (int i = 0; i < s.rows(); ++i) out.push_back(read_outbox(s, i));
       return out;
     });
