@@ -468,6 +468,7 @@ std::ptrdiff_t ChangeSearch::Impl::work_change(const Task& task, const std::stri
   try {
     StepValues values = step_values(task.derive(method, &override));
     std::vector<double> numbers;
+    numbers.reserve(mapped.size());
     for (const auto& l : mapped) numbers.push_back(l.step.empty() ? NAN : leaf_value(values, l));
     follow_object(values, mapped, numbers);
     return add(change, mapped, std::move(numbers));
