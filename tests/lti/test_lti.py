@@ -84,8 +84,12 @@ class FlowTest(ltitest.LtiCase):
         keys = {k for _, _, k in students.values()}
         self.assertEqual(len(keys), 3, "two students share a variant key")
         right = {u: solve(k) for u, (_, _, k) in students.items()}
-        self.assertNotEqual(right["ada"]["variant-sphere"], right["alan"]["variant-sphere"])
-        self.assertNotEqual(right["alan"]["variant-sphere"], right["grace"]["variant-sphere"])
+        # Each student's numbers as a whole: one problem drawn from a few values may coincide
+        # by chance (the key holds the platform's address, whose port changes from run to run),
+        # all of them together do not.
+        self.assertNotEqual(right["ada"], right["alan"])
+        self.assertNotEqual(right["alan"], right["grace"])
+        self.assertNotEqual(right["ada"], right["grace"])
 
         # Ada answers everything right, Alan leaves two problems blank and gets the t of a
         # third wrong, Grace hands in Ada's answers (right for Ada's numbers, not for hers).
