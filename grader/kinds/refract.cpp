@@ -81,6 +81,15 @@ std::vector<SolutionPart> RefractTask::derive_angles(const Overrides* overrides)
   return {SolutionPart{"", std::move(d).finish()}};
 }
 
+std::vector<std::string> RefractTask::methods() const {
+  try {
+    derive_angles(nullptr);
+  } catch (const Error&) {
+    return {"vector"};
+  }
+  return {"vector", "angles"};
+}
+
 std::vector<SolutionPart> RefractTask::derive(std::string_view method,
                                               const Overrides* overrides) const {
   if (method == "angles") return derive_angles(overrides);

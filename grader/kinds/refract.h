@@ -30,7 +30,9 @@ class RefractTask final : public Task {
   nlohmann::json answer() const override;
   // "vector": t = η·d̂ + (η·cos θi − √k)·n̂; "angles": Snell's law on the angles, sin θt =
   // η·sin θi, and t from θt (not for a ray along the normal, nor past the critical angle).
-  std::vector<std::string> methods() const override { return {"vector", "angles"}; }
+  // The angles' method needs a refracted ray: under total internal reflection, or along the
+  // normal, the vector method alone works the problem.
+  std::vector<std::string> methods() const override;
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
   Sketch sketch() const override;
