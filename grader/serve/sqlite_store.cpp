@@ -158,12 +158,20 @@ class SqliteStore : public Store {
       throw Error(Diagnostic{file_, "", 0, 0, Severity::kError, "cannot open the database: " + why,
                              "database"});
     }
-    sqlite3_busy_timeout(db_, 5000);
-    exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL; PRAGMA foreign_keys=ON;");
-    migrate();
-    // One server per SQLite database: claims still held were the previous process's, killed
-    // before it could give them back; its scores are sent at once rather than after the lease.
-    exec("UPDATE outbox SET claimed_until = 0 WHERE claimed_until != 0");
+    // A constructor that throws runs no destructor: the connection is closed here (a database
+    // of a newer schema, refused by migrate, leaked it).
+    try {
+      sqlite3_busy_timeout(db_, 5000);
+      exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL; PRAGMA foreign_keys=ON;");
+      migrate();
+      // One server per SQLite database: claims still held were the previous process's, killed
+      // before it could give them back; its scores are sent at once rather than after the lease.
+      exec("UPDATE outbox SET claimed_until = 0 WHERE claimed_until != 0");
+    } catch (...) {
+      sqlite3_close_v2(db_);
+      db_ = nullptr;
+      throw;
+    }
   }
   ~SqliteStore() override { sqlite3_close(db_); }
 
