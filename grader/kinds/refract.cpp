@@ -39,21 +39,32 @@ nlohmann::json RefractTask::answer() const {
   return j;
 }
 
+namespace {
+
+// What both methods work first: the givens, the unit direction, the unit normal facing the
+// incoming ray, η and cos θi.
+void incidence_steps(Deriver& d, const Vec3d& dv, const Vec3d& nv, double n1v, double n2v) {
+  E D = d.given("d", "d", dv, "the incoming direction");
+  E N = d.given("n", "n", nv, "the surface normal");
+  E n1 = d.given("n1", "n_1", n1v, "the index on the incoming side");
+  E n2 = d.given("n2", "n_2", n2v, "the index on the far side");
+  d.step("d_hat", "d_hat", D / norm(D));
+  bool flip = dot(dv, nv) > 0;
+  d.step("n_hat", "n_hat", flip ? -N / norm(N) : N / norm(N),
+         flip ? "the unit normal, turned to face the incoming ray (d·n > 0 as given)"
+              : "the unit normal; it faces the incoming ray");
+  d.step("eta", "eta", n1 / n2);
+  d.step("cos_i", "cos_i", -dot(d.sym("d_hat"), d.sym("n_hat")), "cos θi");
+}
+
+}  // namespace
+
 std::vector<SolutionPart> RefractTask::derive_angles(const Overrides* overrides) const {
   auto not_here = [](const std::string& why) {
     return Error(Diagnostic{"", "", 0, 0, Severity::kError, why, "method-not-applicable"});
   };
   Deriver d("angles", "Refraction by Snell's law on the angles", overrides);
-  E D = d.given("d", "d", d_, "the incoming direction");
-  E N = d.given("n", "n", n_, "the surface normal");
-  E n1 = d.given("n1", "n_1", n1_, "the index on the incoming side");
-  E n2 = d.given("n2", "n_2", n2_, "the index on the far side");
-  d.step("d_hat", "d_hat", D / norm(D));
-  bool flip = dot(d_, n_) > 0;
-  d.step("n_hat", "n_hat", flip ? -N / norm(N) : N / norm(N),
-         "the unit normal, facing the incoming ray");
-  d.step("eta", "eta", n1 / n2);
-  d.step("cos_i", "cos_i", -dot(d.sym("d_hat"), d.sym("n_hat")), "cos θi");
+  incidence_steps(d, d_, n_, n1_, n2_);
   double theta_i = d.step("theta_i", "theta_i", arccos_degrees(d.sym("cos_i")),
                           "θi = arccos(cos θi), in degrees, from the normal")
                        .scalar;
@@ -94,17 +105,7 @@ std::vector<SolutionPart> RefractTask::derive(std::string_view method,
                                               const Overrides* overrides) const {
   if (method == "angles") return derive_angles(overrides);
   Deriver d("vector", "Refraction by Snell's law", overrides);
-  E D = d.given("d", "d", d_, "the incoming direction");
-  E N = d.given("n", "n", n_, "the surface normal");
-  E n1 = d.given("n1", "n_1", n1_, "the index on the incoming side");
-  E n2 = d.given("n2", "n_2", n2_, "the index on the far side");
-  d.step("d_hat", "d_hat", D / norm(D));
-  bool flip = dot(d_, n_) > 0;
-  d.step("n_hat", "n_hat", flip ? -N / norm(N) : N / norm(N),
-         flip ? "the unit normal, turned to face the incoming ray (d·n > 0 as given)"
-              : "the unit normal; it faces the incoming ray");
-  d.step("eta", "eta", n1 / n2);
-  d.step("cos_i", "cos_i", -dot(d.sym("d_hat"), d.sym("n_hat")), "cos θi");
+  incidence_steps(d, d_, n_, n1_, n2_);
   Value k = d.step("k", "k", 1 - square(d.sym("eta")) * (1 - square(d.sym("cos_i"))),
                    "1 − η²·sin²θi = cos²θt");
   // The angle of incidence, stated in the conclusion, is computed as a step of its own.
@@ -112,7 +113,7 @@ std::vector<SolutionPart> RefractTask::derive(std::string_view method,
                           "θi = arccos(cos θi), in degrees")
                        .scalar;
   if (n1_ > n2_) {
-    d.step("theta_c", "theta_c", arcsin_degrees(n2 / n1),
+    d.step("theta_c", "theta_c", arcsin_degrees(d.sym("n2") / d.sym("n1")),
            "going into a lower index, the critical angle: arcsin(n₂/n₁)");
   }
   if (k.scalar < 0) {
