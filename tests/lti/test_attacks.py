@@ -104,6 +104,15 @@ class ForgedTokenTest(AttackCase):
             with self.subTest(f"{claim} = {value}"):
                 self.forged({"claims": {claim: value}}, f"{claim} = {value}")
 
+    def test_empty_identity_claims(self):
+        # An empty field never identifies anyone: LTI Core requires sub, the deployment id and
+        # the resource link's id to be present and non-empty (at most 255 characters); an empty
+        # string signed by the platform is refused as if it were missing.
+        empty = {"sub": "", LTI + "deployment_id": "", LTI + "resource_link": {"id": ""}}
+        for claim, value in empty.items():
+            with self.subTest(f"{claim} = {value!r}"):
+                self.forged({"claims": {claim: value}}, f"{claim} = {value!r}")
+
 
 class NonceStateTest(AttackCase):
     def test_replayed_nonce(self):
