@@ -6,6 +6,10 @@ reaches it through the table (problems/kind.h) or its type (`FirstHitKind::kName
 name written as a string elsewhere in grader/ or web/ is a branch or row the list does not
 know about: it fails here with its file and line.
 
+Nor does code outside grader/kinds/ and grader/grading/ (whose graders are each one kind's)
+downcast a problem's Task to a kind's own class: what the checks, reports and exports need of
+a kind, the kind answers through Task (`ray_cast()`, problems/ray_cast.h).
+
 Flagged: a string literal that is a kind's name, on a line that speaks of a kind (`kind`), and
 anywhere at all for the names nothing else is called (`first-hit`, `camera-ray`, ...). Comments
 are not code. Usage: kind_names.py SOURCE_ROOT
@@ -50,9 +54,19 @@ for path in sorted(list((root / "grader").rglob("*")) + list((root / "web").rglo
             if text in names and (speaks_of_kind or text not in other_words):
                 faults.append(f"{path.relative_to(root)}:{number}: names the kind '{text}' "
                               f"by string: {line.strip()}")
+downcast = re.compile(r"(dynamic|static)_cast<\s*(const\s+)?[A-Za-z]+Task\s*[*&]")
+grading_dir = root / "grader" / "grading"
+for path in sorted((root / "grader").rglob("*")):
+    if path.suffix not in {".cpp", ".h"} or kinds_dir in path.parents or grading_dir in path.parents:
+        continue
+    for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+        if downcast.search(line) and not line.lstrip().startswith("//"):
+            faults.append(f"{path.relative_to(root)}:{number}: downcasts a Task to a kind's "
+                          f"class: {line.strip()}")
 for f in faults:
     print(f)
 if faults:
-    sys.exit(f"kind_names: {len(faults)} place(s) outside grader/kinds/ name a kind by string; "
-             "take it from the table of kinds (problems/kind.h) or from its type instead")
+    sys.exit(f"kind_names: {len(faults)} place(s) outside grader/kinds/ name a kind by string "
+             "or downcast its Task; take it from the table of kinds (problems/kind.h), from its "
+             "type, or from what Task answers")
 print(f"kind_names: no code outside grader/kinds/ names any of the {len(names)} kinds by string")

@@ -6,7 +6,7 @@
 
 #include "check/problem_checks.h"
 #include "derivation/number_format.h"
-#include "kinds/intersect.h"
+#include "problems/ray_cast.h"
 
 namespace raygrade {
 namespace {
@@ -41,9 +41,9 @@ struct ProbeOutcome {
   bool operator==(const ProbeOutcome&) const = default;
 };
 
-std::string describe(const ProbeOutcome& o, const FirstHitTask* first) {
-  if (first) {
-    return o.object < 0 ? "no object hit" : "a hit on " + first->objects()[o.object].name;
+std::string describe(const ProbeOutcome& o, const RayCast& cast) {
+  if (cast.asks_first_object()) {
+    return o.object < 0 ? "no object hit" : "a hit on " + std::string(cast.object_name(o.object));
   }
   if (o.contained) return "the ray contained in the plane";
   if (o.hits == 0) return "no hit";
@@ -51,18 +51,15 @@ std::string describe(const ProbeOutcome& o, const FirstHitTask* first) {
 }
 
 // The objects of the problem, in order.
-std::vector<const Shape*> shapes_of(const Problem& p) {
-  if (auto* t = dynamic_cast<const IntersectTask*>(p.task.get())) return {&t->object()};
+std::vector<const Shape*> shapes_of(const RayCast& cast) {
   std::vector<const Shape*> out;
-  if (auto* f = dynamic_cast<const FirstHitTask*>(p.task.get())) {
-    for (const auto& o : f->objects()) out.push_back(o.shape.get());
-  }
+  for (std::size_t i = 0; i < cast.object_count(); ++i) out.push_back(&cast.object_at(i));
   return out;
 }
 
 // Which objects a ray with t_min > 0 starts on: those it meets within `reach` of t = 0.
-std::vector<bool> start_surfaces(const Problem& p, const Ray& ray, double reach) {
-  std::vector<const Shape*> shapes = shapes_of(p);
+std::vector<bool> start_surfaces(const RayCast& cast, const Ray& ray, double reach) {
+  std::vector<const Shape*> shapes = shapes_of(cast);
   std::vector<bool> out(shapes.size(), false);
   if (ray.t_min <= 0) return out;
   Ray around = ray;
@@ -74,25 +71,25 @@ std::vector<bool> start_surfaces(const Problem& p, const Ray& ray, double reach)
 }
 
 // The outcome of `ray`; hits on a starting surface nearer than `skip` (in t) are left out.
-ProbeOutcome outcome_of(const Problem& p, const Ray& ray, const std::vector<bool>& starts = {},
+ProbeOutcome outcome_of(const RayCast& cast, const Ray& ray, const std::vector<bool>& starts = {},
                         double skip = 0) {
   ProbeOutcome o;
-  std::vector<const Shape*> shapes = shapes_of(p);
+  std::vector<const Shape*> shapes = shapes_of(cast);
   auto ray_for = [&](std::size_t i) {
     Ray r = ray;
     if (i < starts.size() && starts[i]) r.t_min = std::max(r.t_min, skip);
     return r;
   };
   bool starting = std::find(starts.begin(), starts.end(), true) != starts.end();
-  if (auto* t = dynamic_cast<const IntersectTask*>(p.task.get())) {
-    Intersection x = t->object().intersect(ray_for(0));
+  if (!cast.asks_first_object()) {
+    Intersection x = shapes.front()->intersect(ray_for(0));
     o.hits = x.hits.size();
     o.contained = x.contained;
-  } else if (auto* f = dynamic_cast<const FirstHitTask*>(p.task.get()); f && !starting) {
-    FirstHit h = first_hit(ray, f->objects());
+  } else if (!starting) {
+    FirstHit h = cast.first_met(ray);
     o.object = h.index;
     o.hits = h.index >= 0 ? 1 : 0;
-  } else if (f) {
+  } else {
     double nearest = kInfinity;
     for (std::size_t i = 0; i < shapes.size(); ++i) {
       Intersection x = shapes[i]->intersect(ray_for(i));
@@ -117,24 +114,24 @@ std::pair<Vec3d, Vec3d> sideways(const Vec3d& d) {
 }
 
 // The first outcome, among rays shifted sideways by `distance`, that differs from the ray's.
-std::optional<ProbeOutcome> shifted_outcome(const Problem& p, const Ray& ray, double distance) {
+std::optional<ProbeOutcome> shifted_outcome(const RayCast& cast, const Ray& ray, double distance) {
   double reach = kDepartureBand * distance / length(ray.direction);
-  std::vector<bool> starts = start_surfaces(p, ray, reach);
+  std::vector<bool> starts = start_surfaces(cast, ray, reach);
   // With a starting surface, the hits on it near the start are left out here too.
-  ProbeOutcome start = outcome_of(p, ray, starts, reach);
+  ProbeOutcome start = outcome_of(cast, ray, starts, reach);
   auto [u, v] = sideways(ray.direction);
   for (int k = 0; k < kProbeAngles; ++k) {
     double angle = 2 * std::numbers::pi * k / kProbeAngles;
     Ray shifted = ray;
     shifted.origin = ray.origin + distance * (std::cos(angle) * u + std::sin(angle) * v);
-    ProbeOutcome o = outcome_of(p, shifted, starts, reach);
+    ProbeOutcome o = outcome_of(cast, shifted, starts, reach);
     if (!(o == start)) return o;
   }
   return std::nullopt;
 }
 
-void check_close_hits(const Problem& p, const IntersectTask& t, double tol, BoundaryProbe& out) {
-  Intersection x = t.object().intersect(t.ray());
+void check_close_hits(const Problem& p, const RayCast& cast, double tol, BoundaryProbe& out) {
+  Intersection x = cast.object_at(0).intersect(cast.cast_ray());
   for (std::size_t i = 0; i + 1 < x.hits.size(); ++i) {
     double gap = x.hits[i + 1].t - x.hits[i].t;
     if (gap <= 2 * tol) {
@@ -159,8 +156,8 @@ bool stated_tie(const Problem& p) {
   return it != p.expected->end() && it->is_boolean() && it->get<bool>();
 }
 
-void check_near_tie(const Problem& p, const FirstHitTask& f, double tol, BoundaryProbe& out) {
-  FirstHit h = first_hit(f.ray(), f.objects());
+void check_near_tie(const Problem& p, const RayCast& cast, double tol, BoundaryProbe& out) {
+  FirstHit h = cast.first_met(cast.cast_ray());
   if (h.index < 0) return;
   for (std::size_t i = 0; i < h.nearest.size(); ++i) {
     if (static_cast<int>(i) == h.index || !h.nearest[i]) continue;
@@ -171,14 +168,14 @@ void check_near_tie(const Problem& p, const FirstHitTask& f, double tol, Boundar
           p, "/objects", Severity::kWarning,
           fmt::format("{} and {} are both first hit at t = {}: the answer names the first in the "
                       "list, which students cannot know",
-                      f.objects()[h.index].name, f.objects()[i].name, format_number(h.hit.t)),
+                      cast.object_name(h.index), cast.object_name(i), format_number(h.hit.t)),
           "tie"));
     } else if (gap <= tol) {
       out.diagnostics.push_back(problem_diagnostic(
           p, "/objects", Severity::kError,
           fmt::format("near tie: {} is hit at t = {} and {} at t = {}, closer than the tolerance "
                       "{}: either could be graded as the first hit",
-                      f.objects()[h.index].name, format_number(h.hit.t), f.objects()[i].name,
+                      cast.object_name(h.index), format_number(h.hit.t), cast.object_name(i),
                       format_number(h.nearest[i]->t), format_number(tol)),
           "near-tie"));
     }
@@ -187,56 +184,44 @@ void check_near_tie(const Problem& p, const FirstHitTask& f, double tol, Boundar
 
 // The t at which the tolerance is taken: the first hit's, or for a miss the t where the ray
 // passes closest to the object's centre (the first object's, for a first-hit problem).
-double typical_t(const Problem& p, const Ray& ray) {
-  const Shape* shape = nullptr;
-  if (auto* t = dynamic_cast<const IntersectTask*>(p.task.get())) {
-    Intersection x = t->object().intersect(ray);
-    if (!x.hits.empty()) return x.hits.front().t;
-    shape = &t->object();
-  } else if (auto* f = dynamic_cast<const FirstHitTask*>(p.task.get())) {
-    FirstHit h = first_hit(ray, f->objects());
-    if (h.index >= 0) return h.hit.t;
-    shape = f->objects().front().shape.get();
-  }
-  if (!shape) return 1;
+double typical_t(const RayCast& cast, const Ray& ray) {
+  FirstHit h = cast.first_met(ray);
+  if (h.index >= 0) return h.hit.t;
+  const Shape& shape = cast.object_at(0);
   return std::max(0.0,
-                  dot(shape->center() - ray.origin, ray.direction) / length_squared(ray.direction));
+                  dot(shape.center() - ray.origin, ray.direction) / length_squared(ray.direction));
 }
 
 }  // namespace
 
 BoundaryProbe probe_boundaries(const Problem& p) {
   BoundaryProbe out;
-  auto* inter = dynamic_cast<const IntersectTask*>(p.task.get());
-  auto* first = dynamic_cast<const FirstHitTask*>(p.task.get());
-  if (!inter && !first) return out;
-  const Ray& ray = inter ? inter->ray() : first->ray();
-  double tol = t_tolerance(p, typical_t(p, ray));
+  const RayCast* cast = p.task->ray_cast();
+  if (!cast) return out;
+  const Ray& ray = cast->cast_ray();
+  double tol = t_tolerance(p, typical_t(*cast, ray));
   // A t error of `tol` is a distance of tol·|d| along the ray: probe sideways by as much,
   // up to a small fraction of the (smallest) object.
   double size = kInfinity;
-  if (inter) size = inter->object().extent();
-  if (first) {
-    for (const auto& o : first->objects()) size = std::min(size, o.shape->extent());
-  }
+  for (const Shape* shape : shapes_of(*cast)) size = std::min(size, shape->extent());
   double distance = std::min(tol * length(ray.direction), kMaxProbeFraction * size);
-  ProbeOutcome base = outcome_of(p, ray);
-  out.exact_boundary = shifted_outcome(p, ray, distance * kExactBoundaryFraction).has_value();
-  if (first) check_near_tie(p, *first, tol, out);
+  ProbeOutcome base = outcome_of(*cast, ray);
+  out.exact_boundary = shifted_outcome(*cast, ray, distance * kExactBoundaryFraction).has_value();
+  if (cast->asks_first_object()) check_near_tie(p, *cast, tol, out);
   // A near tie is itself a boundary between two outcomes: reported once, as a near tie.
   bool reported = !out.diagnostics.empty();
   if (!out.exact_boundary && !reported) {
-    if (auto moved = shifted_outcome(p, ray, distance)) {
+    if (auto moved = shifted_outcome(*cast, ray, distance)) {
       out.diagnostics.push_back(problem_diagnostic(
           p, "/ray", Severity::kError,
           fmt::format("nearly tangent: the ray passes within {} of the object's boundary; moved "
                       "sideways by that much (the tolerance on t is {}) it gives {} instead of {}, "
                       "so a student's rounding can turn the answer around",
-                      format_number(distance), format_number(tol), describe(*moved, first),
-                      describe(base, first)),
+                      format_number(distance), format_number(tol), describe(*moved, *cast),
+                      describe(base, *cast)),
           "nearly-tangent"));
-    } else if (inter) {
-      check_close_hits(p, *inter, tol, out);
+    } else if (!cast->asks_first_object()) {
+      check_close_hits(p, *cast, tol, out);
     }
   }
   return out;

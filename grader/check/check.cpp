@@ -14,7 +14,6 @@
 #include "check/spans.h"
 #include "core/escape.h"
 #include "grading/tolerance.h"
-#include "kinds/intersect.h"
 
 namespace raygrade {
 namespace {

@@ -8,7 +8,7 @@
 #include "derivation/number_format.h"
 #include "grading/grade.h"
 #include "grading/tolerance.h"
-#include "kinds/intersect.h"
+#include "problems/ray_cast.h"
 
 namespace raygrade {
 namespace {
@@ -18,9 +18,8 @@ namespace {
 constexpr double kFullMarks = 1 - 1e-9;
 
 const Ray* ray_of(const Problem& p) {
-  if (auto* t = dynamic_cast<const IntersectTask*>(p.task.get())) return &t->ray();
-  if (auto* t = dynamic_cast<const FirstHitTask*>(p.task.get())) return &t->ray();
-  return nullptr;
+  const RayCast* cast = p.task->ray_cast();
+  return cast ? &cast->cast_ray() : nullptr;
 }
 
 // Where in the stated answer a graded part lives.

@@ -3,7 +3,8 @@
 
 #include <algorithm>
 
-#include "kinds/intersect.h"
+#include "problems/problem.h"
+#include "problems/ray_cast.h"
 
 namespace raygrade {
 namespace {
@@ -30,14 +31,13 @@ std::string ray_key(const Ray& r) {
 
 std::string geometry_key(const Problem& p) {
   std::string head = fmt::format("{}|{}|", p.kind, p.method);
-  if (auto* t = dynamic_cast<const IntersectTask*>(p.task.get())) {
-    return head + ray_key(t->ray()) + "|" + t->object().to_json().dump();
-  }
-  if (auto* f = dynamic_cast<const FirstHitTask*>(p.task.get())) {
+  if (const RayCast* cast = p.task->ray_cast()) {
+    // The objects in any order: one object, or the objects the first one met is named among.
     std::vector<std::string> objects;
-    for (const auto& o : f->objects()) objects.push_back(o.shape->to_json().dump());
+    for (std::size_t i = 0; i < cast->object_count(); ++i)
+      objects.push_back(cast->object_at(i).to_json().dump());
     std::sort(objects.begin(), objects.end());
-    return head + ray_key(f->ray()) + "|" + fmt::format("{}", fmt::join(objects, "|"));
+    return head + ray_key(cast->cast_ray()) + "|" + fmt::format("{}", fmt::join(objects, "|"));
   }
   nlohmann::json rest = p.source;
   for (const auto& k : common_problem_keys()) rest.erase(k);

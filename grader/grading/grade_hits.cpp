@@ -5,12 +5,13 @@
 
 #include <cmath>
 
+#include "core/error.h"
 #include "derivation/number_format.h"
 #include "grading/kind_grader.h"
 #include "grading/mistakes.h"
 #include "grading/parts.h"
 #include "grading/steps.h"
-#include "kinds/intersect.h"
+#include "problems/ray_cast.h"
 #include "shapes/transformed.h"
 
 namespace raygrade {
@@ -193,28 +194,25 @@ HitsGrader::HitsGrader(const Problem& p) : task_(p.task.get()), conventions_(p.c
 // The reference: the hits of the one object, or the first hit of the first object hit. Returns
 // every object of the problem.
 std::vector<const Shape*> HitsGrader::read_reference() {
+  const RayCast* cast = task_->ray_cast();
+  if (!cast) throw InternalError("the hits grader was given a problem that casts no ray");
   std::vector<const Shape*> shapes;
-  if (auto* it = dynamic_cast<const IntersectTask*>(task_)) {
-    ray_ = it->ray();
-    Intersection x = it->object().intersect(ray_);
+  ray_ = cast->cast_ray();
+  for (std::size_t i = 0; i < cast->object_count(); ++i) shapes.push_back(&cast->object_at(i));
+  if (!cast->asks_first_object()) {
+    Intersection x = shapes.front()->intersect(ray_);
     ref_ = x.hits;
     contained_ = x.contained;
-    shape_ = &it->object();
-    shapes.push_back(shape_);
+    shape_ = shapes.front();
     return shapes;
   }
-  auto& fh = dynamic_cast<const FirstHitTask&>(*task_);
   first_hit_ = true;
-  ray_ = fh.ray();
-  FirstHit f = first_hit(ray_, fh.objects());
-  for (const auto& o : fh.objects()) {
-    names_.push_back(o.name);
-    shapes.push_back(o.shape.get());
-  }
+  FirstHit f = cast->first_met(ray_);
+  for (std::size_t i = 0; i < cast->object_count(); ++i) names_.emplace_back(cast->object_name(i));
   ref_object_ = f.index;
   if (f.index >= 0) {
     ref_.push_back(f.hit);
-    shape_ = fh.objects()[static_cast<std::size_t>(f.index)].shape.get();
+    shape_ = shapes[static_cast<std::size_t>(f.index)];
   }
   return shapes;
 }

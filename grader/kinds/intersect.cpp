@@ -109,6 +109,19 @@ FirstHit first_hit(const Ray& ray, const std::vector<NamedShape>& objects) {
   return out;
 }
 
+FirstHit IntersectTask::first_met(const Ray& ray) const {
+  FirstHit out;
+  Intersection x = object_->intersect(ray);
+  if (x.hits.empty()) {
+    out.nearest.emplace_back(std::nullopt);
+    return out;
+  }
+  out.index = 0;
+  out.hit = x.hits.front();
+  out.nearest.emplace_back(out.hit);
+  return out;
+}
+
 std::optional<std::string> FirstHitTask::level() const { return first_hit(ray_, objects_).level; }
 
 nlohmann::json FirstHitTask::answer() const {

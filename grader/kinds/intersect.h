@@ -3,6 +3,7 @@
 
 #include "problems/kind.h"
 #include "problems/problem.h"
+#include "problems/ray_cast.h"
 #include "shapes/shape.h"
 
 namespace raygrade {
@@ -31,7 +32,7 @@ struct FirstHitKind {
   static std::string_view schema();
 };
 
-class IntersectTask final : public Task {
+class IntersectTask final : public Task, public RayCast {
  public:
   IntersectTask(Ray ray, std::unique_ptr<Shape> object, std::string method)
       : ray_(ray), object_(std::move(object)), method_(std::move(method)) {}
@@ -48,6 +49,14 @@ class IntersectTask final : public Task {
   const Ray& ray() const { return ray_; }
   const Shape& object() const { return *object_; }
 
+  const RayCast* ray_cast() const override { return this; }
+  const Ray& cast_ray() const override { return ray_; }
+  std::size_t object_count() const override { return 1; }
+  const Shape& object_at(std::size_t /*i*/) const override { return *object_; }
+  std::string_view object_name(std::size_t /*i*/) const override { return {}; }
+  bool asks_first_object() const override { return false; }
+  FirstHit first_met(const Ray& ray) const override;
+
  private:
   Ray ray_;
   std::unique_ptr<Shape> object_;
@@ -59,19 +68,10 @@ struct NamedShape {
   std::unique_ptr<Shape> shape;
 };
 
-// The nearest hit of each object and the first of them all.
-struct FirstHit {
-  int index = -1;  // into the objects; -1 when nothing is hit
-  Hit hit;
-  bool tie = false;                         // another object is hit at the same t
-  std::vector<std::optional<Hit>> nearest;  // per object
-  // The highest level of the adaptive ladder the decisions needed (docs/precision.md), when the
-  // study covers every object.
-  std::optional<std::string> level;
-};
+// The nearest hit of each object and the first of them all (FirstHit: problems/ray_cast.h).
 FirstHit first_hit(const Ray& ray, const std::vector<NamedShape>& objects);
 
-class FirstHitTask final : public Task {
+class FirstHitTask final : public Task, public RayCast {
  public:
   FirstHitTask(Ray ray, std::vector<NamedShape> objects, std::string method)
       : ray_(ray), objects_(std::move(objects)), method_(std::move(method)) {}
@@ -87,6 +87,14 @@ class FirstHitTask final : public Task {
 
   const Ray& ray() const { return ray_; }
   const std::vector<NamedShape>& objects() const { return objects_; }
+
+  const RayCast* ray_cast() const override { return this; }
+  const Ray& cast_ray() const override { return ray_; }
+  std::size_t object_count() const override { return objects_.size(); }
+  const Shape& object_at(std::size_t i) const override { return *objects_.at(i).shape; }
+  std::string_view object_name(std::size_t i) const override { return objects_.at(i).name; }
+  bool asks_first_object() const override { return true; }
+  FirstHit first_met(const Ray& ray) const override { return first_hit(ray, objects_); }
 
  private:
   Ray ray_;

@@ -16,6 +16,8 @@
 
 namespace raygrade {
 
+class RayCast;
+
 // A drawing in a worked solution, in the forms the renderers use.
 struct Figure {
   std::string caption;
@@ -78,6 +80,8 @@ class Task {
   // point that faces away from a light whose shadow ray is blocked anyway): called once, right
   // after the task is read, so that its answer, worked solution and sketch follow them.
   virtual void follow(const Conventions& /*conventions*/) {}
+  // The ray and objects of a problem that casts one ray at objects; null for other kinds.
+  virtual const RayCast* ray_cast() const { return nullptr; }
 };
 
 // Reads a "conventions" object on top of `base`. Throws Error naming the path of a fault.
