@@ -121,6 +121,38 @@ TEST(Parts, TotalInternalReflectionAnswersTheDirection) {
   EXPECT_TRUE(says(part(wrong, "direction")->feedback, "41.81"));
 }
 
+// The two-light fixture with k_s = 0: no specular term at all. I = 0.2 + 0.4 = 0.6; the
+// material has no colour, so there is no colour to give either.
+const char* kMatteShade = R"({"id": "m", "kind": "shade",
+    "point": [0, 0, 0], "normal": [0, 1, 0], "eye": [-3, 4, 0], "ambient_light": 2,
+    "material": {"ambient": 0.1, "diffuse": 0.5, "specular": 0, "shininess": 12},
+    "lights": [{"name": "A", "position": [3, 4, 0]},
+               {"name": "B", "position": [0, 9, 0], "blocked": true}],
+    "points": {"intensity": 1, "specular": 1, "colour": 1}})";
+
+TEST(Parts, ANoSpecularTermIsAnsweredByZeroOrNothing) {
+  GradeResult zero = grade(kMatteShade, R"({"intensity": 0.6, "specular": 0})");
+  EXPECT_DOUBLE_EQ(zero.score, 2);
+  EXPECT_EQ(part(zero, "colour"), nullptr);  // no colour part to leave out
+  EXPECT_DOUBLE_EQ(grade(kMatteShade, R"({"intensity": 0.6, "specular": null})").score, 2);
+  GradeResult some = grade(kMatteShade, R"({"intensity": 0.6, "specular": 0.3})");
+  EXPECT_DOUBLE_EQ(some.score, 1);
+  EXPECT_TRUE(says(part(some, "specular")->feedback, "k_s = 0"));
+}
+
+// Into glass: n2 > n1, so there is no critical angle, and no reflected direction to give.
+TEST(Parts, APartTheProblemHasNotSaysWhy) {
+  const char* into_glass = R"({"id": "w", "kind": "refract", "direction": [1, -1, 0],
+    "normal": [0, 1, 0], "n1": 1, "n2": 1.5,
+    "points": {"critical_angle": 1, "reflected_direction": 1, "total_internal_reflection": 1}})";
+  GradeResult r = grade(into_glass, R"({"critical_angle": 41.8, "reflected_direction": [1, 1, 0],
+    "total_internal_reflection": true})");
+  EXPECT_DOUBLE_EQ(r.score, 0);
+  EXPECT_TRUE(says(part(r, "critical_angle")->feedback, "no critical angle"));
+  EXPECT_TRUE(says(part(r, "reflected_direction")->feedback, "no reflected direction"));
+  EXPECT_TRUE(says(part(r, "total_internal_reflection")->feedback, "never totally reflected"));
+}
+
 // The triangle a = 0, b = x, c = y, hit from above at (0.2, 0.3): P = 0.5a + 0.2b + 0.3c.
 const char* kTriangle = R"({"id": "tri", "points": {"t": 1, "barycentric": 1},
   "ray": {"origin": [0.2, 0.3, 1], "direction": [0, 0, -1]},

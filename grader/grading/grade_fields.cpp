@@ -4,6 +4,7 @@
 // are not required, and every part below full credit says why.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -14,6 +15,7 @@
 #include "grading/kind_grader.h"
 #include "grading/mistakes.h"
 #include "grading/parts.h"
+#include "json/cursor.h"
 #include "kinds/normal_at.h"
 
 namespace raygrade {
@@ -55,9 +57,9 @@ class FieldsGrader final : public KindGrader {
     for (const auto& spec : kind_parts(kind_)) names.push_back(spec.name);
     a.allow_only(names);
     for (const auto& spec : kind_parts(kind_)) {
-      std::optional<AnswerReader> given = answer_for(a, spec.name);
-      // A shade problem without a material colour has no `colour` part to give.
-      if (!given && spec.name == "colour" && !reference_.contains("colour")) continue;
+      std::optional<AnswerReader> given = answer_for(a, spec);
+      // A part the reference has no value for may be one the answer need not give.
+      if (!given && spec.optional_when_absent && !reference_.contains(spec.name)) continue;
       if (!given) {
         out.parts.push_back(missing_part(context_, spec.name,
                                          fmt::format("No {} given ({}).", spec.name, spec.asks)));
@@ -74,12 +76,14 @@ class FieldsGrader final : public KindGrader {
  private:
   // The student's value for a part: the key itself, or what stands for it (a unit direction
   // is a direction; "total_internal_reflection": true says there is no refracted ray).
-  std::optional<AnswerReader> answer_for(const AnswerReader& a, const std::string& name) const {
-    if (a.has(name)) return a.at(name);
-    if (name == "direction" && a.has("unit_direction")) return a.at("unit_direction");
-    if (name == "direction" && find_part(kind_, "total_internal_reflection") &&
-        a.has("total_internal_reflection") && a.at("total_internal_reflection").json() == true) {
-      return AnswerReader(kNull, nullptr, a.path() + "/direction");
+  std::optional<AnswerReader> answer_for(const AnswerReader& a, const PartSpec& spec) const {
+    if (a.has(spec.name)) return a.at(spec.name);
+    for (const auto& alias : spec.aliases) {
+      if (a.has(alias)) return a.at(alias);
+    }
+    const std::string& flag = spec.absent_by_flag;
+    if (!flag.empty() && a.has(flag) && a.at(flag).json() == true) {
+      return AnswerReader(kNull, nullptr, a.path() + "/" + pointer_token(spec.name));
     }
     return std::nullopt;
   }
@@ -90,8 +94,8 @@ class FieldsGrader final : public KindGrader {
     if (spec.name == "lights") return grade_lights(s);
     if (!ref || ref->is_null()) {
       if (s.json().is_null() || s.json() == false) return {1, {}};
-      if (spec.name == "specular") return grade_no_specular(s);
-      return {0, {absent_reason(spec.name)}};
+      if (spec.zero_when_absent && is_zero(s.json())) return {1, {}};
+      return {0, {absent_reason(spec)}};
     }
     if (spec.compare == Comparison::kScalar && ref->is_array()) {
       return grade_colour(spec.name, s, *ref);
@@ -99,7 +103,7 @@ class FieldsGrader final : public KindGrader {
     switch (spec.compare) {
       case Comparison::kDirection:
       case Comparison::kUnitDirection: return grade_direction(spec, s, vec_of(*ref));
-      case Comparison::kFlag: return grade_flag(spec.name, s, ref->get<bool>());
+      case Comparison::kFlag: return grade_flag(spec, s, ref->get<bool>());
       case Comparison::kPoint: return grade_point(spec.name, s, vec_of(*ref));
       case Comparison::kNames: return grade_names(spec.name, s, *ref);
       default: return grade_scalar(spec.name, s, ref->get<double>());
@@ -165,24 +169,9 @@ class FieldsGrader final : public KindGrader {
   }
 
   // Why a part has no value in this problem.
-  std::string absent_reason(const std::string& name) const {
-    if (name == "direction" || name == "angle_of_refraction") {
-      return fmt::format(
-          "Past the critical angle (θi = {}° > θc = {}°) there is no refracted ray: all the "
-          "light is reflected, so there is no {}.",
-          number(reference_.value("angle_of_incidence", 0.0)),
-          number(reference_.value("critical_angle", 0.0)),
-          name == "direction" ? "refracted direction" : "angle of refraction");
-    }
-    if (name == "critical_angle") {
-      return "Going into an equal or higher index (n2 ≥ n1) there is no critical angle: the "
-             "ray is always refracted.";
-    }
-    if (name == "reflected_direction") {
-      return "The ray is refracted, not totally reflected: there is no reflected direction to "
-             "give.";
-    }
-    return fmt::format("This problem has no {}.", name);
+  std::string absent_reason(const PartSpec& spec) const {
+    if (spec.why_absent) return spec.why_absent(reference_, [this](double v) { return number(v); });
+    return fmt::format("This problem has no {}.", spec.name);
   }
 
   std::string number(double v) const { return format_number(v, numbers_); }
@@ -210,15 +199,20 @@ class FieldsGrader final : public KindGrader {
         0, {fmt::format("{} is {}{}, not {}.", name, shown(ref), angle ? "°" : "", n.value->text)}};
   }
 
-  // k_s = 0: there is no specular term; 0 (or [0, 0, 0]) for it is right, anything else not.
-  Verdict grade_no_specular(const AnswerReader& s) const {
-    bool zero = s.json().is_number() && s.json().get<double>() == 0;
-    if (s.json().is_array()) {
-      zero = true;
-      for (const auto& x : s.json()) zero &= x.is_number() && x.get<double>() == 0;
-    }
-    if (zero) return {1, {}};
-    return {0, {"k_s = 0: the material has no specular term, so there is none to give."}};
+  // A light's term the reference has not (no specular term when k_s = 0): zero answers it.
+  Verdict grade_no_term(std::string_view key, const AnswerReader& s) const {
+    if (is_zero(s.json())) return {1, {}};
+    const PartSpec* part = find_part(kind_, key);
+    return {0, {part ? absent_reason(*part) : fmt::format("This problem has no {}.", key)}};
+  }
+
+  // 0 or [0, 0, 0]: what answers a term that is not there.
+  static bool is_zero(const nlohmann::json& j) {
+    if (j.is_number()) return j.get<double>() == 0;
+    if (!j.is_array()) return false;
+    return std::all_of(j.begin(), j.end(), [](const auto& x) {
+      return x.is_number() && x.template get<double>() == 0;
+    });
   }
 
   Verdict grade_colour(const std::string& name, const AnswerReader& s,
@@ -321,26 +315,13 @@ class FieldsGrader final : public KindGrader {
     return out;
   }
 
-  Verdict grade_flag(const std::string& name, const AnswerReader& s, bool ref) const {
+  Verdict grade_flag(const PartSpec& spec, const AnswerReader& s, bool ref) const {
     if (!s.json().is_boolean()) s.fail("expected true or false", "type");
     if (s.json().get<bool>() == ref) return {1, {}};
-    if (name == "total_internal_reflection") {
-      double theta = reference_.value("angle_of_incidence", 0.0);
-      if (ref) {
-        return {0,
-                {fmt::format("The light is totally reflected: θi = {}° exceeds the critical "
-                             "angle {}°.",
-                             number(theta), number(reference_.value("critical_angle", 0.0)))}};
-      }
-      return {0,
-              {reference_.contains("critical_angle")
-                   ? fmt::format("The ray is refracted: θi = {}° is below the critical angle "
-                                 "{}°.",
-                                 number(theta), number(reference_.at("critical_angle")))
-                   : "The ray is refracted: going into an equal or higher index, light is "
-                     "never totally reflected."}};
+    if (spec.why_flag) {
+      return {0, {spec.why_flag(reference_, ref, [this](double v) { return number(v); })}};
     }
-    return {0, {fmt::format("{} is {}.", name, ref ? "true" : "false")}};
+    return {0, {fmt::format("{} is {}.", spec.name, ref ? "true" : "false")}};
   }
 
   Verdict grade_names(const std::string& name, const AnswerReader& s,
@@ -378,7 +359,7 @@ class FieldsGrader final : public KindGrader {
       std::size_t before = out.feedback.size();
       for (const char* key : {"n_dot_l", "r_dot_v", "diffuse", "specular"}) {
         if (!g.has(key)) continue;
-        Verdict v = !r->contains(key) ? grade_no_specular(g.at(key))
+        Verdict v = !r->contains(key) ? grade_no_term(key, g.at(key))
                     : r->at(key).is_array()
                         ? grade_colour(key, g.at(key), r->at(key))
                         : grade_scalar(key, g.at(key), r->at(key).get<double>());

@@ -63,9 +63,10 @@ std::unique_ptr<Task> ReflectKind::read(const Cursor& problem) {
 
 std::vector<PartSpec> ReflectKind::parts() {
   using C = Comparison;
-  return {{"direction", "the reflected direction r (any positive multiple)", 1, C::kDirection,
-           "r = d − 2(d·n̂)n̂ keeps the length of d"},
-          {"unit_direction", "r as a unit vector", 0, C::kUnitDirection}};
+  PartSpec direction{"direction", "the reflected direction r (any positive multiple)", 1,
+                     C::kDirection, "r = d − 2(d·n̂)n̂ keeps the length of d"};
+  direction.aliases = {"unit_direction"};  // a unit direction is a direction
+  return {direction, {"unit_direction", "r as a unit vector", 0, C::kUnitDirection}};
 }
 
 nlohmann::json ReflectKind::answer_form(const Problem& /*p*/) {

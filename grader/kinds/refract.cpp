@@ -172,15 +172,63 @@ std::unique_ptr<Task> RefractKind::read(const Cursor& problem) {
   return RefractTask::read(problem);
 }
 
+namespace {
+
+using Number = std::function<std::string(double)>;
+
+// Past the critical angle there is no refracted ray, so neither its direction nor its angle.
+std::function<std::string(const nlohmann::json&, const Number&)> past_critical(
+    std::string_view what) {
+  return [what](const nlohmann::json& ref, const Number& number) {
+    return fmt::format(
+        "Past the critical angle (θi = {}° > θc = {}°) there is no refracted ray: all the "
+        "light is reflected, so there is no {}.",
+        number(ref.value("angle_of_incidence", 0.0)), number(ref.value("critical_angle", 0.0)),
+        what);
+  };
+}
+
+std::string why_total(const nlohmann::json& ref, bool total, const Number& number) {
+  double theta = ref.value("angle_of_incidence", 0.0);
+  if (total) {
+    return fmt::format("The light is totally reflected: θi = {}° exceeds the critical angle {}°.",
+                       number(theta), number(ref.value("critical_angle", 0.0)));
+  }
+  if (!ref.contains("critical_angle")) {
+    return "The ray is refracted: going into an equal or higher index, light is never totally "
+           "reflected.";
+  }
+  return fmt::format("The ray is refracted: θi = {}° is below the critical angle {}°.",
+                     number(theta), number(ref.at("critical_angle").get<double>()));
+}
+
+}  // namespace
+
 std::vector<PartSpec> RefractKind::parts() {
   using C = Comparison;
-  return {{"direction", "the refracted direction (null past the critical angle)", 1, C::kDirection},
-          {"total_internal_reflection", "whether the light is totally reflected", 0, C::kFlag},
-          {"angle_of_incidence", "θi in degrees", 0, C::kScalar},
-          {"angle_of_refraction", "θt in degrees (none past the critical angle)", 0, C::kScalar},
-          {"critical_angle", "asin(n2/n1) in degrees (only when n1 > n2)", 0, C::kScalar},
-          {"reflected_direction", "the totally reflected direction (any positive multiple)", 0,
-           C::kDirection}};
+  PartSpec direction{"direction", "the refracted direction (null past the critical angle)", 1,
+                     C::kDirection};
+  direction.absent_by_flag = "total_internal_reflection";  // true: there is no refracted ray
+  direction.why_absent = past_critical("refracted direction");
+  PartSpec total{"total_internal_reflection", "whether the light is totally reflected", 0,
+                 C::kFlag};
+  total.why_flag = why_total;
+  PartSpec theta_t{"angle_of_refraction", "θt in degrees (none past the critical angle)", 0,
+                   C::kScalar};
+  theta_t.why_absent = past_critical("angle of refraction");
+  PartSpec critical{"critical_angle", "asin(n2/n1) in degrees (only when n1 > n2)", 0, C::kScalar};
+  critical.why_absent = [](const nlohmann::json&, const Number&) -> std::string {
+    return "Going into an equal or higher index (n2 ≥ n1) there is no critical angle: the ray "
+           "is always refracted.";
+  };
+  PartSpec reflected{"reflected_direction",
+                     "the totally reflected direction (any positive multiple)", 0, C::kDirection};
+  reflected.why_absent = [](const nlohmann::json&, const Number&) -> std::string {
+    return "The ray is refracted, not totally reflected: there is no reflected direction to "
+           "give.";
+  };
+  return {direction, total,    {"angle_of_incidence", "θi in degrees", 0, C::kScalar},
+          theta_t,   critical, reflected};
 }
 
 nlohmann::json RefractKind::answer_form(const Problem& /*p*/) {

@@ -378,15 +378,24 @@ std::unique_ptr<Task> ShadeKind::read(const Cursor& problem) { return ShadeTask:
 
 std::vector<PartSpec> ShadeKind::parts() {
   using C = Comparison;
+  PartSpec specular{"specular", "the sum of the specular terms", 0, C::kScalar};
+  specular.zero_when_absent = true;  // k_s = 0: 0 is the term, as much as none
+  specular.why_absent = [](const nlohmann::json&,
+                           const std::function<std::string(double)>&) -> std::string {
+    return "k_s = 0: the material has no specular term, so there is none to give.";
+  };
+  PartSpec colour{"colour",
+                  "the material's colour at the point (a pattern's colour there), [r, g, b]", 0,
+                  C::kScalar};
+  colour.optional_when_absent = true;  // a material without a colour has none to give
   return {{"intensity", "the Phong intensity", 1, C::kScalar},
           {"ambient", "the ambient term k_a·I_a", 0, C::kScalar},
           {"diffuse", "the sum of the diffuse terms", 0, C::kScalar},
-          {"specular", "the sum of the specular terms", 0, C::kScalar},
+          specular,
           {"terms", "which terms apply (ambient, diffuse, specular)", 0, C::kNames},
           {"lights", "per light: whether it reaches the point, N·L, R·V and its two terms", 0,
            C::kScalar},
-          {"colour", "the material's colour at the point (a pattern's colour there), [r, g, b]", 0,
-           C::kScalar}};
+          colour};
 }
 
 nlohmann::json ShadeKind::answer_form(const Problem& p) {

@@ -303,9 +303,11 @@ std::unique_ptr<Task> ViewRayKind::read(const Cursor& problem) {
 
 std::vector<PartSpec> ViewRayKind::parts() {
   using C = Comparison;
+  PartSpec direction{"direction", "the ray's direction (any positive multiple)", 1, C::kDirection};
+  direction.aliases = {"unit_direction"};  // a unit direction is a direction
   return {{"origin", "where the ray starts (the eye; the pixel itself when orthographic)", 1,
            C::kPoint},
-          {"direction", "the ray's direction (any positive multiple)", 1, C::kDirection},
+          direction,
           {"unit_direction", "the direction as a unit vector", 0, C::kUnitDirection},
           {"u", "the camera's u (the image's right)", 0, C::kDirection},
           {"v", "the camera's v (the image's up)", 0, C::kDirection},

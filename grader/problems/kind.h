@@ -3,6 +3,7 @@
 // and its case of the problem schema. Everything that differs by kind is derived from here.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -42,6 +43,29 @@ struct PartSpec {
   // has ("r = d − 2(d·n̂)n̂ keeps the length of d"), said to a student whose length is neither 1
   // nor the reference's; empty: nothing is said.
   std::string length_note = {};
+  // Other keys of an answer that answer this part when it is not given under its own name
+  // (a unit direction is a direction).
+  std::vector<std::string> aliases = {};
+  // A flag part whose `true` answers this part as having no value (refract's
+  // total_internal_reflection: then there is no refracted direction).
+  std::string absent_by_flag = {};
+  // When the reference has no value for the part: zero (0 or [0, 0, 0]) answers it too, besides
+  // null and false (shade's specular term when k_s = 0).
+  bool zero_when_absent = false;
+  // When the reference has no value for the part, the answer may leave it out (shade's colour
+  // without a material colour).
+  bool optional_when_absent = false;
+  // Why the reference has no value for the part, told to a student who gives one, from the
+  // reference answer (`number` prints a number as the grader does); unset: "This problem has
+  // no <name>."
+  std::function<std::string(const nlohmann::json& reference,
+                            const std::function<std::string(double)>& number)>
+      why_absent = {};
+  // For a flag: why the reference says what it says, told to a student who says the other
+  // (`reference_flag` is the right value); unset: "<name> is true." or "... false.".
+  std::function<std::string(const nlohmann::json& reference, bool reference_flag,
+                            const std::function<std::string(double)>& number)>
+      why_flag = {};
 };
 
 // The graders of grading/: the fields grader compares each part by its Comparison; the others
