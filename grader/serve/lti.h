@@ -47,6 +47,7 @@ struct LaunchClaims {
   std::string lineitems;  // AGS: the context's line items, if given
   std::string deep_link_return_url;
   std::string deep_link_data;
+  std::string memberships_url;  // NRPS: the context's roster, if given
   bool instructor() const;
 };
 
