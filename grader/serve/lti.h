@@ -14,6 +14,8 @@ inline constexpr std::string_view kClaimPrefix = "https://purl.imsglobal.org/spe
 inline constexpr std::string_view kDlClaimPrefix = "https://purl.imsglobal.org/spec/lti-dl/claim/";
 inline constexpr std::string_view kAgsClaim =
     "https://purl.imsglobal.org/spec/lti-ags/claim/endpoint";
+inline constexpr std::string_view kNrpsClaim =
+    "https://purl.imsglobal.org/spec/lti-nrps/claim/namesroleservice";
 inline constexpr std::string_view kResourceLinkRequest = "LtiResourceLinkRequest";
 inline constexpr std::string_view kDeepLinkingRequest = "LtiDeepLinkingRequest";
 inline constexpr std::string_view kInstructorRole =

@@ -1,5 +1,6 @@
 // A course's class list read from the platform by Names and Role Provisioning Services 2.0: the
-// membership container at the launch's context_memberships_url, page after page.
+// membership container at the launch's context_memberships_url (the claim kNrpsClaim of
+// lti.h), page after page.
 #pragma once
 
 #include <string>
@@ -9,8 +10,6 @@
 
 namespace raygrade::serve {
 
-inline constexpr std::string_view kNrpsClaim =
-    "https://purl.imsglobal.org/spec/lti-nrps/claim/namesroleservice";
 inline constexpr std::string_view kNrpsScope =
     "https://purl.imsglobal.org/spec/lti-nrps/scope/contextmembership.readonly";
 inline constexpr std::string_view kMembershipType =

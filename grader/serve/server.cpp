@@ -591,6 +591,8 @@ ClassList LtiServer::Impl::class_list(const LaunchRecord& l) {
     store->set_members(l.issuer, l.client_id, l.context_id, members, now_seconds());
     list.members = std::move(members);
   } catch (const std::exception& e) {
+    // A token the platform no longer takes is asked for again next time.
+    tokens->forget();
     list.note = fmt::format(
         "The class list could not be read from the platform ({}); {}.", e.what(),
         roster.read_at == 0 ? "only the students who submitted are listed"
