@@ -5,6 +5,8 @@ Submit button and the feedback shown (the page's own policy lets it connect to t
 the cookies set with SameSite=None; Secure are sent over http on loopback).
 
 Usage: serve_in_browser.py RAYGRADE SOURCE_DIR WORK_DIR
+RAYGRADE_TEST_DATABASE=postgresql runs the tool on a throwaway PostgreSQL cluster
+(tests/lti/pgcluster.py) rather than SQLite: skipped (77) without PostgreSQL's programs.
 """
 import html
 import json
@@ -69,21 +71,49 @@ class Platform(BaseHTTPRequestHandler):
         self.wfile.write(data)
 
 
+def database():
+    """On PostgreSQL: (a throwaway cluster, started, and the URL of a database), else None."""
+    if os.environ.get("RAYGRADE_TEST_DATABASE", "sqlite") != "postgresql":
+        return None
+    sys.path.append(os.path.join(SOURCE, "tests", "lti"))
+    import pgcluster
+    try:
+        cluster = pgcluster.Cluster()
+    except FileNotFoundError as e:
+        print(f"serve_in_browser: skipped: {e}")
+        return None
+    cluster.start()
+    return cluster, cluster.new_database("browser")
+
+
 def main():
-    global ISS
     if not require_chromium() or not shutil.which("chromedriver"):
         return SKIPPED
+    on_pg = os.environ.get("RAYGRADE_TEST_DATABASE", "sqlite") == "postgresql"
+    pg = database()
+    if on_pg and not pg:
+        return SKIPPED
+    try:
+        return run(pg)
+    finally:
+        if pg:
+            pg[0].stop()
+
+
+def run(pg):
+    global ISS
     shutil.rmtree(WORK, ignore_errors=True)
     data = os.path.join(WORK, "data")
+    db = ["--database", pg[1]] if pg else []
     platform = ThreadingHTTPServer(("127.0.0.1", 0), Platform)
     threading.Thread(target=platform.serve_forever, daemon=True).start()
     ISS = f"http://127.0.0.1:{platform.server_port}"
     subprocess.run([RAYGRADE, "serve", "register", "--data", data, "--issuer", ISS,
                     "--client-id", "client-1", "--deployment-id", "dep-1", "--auth-url",
-                    ISS + "/auth", "--token-url", ISS + "/token", "--jwks-url", ISS + "/jwks"],
+                    ISS + "/auth", "--token-url", ISS + "/token", "--jwks-url", ISS + "/jwks"] + db,
                    check=True, capture_output=True)
     server = subprocess.Popen([RAYGRADE, "serve", "--data", data, "--assignments",
-                               os.path.join(SOURCE, "assignments")], stdout=subprocess.PIPE,
+                               os.path.join(SOURCE, "assignments")] + db, stdout=subprocess.PIPE,
                               text=True)
     profile = tempfile.mkdtemp(prefix="raygrade-chromium-")
     driver = None
@@ -119,7 +149,11 @@ def main():
         shutil.rmtree(profile, ignore_errors=True)
         server.terminate()
         server.wait(timeout=20)
-    print("serve_in_browser: passed")
+    if pg:
+        stored = pg[0].query(pg[1], "SELECT COUNT(*) FROM submissions")[0][0]
+        if stored != "1" or os.path.exists(os.path.join(data, "raygrade.sqlite")):
+            sys.exit(f"serve_in_browser: FAILED: not stored on PostgreSQL ({stored} submissions)")
+    print(f"serve_in_browser: passed{' (postgresql)' if pg else ''}")
     return 0
 
 

@@ -19,7 +19,9 @@ namespace serve_store_test {
 
 using raygrade::serve::LaunchRecord;
 using raygrade::serve::LoginState;
+using raygrade::serve::Member;
 using raygrade::serve::OutboxRow;
+using raygrade::serve::Roster;
 using raygrade::serve::Store;
 using raygrade::serve::SubmissionRecord;
 
@@ -171,11 +173,11 @@ TEST_P(ServeStore, ReopenedDatabaseKeepsEverythingAtItsSchemaVersion) {
   auto out = store->outbox();
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].submission_id, subs[0].id);
-  // Migrated once to each version, not again at reopening: versions 1 and 2 (the outbox's
-  // claims).
-  EXPECT_EQ(b->query("SELECT COUNT(*) FROM schema_version"), "2");
-  EXPECT_EQ(b->query("SELECT MAX(version) FROM schema_version"), "2");
-  EXPECT_EQ(raygrade::serve::kSchemaVersion, 2);
+  // Migrated once to each version, not again at reopening: versions 1, 2 (the outbox's
+  // claims) and 3 (the rosters).
+  EXPECT_EQ(b->query("SELECT COUNT(*) FROM schema_version"), "3");
+  EXPECT_EQ(b->query("SELECT MAX(version) FROM schema_version"), "3");
+  EXPECT_EQ(raygrade::serve::kSchemaVersion, 3);
   if (GetParam() == "sqlite") {
     EXPECT_EQ(b->query("PRAGMA journal_mode"), "wal");
   }
@@ -222,16 +224,45 @@ TEST_P(ServeStore, ADatabaseOfANewerSchemaIsRefused) {
   auto b = backend("newer");
   RAYGRADE_NEED(b);
   b->open();  // made at the current version
-  b->query("INSERT INTO schema_version VALUES (3)");
+  b->query("INSERT INTO schema_version VALUES (4)");
   try {
     b->open();
-    ADD_FAILURE() << "a database of schema version 3 was opened";
+    ADD_FAILURE() << "a database of schema version 4 was opened";
   } catch (const raygrade::Error& e) {
-    EXPECT_NE(e.diagnostic().message.find("schema is version 3, newer than this raygrade knows "
-                                          "(version 2)"),
+    EXPECT_NE(e.diagnostic().message.find("schema is version 4, newer than this raygrade knows "
+                                          "(version 3)"),
               std::string::npos)
         << e.diagnostic().message;
   }
+}
+
+TEST_P(ServeStore, ARosterIsReplacedWholeAndKeepsItsOrder) {
+  auto b = backend("roster");
+  RAYGRADE_NEED(b);
+  auto store = b->open();
+  const std::string lms = "https://lms.example";
+  EXPECT_TRUE(store->roster(lms, "tool-1", "c1").memberships_url.empty());
+  store->set_memberships_url(lms, "tool-1", "c1", "https://lms.example/nrps/c1");
+  std::vector<Member> read = {{"zoe", "Zoë", "z@x", "[]", "Active"},
+                              {"ada", "Ada", "a@x", "[]", "Inactive"},
+                              {"zoe", "Zoë again", "", "[]", "Active"}};  // twice: the first kept
+  store->set_members(lms, "tool-1", "c1", read, 1000);
+  store->set_memberships_url(lms, "tool-1", "c1", "https://lms.example/nrps/c1?v=2");
+  Roster r = store->roster(lms, "tool-1", "c1");
+  EXPECT_EQ(r.memberships_url, "https://lms.example/nrps/c1?v=2");
+  EXPECT_EQ(r.read_at, 1000);
+  ASSERT_EQ(r.members.size(), 2u);
+  EXPECT_EQ(r.members[0].user_id, "zoe");
+  EXPECT_EQ(r.members[0].name, "Zoë");
+  EXPECT_EQ(r.members[1].status, "Inactive");
+  // Read again: the members of the new read only; another course untouched.
+  store->set_members(lms, "tool-1", "c2", {{"bob", "Bob", "", "[]", "Active"}}, 5);
+  store->set_members(lms, "tool-1", "c1", {{"ada", "Ada", "a@x", "[]", "Active"}}, 2000);
+  r = store->roster(lms, "tool-1", "c1");
+  ASSERT_EQ(r.members.size(), 1u);
+  EXPECT_EQ(r.members[0].status, "Active");
+  EXPECT_EQ(r.memberships_url, "https://lms.example/nrps/c1?v=2");
+  EXPECT_EQ(store->roster(lms, "tool-1", "c2").members.size(), 1u);
 }
 
 std::string backend_name(const ::testing::TestParamInfo<std::string>& p) { return p.param; }

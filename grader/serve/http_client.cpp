@@ -1,6 +1,7 @@
 // Requests the tool makes of a platform, with cpp-httplib's client.
 #include "serve/http_client.h"
 
+#include <fmt/format.h>
 #include <httplib.h>
 
 #include "serve/jwt.h"
@@ -21,6 +22,8 @@ HttpAnswer answer_of(const httplib::Result& r) {
   a.status = r->status;
   a.body = r->body;
   a.content_type = r->get_header_value("Content-Type");
+  auto [from, to] = r->headers.equal_range("Link");
+  for (auto it = from; it != to; ++it) a.link += (a.link.empty() ? "" : ", ") + it->second;
   return a;
 }
 
@@ -57,6 +60,13 @@ HttpAnswer http_post(const std::string& url, const std::string& body,
   auto [origin, path] = split_url(url);
   return answer_of(
       client_for(origin).Post(path.c_str(), headers_of(headers), body, content_type.c_str()));
+}
+
+bool http_ok(const HttpAnswer& a) { return a.status >= 200 && a.status < 300; }
+
+std::string http_failure(const std::string& what, const HttpAnswer& a) {
+  if (a.status == 0) return what + ": no answer (" + a.error + ")";
+  return fmt::format("{}: HTTP {} {}", what, a.status, a.body.substr(0, 200));
 }
 
 std::string form_encode(const std::map<std::string, std::string>& fields) {

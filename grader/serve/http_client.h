@@ -11,6 +11,7 @@ struct HttpAnswer {
   int status = 0;  // 0: no answer (the connection failed)
   std::string body;
   std::string content_type;
+  std::string link;   // the Link header (several joined by ", ")
   std::string error;  // why there was no answer
 };
 
@@ -22,6 +23,11 @@ std::pair<std::string, std::string> split_url(const std::string& url);
 HttpAnswer http_get(const std::string& url, const HttpHeaders& headers = {});
 HttpAnswer http_post(const std::string& url, const std::string& body,
                      const std::string& content_type, const HttpHeaders& headers = {});
+
+// A 2xx answer.
+bool http_ok(const HttpAnswer& a);
+// "what: HTTP 503 <the body's start>", or "what: no answer (why)".
+std::string http_failure(const std::string& what, const HttpAnswer& a);
 
 // Form fields as application/x-www-form-urlencoded.
 std::string form_encode(const std::map<std::string, std::string>& fields);

@@ -1,6 +1,7 @@
 // The instructor's report, gradebook and regrade over the stored submissions.
 #include "serve/instructor.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -15,6 +16,7 @@
 #include "reports/class_report.h"
 #include "serve/jwt.h"
 #include "serve/lti.h"
+#include "serve/roster.h"
 
 namespace raygrade::serve {
 
@@ -53,6 +55,31 @@ ClassStudent report_student(const CatalogEntry& e, const SubmissionRecord& r,
   return s;
 }
 
+// On the class list: a learner of the course who has not left it.
+bool enrolled(const Member& m) {
+  return !m.user_id.empty() && m.status != "Deleted" && is_learner(m);
+}
+
+const Member* find_member(const ClassList& list, const std::string& sub) {
+  for (const auto& m : list.members)
+    if (!sub.empty() && m.user_id == sub) return &m;
+  return nullptr;
+}
+
+std::string status_note(const Member& m) {
+  return m.status == "Inactive" ? "inactive in the LMS" : "";
+}
+
+// The row of an enrolled learner who handed in nothing, as RosterGradebook writes one.
+std::string absent_row(const CatalogEntry& e, const std::string& issuer, const Member& m) {
+  std::string s = csv_cell(m.name.empty() ? m.user_id : m.name) + "," +
+                  csv_cell(student_key_of(issuer, m.user_id)) + "," + csv_cell(m.email) + ",";
+  for (std::size_t p = 0; p < e.grader->problem_ids().size(); ++p) s += "," + format_points(0.0);
+  std::string note = status_note(m);
+  return s + fmt::format(",{},{},{}\n", format_points(0.0), format_points(e.points()),
+                         csv_cell(note.empty() ? "no submission" : "no submission; " + note));
+}
+
 }  // namespace
 
 std::vector<SubmissionRecord> last_per_student(const std::vector<SubmissionRecord>& all) {
@@ -69,7 +96,8 @@ std::vector<SubmissionRecord> last_per_student(const std::vector<SubmissionRecor
   return out;
 }
 
-std::string class_report_page(const CatalogEntry& e, const std::vector<SubmissionRecord>& all) {
+std::string class_report_page(const CatalogEntry& e, const std::vector<SubmissionRecord>& all,
+                              const ClassList& list) {
   std::vector<std::string> ids, titles;
   for (const Problem* p : e.bank.problems) {
     ids.push_back(p->id);
@@ -77,21 +105,57 @@ std::string class_report_page(const CatalogEntry& e, const std::vector<Submissio
   }
   ClassReportBuilder report(e.title(), ids, titles, e.bank.problems);
   // The variants of a student live while they are added: the builder keeps their numbers.
+  std::set<std::string> handed_in;
   for (const auto& r : last_per_student(all)) {
     std::vector<Problem> problems =
         student_problems(e.spec, e.bank.problems, student_key_of(r.issuer, r.sub));
-    report.add(report_student(e, r, problems));
+    ClassStudent s = report_student(e, r, problems);
+    const Member* m = find_member(list, r.sub);
+    if (m && !m->name.empty()) s.name = m->name;
+    report.add(s);
+    handed_in.insert(r.sub);
   }
-  return class_report_html(report.json(1));
+  std::vector<AbsentStudent> absent;
+  for (const auto& m : list.members) {
+    if (!enrolled(m) || handed_in.count(m.user_id)) continue;
+    std::string note = status_note(m);
+    absent.push_back({m.user_id, m.name.empty() ? note
+                                 : note.empty() ? m.name
+                                                : m.name + ", " + note});
+  }
+  report.set_no_submission(std::move(absent));
+  std::string page = class_report_html(report.json(1));
+  std::size_t main = page.find("<main>");
+  if (!list.note.empty() && main != std::string::npos)
+    page.insert(main + 6,
+                "<p id=\"roster-note\" role=\"status\">" + html_escape(list.note) + "</p>");
+  return page;
 }
 
-std::string gradebook_of(const CatalogEntry& e, const std::vector<SubmissionRecord>& all) {
+std::string gradebook_of(const CatalogEntry& e, const std::vector<SubmissionRecord>& all,
+                         const ClassList& list) {
   std::string csv = gradebook_csv_header(e.grader->problem_ids());
-  for (const auto& r : last_per_student(all)) {
-    StudentIdentity who{"", student_key_of(r.issuer, r.sub), ""};
+  std::vector<SubmissionRecord> last = last_per_student(all);
+  auto row = [&](const SubmissionRecord& r) {
+    const Member* m = find_member(list, r.sub);
+    StudentIdentity who{m ? m->name : "", student_key_of(r.issuer, r.sub), m ? m->email : ""};
     SubmissionGrade g = grade_answers(e, who, answers_of(r), r.created);
     csv += gradebook_csv_row(g, e.grader->problem_ids());
+  };
+  // The roster's learners first, in its order; then whoever else submitted.
+  std::set<std::string> written;
+  for (const auto& m : list.members) {
+    if (!enrolled(m) || !written.insert(m.user_id).second) continue;
+    auto it =
+        std::find_if(last.begin(), last.end(), [&](const auto& r) { return r.sub == m.user_id; });
+    if (it != last.end()) {
+      row(*it);
+    } else {
+      csv += absent_row(e, list.issuer, m);
+    }
   }
+  for (const auto& r : last)
+    if (!written.count(r.sub)) row(r);
   return csv;
 }
 

@@ -126,6 +126,9 @@ LaunchClaims check_launch_claims(const nlohmann::json& p, const LaunchExpectatio
     c.context_id = optional_string(*context, "id");
     c.context_title = optional_string(*context, "title");
   }
+  auto nrps = p.find(std::string(kNrpsClaim));
+  if (nrps != p.end() && nrps->is_object())
+    c.memberships_url = optional_string(*nrps, "context_memberships_url");
   auto custom = p.find(claim_name(kClaimPrefix, "custom"));
   if (custom != p.end() && custom->is_object()) c.custom = *custom;
   return c;

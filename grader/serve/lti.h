@@ -14,6 +14,8 @@ inline constexpr std::string_view kClaimPrefix = "https://purl.imsglobal.org/spe
 inline constexpr std::string_view kDlClaimPrefix = "https://purl.imsglobal.org/spec/lti-dl/claim/";
 inline constexpr std::string_view kAgsClaim =
     "https://purl.imsglobal.org/spec/lti-ags/claim/endpoint";
+inline constexpr std::string_view kNrpsClaim =
+    "https://purl.imsglobal.org/spec/lti-nrps/claim/namesroleservice";
 inline constexpr std::string_view kResourceLinkRequest = "LtiResourceLinkRequest";
 inline constexpr std::string_view kDeepLinkingRequest = "LtiDeepLinkingRequest";
 inline constexpr std::string_view kInstructorRole =
@@ -47,6 +49,7 @@ struct LaunchClaims {
   std::string lineitems;  // AGS: the context's line items, if given
   std::string deep_link_return_url;
   std::string deep_link_data;
+  std::string memberships_url;  // NRPS: the context's roster, if given
   bool instructor() const;
 };
 

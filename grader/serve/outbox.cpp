@@ -20,13 +20,6 @@ constexpr std::string_view kLineItemScope =
 constexpr int kBatch = 32;
 constexpr std::chrono::milliseconds kTick{250};
 
-bool ok(const HttpAnswer& a) { return a.status >= 200 && a.status < 300; }
-
-std::string why(const std::string& what, const HttpAnswer& a) {
-  if (a.status == 0) return what + ": no answer (" + a.error + ")";
-  return fmt::format("{}: HTTP {} {}", what, a.status, a.body.substr(0, 200));
-}
-
 // A URL with `suffix` added to its path, before any query.
 std::string with_path(const std::string& url, const std::string& suffix) {
   std::size_t q = url.find('?');
@@ -56,11 +49,10 @@ std::string iso_time_ms(std::int64_t ms) {
                      tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec, ms % 1000);
 }
 
-Outbox::Outbox(Store& store, EVP_PKEY* tool_key, std::string kid, std::int64_t base_ms,
+Outbox::Outbox(Store& store, AccessTokens& tokens, std::int64_t base_ms,
                std::function<void(const std::string&)> log, std::int64_t lease_ms)
     : store_(store),
-      key_(tool_key),
-      kid_(std::move(kid)),
+      tokens_(tokens),
       base_ms_(base_ms),
       log_(std::move(log)),
       lease_ms_(lease_ms) {}
@@ -144,43 +136,15 @@ void Outbox::send(const OutboxRow& row) {
   }
 }
 
-std::string Outbox::access_token(const Registration& r, const std::string& scope) {
-  std::string cache_key = r.token_url + "\n" + r.client_id + "\n" + scope;
-  std::int64_t now = now_ms();
-  auto it = tokens_.find(cache_key);
-  if (it != tokens_.end() && it->second.expires_ms > now) return it->second.value;
-  nlohmann::json assertion = {{"iss", r.client_id},      {"sub", r.client_id},
-                              {"aud", r.token_url},      {"iat", now / 1000},
-                              {"exp", now / 1000 + 300}, {"jti", random_token(16)}};
-  std::string body = form_encode(
-      {{"grant_type", "client_credentials"},
-       {"client_assertion_type", "urn:ietf:params:oauth:client-assertion-type:jwt-bearer"},
-       {"client_assertion", sign_jwt(assertion, key_, kid_)},
-       {"scope", scope}});
-  HttpAnswer a = http_post(r.token_url, body, "application/x-www-form-urlencoded");
-  if (!ok(a)) throw std::runtime_error(why("token endpoint", a));
-  nlohmann::json j = nlohmann::json::parse(a.body, nullptr, false);
-  if (!j.is_object() || !j.contains("access_token") || !j["access_token"].is_string())
-    throw std::runtime_error("token endpoint: no access_token in its answer");
-  double lifetime = j.contains("expires_in") && j["expires_in"].is_number()
-                        ? j["expires_in"].get<double>()
-                        : 3600;
-  // Renewed a minute early, so that a token does not run out between asking and using it.
-  Token t{j["access_token"].get<std::string>(),
-          now + static_cast<std::int64_t>(lifetime * 1000) - 60000};
-  tokens_[cache_key] = t;
-  return t.value;
-}
-
 std::string Outbox::find_line_item(const OutboxRow& row, const Registration& r) {
   if (auto known = store_.line_item(row.issuer, row.client_id, row.resource_link_id)) return *known;
-  std::string token = access_token(r, std::string(kLineItemScope));
+  std::string token = tokens_.get(r, std::string(kLineItemScope));
   HttpHeaders auth = {{"Authorization", "Bearer " + token},
                       {"Accept", "application/vnd.ims.lis.v2.lineitemcontainer+json"}};
   std::string query = std::string(row.lineitems.find('?') == std::string::npos ? "?" : "&") +
                       "resource_link_id=" + form_encode({{"", row.resource_link_id}}).substr(1);
   HttpAnswer list = http_get(row.lineitems + query, auth);
-  if (!ok(list)) throw std::runtime_error(why("line items", list));
+  if (!http_ok(list)) throw std::runtime_error(http_failure("line items", list));
   nlohmann::json items = nlohmann::json::parse(list.body, nullptr, false);
   if (items.is_array()) {
     for (const auto& item : items) {
@@ -199,8 +163,8 @@ std::string Outbox::find_line_item(const OutboxRow& row, const Registration& r) 
       http_post(row.lineitems, item.dump(), "application/vnd.ims.lis.v2.lineitem+json",
                 {{"Authorization", "Bearer " + token}});
   nlohmann::json j = nlohmann::json::parse(made.body, nullptr, false);
-  if (!ok(made) || !j.is_object() || !j.contains("id") || !j["id"].is_string())
-    throw std::runtime_error(why("new line item", made));
+  if (!http_ok(made) || !j.is_object() || !j.contains("id") || !j["id"].is_string())
+    throw std::runtime_error(http_failure("new line item", made));
   store_.set_line_item(row.issuer, row.client_id, row.resource_link_id, j["id"]);
   return j["id"];
 }
@@ -209,7 +173,7 @@ void Outbox::deliver(const OutboxRow& row) {
   auto r = store_.find_registration(row.issuer, row.client_id);
   if (!r) throw std::runtime_error("the platform is no longer registered");
   std::string lineitem = row.lineitem.empty() ? find_line_item(row, *r) : row.lineitem;
-  std::string token = access_token(*r, std::string(kScoreScope));
+  std::string token = tokens_.get(*r, std::string(kScoreScope));
   nlohmann::json score = {{"userId", row.user_id},
                           {"scoreGiven", row.score},
                           {"scoreMaximum", row.max_score},
@@ -219,8 +183,8 @@ void Outbox::deliver(const OutboxRow& row) {
   HttpAnswer a =
       http_post(with_path(lineitem, "/scores"), score.dump(),
                 "application/vnd.ims.lis.v1.score+json", {{"Authorization", "Bearer " + token}});
-  if (a.status == 401) tokens_.clear();  // a token the platform no longer takes
-  if (!ok(a)) throw std::runtime_error(why("scores", a));
+  if (a.status == 401) tokens_.forget();  // a token the platform no longer takes
+  if (!http_ok(a)) throw std::runtime_error(http_failure("scores", a));
 }
 
 }  // namespace raygrade::serve

@@ -5,13 +5,13 @@
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
-#include <map>
 #include <mutex>
 #include <string>
 #include <thread>
 
 #include "serve/jwt.h"
 #include "serve/store.h"
+#include "serve/tokens.h"
 
 namespace raygrade::serve {
 
@@ -35,7 +35,7 @@ class Outbox {
  public:
   // `log`, when set, is told of each score that could not be delivered, and why. Scores are
   // claimed for `lease_ms` at a time, so that several processes share one outbox.
-  Outbox(Store& store, EVP_PKEY* tool_key, std::string kid, std::int64_t base_ms,
+  Outbox(Store& store, AccessTokens& tokens, std::int64_t base_ms,
          std::function<void(const std::string&)> log = nullptr,
          std::int64_t lease_ms = kOutboxLeaseMs);
   ~Outbox();
@@ -54,12 +54,10 @@ class Outbox {
   bool stopping();
   // Sends one score; throws std::runtime_error saying why it could not.
   void deliver(const OutboxRow& row);
-  std::string access_token(const Registration& r, const std::string& scope);
   std::string find_line_item(const OutboxRow& row, const Registration& r);
 
   Store& store_;
-  EVP_PKEY* key_;
-  std::string kid_;
+  AccessTokens& tokens_;
   std::int64_t base_ms_;
   std::function<void(const std::string&)> log_;
   std::int64_t lease_ms_;
@@ -68,11 +66,6 @@ class Outbox {
   bool stopping_ = false;
   bool woken_ = false;
   std::thread thread_;
-  struct Token {
-    std::string value;
-    std::int64_t expires_ms = 0;
-  };
-  std::map<std::string, Token> tokens_;  // by token URL, client and scope
 };
 
 }  // namespace raygrade::serve

@@ -62,6 +62,16 @@ const char* const kPgMigrations[] = {
          url TEXT NOT NULL, PRIMARY KEY (issuer, client_id, resource_link_id));)",
     // 2: several senders share the outbox; a score is held by one until claimed_until.
     R"(ALTER TABLE outbox ADD COLUMN claimed_until BIGINT NOT NULL DEFAULT 0;)",
+    // 3: the courses' class lists read from the platform (NRPS).
+    R"(CREATE TABLE rosters (
+         issuer TEXT NOT NULL, client_id TEXT NOT NULL, context_id TEXT NOT NULL,
+         memberships_url TEXT NOT NULL DEFAULT '', read_at BIGINT NOT NULL DEFAULT 0,
+         PRIMARY KEY (issuer, client_id, context_id));
+       CREATE TABLE members (
+         issuer TEXT NOT NULL, client_id TEXT NOT NULL, context_id TEXT NOT NULL,
+         user_id TEXT NOT NULL, position BIGINT NOT NULL, name TEXT NOT NULL,
+         email TEXT NOT NULL, roles TEXT NOT NULL, status TEXT NOT NULL,
+         PRIMARY KEY (issuer, client_id, context_id, user_id));)",
 };
 static_assert(std::size(kPgMigrations) == kSchemaVersion, "one migration per schema version");
 
@@ -496,6 +506,61 @@ class PostgresStore : public Store {
           "INSERT INTO line_items VALUES ($1, $2, $3, $4) ON CONFLICT (issuer, client_id, "
           "resource_link_id) DO UPDATE SET url = excluded.url",
           issuer, client_id, resource_link_id, url);
+      return 0;
+    });
+  }
+
+  void set_memberships_url(const std::string& issuer, const std::string& client_id,
+                           const std::string& context_id, const std::string& url) override {
+    transaction([&](Connection& c) {
+      c.run(
+          "INSERT INTO rosters (issuer, client_id, context_id, memberships_url) "
+          "VALUES ($1, $2, $3, $4) ON CONFLICT (issuer, client_id, context_id) DO UPDATE SET "
+          "memberships_url = excluded.memberships_url",
+          issuer, client_id, context_id, url);
+      return 0;
+    });
+  }
+
+  Roster roster(const std::string& issuer, const std::string& client_id,
+                const std::string& context_id) override {
+    return transaction([&](Connection& c) {
+      Roster r;
+      PgResult s = c.run(
+          "SELECT memberships_url, read_at FROM rosters WHERE issuer = $1 AND client_id = $2 "
+          "AND context_id = $3",
+          issuer, client_id, context_id);
+      if (s.rows() == 0) return r;
+      r.memberships_url = s.text(0, 0);
+      r.read_at = s.integer(0, 1);
+      PgResult m = c.run(
+          "SELECT user_id, name, email, roles, status FROM members WHERE issuer = $1 AND "
+          "client_id = $2 AND context_id = $3 ORDER BY position",
+          issuer, client_id, context_id);
+      for (int i = 0; i < m.rows(); ++i)
+        r.members.push_back({m.text(i, 0), m.text(i, 1), m.text(i, 2), m.text(i, 3), m.text(i, 4)});
+      return r;
+    });
+  }
+
+  void set_members(const std::string& issuer, const std::string& client_id,
+                   const std::string& context_id, const std::vector<Member>& members,
+                   std::int64_t read_at) override {
+    transaction([&](Connection& c) {
+      c.run(
+          "INSERT INTO rosters (issuer, client_id, context_id, read_at) VALUES ($1, $2, $3, $4) "
+          "ON CONFLICT (issuer, client_id, context_id) DO UPDATE SET read_at = excluded.read_at",
+          issuer, client_id, context_id, read_at);
+      c.run("DELETE FROM members WHERE issuer = $1 AND client_id = $2 AND context_id = $3", issuer,
+            client_id, context_id);
+      std::int64_t position = 0;
+      for (const auto& m : members) {
+        c.run(
+            "INSERT INTO members VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9) ON CONFLICT DO "
+            "NOTHING",
+            issuer, client_id, context_id, m.user_id, position++, m.name, m.email, m.roles,
+            m.status);
+      }
       return 0;
     });
   }

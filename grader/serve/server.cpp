@@ -22,7 +22,9 @@
 #include "serve/lti.h"
 #include "serve/outbox.h"
 #include "serve/pages.h"
+#include "serve/roster.h"
 #include "serve/store.h"
+#include "serve/tokens.h"
 
 namespace raygrade::serve {
 
@@ -151,6 +153,7 @@ struct LtiServer::Impl {
   std::string kid;
   PKey key;
   server_internal::KeyCache keys;
+  std::unique_ptr<AccessTokens> tokens;
   std::unique_ptr<Outbox> outbox;
   httplib::Server http;
   bool secure_cookies = false;
@@ -169,7 +172,8 @@ struct LtiServer::Impl {
                              "database"});
     }
     if (!options.public_url.empty()) set_public_url(options.public_url);
-    outbox = std::make_unique<Outbox>(*store, key.get(), kid, options.outbox_base_ms, options.log,
+    tokens = std::make_unique<AccessTokens>(key.get(), kid);
+    outbox = std::make_unique<Outbox>(*store, *tokens, options.outbox_base_ms, options.log,
                                       options.outbox_lease_ms);
     routes();
   }
@@ -263,6 +267,7 @@ struct LtiServer::Impl {
   void on_report(const httplib::Request& req, httplib::Response& res);
   void on_gradebook(const httplib::Request& req, httplib::Response& res);
   void on_regrade(const httplib::Request& req, httplib::Response& res);
+  ClassList class_list(const LaunchRecord& l);
 
   // The launch a request belongs to: its id, this browser's session cookie and, for a
   // request that changes something, its CSRF token must go together.
@@ -433,6 +438,9 @@ void LtiServer::Impl::on_launch(const httplib::Request& req, httplib::Response& 
       jwt.payload, LaunchExpectation{reg->issuer, reg->client_id, reg->deployments, s->nonce, now});
   LaunchRecord l = launch_record(c, *s);
   if (!store->complete_launch(state, l)) throw Refusal(400, "the state was used already");
+  // Where the course's roster is served: read when an instructor opens the report.
+  if (!c.memberships_url.empty() && !c.context_id.empty())
+    store->set_memberships_url(l.issuer, l.client_id, c.context_id, c.memberships_url);
   set_cookie(res, "raygrade_session", l.session, kSessionSeconds);
   launch_page(l, res);
 }
@@ -561,19 +569,54 @@ void LtiServer::Impl::on_submit(const httplib::Request& req, httplib::Response& 
   res.set_content(answer.dump(), "application/json");
 }
 
+// The course's roster read again from the platform (NRPS) and kept; when it cannot be read, the
+// one read last, and a note saying so.
+ClassList LtiServer::Impl::class_list(const LaunchRecord& l) {
+  ClassList list;
+  list.issuer = l.issuer;
+  if (l.context_id.empty()) return list;
+  Roster roster = store->roster(l.issuer, l.client_id, l.context_id);
+  list.members = roster.members;
+  if (roster.memberships_url.empty()) {
+    list.note =
+        "The platform gave no class list (Names and Role Provisioning Services) for this "
+        "course: only the students who submitted are listed.";
+    return list;
+  }
+  try {
+    auto reg = store->find_registration(l.issuer, l.client_id);
+    if (!reg) throw std::runtime_error("the platform is no longer registered");
+    std::string token = tokens->get(*reg, std::string(kNrpsScope));
+    std::vector<Member> members = read_memberships(roster.memberships_url, token);
+    store->set_members(l.issuer, l.client_id, l.context_id, members, now_seconds());
+    list.members = std::move(members);
+  } catch (const std::exception& e) {
+    // A token the platform no longer takes is asked for again next time.
+    tokens->forget();
+    list.note = fmt::format(
+        "The class list could not be read from the platform ({}); {}.", e.what(),
+        roster.read_at == 0 ? "only the students who submitted are listed"
+                            : "the list read at " + iso_utc_time(roster.read_at) + " is shown");
+    if (options.log) options.log("roster of " + l.context_id + " not read: " + e.what());
+  }
+  return list;
+}
+
 void LtiServer::Impl::on_report(const httplib::Request& req, httplib::Response& res) {
   LaunchRecord l = instructor_launch(req, param(req, "launch"), nullptr);
   const CatalogEntry& e = entry_of(l);
+  ClassList list = class_list(l);
   auto subs = store->submissions(l.issuer, l.client_id, l.resource_link_id, l.assignment);
-  res.set_content(class_report_page(e, subs), "text/html; charset=utf-8");
+  res.set_content(class_report_page(e, subs, list), "text/html; charset=utf-8");
 }
 
 void LtiServer::Impl::on_gradebook(const httplib::Request& req, httplib::Response& res) {
   LaunchRecord l = instructor_launch(req, param(req, "launch"), nullptr);
   const CatalogEntry& e = entry_of(l);
+  ClassList list = class_list(l);
   auto subs = store->submissions(l.issuer, l.client_id, l.resource_link_id, l.assignment);
   res.set_header("Content-Disposition", "attachment; filename=\"gradebook.csv\"");
-  res.set_content(gradebook_of(e, subs), "text/csv; charset=utf-8");
+  res.set_content(gradebook_of(e, subs, list), "text/csv; charset=utf-8");
 }
 
 void LtiServer::Impl::on_regrade(const httplib::Request& req, httplib::Response& res) {

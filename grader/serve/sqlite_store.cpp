@@ -57,6 +57,16 @@ const char* const kMigrations[] = {
          url TEXT NOT NULL, PRIMARY KEY (issuer, client_id, resource_link_id));)",
     // 2: several senders share the outbox; a score is held by one until claimed_until.
     R"(ALTER TABLE outbox ADD COLUMN claimed_until INTEGER NOT NULL DEFAULT 0;)",
+    // 3: the courses' class lists read from the platform (NRPS).
+    R"(CREATE TABLE rosters (
+         issuer TEXT NOT NULL, client_id TEXT NOT NULL, context_id TEXT NOT NULL,
+         memberships_url TEXT NOT NULL DEFAULT '', read_at INTEGER NOT NULL DEFAULT 0,
+         PRIMARY KEY (issuer, client_id, context_id));
+       CREATE TABLE members (
+         issuer TEXT NOT NULL, client_id TEXT NOT NULL, context_id TEXT NOT NULL,
+         user_id TEXT NOT NULL, position INTEGER NOT NULL, name TEXT NOT NULL,
+         email TEXT NOT NULL, roles TEXT NOT NULL, status TEXT NOT NULL,
+         PRIMARY KEY (issuer, client_id, context_id, user_id));)",
 };
 static_assert(std::size(kMigrations) == kSchemaVersion, "one migration per schema version");
 
@@ -479,6 +489,80 @@ class SqliteStore : public Store {
         .bind(resource_link_id)
         .bind(url)
         .run();
+  }
+
+  void set_memberships_url(const std::string& issuer, const std::string& client_id,
+                           const std::string& context_id, const std::string& url) override {
+    std::lock_guard lock(mutex_);
+    Statement(db_,
+              "INSERT INTO rosters (issuer, client_id, context_id, memberships_url) "
+              "VALUES (?, ?, ?, ?) ON CONFLICT (issuer, client_id, context_id) DO UPDATE SET "
+              "memberships_url = excluded.memberships_url",
+              file_)
+        .bind(issuer)
+        .bind(client_id)
+        .bind(context_id)
+        .bind(url)
+        .run();
+  }
+
+  Roster roster(const std::string& issuer, const std::string& client_id,
+                const std::string& context_id) override {
+    std::lock_guard lock(mutex_);
+    Roster r;
+    Statement s(db_,
+                "SELECT memberships_url, read_at FROM rosters WHERE issuer = ? AND "
+                "client_id = ? AND context_id = ?",
+                file_);
+    s.bind(issuer).bind(client_id).bind(context_id);
+    if (!s.step()) return r;
+    r.memberships_url = s.text(0);
+    r.read_at = s.integer(1);
+    Statement m(db_,
+                "SELECT user_id, name, email, roles, status FROM members WHERE issuer = ? AND "
+                "client_id = ? AND context_id = ? ORDER BY position",
+                file_);
+    m.bind(issuer).bind(client_id).bind(context_id);
+    while (m.step()) r.members.push_back({m.text(0), m.text(1), m.text(2), m.text(3), m.text(4)});
+    return r;
+  }
+
+  void set_members(const std::string& issuer, const std::string& client_id,
+                   const std::string& context_id, const std::vector<Member>& members,
+                   std::int64_t read_at) override {
+    std::lock_guard lock(mutex_);
+    Transaction t(*this);
+    Statement(db_,
+              "INSERT INTO rosters (issuer, client_id, context_id, read_at) VALUES (?, ?, ?, ?) "
+              "ON CONFLICT (issuer, client_id, context_id) DO UPDATE SET read_at = "
+              "excluded.read_at",
+              file_)
+        .bind(issuer)
+        .bind(client_id)
+        .bind(context_id)
+        .bind(read_at)
+        .run();
+    Statement(db_, "DELETE FROM members WHERE issuer = ? AND client_id = ? AND context_id = ?",
+              file_)
+        .bind(issuer)
+        .bind(client_id)
+        .bind(context_id)
+        .run();
+    std::int64_t position = 0;
+    for (const auto& m : members) {
+      Statement(db_, "INSERT OR IGNORE INTO members VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)", file_)
+          .bind(issuer)
+          .bind(client_id)
+          .bind(context_id)
+          .bind(m.user_id)
+          .bind(position++)
+          .bind(m.name)
+          .bind(m.email)
+          .bind(m.roles)
+          .bind(m.status)
+          .run();
+    }
+    t.commit();
   }
 
  private:

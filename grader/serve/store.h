@@ -15,7 +15,7 @@ namespace raygrade::serve {
 // The version of the schema this raygrade writes: both backends have one migration per version
 // (a check in each says so), run in order at opening. A database of a higher version, made by
 // a newer raygrade, is refused rather than used.
-inline constexpr std::int64_t kSchemaVersion = 2;
+inline constexpr std::int64_t kSchemaVersion = 3;
 
 // A platform the tool trusts: its issuer and the client_id it gave the tool, its endpoints and
 // the deployments registered.
@@ -99,6 +99,23 @@ struct OutboxRow {
   std::string last_error;
 };
 
+// A member of a course as the platform's roster (Names and Role Provisioning Services 2.0) gives
+// it: the platform's user_id (a launch's sub), and what the platform chose to share.
+struct Member {
+  std::string user_id;
+  std::string name;
+  std::string email;
+  std::string roles;   // JSON array of the role URIs
+  std::string status;  // Active, Inactive or Deleted
+};
+
+// A course's class list: where the platform serves it, and the members last read.
+struct Roster {
+  std::string memberships_url;  // the launches' context_memberships_url ("" none given)
+  std::int64_t read_at = 0;     // seconds since 1970 UTC of the last read (0: never)
+  std::vector<Member> members;  // in the platform's order
+};
+
 class Store {
  public:
   virtual ~Store() = default;
@@ -152,6 +169,18 @@ class Store {
                                                const std::string& resource_link_id) = 0;
   virtual void set_line_item(const std::string& issuer, const std::string& client_id,
                              const std::string& resource_link_id, const std::string& url) = 0;
+
+  // A course (context) of a platform's client: where its roster is served, as the last launch
+  // said; the members last read and when.
+  virtual void set_memberships_url(const std::string& issuer, const std::string& client_id,
+                                   const std::string& context_id, const std::string& url) = 0;
+  virtual Roster roster(const std::string& issuer, const std::string& client_id,
+                        const std::string& context_id) = 0;
+  // Replaces the course's members with those read at `read_at`, in one transaction (a
+  // user_id given twice is kept once, the first).
+  virtual void set_members(const std::string& issuer, const std::string& client_id,
+                           const std::string& context_id, const std::vector<Member>& members,
+                           std::int64_t read_at) = 0;
 };
 
 // The SQLite database DIR/raygrade.sqlite (made when missing): WAL, synchronous=FULL, the schema

@@ -17,7 +17,8 @@ Platform endpoints (as the specifications name them):
   POST /token                              client_credentials with a private_key_jwt assertion
   GET|POST /ags/<context>/lineitems        AGS line items; GET|PUT|DELETE .../lineitems/<id>
   POST /ags/<context>/lineitems/<id>/scores, GET .../results
-  GET  /nrps/<context>                     NRPS membership container
+  GET  /nrps/<context>[?limit=N]           NRPS membership container, paged: at most N members
+                                           (and the page size below) a page, Link rel="next"
   POST /deep-link-return                   the tool's LtiDeepLinkingResponse (form field JWT)
 
 Test controls (JSON answers unless said otherwise):
@@ -26,7 +27,8 @@ Test controls (JSON answers unless said otherwise):
   GET  /test/scores                        every score POST received, in order ("repeat": true
                                            when the same score had come before)
   GET  /test/calls                         how many /token and /scores calls came, by outcome
-  POST /test/fail {"endpoint": "token"|"scores", "times": N}   answer 503 to the next N calls
+  POST /test/fail {"endpoint": "token"|"scores"|"nrps", "times": N}   503 to the next N calls
+  POST /test/nrps {"page_size": N}         at most N members a membership page (null: all)
   POST /test/slow {"seconds": S}           each score POST answered S seconds late (recorded first)
   GET|POST /test/launch?user=U&role=Learner|Instructor&context=C&link=L&message=resource|deeplink
        [&client_id=..][&name=..][&email=..]; a POST JSON body may add "claims" (merged into the
@@ -125,10 +127,12 @@ class Platform:
         self.tokens = {}        # access token -> {"client_id", "scopes", "exp"}
         self.jtis = set()       # client assertion jti seen
         self.dl_nonces = set()  # deep linking response nonces seen
-        self.faults = {"token": 0, "scores": 0}
+        self.faults = {"token": 0, "scores": 0, "nrps": 0}
         self.slow_scores = 0.0  # seconds a score's answer waits
+        self.nrps_page_size = None  # the most members a membership page holds (None: all)
         self.calls = {"token": {"ok": 0, "refused": 0, "failed": 0},
-                      "scores": {"ok": 0, "refused": 0, "failed": 0}}
+                      "scores": {"ok": 0, "refused": 0, "failed": 0},
+                      "nrps": {"ok": 0, "refused": 0, "failed": 0}}
 
     @property
     def other_key(self):
@@ -697,12 +701,7 @@ class Handler(BaseHTTPRequestHandler):
             if parts[0] == "ags" and len(parts) >= 3:
                 return self.ags(method, parts, q, raw)
             if parts[0] == "nrps" and len(parts) == 2 and method == "GET":
-                p.bearer(self.headers.get("Authorization"), [SCOPE_NRPS])
-                ctx = p.data["contexts"].get(parts[1])
-                if not ctx:
-                    raise Refused(404, "no such context")
-                return self.send(200, {"id": self.path, "context": {"id": ctx["id"], "title": ctx["title"]},
-                                       "members": list(ctx["members"].values())}, NRPS_TYPE)
+                return self.nrps(parts[1], q)
             if path == "/deep-link-return" and method == "POST":
                 links = p.deep_link_return(self.form(raw).get("JWT", ""))
                 page = ("<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>Link "
@@ -733,6 +732,46 @@ class Handler(BaseHTTPRequestHandler):
         with p.lock:
             p.calls["token"]["ok"] += 1
         self.send(200, answer)
+
+    def nrps(self, cid, q):
+        """A page of the context's membership container (NRPS 2.0): at most `limit` members
+        (the tool's query parameter) and at most the platform's own page size, from `offset`
+        (a parameter of this platform's next-page URLs), with a Link header rel="next" to the
+        next page while members remain."""
+        p = self.platform
+        if p.fault("nrps"):
+            return self.send(503, {"error": "temporarily unavailable"})
+        try:
+            p.bearer(self.headers.get("Authorization"), [SCOPE_NRPS])
+            if NRPS_TYPE not in self.headers.get("Accept", ""):
+                raise Refused(406, f"Accept must name {NRPS_TYPE}")
+            ctx = p.data["contexts"].get(cid)
+            if not ctx:
+                raise Refused(404, "no such context")
+            try:
+                offset = int(q.get("offset", 0))
+                limit = int(q["limit"]) if "limit" in q else None
+            except ValueError:
+                raise Refused(400, "limit and offset are whole numbers")
+        except Refused:
+            with p.lock:
+                p.calls["nrps"]["refused"] += 1
+            raise
+        members = list(ctx["members"].values())
+        size = min(x for x in (limit, p.nrps_page_size, len(members) + 1) if x)
+        page = members[offset:offset + size]
+        headers = []
+        if offset + size < len(members):
+            query = {"offset": offset + size}
+            if limit:
+                query["limit"] = limit
+            headers.append(("Link", f'<{p.url(f"/nrps/{cid}")}?{urllib.parse.urlencode(query)}>; '
+                                    'rel="next"'))
+        with p.lock:
+            p.calls["nrps"]["ok"] += 1
+        return self.send(200, {"id": p.url(self.path), "context": {"id": ctx["id"],
+                                                                  "title": ctx["title"]},
+                               "members": page}, NRPS_TYPE, headers)
 
     def ags(self, method, parts, q, raw):
         p = self.platform
@@ -806,6 +845,9 @@ class Handler(BaseHTTPRequestHandler):
         if what == "calls":
             with p.lock:
                 return self.send(200, {"calls": p.calls, "faults": p.faults})
+        if what == "nrps" and method == "POST":
+            p.nrps_page_size = body.get("page_size")
+            return self.send(200, {"page_size": p.nrps_page_size})
         if what == "slow" and method == "POST":
             p.slow_scores = float(body["seconds"])
             return self.send(200, {"seconds": p.slow_scores})
