@@ -6,8 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "grading/discover.h"
 #include "test_util.h"
@@ -293,6 +297,116 @@ TEST(ChangeOperators, TheAnglesOfSnellsLaw) {
        "function"},
   };
   for (const Planted& p : planted) EXPECT_EQ(explained_by(p), "") << p.what;
+}
+
+}  // namespace change_operators_test
+}  // namespace raygrade
+
+namespace raygrade {
+namespace change_operators_test {
+
+// The triangle A = (0, 0, 0), B = (4, 0, 0), C = (0, 4, 0) with the normals N_a = (0, 0, 1),
+// N_b = (0.6, 0, 0.8), N_c = (0, 0.6, 0.8) and the texture coordinates (0.5, 0), (1, 0.5),
+// (0, 1), at P = (1.2, 0.8, 0): the area is ‖(0, 0, 16)‖/2 = 8, the areas across from A, B and
+// C are 4, 2.4 and 1.6, so w = (0.5, 0.3, 0.2); n_s = (0.18, 0.12, 0.9), of length 0.925635,
+// n̂ = (0.194461, 0.129641, 0.972306); u = 0.25 + 0.3 + 0 = 0.55, v = 0 + 0.15 + 0.2 = 0.35.
+constexpr const char* kSmooth = R"({"id": "smooth", "kind": "interpolate",
+    "vertices": [[0, 0, 0], [4, 0, 0], [0, 4, 0]],
+    "normals": [[0, 0, 1], [0.6, 0, 0.8], [0, 0.6, 0.8]],
+    "texcoords": [[0.5, 0], [1, 0.5], [0, 1]], "point": [1.2, 0.8, 0]})";
+
+json smooth(std::array<double, 3> w, std::array<double, 3> n, double u, double v) {
+  return {{"barycentric", {w[0], w[1], w[2]}}, {"normal", {n[0], n[1], n[2]}}, {"u", u}, {"v", v}};
+}
+
+TEST(ChangeOperators, TheWeightsOfAFamilyGivenToOtherVertices) {
+  const Planted planted[] = {
+      // The weights of a, b, c given to c, a, b (w_b for a, w_c for b, w_a for c) in every
+      // step that blends by them: w = (0.3, 0.2, 0.5), n_s = 0.3·N_a + 0.2·N_b + 0.5·N_c =
+      // (0.12, 0.3, 0.86), of length 0.918695; u = 0.15 + 0.2 + 0 = 0.35, v = 0 + 0.1 + 0.5 = 0.6.
+      {"rotate", kSmooth, smooth({0.3, 0.2, 0.5}, {0.130620, 0.326551, 0.936111}, 0.35, 0.6), "w",
+       "rotate"},
+      // u and v read from each other's column: u = 0.35, v = 0.55, the normal right.
+      {"family-exchange", kSmooth,
+       smooth({0.5, 0.3, 0.2}, {0.194461, 0.129641, 0.972306}, 0.35, 0.55), "u", "family-exchange"},
+      // v from the other image origin: 1 − 0.35 = 0.65.
+      {"complement", kSmooth, smooth({0.5, 0.3, 0.2}, {0.194461, 0.129641, 0.972306}, 0.55, 0.65),
+       "v", "complement"},
+  };
+  for (const Planted& p : planted) EXPECT_EQ(explained_by(p), "") << p.what;
+  // The areas not divided by the whole area, in all three weights (a change made in every step
+  // of its form, w_x = area_x / area, the vertex letter its index): w = (4, 2.4, 1.6), the
+  // normal right (a multiple of the blend), u = 2 + 2.4 + 0 = 4.4, v = 0 + 1.2 + 1.6 = 2.8.
+  EXPECT_EQ(explained_everywhere(
+                kSmooth, smooth({4, 2.4, 1.6}, {0.194461, 0.129641, 0.972306}, 4.4, 2.8), "w_a"),
+            "");
+}
+
+// The same triangle hit at P = (1.2, 0.8, 0) from (1.2, 0.8, 5) along (0, 0, −1): t = 5, the
+// normal (b − a) × (c − a) = (0, 0, 16) made unit, (0, 0, 1), and w = (0.5, 0.3, 0.2). Möller
+// and Trumbore's (u, v) = (w_b, w_c) given as the weights of a and b, 1 − u − v = w_a as c's:
+// (0.3, 0.2, 0.5), the weights rotated.
+TEST(ChangeOperators, TheWeightsOfATriangleHitRotated) {
+  Planted p{"rotate",
+            R"({"id": "triangle", "ray": {"origin": [1.2, 0.8, 5], "direction": [0, 0, -1]},
+                "object": {"type": "triangle", "vertices": [[0, 0, 0], [4, 0, 0], [0, 4, 0]]}})",
+            {{"hits",
+              {{{"t", 5},
+                {"point", {1.2, 0.8, 0}},
+                {"normal", {0, 0, 1}},
+                {"barycentric", {0.3, 0.2, 0.5}}}}}},
+            "w",
+            "rotate"};
+  EXPECT_EQ(explained_by(p), "");
+}
+
+// A renaming at the level of formulas: the family w_a, w_b, w_c rotated by one in
+// w_a·x + w_b·y + w_c·z is w_b·x + w_c·y + w_a·z; with w = (1, 2, 3) and x, y, z = 10, 100,
+// 1000 that is 20 + 300 + 1000 = 1320 rather than 10 + 200 + 3000 = 3210. The same renaming is
+// made in a step that names one of them (w_a + 7 → w_b + 7 = 9), not in one that names none.
+TEST(ChangeOperators, AFamilyRenamedInEveryStepThatUsesIt) {
+  Env values{{"w_a", Value(1.0)}, {"w_b", Value(2.0)}, {"w_c", Value(3.0)},
+             {"x", Value(10.0)},  {"y", Value(100.0)}, {"z", Value(1000.0)}};
+  std::map<std::string, E, std::less<>> symbols;
+  for (const auto& [name, v] : values) symbols[name] = sym(name);
+  ChangeScope scope{&values, &symbols};
+  E f = sym("w_a") * sym("x") + sym("w_b") * sym("y") + sym("w_c") * sym("z");
+  std::size_t left = count_step_changes(f, scope, ChangeTier::kOperands);
+  std::vector<double> rotated;
+  std::optional<FormulaChange> one;
+  each_step_change(f, scope, ChangeTier::kOperands, left, [&](FormulaChange&& c) {
+    if (c.kind != "rotate") return;
+    rotated.push_back(evaluate(c.eval, values).scalar);
+    if (rotated.back() == 1320) one = c;
+  });
+  // By one either way: w_c·x + w_a·y + w_b·z = 30 + 100 + 2000 = 2130.
+  EXPECT_EQ(rotated, (std::vector<double>{1320, 2130}));
+  ASSERT_TRUE(one.has_value());
+  ASSERT_TRUE(renames(*one));
+  std::optional<E> s = rename_everywhere(sym("w_a") + 7, one->from, one->to);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_EQ(evaluate(*s, values).scalar, 9);
+  EXPECT_FALSE(rename_everywhere(sym("x") + 7, one->from, one->to).has_value());
+}
+
+// 1 − x for a step whose value lies strictly between 0 and 1 (0.35 → 0.65), none for one
+// outside (2.5).
+TEST(ChangeOperators, TheComplementOfANumberBetweenZeroAndOne) {
+  Env values{{"a", Value(0.7)}, {"b", Value(0.5)}, {"c", Value(5.0)}};
+  std::map<std::string, E, std::less<>> symbols{{"a", sym("a")}, {"b", sym("b")}, {"c", sym("c")}};
+  ChangeScope scope{&values, &symbols};
+  auto complements = [&](const E& f) {
+    std::vector<double> out;
+    std::size_t left = count_step_changes(f, scope, ChangeTier::kOperators);
+    each_step_change(f, scope, ChangeTier::kOperators, left, [&](FormulaChange&& c) {
+      if (c.kind == "complement") out.push_back(evaluate(c.eval, values).scalar);
+    });
+    return out;
+  };
+  std::vector<double> in = complements(sym("a") * sym("b"));
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_NEAR(in[0], 0.65, 1e-15);
+  EXPECT_TRUE(complements(sym("b") * sym("c")).empty());
 }
 
 }  // namespace change_operators_test

@@ -181,8 +181,6 @@ const std::vector<Gap>& known_gaps() {
       {"intersect", "Minv", "a transformed object's inverse matrix is given, not computed"},
       {"normal", "Minv", "a transformed object's inverse matrix is given, not computed"},
       {"intersect", "/normal", "a hit's normal is worked only in the step answers' shape"},
-      {"intersect", "/barycentric", "a hit's weights are worked one by one, not as a triple"},
-      {"first-hit", "/barycentric", "a hit's weights are worked one by one, not as a triple"},
       {"shade", "P_o", "a pattern's point in object space is given"},
       {"shade", "P_pat", "a pattern's point in pattern space is given"},
       {"shade", "step shininess", "a material's default exponent (10) is given"},

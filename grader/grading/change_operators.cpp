@@ -10,11 +10,13 @@ namespace raygrade {
 
 const std::vector<std::string_view>& change_kinds() {
   // The changes an earlier search made (and its tests name) first, in its order; then the
-  // insertions, the replacements of a quantity, and the exchanges.
+  // insertions (a step's complement 1 − x among them), the replacements of a quantity, and the
+  // exchanges (of two quantities, then of whole families).
   static const std::vector<std::string_view> k = {
-      "sign",       "drop-term",   "swap",     "square",   "sqrt",     "abs",      "normalise",
-      "other-root", "degrees",     "function", "linear",   "clamp",    "operator", "constant",
-      "factor",     "vector-swap", "operand",  "exchange", "component"};
+      "sign",      "drop-term",  "swap",    "square",         "sqrt",        "abs",
+      "normalise", "other-root", "degrees", "function",       "linear",      "clamp",
+      "operator",  "constant",   "factor",  "complement",     "vector-swap", "operand",
+      "exchange",  "component",  "rotate",  "family-exchange"};
   return k;
 }
 
@@ -331,12 +333,23 @@ void exchange_pairs(const E& e, const ChangeScope& s, Sink sink) {
   }
 }
 
-// The family of a quantity: its name with a trailing index made alike (S_1, S_2 → S_#).
-std::string family(std::string_view name) {
+// Where a quantity's index begins: at its trailing digits (S_1, v12), or at a triangle's vertex
+// letter a, b or c after "_" (w_a, N_b) when `letters`; at the name's end when it has none.
+std::size_t index_at(std::string_view name, bool letters = true) {
   std::size_t end = name.size();
   while (end > 0 && name[end - 1] >= '0' && name[end - 1] <= '9') --end;
-  if (end == name.size()) return std::string(name);
-  return std::string(name.substr(0, end)) + "#";
+  bool letter = end == name.size() && end >= 3 && name[end - 2] == '_' && name[end - 1] >= 'a' &&
+                name[end - 1] <= 'c';
+  return letters && letter ? end - 1 : end;
+}
+
+// The family of a quantity: its name with a trailing index made alike (S_1, S_2 → S_#; w_a,
+// w_b → w_@ with `letters`).
+std::string family(std::string_view name, bool letters = true) {
+  std::size_t at = index_at(name, letters);
+  if (at == name.size()) return std::string(name);
+  bool digits = name[at] >= '0' && name[at] <= '9';
+  return std::string(name.substr(0, at)) + (digits ? "#" : "@");
 }
 
 std::size_t mix(std::size_t h, std::size_t v) {
@@ -371,12 +384,8 @@ bool same_form(const E& x, const E& y, std::map<std::string, E, std::less<>>& na
   return true;
 }
 
-// The index a quantity's name ends in ("1" of S_1; "" for none).
-std::string_view index_of(std::string_view name) {
-  std::size_t end = name.size();
-  while (end > 0 && name[end - 1] >= '0' && name[end - 1] <= '9') --end;
-  return name.substr(end);
-}
+// The index a quantity's name ends in ("1" of S_1, "a" of w_a; "" for none).
+std::string_view index_of(std::string_view name) { return name.substr(index_at(name)); }
 
 // `to` with the quantities named in `names` replaced, and every other quantity whose index one
 // of them had re-indexed as it was (c_1 → r_1 made for c_2 is r_2).
@@ -435,17 +444,112 @@ std::size_t walk_forms(const E& e, std::vector<std::size_t>* all, const E* from,
   return h;
 }
 
+// A list of quantities, one for each of another list (what a renaming renames, and into what):
+// shown as a tuple, never evaluated.
+E quantity_list(const std::vector<std::string>& names, const ChangeScope& s) {
+  auto n = std::make_shared<ExprNode>();
+  n->op = Op::kTuple;
+  for (const auto& name : names) n->args.push_back(s.symbols->at(name));
+  return E(std::shared_ptr<const ExprNode>(std::move(n)));
+}
+
+// The families in scope of three quantities or more of one type (S_1, S_2, S_3; w_a, w_b, w_c),
+// each as its members' names in the order of their indices.
+std::vector<std::vector<std::string>> families(const ChangeScope& s) {
+  std::map<std::pair<std::string, Kind>, std::vector<std::string>> by;
+  for (const auto& [name, v] : *s.values)
+    if (family(name) != name && !v.is_bool()) by[{family(name), v.kind}].push_back(name);
+  std::vector<std::vector<std::string>> out;
+  for (auto& [f, names] : by) {
+    if (names.size() < 3) continue;
+    std::sort(names.begin(), names.end(), [](const std::string& a, const std::string& b) {
+      std::string_view x = index_of(a), y = index_of(b);
+      return x.size() != y.size() ? x.size() < y.size() : x < y;
+    });
+    out.push_back(std::move(names));
+  }
+  return out;
+}
+
+// A step's renamings, made throughout it: each family it names whole rotated by one either way
+// (the weights of a, b, c given to b, c, a), and exchanged member by member with another family
+// in scope of the same indices and type (u_a, u_b, u_c for v_a, v_b, v_c). `sink(kind, from, to)`.
+template <typename Sink>
+void renamings(const E& e, const ChangeScope& s, Sink sink) {
+  std::map<std::string, int, std::less<>> uses;
+  symbol_uses(e, uses);
+  auto fams = families(s);
+  auto named = [&](const std::vector<std::string>& m) {
+    return std::all_of(m.begin(), m.end(), [&](const std::string& x) { return uses.count(x); });
+  };
+  auto indices = [](const std::vector<std::string>& m) {
+    std::vector<std::string_view> out;
+    for (const auto& x : m) out.push_back(index_of(x));
+    return out;
+  };
+  auto kind = [&](const std::vector<std::string>& m) { return s.values->at(m[0]).kind; };
+  for (std::size_t f = 0; f < fams.size(); ++f) {
+    const auto& m = fams[f];
+    if (!named(m)) continue;
+    for (std::size_t shift : {std::size_t{1}, m.size() - 1}) {
+      std::vector<std::string> to;
+      for (std::size_t i = 0; i < m.size(); ++i) to.push_back(m[(i + shift) % m.size()]);
+      sink("rotate", m, to);
+    }
+    for (std::size_t g = 0; g < fams.size(); ++g) {
+      const auto& o = fams[g];
+      if (g == f || kind(o) != kind(m) || indices(o) != indices(m) || (g < f && named(o))) continue;
+      std::vector<std::string> from = m, to = o;
+      from.insert(from.end(), o.begin(), o.end());
+      to.insert(to.end(), m.begin(), m.end());
+      sink("family-exchange", from, to);
+    }
+  }
+}
+
+// Whether a step's value is a number strictly between 0 and 1 (a texture coordinate, a weight, a
+// reflectance, a cosine), whose complement 1 − x a student may take for it.
+bool complementable(const E& e, const ChangeScope& s) {
+  try {
+    Value v = evaluate(e, *s.values);
+    return v.is_scalar() && v.scalar > 0 && v.scalar < 1;
+  } catch (const EvaluationFault&) {
+    return false;
+  }
+}
+
 }  // namespace change_operators_internal
+
+bool renaming_kind(std::string_view kind) { return kind == "rotate" || kind == "family-exchange"; }
+bool renames(const FormulaChange& c) { return renaming_kind(c.kind); }
+
+std::optional<E> rename_everywhere(const E& formula, const E& from, const E& to) {
+  using namespace change_operators_internal;  // NOLINT: this file's own functions
+  if (formula.empty()) return std::nullopt;
+  std::map<std::string, int, std::less<>> uses;
+  symbol_uses(formula, uses);
+  std::map<std::string, E, std::less<>> names;
+  bool any = false;
+  for (std::size_t i = 0; i < from.node().args.size(); ++i) {
+    const std::string& name = from.node().args[i].node().name;
+    names.emplace(name, to.node().args[i]);
+    any = any || uses.count(name) > 0;
+  }
+  if (!any) return std::nullopt;
+  return substitute(formula, names);
+}
 
 bool made_everywhere(const FormulaChange& c) {
   using namespace change_operators_internal;  // NOLINT: this file's own functions
+  if (renames(c)) return false;               // made by rename_everywhere
   if (c.from.empty() || c.to.empty() || is(c.from, Op::kNumber)) return false;
   if (!is(c.from, Op::kSymbol)) return true;
   // A quantity of an indexed family (S_1, c_1), for its like in every step: not for another of
   // its own family (that is one quantity for another, not a slip made each time).
+  // (A vertex-lettered quantity, w_a, is made everywhere only as part of a node's form.)
   const std::string& name = c.from.node().name;
-  if (family(name) == name) return false;
-  return !is(c.to, Op::kSymbol) || family(c.to.node().name) != family(name);
+  if (family(name, false) == name) return false;
+  return !is(c.to, Op::kSymbol) || family(c.to.node().name, false) != family(name, false);
 }
 
 std::size_t form_hash(const E& e) {
@@ -486,6 +590,11 @@ bool each_step_change(const E& e, const ChangeScope& scope, ChangeTier tier, std
     if (left == 0) return false;
     --left;
     sink({-e, -e, "sign", {}, {}});
+    if (complementable(e, scope)) {
+      if (left == 0) return false;
+      --left;
+      sink({1 - e, 1 - e, "complement", {}, {}});
+    }
   }
   if (tier == ChangeTier::kOperators) return true;
   bool more = true;
@@ -499,14 +608,25 @@ bool each_step_change(const E& e, const ChangeScope& scope, ChangeTier tier, std
     E changed = substitute(e, to);
     sink({changed, changed, "exchange", {}, {}});
   });
+  renamings(e, scope, [&](std::string_view kind, const auto& from, const auto& to) {
+    if (!more || left == 0) {
+      more = false;
+      return;
+    }
+    --left;
+    E f = quantity_list(from, scope), t = quantity_list(to, scope);
+    E changed = *rename_everywhere(e, f, t);
+    sink({changed, changed, kind, f, t});
+  });
   return more;
 }
 
 std::size_t count_step_changes(const E& e, const ChangeScope& scope, ChangeTier tier) {
-  std::size_t k = tier != ChangeTier::kOperands ? 1 : 0;
+  using namespace change_operators_internal;  // NOLINT: this file's own functions
+  std::size_t k = tier != ChangeTier::kOperands ? (complementable(e, scope) ? 2 : 1) : 0;
   if (tier == ChangeTier::kOperators) return k;
-  change_operators_internal::exchange_pairs(e, scope,
-                                            [&](const std::string&, const std::string&) { ++k; });
+  exchange_pairs(e, scope, [&](const std::string&, const std::string&) { ++k; });
+  renamings(e, scope, [&](std::string_view, const auto&, const auto&) { ++k; });
   return k;
 }
 

@@ -3,7 +3,8 @@
 // change is a slip a student makes in one place: an operator for another, a constant off by a
 // factor, one quantity for another, a factor or a term left out, a negation, square, root,
 // absolute value or normalisation put in or left out, a function for its sibling, a clamp
-// forgotten, two quantities exchanged throughout the step.
+// forgotten, two quantities exchanged throughout the step, a family's quantities given to each
+// other's vertices, a number in [0, 1] for its complement.
 #pragma once
 
 #include <cstddef>
@@ -55,9 +56,12 @@ bool each_change(const E& e, const ChangeScope& scope, ChangeTier tier, std::siz
 // How many changes each_change makes, without making them.
 std::size_t count_changes(const E& e, const ChangeScope& scope, ChangeTier tier);
 
-// The changes of the whole step's formula: negated (kOperators); each pair of quantities of the
-// same type in it exchanged, and each quantity used more than once replaced throughout by
-// another in scope (kOperands). Made and counted as each_change's.
+// The changes of the whole step's formula: negated, and 1 − x for a value strictly between 0 and
+// 1 (kOperators); each pair of quantities of the same type in it exchanged, each quantity used
+// more than once replaced throughout by another in scope, and the renamings of families of three
+// or more (w_a, w_b, w_c; S_1, S_2, S_3) that it names whole: rotated by one either way, or
+// exchanged member by member with another family of the same indices (kOperands). Made and
+// counted as each_change's.
 bool each_step_change(const E& e, const ChangeScope& scope, ChangeTier tier, std::size_t& left,
                       const std::function<void(FormulaChange&&)>& sink);
 std::size_t count_step_changes(const E& e, const ChangeScope& scope, ChangeTier tier);
@@ -76,5 +80,13 @@ std::optional<E> change_everywhere(const E& formula, const E& from, const E& to,
 bool made_everywhere(const FormulaChange& c);
 // Every node's form_hash in `e` (not in how symbols are shown).
 void form_hashes(const E& e, std::vector<std::size_t>& out);
+
+// A slip in which quantity belongs to which vertex (or light) is made wherever they are used:
+// whether `c` renames quantities (a family rotated, two exchanged), its `from` and `to` the
+// lists of what is renamed and into what. `formula` with them renamed; nothing when it names
+// none of them.
+bool renames(const FormulaChange& c);
+bool renaming_kind(std::string_view kind);  // StepChange::kind of a renaming
+std::optional<E> rename_everywhere(const E& formula, const E& from, const E& to);
 
 }  // namespace raygrade

@@ -22,8 +22,10 @@
 namespace raygrade {
 
 std::string StepChange::text() const {
-  return fmt::format("{} = {} → {} = {}{}", step, before, step, after,
-                     everywhere ? ", and alike in every step of that form" : "");
+  std::string_view tail = !everywhere           ? ""
+                          : renaming_kind(kind) ? ", and so in every step that uses them"
+                                                : ", and alike in every step of that form";
+  return fmt::format("{} = {} → {} = {}{}", step, before, step, after, tail);
 }
 
 const char* to_string(Discovery::Verdict v) {
@@ -198,6 +200,16 @@ std::size_t formula_size(const E& e) {
   if (e.node().op != Op::kSymbol)
     for (const E& a : e.node().args) k += formula_size(a);
   return k;
+}
+
+// The quantities a formula names (not in how a symbol is shown).
+void names_in(const E& e, std::set<std::string>& out) {
+  if (e.empty()) return;
+  if (e.node().op == Op::kSymbol) {
+    out.insert(e.node().name);
+    return;
+  }
+  for (const E& a : e.node().args) names_in(a, out);
 }
 
 // The largest level L such that the counts, each cut to L, sum to at most `budget` (every
@@ -376,9 +388,13 @@ struct ChangeSearch::Impl {
     StepChange change;
     E from, to;
     std::size_t hash = 0;
+    bool rename = false;  // quantities renamed in every step naming them (rename_everywhere)
   };
   std::vector<Everywhere> everywhere;
   std::set<std::pair<std::size_t, std::size_t>> everywhere_seen;
+  std::set<std::string> renamed_seen;
+  // How many of the method's steps name each quantity.
+  std::map<std::string, int, std::less<>> naming;
   // The form hashes of the method's steps: the first step (name and formula) with each, and
   // whether the form is met more than once (in that step or another).
   std::map<std::size_t, std::pair<std::string, bool>> forms;
@@ -398,6 +414,26 @@ void ChangeSearch::Impl::search_step(const Task& task, const std::string& method
   std::map<std::array<double, 3>, std::ptrdiff_t> worked;  // a changed value → its prediction
   // A change of a node whose form is met more than once is made everywhere later.
   auto remember_everywhere = [&](const FormulaChange& alt, const StepChange& change) {
+    if (renames(alt)) {
+      // Once per renaming, when another step names one of its quantities.
+      std::set<std::string> own;
+      names_in(s->formula, own);
+      std::string key;
+      bool elsewhere = false;
+      for (const E* list : {&alt.from, &alt.to}) {
+        for (const E& q : list->node().args) {
+          key += q.node().name + ",";
+          auto it = naming.find(q.node().name);
+          elsewhere =
+              elsewhere || (it != naming.end() && it->second > (own.count(it->first) ? 1 : 0));
+        }
+      }
+      if (!elsewhere || !renamed_seen.insert(key).second) return;
+      StepChange c = change;
+      c.everywhere = true;
+      everywhere.push_back({std::move(c), alt.from, alt.to, 0, true});
+      return;
+    }
     if (!made_everywhere(alt)) return;
     std::size_t h = form_hash(alt.from);
     auto it = forms.find(h);
@@ -539,7 +575,12 @@ void ChangeSearch::Impl::search_method(const Task& task, const std::string& meth
   forms.clear();
   everywhere.clear();
   everywhere_seen.clear();
+  renamed_seen.clear();
+  naming.clear();
   walk([&](const Step& s, const ChangeScope&) {
+    std::set<std::string> names;
+    names_in(s.formula, names);
+    for (const auto& n : names) ++naming[n];
     std::vector<std::size_t> hashes;
     form_hashes(s.formula, hashes);
     std::string self = s.name + "\n" + to_text(s.formula);
@@ -558,7 +599,8 @@ void ChangeSearch::Impl::search_method(const Task& task, const std::string& meth
     if (work - start + cost > kSearchWork / methods) break;
     Overrides o;
     o.formula = [&](std::string_view, const E& f) {
-      return change_everywhere(f, e.from, e.to, e.hash);
+      return e.rename ? rename_everywhere(f, e.from, e.to)
+                      : change_everywhere(f, e.from, e.to, e.hash);
     };
     work_change(task, method, e.change, o, mapped, cost);
   }

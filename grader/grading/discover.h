@@ -37,11 +37,12 @@ struct StepChange {
   std::string method;  // the derivation's method ("algebraic")
   std::string step;    // the step changed ("b")
   std::string kind;    // sign, drop-term, swap, square, sqrt, normalise, other-root, degrees,
-                       // vector-swap, component
+                       // vector-swap, component, …: change_kinds()
   std::string before;  // the step's formula as the worked solution writes it ("2·(D · f)")
   std::string after;   // the changed formula ("2·(D · C)")
   // The change made in every step where the changed part's form recurs (the same slip in both
-  // roots, for every light): change_operators.h, change_everywhere.
+  // roots, for every light): change_operators.h, change_everywhere; a renaming made in every
+  // step that uses the renamed quantities (rename_everywhere).
   bool everywhere = false;
   // "b = 2·(D · f) → b = 2·(D · C)", and "…, and alike in every step of its form"
   std::string text() const;

@@ -141,17 +141,24 @@ std::vector<SolutionPart> InterpolateTask::derive(std::string_view /*method*/,
     std::string name = fmt::format("N_{}", kLetter[i]);
     N[i] = d.given(name, name, n_[i], fmt::format("the normal at {}", kVertex[i]));
   }
-  d.step("e_1", "e_1", V[1] - V[0], "the edge from A to B");
-  d.step("e_2", "e_2", V[2] - V[0], "the edge from A to C");
-  d.step("AP", "AP", P - V[0], "from A to the point");
-  d.step("n", "n", cross(d.sym("e_1"), d.sym("e_2")), "the face normal, twice the area long");
-  d.step("nn", "n·n", dot(d.sym("n"), d.sym("n")), "its length squared: (twice the area)²");
-  d.step("w_b", "w_b", dot(cross(d.sym("AP"), d.sym("e_2")), d.sym("n")) / d.sym("nn"),
-         "the share of the area across from B");
-  d.step("w_c", "w_c", dot(cross(d.sym("e_1"), d.sym("AP")), d.sym("n")) / d.sym("nn"),
-         "the share of the area across from C");
-  d.step("w_a", "w_a", 1 - d.sym("w_b") - d.sym("w_c"), "the weights sum to 1");
-  d.step("w", "w", tuple(d.sym("w_a"), d.sym("w_b"), d.sym("w_c")), "the weights (w_a, w_b, w_c)");
+  d.step("n", "n", cross(V[1] - V[0], V[2] - V[0]), "the face normal (B − A) × (C − A)");
+  d.step("area", "area", norm(d.sym("n")) / 2, "the triangle's area: half the normal's length");
+  // The sub-triangle across from each vertex: P with the other two, in the same turn. Its
+  // area is signed (+ inside the triangle), half its cross product along the unit face normal.
+  for (int i = 0; i < 3; ++i) {
+    const E &b = V[(i + 1) % 3], &c = V[(i + 2) % 3];
+    d.step(fmt::format("area_{}", kLetter[i]), fmt::format("area_{}", kLetter[i]),
+           dot(cross(b - P, c - P), d.sym("n")) / (2 * norm(d.sym("n"))),
+           fmt::format("the area of the triangle P{}{}, across from {}", kVertex[(i + 1) % 3],
+                       kVertex[(i + 2) % 3], kVertex[i]));
+  }
+  for (int i = 0; i < 3; ++i) {
+    d.step(fmt::format("w_{}", kLetter[i]), fmt::format("w_{}", kLetter[i]),
+           d.sym(fmt::format("area_{}", kLetter[i])) / d.sym("area"),
+           fmt::format("the share of the area across from {}", kVertex[i]));
+  }
+  d.step("w", "w", tuple(d.sym("w_a"), d.sym("w_b"), d.sym("w_c")),
+         "the weights (w_a, w_b, w_c), summing to 1");
   std::array<E, 3> Nh = N;
   for (int i = 0; i < 3; ++i) {
     if (unit(n_[i])) continue;
@@ -166,16 +173,19 @@ std::vector<SolutionPart> InterpolateTask::derive(std::string_view /*method*/,
   Sentence end("The smooth normal at P is n̂ = ");
   end.value(nh);
   if (uv_) {
-    std::array<E, 2> uv;
+    // Every coordinate given first: u and v are worked alike, from the same table.
+    std::array<std::array<E, 3>, 2> at;
     for (int k = 0; k < 2; ++k) {
       const char* c = k == 0 ? "u" : "v";
-      std::array<E, 3> at;
       for (int i = 0; i < 3; ++i) {
         std::string name = fmt::format("{}_{}", c, kLetter[i]);
-        at[i] = d.given(name, name, (*uv_)[i][k],
-                        fmt::format("the texture coordinate {} at {}", c, kVertex[i]));
+        at[k][i] = d.given(name, name, (*uv_)[i][k],
+                           fmt::format("the texture coordinate {} at {}", c, kVertex[i]));
       }
-      d.step(c, c, d.sym("w_a") * at[0] + d.sym("w_b") * at[1] + d.sym("w_c") * at[2],
+    }
+    for (int k = 0; k < 2; ++k) {
+      const char* c = k == 0 ? "u" : "v";
+      d.step(c, c, d.sym("w_a") * at[k][0] + d.sym("w_b") * at[k][1] + d.sym("w_c") * at[k][2],
              fmt::format("{} blended by the same weights", c));
     }
     end.text(", and its texture coordinate is (u, v) = (")

@@ -106,6 +106,8 @@ Derivation Triangle::derive(const Ray& ray, std::string_view /*method*/,
     w_a = d.step("w_a", "w_a", d.sym("e_bc") / dot(n, n), "barycentric weight of a");
     w_b = d.step("w_b", "w_b", d.sym("e_ca") / dot(n, n), "barycentric weight of b");
     w_c = d.step("w_c", "w_c", d.sym("e_ab") / dot(n, n), "barycentric weight of c");
+    d.step("w", "w", tuple(d.sym("w_a"), d.sym("w_b"), d.sym("w_c")),
+           "the weights (w_a, w_b, w_c) of a, b and c");
   }
   std::vector<std::string> outside;
   if (e0 < 0) outside.emplace_back("e_ab");
