@@ -331,8 +331,11 @@ void exchange_pairs(const E& e, const ChangeScope& s, Sink sink) {
   }
 }
 
-// The family of a quantity: its name with a trailing index made alike (S_1, S_2 → S_#).
+// The family of a quantity: its name with a trailing index made alike (S_1, S_2 → S_#); the
+// two polarizations' amplitudes and reflectances are indexed by s and p (r_s, r_p → r_#).
 std::string family(std::string_view name) {
+  if (name == "r_s" || name == "r_p" || name == "R_s" || name == "R_p")
+    return std::string(name.substr(0, 2)) + "#";
   std::size_t end = name.size();
   while (end > 0 && name[end - 1] >= '0' && name[end - 1] <= '9') --end;
   if (end == name.size()) return std::string(name);
