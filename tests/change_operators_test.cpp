@@ -297,3 +297,36 @@ TEST(ChangeOperators, TheAnglesOfSnellsLaw) {
 
 }  // namespace change_operators_test
 }  // namespace raygrade
+
+namespace raygrade {
+namespace change_operators_test {
+
+// Both polarizations' squares left out: n1 = 1, n2 = 2, θi = 60°, so cos θi = 0.5, sin θt =
+// sin 60°/2 = √3/4, cos θt = √(1 − 3/16) = √13/4 = 0.901388. The amplitudes r_s = (0.5 −
+// 2·0.901388)/(0.5 + 2·0.901388) = −0.565741 and r_p = (0.901388 − 1)/(0.901388 + 1) =
+// −0.051863 answered as the reflectances, averaged: F = −0.308802. The square of one alone
+// (R_s = r_s, R_p = r_p² = 0.002690) gives another F: only the change made in both fits.
+TEST(ChangeOperators, TheSquareLeftOutOfBothPolarizations) {
+  const char* fresnel = R"({"id": "fresnel", "kind": "fresnel", "model": "exact", "n1": 1,
+      "n2": 2, "angle": 60})";
+  json answer = {{"reflectance", -0.308802}, {"r_s", -0.565741}, {"r_p", -0.051863}};
+  std::string rs = explained_everywhere(fresnel, answer, "R_s");
+  std::string rp = explained_everywhere(fresnel, answer, "R_p");
+  EXPECT_TRUE(rs.empty() || rp.empty()) << rs;
+}
+
+// Schlick's cosine of θt taken in degrees as radians: n1 = 1.5 into n2 = 1 at θi = 30°, sin θt
+// = 1.5·0.5 = 0.75, θt = asin 0.75 = 48.590378°, R0 = (0.5/2.5)² = 0.04; cos(48.590378) in
+// radians is −0.104119, F = 0.04 + 0.96·1.104119⁵ = 1.615256 (the right F is 0.044270).
+TEST(ChangeOperators, SchlicksAngleInDegreesReadAsRadians) {
+  Planted p{"degrees",
+            R"({"id": "schlick", "kind": "fresnel", "model": "schlick", "n1": 1.5, "n2": 1,
+                "angle": 30})",
+            {{"reflectance", 1.615256}, {"transmittance", -0.615256}, {"r0", 0.04}},
+            "F",
+            "degrees"};
+  EXPECT_EQ(explained_by(p), "");
+}
+
+}  // namespace change_operators_test
+}  // namespace raygrade

@@ -238,16 +238,19 @@ std::optional<E> lit_point_ambient_only(std::string_view /*step*/, const E& f) {
   return shadow_factors_as(f, 0);
 }
 
-// Blinn-Phong's N·H for Phong's R·V: each light's step RV_i = R_i·V worked as N·H_i with the
-// halfway vector H_i = (L_i + V)/‖L_i + V‖ (a shade problem's normal N; where the derivation
-// has no N, as in a ray tree, the formula cannot be worked and the mistake does not apply).
+// Blinn-Phong's N·H for Phong's R·V: each light's step RV_i = R_i·V worked as N·H_i, with the
+// halfway vector H_i = (L_i + V)/‖L_i + V‖ between the light and the eye E as a shade problem
+// gives them (V = (E − P)/‖E − P‖). A ray tree has no eye E (its viewer is the incoming ray,
+// and its grader reads its nodes its own way): there the formula cannot be worked and the
+// mistake does not apply.
 std::optional<E> halfway_vector(std::string_view step, const E& f) {
   const ExprNode& n = f.node();
   if (!step.starts_with("RV_") || n.op != Op::kDot || !is_symbol(n.args[1], "V")) {
     return std::nullopt;
   }
   std::string i(step.substr(3));
-  E L = sym("L_" + i, "L_" + i), V = n.args[1];
+  E L = sym("L_" + i, "L_" + i), P = sym("P", "P"), Eye = sym("E", "E");
+  E V = (Eye - P) / norm(Eye - P);
   return dot(sym("N", "N"), (L + V) / norm(L + V));
 }
 
