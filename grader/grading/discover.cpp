@@ -339,10 +339,10 @@ struct ChangeSearch::Impl {
     std::string step;
     int occurrence = 0;
   } follow;
-  // Whether the object that `numbers` names is `named` (none named: yes), by the grader's rule.
   // The verdicts the student gave that a step computes (`given` 0 or 1); `wrong` set when one
   // is not the reference's.
   std::vector<std::size_t> verdicts_given(const std::vector<double>& given, bool& wrong) const;
+  // Whether the object that `numbers` names is `named` (none named: yes), by the grader's rule.
   bool names_fit(const std::optional<std::string>& named,
                  const std::vector<double>& numbers) const {
     if (!named) return true;
