@@ -409,5 +409,75 @@ TEST(ChangeOperators, TheComplementOfANumberBetweenZeroAndOne) {
   EXPECT_TRUE(complements(sym("b") * sym("c")).empty());
 }
 
+
+// Both polarizations' squares left out: n1 = 1, n2 = 2, θi = 60°, so cos θi = 0.5, sin θt =
+// sin 60°/2 = √3/4, cos θt = √(1 − 3/16) = √13/4 = 0.901388. The amplitudes r_s = (0.5 −
+// 2·0.901388)/(0.5 + 2·0.901388) = −0.565741 and r_p = (0.901388 − 1)/(0.901388 + 1) =
+// −0.051863 answered as the reflectances, averaged: F = −0.308802. The square of one alone
+// (R_s = r_s, R_p = r_p² = 0.002690) gives another F: only the change made in both fits.
+TEST(ChangeOperators, TheSquareLeftOutOfBothPolarizations) {
+  const char* fresnel = R"({"id": "fresnel", "kind": "fresnel", "model": "exact", "n1": 1,
+      "n2": 2, "angle": 60})";
+  json answer = {{"reflectance", -0.308802}, {"r_s", -0.565741}, {"r_p", -0.051863}};
+  std::string rs = explained_everywhere(fresnel, answer, "R_s");
+  std::string rp = explained_everywhere(fresnel, answer, "R_p");
+  EXPECT_TRUE(rs.empty() || rp.empty()) << rs;
+}
+
+// Schlick's cosine of θt taken in degrees as radians: n1 = 1.5 into n2 = 1 at θi = 30°, sin θt
+// = 1.5·0.5 = 0.75, θt = asin 0.75 = 48.590378°, R0 = (0.5/2.5)² = 0.04; cos(48.590378) in
+// radians is −0.104119, F = 0.04 + 0.96·1.104119⁵ = 1.615256 (the right F is 0.044270).
+TEST(ChangeOperators, SchlicksAngleInDegreesReadAsRadians) {
+  Planted p{"degrees",
+            R"({"id": "schlick", "kind": "fresnel", "model": "schlick", "n1": 1.5, "n2": 1,
+                "angle": 30})",
+            {{"reflectance", 1.615256}, {"transmittance", -0.615256}, {"r0", 0.04}},
+            "F",
+            "degrees"};
+  EXPECT_EQ(explained_by(p), "");
+}
+
+}  // namespace change_operators_test
+}  // namespace raygrade
+
+namespace raygrade {
+namespace change_operators_test {
+
+// The clamp max(0, N·L) left out for every light, in its terms and in its verdict: over the
+// floor N = (0, 1, 0) with the eye at (−3, 4, 0) (V = (−0.6, 0.8, 0)), light A at (3, 4, 0) has
+// L = (0.6, 0.8, 0), N·L = 0.8, R = (−0.6, 0.8, 0) = V: diffuse 0.5·0.8 = 0.4, specular 0.3·1¹²
+// = 0.3. Light C at (4, −3, 0) is below the horizon: L = (0.8, −0.6, 0), N·L = −0.6, R =
+// (−0.8, −0.6, 0), R·V = 0. Without the clamp C reaches P and adds 0.5·(−0.6) = −0.3: diffuse
+// 0.1, I = 0.2 + 0.1 + 0.3 = 0.6. The verdict "reaches" moves with the terms.
+TEST(ChangeOperators, TheClampLeftOutOfEveryLightsTermsAndVerdict) {
+  const char* shade = R"({"id": "s", "kind": "shade", "point": [0, 0, 0], "normal": [0, 1, 0],
+      "eye": [-3, 4, 0], "ambient_light": 2,
+      "material": {"ambient": 0.1, "diffuse": 0.5, "specular": 0.3, "shininess": 12},
+      "lights": [{"name": "A", "position": [3, 4, 0]}, {"name": "C", "position": [4, -3, 0]}]})";
+  json light_a = {{"light", "A"}, {"reaches", true}, {"n_dot_l", 0.8},
+                  {"r_dot_v", 1}, {"diffuse", 0.4},  {"specular", 0.3}};
+  json light_c = {{"light", "C"}, {"reaches", true}, {"n_dot_l", -0.6},
+                  {"r_dot_v", 0}, {"diffuse", -0.3}, {"specular", 0}};
+  json answer = {{"ambient", 0.2},
+                 {"diffuse", 0.1},
+                 {"specular", 0.3},
+                 {"intensity", 0.6},
+                 {"lights", {light_a, light_c}}};
+  Problem p = testing::problem(shade);
+  ChangeSearch search(p);
+  Discovery d = search.explain(answer);
+  std::string seen = to_string(d.verdict);
+  bool clamp = false;
+  for (const auto& c : d.changes) {
+    clamp = clamp || (c.kind == "clamp" && c.everywhere);
+    seen += " | " + c.kind + ": " + c.text();
+  }
+  EXPECT_TRUE(clamp) << seen;
+  // The same numbers with C said not to reach P are the clamp left out of C's diffuse term
+  // alone, not of its verdict.
+  answer["lights"][1]["reaches"] = false;
+  for (const auto& c : search.explain(answer).changes) EXPECT_FALSE(c.everywhere) << c.text();
+}
+
 }  // namespace change_operators_test
 }  // namespace raygrade

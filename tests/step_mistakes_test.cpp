@@ -130,6 +130,15 @@ constexpr const char* kBall = R"({"id": "b", "method": "algebraic",
   "ray": {"origin": [0, 0, 0], "direction": [1, 0, 0]},
   "object": {"type": "sphere", "center": [4, 0, 0], "radius": 2}})";
 
+// Phong against Blinn-Phong by hand: the light at (0, 5, 0) over the floor N = (0, 1, 0), the
+// eye at (−3, 4, 0): L = (0, 1, 0), V = (−0.6, 0.8, 0), R = L, R·V = 0.8. I = 0.1·2 + 0.5·1 +
+// 0.3·0.8¹² = 0.7206158430208. With H = (L + V)/‖L + V‖ = (−0.6, 1.8, 0)/√3.6, (N·H)² = 3.24/3.6
+// = 0.9, so (N·H)¹² = 0.9⁶ = 0.531441 and I = 0.2 + 0.5 + 0.3·0.531441 = 0.8594323.
+constexpr const char* kOverheadShade = R"({"id": "s", "kind": "shade",
+    "point": [0, 0, 0], "normal": [0, 1, 0], "eye": [-3, 4, 0], "ambient_light": 2,
+    "material": {"ambient": 0.1, "diffuse": 0.5, "specular": 0.3, "shininess": 12},
+    "lights": [{"name": "A", "position": [0, 5, 0]}]})";
+
 // The plants, one per pair.
 const std::map<Pair, Plant>& plants() {
   static const std::map<Pair, Plant> p = {
@@ -181,6 +190,7 @@ const std::map<Pair, Plant>& plants() {
         R"j({"object": "A", "hits": [{"t": "4 - sqrt(2)"}]})j"}},
       {{"diffuse-in-shadow", "shade"}, {testing::kTwoLightShade, kShadeCountingB}},
       {{"lit-point-ambient-only", "shade"}, {testing::kTwoLightShade, kShadeAmbientOnly}},
+      {{"halfway-vector", "shade"}, {kOverheadShade, R"({"intensity": 0.8594323})"}},
   };
   return p;
 }

@@ -135,6 +135,9 @@ Value evaluate(const E& e, const Env& env) {
     }
     case Op::kMul: {
       Value a = arg(0), b = arg(1);
+      // A verdict as a factor counts as 1 or 0 (Iverson's bracket).
+      if (a.is_bool()) a = Value(a.truth ? 1.0 : 0.0);
+      if (b.is_bool()) b = Value(b.truth ? 1.0 : 0.0);
       if (a.is_vector()) return a.vector * scalar(b);
       if (b.is_vector()) return scalar(a) * b.vector;
       return scalar(a) * scalar(b);

@@ -22,7 +22,7 @@ enum class Op {
   kSymbol,  // a named quantity
   kAdd,
   kSub,
-  kMul,  // scalar product, or scalar times vector
+  kMul,  // scalar product, or scalar times vector (a verdict as a factor is 1 or 0)
   kDiv,  // shown as a fraction
   kDot,
   kCross,

@@ -344,8 +344,11 @@ std::size_t index_at(std::string_view name, bool letters = true) {
 }
 
 // The family of a quantity: its name with a trailing index made alike (S_1, S_2 → S_#; w_a,
-// w_b → w_@ with `letters`).
+// w_b → w_@ with `letters`); the two polarizations' amplitudes and reflectances are indexed by
+// s and p (r_s, r_p → r_#).
 std::string family(std::string_view name, bool letters = true) {
+  if (name == "r_s" || name == "r_p" || name == "R_s" || name == "R_p")
+    return std::string(name.substr(0, 2)) + "#";
   std::size_t at = index_at(name, letters);
   if (at == name.size()) return std::string(name);
   bool digits = name[at] >= '0' && name[at] <= '9';

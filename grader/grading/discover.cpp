@@ -81,6 +81,7 @@ void flatten(const nlohmann::json& j, const nlohmann::json::json_pointer& at,
     l.field = field;
     l.value = j;
     if (j.is_number()) l.number = j.get<double>();
+    if (j.is_boolean()) l.number = j.get<bool>() ? 1 : 0;  // a verdict a step may compute
     out.push_back(std::move(l));
   }
 }
@@ -145,7 +146,34 @@ double leaf_value(const StepValues& values, const Leaf& l) {
   if (it == values.end()) return NAN;
   const Value& v = it->second;
   if (l.component >= 0) return v.is_vector() ? v.vector[l.component] : NAN;
+  if (l.value.is_boolean()) return v.is_bool() ? (v.truth ? 1 : 0) : NAN;
   return v.is_scalar() ? v.scalar : NAN;
+}
+
+// A value of the k-th item of a list (the lights' /lights/2/diffuse) is its item's step
+// named for it (diffuse_3), when that step has its value: several items' steps may share a
+// value (0 for a light that does not reach P) that only the name tells apart. A verdict
+// (/lights/2/reaches) is only ever tied so. Returns whether the leaf was tied.
+bool map_to_item_step(Leaf& l, const std::vector<SolutionPart>& parts) {
+  if (std::isnan(l.number) || l.component >= 0 || l.path.parent_pointer().empty()) return false;
+  std::string item = l.path.parent_pointer().back();
+  if (item.empty() || item.find_first_not_of("0123456789") != std::string::npos) return false;
+  std::string name = fmt::format("{}_{}", l.field, std::stoul(item) + 1);
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    std::map<std::string, int> seen;
+    for (const auto& s : parts[p].derivation.steps) {
+      int occ = seen[s.name]++;
+      if (s.name != name || s.given) continue;
+      bool fits = l.value.is_boolean()
+                      ? s.value.is_bool() && (s.value.truth ? 1 : 0) == l.number
+                      : s.value.is_scalar() && same_number(s.value.scalar, l.number);
+      if (!fits) continue;
+      l.step = s.name;
+      l.part = p;
+      l.occurrence = occ;
+    }
+  }
+  return !l.step.empty();
 }
 
 // Ties each numeric leaf to the last step whose value is that number (a component: whose
@@ -155,6 +183,7 @@ double leaf_value(const StepValues& values, const Leaf& l) {
 void map_leaves(std::vector<Leaf>& leaves, const nlohmann::json& answer,
                 const std::vector<SolutionPart>& parts, bool by_name) {
   for (auto& l : leaves) {
+    if (map_to_item_step(l, parts)) continue;
     if (!l.value.is_number()) continue;
     if (by_name) {
       for (std::size_t p = 0; p < parts.size(); ++p) {
@@ -191,6 +220,17 @@ void map_leaves(std::vector<Leaf>& leaves, const nlohmann::json& answer,
       }
     }
   }
+}
+
+// The value of an answer at `at`, or null; a unit direction stands for the direction, as the
+// grader reads it.
+const nlohmann::json* answer_at(const nlohmann::json& answer, nlohmann::json::json_pointer at) {
+  if (!answer.contains(at) && object_keys(at).back() == "direction") {
+    std::string text = at.to_string();
+    text.replace(text.rfind("direction"), 9, "unit_direction");
+    at = nlohmann::json::json_pointer(text);
+  }
+  return answer.contains(at) ? &answer.at(at) : nullptr;
 }
 
 // The nodes of a formula: what evaluating it costs.
@@ -311,6 +351,9 @@ struct ChangeSearch::Impl {
     std::string step;
     int occurrence = 0;
   } follow;
+  // The verdicts the student gave that a step computes (`given` 0 or 1); `wrong` set when one
+  // is not the reference's.
+  std::vector<std::size_t> verdicts_given(const std::vector<double>& given, bool& wrong) const;
   // Whether the object that `numbers` names is `named` (none named: yes), by the grader's rule.
   bool names_fit(const std::optional<std::string>& named,
                  const std::vector<double>& numbers) const {
@@ -834,6 +877,17 @@ double ChangeSearch::Impl::chance(std::size_t c, const std::vector<double>& numb
   return shares[0] * shares[1] * shares[2];
 }
 
+std::vector<std::size_t> ChangeSearch::Impl::verdicts_given(const std::vector<double>& given,
+                                                            bool& wrong) const {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < leaves.size(); ++i) {
+    if (!leaves[i].value.is_boolean() || std::isnan(given[i])) continue;
+    out.push_back(i);
+    wrong = wrong || given[i] != reference[i];
+  }
+  return out;
+}
+
 Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
   using namespace discover_internal;  // NOLINT: this file's own functions
   const Impl& m = *impl_;
@@ -843,17 +897,15 @@ Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
   std::vector<double> given(m.leaves.size(), NAN);
   for (std::size_t i = 0; i < m.leaves.size(); ++i) {
     const Leaf& l = m.leaves[i];
-    nlohmann::json::json_pointer at = l.path;
-    // A unit direction stands for the direction, as the grader reads it.
-    if (!answer.contains(at) && object_keys(at).back() == "direction") {
-      std::string text = at.to_string();
-      text.replace(text.rfind("direction"), 9, "unit_direction");
-      at = nlohmann::json::json_pointer(text);
-    }
-    if (!answer.contains(at)) continue;
-    const nlohmann::json& s = answer.at(at);
+    const nlohmann::json* found = answer_at(answer, l.path);
+    if (!found) continue;
+    const nlohmann::json& s = *found;
     if (static_cast<std::ptrdiff_t>(i) == m.name_leaf && s.is_string()) {
       named = s.get<std::string>();  // the object hit first: a change may move it
+      continue;
+    }
+    if (l.value.is_boolean() && s.is_boolean() && m.computed[i]) {
+      given[i] = s.get<bool>() ? 1 : 0;  // a verdict a step computes: a change may move it
       continue;
     }
     if (!l.value.is_number()) {
@@ -882,6 +934,7 @@ Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
       if (!m.computed[i]) return d;  // a number no step computes
     wrong = true;
   }
+  std::vector<std::size_t> verdicts = m.verdicts_given(given, wrong);
   if (complete.empty() || !wrong) return d;
   // The changed answers that fit, told apart by the values the student gave alone (a direction
   // by its unit vector); and the chance that a random answer of those numbers fits some
@@ -916,6 +969,9 @@ Discovery ChangeSearch::explain(const nlohmann::json& answer) const {
       if (p.numbers[nl] != m.reference[nl]) chance /= static_cast<double>(m.objects.size());
     }
     fit = fit && m.names_fit(named, p.numbers);
+    // A verdict is right or not; random answers are not credited with one (the guard counts
+    // the numbers' chance alone, which is the larger).
+    for (std::size_t i : verdicts) fit = fit && p.numbers[i] == given[i];
     std::vector<double> mine = on_given(p.numbers, at);
     bool repeated = std::any_of(seen.begin(), seen.end(), [&](const std::vector<double>& q) {
       for (std::size_t k = 0; k < q.size(); ++k)

@@ -104,6 +104,11 @@ const std::vector<MistakeInfo>& mistake_catalogue() {
          "When the shadow ray reaches the light (and the surface faces it), the diffuse and "
          "specular terms apply as well as the ambient one.",
          0},
+        {"halfway-vector", "lighting", "N·H where R·V is asked",
+         "The Phong highlight is (R·V)ⁿ with R = 2(N·L)N − L, the light's mirror direction. "
+         "N·H with the halfway vector H = (L + V)/‖L + V‖ is Blinn-Phong's highlight, another "
+         "model with other numbers.",
+         0},
         {"scalar-for-colour", "colour", "One number where a colour is asked",
          "When a light or a material is a colour, every intensity is a colour [r, g, b], worked "
          "channel by channel; one number does not say which channel it is.",
@@ -233,6 +238,22 @@ std::optional<E> lit_point_ambient_only(std::string_view /*step*/, const E& f) {
   return shadow_factors_as(f, 0);
 }
 
+// Blinn-Phong's N·H for Phong's R·V: each light's step RV_i = R_i·V worked as N·H_i, with the
+// halfway vector H_i = (L_i + V)/‖L_i + V‖ between the light and the eye E as a shade problem
+// gives them (V = (E − P)/‖E − P‖). A ray tree has no eye E (its viewer is the incoming ray,
+// and its grader reads its nodes its own way): there the formula cannot be worked and the
+// mistake does not apply.
+std::optional<E> halfway_vector(std::string_view step, const E& f) {
+  const ExprNode& n = f.node();
+  if (!step.starts_with("RV_") || n.op != Op::kDot || !is_symbol(n.args[1], "V")) {
+    return std::nullopt;
+  }
+  std::string i(step.substr(3));
+  E L = sym("L_" + i, "L_" + i), P = sym("P", "P"), Eye = sym("E", "E");
+  E V = (Eye - P) / norm(Eye - P);
+  return dot(sym("N", "N"), (L + V) / norm(L + V));
+}
+
 // An image-plane coordinate's pixel count (the column i or the row j) in the steps u_s and
 // v_s, as `change` turns it: without the half pixel (i + 0.5 → i), or with it (i → i + 0.5).
 std::optional<E> pixel_count(std::string_view step, const E& f, bool centre_to_corner) {
@@ -304,6 +325,7 @@ const std::vector<FormulaMistake>& formula_mistakes() {
         {"lit-point-ambient-only", &lit_point_ambient_only},
         {"pixel-corner", &pixel_corner},
         {"pixel-centre", &pixel_centre},
+        {"halfway-vector", &halfway_vector},
     };
     for_each_primitive_mistake([&](const PrimitiveMistake& own) {
       m.push_back({own.info.id, own.rewrite});

@@ -85,7 +85,9 @@ std::vector<SolutionPart> FresnelTask::derive(std::string_view /*method*/,
   }
   bool tir = k.scalar < 0;
   fresnel_steps(d, model_, tir);
-  if (!tir) d.step("theta_t", "theta_t", arccos_degrees(d.sym("cos_t")), "the angle of refraction");
+  // Schlick's step out of the denser medium has worked θt already.
+  if (!tir && !d.env().contains("theta_t"))
+    d.step("theta_t", "theta_t", arccos_degrees(d.sym("cos_t")), "the angle of refraction");
   Value f = d.value("F");
   d.step("T", "T", 1 - d.sym("F"), "the transmitted share, 1 − F");
   d.conclude(Sentence(tir ? "Total internal reflection: the reflectance is F = "

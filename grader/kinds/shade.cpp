@@ -305,6 +305,10 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
     Value ip_v = rgb ? Value(l.colour ? *l.colour : Vec3d{l.intensity, l.intensity, l.intensity})
                      : Value(l.intensity);
     E ip = d.given("Ip_" + i, "I_p" + i, ip_v);
+    // Whether the light reaches P is the verdict on its diffuse factor, so that the clamp left
+    // out counts a light below the horizon in its verdict as in its terms.
+    d.step("reaches_" + i, "reaches_" + i, compare(s * max({E(0), nl}), "!=", E(0)),
+           "s·max(0, N·L) ≠ 0: the light reaches P when it is not blocked and N·L > 0");
     d.step("diffuse_" + i, "I_d" + i, s * times(kd, kd_v, ip, ip_v) * max({E(0), nl}),
            kd_v.is_vector() ? "s·(k_d ⊙ I_p)·max(0, N·L): none when blocked or behind"
                             : "s·k_d·I_p·max(0, N·L): none when blocked or behind");
@@ -313,10 +317,11 @@ std::vector<SolutionPart> ShadeTask::derive(std::string_view /*method*/,
       d.note(fmt::format("k_s = 0: no specular term for {}.", l.name));
       continue;
     }
-    if (nl_v.scalar <= 0) continue;
     d.step("specular_" + i, "I_s" + i,
-           s * times(ks, ks_v, ip, ip_v) * pow(max({E(0), d.sym("RV_" + i)}), shininess),
-           "s·k_s·I_p·max(0, R·V)^n: no highlight when R·V ≤ 0");
+           s * times(ks, ks_v, ip, ip_v) * pow(max({E(0), d.sym("RV_" + i)}), shininess) *
+               d.sym("reaches_" + i),
+           "s·k_s·I_p·max(0, R·V)^n, none when the light does not reach P (a verdict counts "
+           "as 1 or 0): no highlight when R·V ≤ 0");
     highlight.push_back(d.sym("specular_" + i));
   }
   std::vector<E> parts = {d.sym("ambient")};

@@ -54,7 +54,13 @@ void fresnel_steps(Deriver& d, FresnelModel model, bool total_internal_reflectio
   E ci = d.sym("cos_i"), ct = d.sym("cos_t");
   if (model == FresnelModel::kSchlick) {
     bool denser_first = d.scalar("n1") > d.scalar("n2");
-    E c = denser_first ? ct : ci;
+    E c = ci;
+    if (denser_first) {
+      // θt in degrees first, then its cosine in radians, as Snell's law gives it: an angle
+      // in degrees read as radians is then one change.
+      d.step("theta_t", "theta_t", arccos_degrees(ct), "the angle of refraction");
+      c = cos(d.sym("theta_t") * pi() / 180);
+    }
     E x = 1 - c;
     d.step("F", "F", d.sym("R0") + (1 - d.sym("R0")) * square(square(x)) * x,
            denser_first ? "Schlick: R₀ + (1 − R₀)(1 − cos θt)⁵, with θt, the angle on the less "
@@ -62,10 +68,14 @@ void fresnel_steps(Deriver& d, FresnelModel model, bool total_internal_reflectio
                         : "Schlick: R₀ + (1 − R₀)(1 − cos θi)⁵");
     return;
   }
-  d.step("R_s", "R_s", square(n1 * ci - n2 * ct) / square(n1 * ci + n2 * ct),
-         "s-polarized (perpendicular): ((n₁cos θi − n₂cos θt)/(n₁cos θi + n₂cos θt))²");
-  d.step("R_p", "R_p", square(n1 * ct - n2 * ci) / square(n1 * ct + n2 * ci),
-         "p-polarized (parallel): ((n₁cos θt − n₂cos θi)/(n₁cos θt + n₂cos θi))²");
+  // The amplitude ratios first, then their squares: a square left out is then one change,
+  // made alike in both (r_s and r_p are one family, as S_1 and S_2 are).
+  d.step("r_s", "r_s", (n1 * ci - n2 * ct) / (n1 * ci + n2 * ct),
+         "s-polarized (perpendicular) amplitude: (n₁cos θi − n₂cos θt)/(n₁cos θi + n₂cos θt)");
+  d.step("R_s", "R_s", square(d.sym("r_s")), "the s-polarized reflectance, r_s²");
+  d.step("r_p", "r_p", (n1 * ct - n2 * ci) / (n1 * ct + n2 * ci),
+         "p-polarized (parallel) amplitude: (n₁cos θt − n₂cos θi)/(n₁cos θt + n₂cos θi)");
+  d.step("R_p", "R_p", square(d.sym("r_p")), "the p-polarized reflectance, r_p²");
   d.step("F", "F", (d.sym("R_s") + d.sym("R_p")) / 2, "unpolarized light: the mean of the two");
 }
 
