@@ -15,6 +15,7 @@
 #include "assignments/grading.h"
 #include "assignments/handout.h"
 #include "assignments/platforms/gradescope.h"
+#include "assignments/platforms/prairielearn.h"
 #include "assignments/platforms/scorm.h"
 #include "assignments/roster.h"
 #include "assignments/variants.h"

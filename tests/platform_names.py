@@ -32,13 +32,7 @@ NAMES = ["gradescope", "prairielearn", "prairie_learn", "canvas", "moodle", "bla
 
 # path (from the source root): the number of its lines that name a platform. Each entry is a
 # file not yet moved behind the list; the list only shrinks.
-ALLOWED = {
-    # The grade formats of the platforms' results.json (gradescope, prairielearn) and their
-    # gradebook layouts' rows (csv-canvas, ...), still in grading/'s table of grade formats.
-    "grader/grading/output_formats.cpp": 11,
-    "grader/grading/output_lms.cpp": 2,
-    "grader/grading/outputs.h": 2,
-}
+ALLOWED = {}
 
 EXEMPT_DIRS = ["grader/assignments/platforms", "grader/serve"]
 EXEMPT_FILES = {"grader/assignments/typed_reader.js"}

@@ -5,6 +5,7 @@
 
 #include "assignments/roster.h"
 #include "assignments/variants.h"
+#include "grading/outputs.h"
 #include "json/cursor.h"
 #include "json/source.h"
 
@@ -160,6 +161,44 @@ PlatformUploads Gradescope::uploads() {
           "Gradescope's submission_metadata.json; the student a submission names must be the "
           "account that uploaded it",
           &read_gradescope_metadata};
+}
+
+nlohmann::json gradescope_json(const SubmissionGrade& g, double execution_seconds) {
+  nlohmann::json tests = nlohmann::json::array();
+  for (const GradeResult& r : g.results) {
+    std::string output = joined_lines(feedback_lines(r));
+    tests.push_back({{"name", result_test_name(r)},
+                     {"score", r.score},
+                     {"max_score", r.max_score},
+                     {"status", r.score >= r.max_score ? "passed" : "failed"},
+                     {"output", output},
+                     {"output_format", "text"},
+                     {"visibility", "visible"}});
+  }
+  return {{"score", g.gradable ? g.score : 0.0},
+          {"execution_time", execution_seconds},
+          {"output", grade_summary(g)},
+          {"output_format", "text"},
+          {"visibility", "visible"},
+          {"tests", tests}};
+}
+
+namespace {
+
+std::string gradescope_format(const SubmissionGrade& g, double seconds) {
+  return json_text(gradescope_json(g, seconds)) + "\n";
+}
+
+}  // namespace
+
+GradeFormat Gradescope::results_format() {
+  return {"gradescope",
+          "Gradescope's autograder results.json",
+          ".json",
+          GradeLayout::kDocument,
+          true,
+          true,
+          &gradescope_format};
 }
 
 }  // namespace raygrade

@@ -1,6 +1,7 @@
 // Gradescope: the autograder of a programming assignment (`raygrade export gradescope`: setup.sh,
 // run_autograder, the assignment, its bank and a static raygrade) and what run_autograder reads
-// from Gradescope (submission_metadata.json). docs/assignments.md, "Gradescope".
+// from Gradescope (submission_metadata.json) and writes for it (results.json). docs/assignments.md,
+// "Gradescope".
 #pragma once
 
 #include <filesystem>
@@ -30,11 +31,23 @@ std::vector<ZipEntry> gradescope_autograder(const AssignmentSpec& spec, const As
                                             const std::filesystem::path& binary,
                                             const std::string& roster);
 
+// Gradescope's autograder results.json: score, execution_time, output, output_format,
+// visibility and one test per problem (name, score, max_score, status, output, output_format,
+// visibility). Every output is plain text ("output_format": "text"), never read as HTML or
+// Markdown. Every test is "visible": Gradescope hides a student's total score while any test
+// waits for a later time (after_due_date, after_published), so the feedback a policy allows
+// later comes from grading again then (docs/assignments.md).
+nlohmann::json gradescope_json(const SubmissionGrade& g, double execution_seconds);
+
+// PrairieLearn's external grader results.json: gradable, score in [0, 1], message, output
+// and one test per problem (name, description, points, max_points, message, output).
+
 struct Gradescope {
   static constexpr std::string_view kName = "gradescope";
   static constexpr std::string_view kTitle = "Gradescope";
   static LmsExport lms_export();
   static PlatformUploads uploads();
+  static GradeFormat results_format();
 };
 
 }  // namespace raygrade

@@ -1,7 +1,8 @@
 // A learning platform as a type: what platforms/platforms.h lists, one line each. The concept
-// says what a platform may declare (its export, its gradebook layout, the naming of its bulk
-// download, its own options); `raygrade export`, `raygrade grade` and their help take every
-// platform from the list, and no code outside platforms/ names one (docs/architecture.md).
+// says what a platform may declare (its export, its results format, its gradebook layout, the
+// naming of its bulk download, its worksheet, its metadata of an upload, its roster column, and
+// their options); `raygrade export`, `raygrade grade` and their help take every platform from
+// the list, and no code outside platforms/ names one (docs/architecture.md, "A platform").
 #pragma once
 
 #include <concepts>
@@ -14,6 +15,7 @@
 #include "assignments/bulk_submissions.h"
 #include "assignments/gradebook.h"
 #include "assignments/lms_export.h"
+#include "grading/outputs.h"
 
 namespace raygrade {
 
@@ -83,9 +85,10 @@ struct PlatformEntry {
   // cell reaches its gradebook layout (ClassRow::platform_id) and its bulk naming
   // (BulkRoster::platform_ids).
   std::string_view roster_column;
-  std::optional<LmsExport> lms_export;         // `raygrade export NAME`
-  std::optional<GradebookLayout> gradebook;    // `raygrade grade --format csv-NAME`
-  std::optional<BulkFormat> bulk;              // its "download all submissions" zip
+  std::optional<LmsExport> lms_export;       // `raygrade export NAME`
+  std::optional<GradeFormat> results;        // `raygrade grade --format NAME`: its results document
+  std::optional<GradebookLayout> gradebook;  // `raygrade grade --format csv-NAME`
+  std::optional<BulkFormat> bulk;            // its "download all submissions" zip
   std::optional<PlatformWorksheet> worksheet;  // its own gradebook file, filled in
   std::optional<PlatformUploads> uploads;      // its metadata of an upload
 };
@@ -93,6 +96,10 @@ struct PlatformEntry {
 template <typename P>
 concept PlatformHasExport = requires {
   { P::lms_export() } -> std::same_as<LmsExport>;
+};
+template <typename P>
+concept PlatformHasResults = requires {
+  { P::results_format() } -> std::same_as<GradeFormat>;
 };
 template <typename P>
 concept PlatformHasGradebook = requires {
@@ -115,20 +122,22 @@ concept PlatformHasRosterColumn = requires {
   { P::kRosterColumn } -> std::convertible_to<std::string_view>;
 };
 
-// Every platform has a name and a title, and at least one of an export, a gradebook layout and
-// a bulk naming; each of them, when it is declared, has the type the table expects (a member of
-// another type fails the concept instead of being skipped).
+// Every platform has a name and a title, and at least one of an export, a results format, a
+// gradebook layout and a bulk naming; each of them, when it is declared, has the type the table
+// expects (a member of another type fails the concept instead of being skipped).
 template <typename P>
 concept PlatformType = requires {
   { P::kName } -> std::convertible_to<std::string_view>;
   { P::kTitle } -> std::convertible_to<std::string_view>;
 }
 &&(PlatformHasExport<P> || !requires { P::lms_export(); }) &&
+    (PlatformHasResults<P> || !requires { P::results_format(); }) &&
     (PlatformHasGradebook<P> || !requires { P::gradebook(); }) &&
     (PlatformHasBulk<P> || !requires { P::bulk(); }) &&
     (PlatformHasWorksheet<P> || !requires { P::worksheet(); }) &&
     (PlatformHasUploads<P> || !requires { P::uploads(); }) &&
-    (PlatformHasExport<P> || PlatformHasGradebook<P> || PlatformHasBulk<P>);
+    (PlatformHasExport<P> || PlatformHasResults<P> || PlatformHasGradebook<P> ||
+     PlatformHasBulk<P>);
 
 // The roster column a platform reads, or "".
 template <PlatformType P>
@@ -139,13 +148,14 @@ constexpr std::string_view platform_roster_column() {
 
 template <PlatformType P>
 PlatformEntry platform_entry() {
-  PlatformEntry e{P::kName, P::kTitle, {}, {}, {}, {}, {}, {}};
+  PlatformEntry e{P::kName, P::kTitle, {}, {}, {}, {}, {}, {}, {}};
   e.roster_column = platform_roster_column<P>();
   if constexpr (PlatformHasExport<P>) {
     e.lms_export = P::lms_export();
     e.lms_export->name = P::kName;
     e.lms_export->title = P::kTitle;
   }
+  if constexpr (PlatformHasResults<P>) e.results = P::results_format();
   if constexpr (PlatformHasGradebook<P>) e.gradebook = P::gradebook();
   if constexpr (PlatformHasBulk<P>) {
     e.bulk = P::bulk();

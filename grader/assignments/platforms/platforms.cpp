@@ -3,6 +3,7 @@
 #include "assignments/platforms/platforms.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "core/error.h"
 #include "core/escape.h"
@@ -37,6 +38,34 @@ const LmsExport* find_lms_export(std::string_view name) {
     if (e.name == name) return &e;
   }
   return nullptr;
+}
+
+const std::vector<GradeFormat>& grade_formats() {
+  static const std::vector<GradeFormat> table = [] {
+    std::vector<GradeFormat> t = own_grade_formats();
+    for (const PlatformEntry& p : platform_table()) {
+      if (p.results) t.push_back(*p.results);
+      if (p.gradebook) {
+        t.push_back({p.gradebook->format, p.gradebook->summary, ".csv",
+                     GradeLayout::kClassGradebook, false, false, nullptr});
+      }
+    }
+    return t;
+  }();
+  return table;
+}
+
+const GradeFormat* find_grade_format(std::string_view name) {
+  for (const auto& f : grade_formats()) {
+    if (f.name == name) return &f;
+  }
+  return nullptr;
+}
+
+std::string grade_format_names() {
+  std::vector<std::string_view> names;
+  for (const auto& f : grade_formats()) names.push_back(f.name);
+  return fmt::format("{}", fmt::join(names, ", "));
 }
 
 const std::vector<GradebookLayout>& gradebook_layouts() {

@@ -36,6 +36,13 @@ const PlatformEntry* find_platform(std::string_view name);
 const std::vector<LmsExport>& lms_exports();
 const LmsExport* find_lms_export(std::string_view name);
 
+// Every grade format of `raygrade grade --format`: raygrade's own (own_grade_formats()), then
+// each platform's results format and gradebook layout, in the list's order; the one called
+// `name` (nullptr when none is); their names, in that order, separated by ", ".
+const std::vector<GradeFormat>& grade_formats();
+const GradeFormat* find_grade_format(std::string_view name);
+std::string grade_format_names();
+
 // The platforms' gradebook layouts, in the list's order, and the one of `--format NAME`
 // (nullptr when no platform's).
 const std::vector<GradebookLayout>& gradebook_layouts();

@@ -10,6 +10,7 @@
 #include "assignments/platforms/prairielearn_assets.h"
 #include "assignments/variants.h"
 #include "core/escape.h"
+#include "grading/outputs.h"
 
 namespace raygrade {
 namespace {
@@ -318,6 +319,44 @@ LmsExport PrairieLearn::lms_export() {
   e.ships_binary = true;
   e.make = &prairielearn_package;
   return e;
+}
+
+nlohmann::json prairielearn_json(const SubmissionGrade& g) {
+  nlohmann::json tests = nlohmann::json::array();
+  for (const auto& r : g.results) {
+    auto lines = feedback_lines(r);
+    tests.push_back({{"name", result_test_name(r)},
+                     {"description", r.problem_id},
+                     {"points", r.score},
+                     {"max_points", r.max_score},
+                     {"message", r.score >= r.max_score ? "Right."
+                                 : lines.empty()        ? ""
+                                                        : lines.front()},
+                     {"output", joined_lines(lines)}});
+  }
+  return {{"gradable", g.gradable},
+          {"score", g.gradable ? std::clamp(g.fraction(), 0.0, 1.0) : 0.0},
+          {"message", grade_summary(g)},
+          {"output", g.gradable ? "" : grade_summary(g)},
+          {"tests", tests}};
+}
+
+namespace {
+
+std::string prairielearn_format(const SubmissionGrade& g, double /*seconds*/) {
+  return json_text(prairielearn_json(g)) + "\n";
+}
+
+}  // namespace
+
+GradeFormat PrairieLearn::results_format() {
+  return {"prairielearn",
+          "PrairieLearn's external grader results.json",
+          ".json",
+          GradeLayout::kDocument,
+          true,
+          true,
+          &prairielearn_format};
 }
 
 }  // namespace raygrade

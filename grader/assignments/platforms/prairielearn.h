@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "assignments/lms_export.h"
+#include "assignments/platforms/platform.h"
 
 namespace raygrade {
 
@@ -20,10 +20,15 @@ std::vector<ZipEntry> prairielearn_course(const AssignmentSpec& spec,
                                           const std::vector<const Problem*>& problems,
                                           const Bank& bank, const std::filesystem::path& binary);
 
+// PrairieLearn's external grader results.json: gradable, score in [0, 1], message, output
+// and one test per problem (name, description, points, max_points, message, output).
+nlohmann::json prairielearn_json(const SubmissionGrade& g);
+
 struct PrairieLearn {
   static constexpr std::string_view kName = "prairielearn";
   static constexpr std::string_view kTitle = "PrairieLearn";
   static LmsExport lms_export();
+  static GradeFormat results_format();
 };
 
 }  // namespace raygrade
