@@ -12,12 +12,11 @@
 namespace raygrade {
 namespace {
 
-const std::string& table(std::string_view name) {
+std::string table(std::string_view name) {
   for (const auto& t : reference_tables(grade_formats())) {
     if (t.name == name) return t.markdown;
   }
-  static const std::string none;
-  return none;
+  return "";
 }
 
 TEST(ReferenceTables, OnlyTheTextBetweenTheMarkersIsRewritten) {
