@@ -20,6 +20,23 @@ bool is_json_name(std::string_view file) {
   return file.size() > 5 && ascii_lower(std::string(file.substr(file.size() - 5))) == ".json";
 }
 
+// One platform's naming for the whole zip, not a choice per file: the first that claims a zip
+// and fits any of its files, else the first that claims none. A file of a zip one platform
+// claims, whose student named it as another platform would, is still the first platform's.
+const BulkFormat* zip_platform(const std::vector<BulkFormat>& formats,
+                               const std::vector<ZipFileRead>& files) {
+  for (const BulkFormat& format : formats) {
+    if (!format.claims_zip) continue;
+    for (const ZipFileRead& f : files) {
+      if (format.parse(f.name)) return &format;
+    }
+  }
+  for (const BulkFormat& format : formats) {
+    if (!format.claims_zip) return &format;
+  }
+  throw InternalError("read_bulk_submissions: every platform's naming claims its zips");
+}
+
 }  // namespace
 
 bool is_zip_path(std::string_view path) {
@@ -31,22 +48,12 @@ std::vector<BulkSubmission> read_bulk_submissions(const std::string& path,
                                                   const BulkInput& in) {
   std::vector<BulkSubmission> out;
   std::vector<ZipFileRead> files = read_zip(path);
-  // One platform's naming for the whole zip, not a choice per file: a file of a zip one platform
-  // claims, whose student named it as another platform would, is still the first platform's.
-  const BulkFormat* platform = nullptr;
-  for (const BulkFormat& format : formats) {
-    if (!format.claims_zip || platform) continue;
-    for (const ZipFileRead& f : files)
-      if (!platform && format.parse(f.name)) platform = &format;
-  }
-  for (const BulkFormat& format : formats) {
-    if (!platform && !format.claims_zip) platform = &format;
-  }
-  if (!platform) throw InternalError("read_bulk_submissions: no platform's naming claims no zip");
+  const BulkFormat* platform = zip_platform(formats, files);
   BulkRoster roster{in.roster, {}, nullptr, {}};
-  auto column =
-      in.columns ? in.columns->find(platform->roster_column) : RosterColumns::const_iterator{};
-  if (in.columns && column != in.columns->end()) roster.platform_ids = column->second;
+  if (in.columns) {
+    if (auto column = in.columns->find(platform->roster_column); column != in.columns->end())
+      roster.platform_ids = column->second;
+  }
   roster.platform_ids.resize(in.roster->size());
   if (auto w = in.worksheets.find(platform->title); w != in.worksheets.end())
     roster.worksheet = w->second;
