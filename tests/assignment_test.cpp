@@ -14,7 +14,9 @@
 #include "assignments/feedback.h"
 #include "assignments/grading.h"
 #include "assignments/handout.h"
-#include "assignments/lms_export.h"
+#include "assignments/platforms/gradescope.h"
+#include "assignments/platforms/prairielearn.h"
+#include "assignments/platforms/scorm.h"
 #include "assignments/roster.h"
 #include "assignments/variants.h"
 #include "core/escape.h"
@@ -242,7 +244,7 @@ TEST(Assignment, ExportsRefuseOnlyWhereNumbersDiffer) {
     in.spec = &spec;
     in.bank = &problems;
     in.grader_js = dir.path() / "raygrade.js";
-    in.scorm_version = "1.2";
+    in.version = "1.2";
     EXPECT_FALSE(scorm_package(in, (dir.path() / "scorm").string()).files.empty());
   };
   const std::string fixed = (dir.path() / "fixed.json").string();

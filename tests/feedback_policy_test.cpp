@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "assignments/grading.h"
+#include "assignments/platforms/platforms.h"
 #include "grading/outputs.h"
 #include "run_binary.h"
 

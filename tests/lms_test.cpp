@@ -2,6 +2,8 @@
 // (names and JSON types), the CSV gradebook and the HTML page's escaping.
 #include <gtest/gtest.h>
 
+#include "assignments/platforms/gradescope.h"
+#include "assignments/platforms/prairielearn.h"
 #include "grading/outputs.h"
 #include "test_util.h"
 

@@ -5,7 +5,7 @@
 #include <map>
 #include <set>
 
-#include "assignments/lms_export.h"
+#include "assignments/platforms/prairielearn.h"
 #include "problems/kind.h"
 #include "run_binary.h"
 

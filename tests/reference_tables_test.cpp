@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "assignments/platforms/platforms.h"
 #include "core/error.h"
 #include "grading/outputs.h"
 #include "reports/render.h"
@@ -11,27 +12,27 @@
 namespace raygrade {
 namespace {
 
-const std::string& table(std::string_view name) {
-  for (const auto& t : reference_tables()) {
+std::string table(std::string_view name) {
+  for (const auto& t : reference_tables(grade_formats())) {
     if (t.name == name) return t.markdown;
   }
-  static const std::string none;
-  return none;
+  return "";
 }
 
 TEST(ReferenceTables, OnlyTheTextBetweenTheMarkersIsRewritten) {
   std::string doc =
       "# Title\n\nBefore.\n<!-- raygrade tables: grade-formats -->\n| old | table |\n"
       "<!-- raygrade tables: end -->\nAfter.\n";
-  std::string out = with_reference_tables(doc, "doc.md");
+  std::string out = with_reference_tables(doc, "doc.md", grade_formats());
   EXPECT_EQ(out, "# Title\n\nBefore.\n<!-- raygrade tables: grade-formats -->\n" +
                      table("grade-formats") + "<!-- raygrade tables: end -->\nAfter.\n");
   // Written again, it is unchanged; a doc without markers is left alone.
-  EXPECT_EQ(with_reference_tables(out, "doc.md"), out);
-  EXPECT_EQ(with_reference_tables("no tables here\n", "doc.md"), "no tables here\n");
+  EXPECT_EQ(with_reference_tables(out, "doc.md", grade_formats()), out);
+  EXPECT_EQ(with_reference_tables("no tables here\n", "doc.md", grade_formats()),
+            "no tables here\n");
   // A marker inside a line is text about markers, not a marker.
   std::string about = "Write `<!-- raygrade tables: NAME -->` on its own line.\n";
-  EXPECT_EQ(with_reference_tables(about, "doc.md"), about);
+  EXPECT_EQ(with_reference_tables(about, "doc.md", grade_formats()), about);
 }
 
 TEST(ReferenceTables, EveryRowOfTheCodesTablesIsInTheDocsTable) {
@@ -53,21 +54,24 @@ TEST(ReferenceTables, EveryRowOfTheCodesTablesIsInTheDocsTable) {
 TEST(ReferenceTables, AnUnknownTableOrAMissingEndIsAnErrorAtItsLine) {
   try {
     with_reference_tables("a\nb\n<!-- raygrade tables: shapes -->\n<!-- raygrade tables: end -->\n",
-                          "doc.md");
+                          "doc.md", grade_formats());
     FAIL() << "no error";
   } catch (const Error& e) {
     EXPECT_EQ(e.diagnostic().file, "doc.md");
     EXPECT_EQ(e.diagnostic().line, 3);
     EXPECT_NE(e.diagnostic().message.find("no reference table 'shapes'"), std::string::npos);
   }
-  EXPECT_THROW(with_reference_tables("<!-- raygrade tables: kinds -->\nrows\n", "doc.md"), Error);
-  EXPECT_THROW(with_reference_tables("<!-- raygrade tables: end -->\n", "doc.md"), Error);
+  EXPECT_THROW(
+      with_reference_tables("<!-- raygrade tables: kinds -->\nrows\n", "doc.md", grade_formats()),
+      Error);
+  EXPECT_THROW(with_reference_tables("<!-- raygrade tables: end -->\n", "doc.md", grade_formats()),
+               Error);
 }
 
 TEST(OutputFormats, NamesAreWrittenOnceAndFoundByName) {
   EXPECT_EQ(
       grade_format_names(),
-      "text, json, gradescope, prairielearn, csv, csv-canvas, csv-moodle, csv-blackboard, html");
+      "text, json, csv, html, gradescope, prairielearn, csv-canvas, csv-moodle, csv-blackboard");
   ASSERT_NE(find_grade_format("csv"), nullptr);
   EXPECT_EQ(find_grade_format("csv")->layout, GradeLayout::kGradebook);
   EXPECT_EQ(find_grade_format("markdown"), nullptr);

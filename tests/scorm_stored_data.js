@@ -1,4 +1,4 @@
-// The SCORM page's LMS script (grader/assignments/scorm_page.js) given hostile or old
+// The SCORM page's LMS script (grader/assignments/platforms/scorm_page.js) given hostile or old
 // cmi.suspend_data, run in Node with a stand-in SCORM 1.2 API object: whatever the LMS keeps,
 // the script opens the session, hands the page answers of the shapes it reads (or none), and
 // sends the score. Usage: node scorm_stored_data.js REPOSITORY
@@ -7,7 +7,7 @@ const fs = require("fs");
 const path = require("path");
 const vm = require("vm");
 
-const source = fs.readFileSync(path.join(process.argv[2], "grader/assignments/scorm_page.js"), "utf8");
+const source = fs.readFileSync(path.join(process.argv[2], "grader/assignments/platforms/scorm_page.js"), "utf8");
 const failures = [];
 const check = (ok, message) => { if (!ok) { failures.push(message); console.log("FAIL: " + message); } };
 

@@ -8,7 +8,7 @@ agree on every one.
 - The handout page: its own input check, taken from a page `raygrade handout` writes and run in
   Node (typed_corpus_page.js): the verdict it shows, the value, and the text it saves; the saved
   text, read by the grader, must mean what the typed text means.
-- PrairieLearn: server.py's reading of an input (grader/assignments/prairielearn_server.py, its
+- PrairieLearn: server.py's reading of an input (grader/assignments/platforms/prairielearn_server.py, its
   _text and _vector), then the grader on the text it hands on; a vector is typed into one box
   as "(x, y, z)".
 
@@ -206,7 +206,7 @@ def as_json(value):
 
 
 def load_server():
-    path = os.path.join(REPO, "grader", "assignments", "prairielearn_server.py")
+    path = os.path.join(REPO, "grader", "assignments", "platforms", "prairielearn_server.py")
     spec = importlib.util.spec_from_file_location("prairielearn_server", path)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)

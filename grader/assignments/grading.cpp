@@ -121,8 +121,8 @@ StudentIdentity AssignmentGrader::identify_uploader(
     if (per_student_numbers_) {
       root.fail(fmt::format("this autograder has no roster, so it cannot tell which student's "
                             "numbers the account {} was given; please tell your instructor "
-                            "(raygrade export gradescope --roster)",
-                            accounts),
+                            "(raygrade export {} --roster)",
+                            accounts, options_.uploads_platform),
                 "no-roster");
     }
     if (claimed && !email_key(claimed->email).empty() && !uploaded_by(claimed->email)) {

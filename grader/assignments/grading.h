@@ -28,6 +28,9 @@ struct AssignmentGradeOptions {
   // one, the student is the account itself, and an assignment whose numbers differ per student
   // is refused (nothing ties an account to the id its numbers were drawn for).
   std::vector<StudentIdentity> uploaders;
+  // The platform that said who uploaded it (PlatformEntry::name), for the message that asks for
+  // its export with a roster.
+  std::string_view uploads_platform;
 };
 
 class AssignmentGrader {

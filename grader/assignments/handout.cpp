@@ -201,7 +201,7 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
     data["practice"] = {{"assignment", practice->assignment},
                         {"files", files},
                         {"unlock_after", kPracticeUnlockAfter}};
-    if (!practice->scorm.empty()) data["practice"]["scorm"] = practice->scorm;
+    for (const auto& [key, value] : practice->lms_data.items()) data["practice"][key] = value;
     // raygrade.js in a <script> element: nothing in it may close the element.
     if (practice->grader_js.find("</") != std::string::npos) {
       throw Error(Diagnostic{"", "", 0, 0, Severity::kError,
@@ -223,11 +223,9 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
   std::string kept =
       "Your answers are kept in this browser; when you are done, download "
       "<code>answers.json</code> and hand it in.";
-  if (practice && !practice->scorm.empty()) {
-    lms_script = "<script>" + std::string(kScormScript) + "</script>\n";
-    kept =
-        "Your answers are kept in this browser and, when the page is opened from your course's "
-        "site, by the site too; each Check sends it your score on the whole assignment.";
+  if (practice && !practice->lms_script.empty()) {
+    lms_script = "<script>" + std::string(practice->lms_script) + "</script>\n";
+    if (!practice->kept.empty()) kept = practice->kept;
   }
   std::string who = student ? student->display() : "";
   std::string title = spec.title + (who.empty() ? "" : " — " + who);

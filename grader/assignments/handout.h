@@ -29,9 +29,12 @@ struct PracticeAssets {
   std::string grader_js;                                   // raygrade.js
   std::string assignment;                                  // the assignment's name among `files`
   std::vector<std::pair<std::string, std::string>> files;  // name, text
-  // "1.2" or "2004": the page is a SCORM package's and reports to the LMS around it
-  // (scorm_page.js); empty: it talks to nobody.
-  std::string scorm;
+  // When the page is a platform's package and reports to the LMS around it: what the platform's
+  // script reads under the page's "practice" data, the script (run before the page's own), and
+  // the sentence that says where answers are kept. Empty: the page talks to nobody.
+  nlohmann::json lms_data = nlohmann::json::object();
+  std::string_view lms_script;
+  std::string kept;
 };
 
 // The assets of `spec`'s practice pages. Throws Error when a file cannot be read, or when its

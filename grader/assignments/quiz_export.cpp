@@ -443,4 +443,49 @@ Quiz build_quiz(const AssignmentSpec& spec, const AssignmentBank& bank,
   return quiz;
 }
 
+std::string quiz_sets_csv(const Quiz& quiz) {
+  std::string out = "problem,set,variant\n";
+  for (const QuizProblem& q : quiz.problems) {
+    for (std::size_t s = 0; s < q.set_keys.size(); ++s) {
+      out += fmt::format("{},set-{},{}\n", csv_cell(q.id), s + 1, csv_cell(q.set_keys[s]));
+    }
+  }
+  return out;
+}
+
+std::string quiz_summary(const Quiz& quiz, int max_sets) {
+  std::size_t questions = 0, sets = 0;
+  bool cut = false;
+  for (const QuizProblem& q : quiz.problems) {
+    questions += q.parts.size();
+    sets = std::max(sets, q.set_keys.size());
+    cut = cut || q.set_keys.size() > static_cast<std::size_t>(max_sets);
+  }
+  std::string out =
+      fmt::format("{} questions from {} problems, up to {} sets of numbers each", questions,
+                  quiz.problems.size(), std::min<std::size_t>(sets, max_sets));
+  if (cut) out += fmt::format(" (the platform takes at most {}; the first are kept)", max_sets);
+  for (const std::string& n : quiz.notes) out += "; " + n;
+  // What the questions cannot carry: each sentence once, with the problems it concerns.
+  std::vector<std::pair<std::string, std::vector<std::string>>> lost;
+  for (const QuizProblem& q : quiz.problems) {
+    for (const std::string& sentence : q.lost) {
+      auto it = std::find_if(lost.begin(), lost.end(),
+                             [&](const auto& l) { return l.first == sentence; });
+      if (it == lost.end()) it = lost.insert(lost.end(), {sentence, {}});
+      if (it->second.empty() || it->second.back() != q.id) it->second.push_back(q.id);
+    }
+  }
+  for (const auto& [sentence, ids] : lost) {
+    std::string which;
+    if (ids.size() == quiz.problems.size() && ids.size() > 1) {
+      which = "every problem asked";
+    } else {
+      for (const std::string& id : ids) which += (which.empty() ? "" : ", ") + id;
+    }
+    out += fmt::format("; not carried: {} ({})", sentence, which);
+  }
+  return out;
+}
+
 }  // namespace raygrade

@@ -108,19 +108,11 @@ std::string quiz_number(double v);
 // What a student reads of a tolerance: "within 0.1% of the right value", "within ±5.1e-05 ...".
 std::string quiz_tolerance_text(const QuizTolerance& t);
 
-// Canvas's QTI 1.2 package (imsmanifest.xml and the assessment), and Moodle's XML file.
-// Both limit the number of sets: `max_sets`.
-constexpr int kCanvasMaxSets = 200;
-constexpr int kMoodleMaxSets = 100;
-std::vector<ZipEntry> canvas_qti_files(const Quiz& quiz);
 // Which variant each set is: "problem,set,variant" (the key raygrade solve --student takes).
 std::string quiz_sets_csv(const Quiz& quiz);
 // One sentence: how many questions and sets, what was left out, and what the questions cannot
-// carry (each problem's `lost`, each once, with the problems it concerns).
+// carry (each problem's `lost`, each once, with the problems it concerns); a platform takes at
+// most `max_sets` sets.
 std::string quiz_summary(const Quiz& quiz, int max_sets);
-std::string moodle_xml(const Quiz& quiz);
-
-LmsPackage canvas_package(const LmsExportInput& in, const std::string& out);
-LmsPackage moodle_package(const LmsExportInput& in, const std::string& out);
 
 }  // namespace raygrade

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <set>
 
+#include "assignments/platforms/platforms.h"
 #include "assignments/variants.h"
 #include "core/atomic_file.h"
 #include "core/escape.h"
@@ -72,8 +73,7 @@ std::vector<std::vector<std::string>> csv_rows(const std::string& text, const st
   return rows;
 }
 
-std::vector<StudentIdentity> load_roster(const std::string& path,
-                                         std::vector<std::string>* canvas_ids) {
+std::vector<StudentIdentity> load_roster(const std::string& path, RosterColumns* columns) {
   std::optional<std::string> bytes = read_whole_file(path);
   if (!bytes) fail(path, 0, 0, "cannot open the roster");
   std::string text = std::move(*bytes);
@@ -95,16 +95,18 @@ std::vector<StudentIdentity> load_roster(const std::string& path,
   auto rows = csv_rows(text, path);
   if (rows.empty())
     fail(path, 1, 1, "the roster is empty: its first line names the columns id, name, email");
-  int id_col = -1, name_col = -1, email_col = -1, canvas_col = -1;
+  int id_col = -1, name_col = -1, email_col = -1;
+  std::vector<std::string_view> platform_columns = roster_platform_columns();
+  std::vector<int> platform_col(platform_columns.size(), -1);
+  std::string known = "id, name, email";
+  for (std::string_view c : platform_columns) known += fmt::format(", {}", c);
   for (std::size_t i = 0; i < rows[0].size(); ++i) {
     std::string h = ascii_lower(trimmed(rows[0][i]));
-    int* col = h == "id"          ? &id_col
-               : h == "name"      ? &name_col
-               : h == "email"     ? &email_col
-               : h == "canvas_id" ? &canvas_col
-                                  : nullptr;
-    if (!col)
-      fail(path, 1, 0, fmt::format("unknown column '{}' (known: id, name, email, canvas_id)", h));
+    int* col = h == "id" ? &id_col : h == "name" ? &name_col : h == "email" ? &email_col : nullptr;
+    for (std::size_t p = 0; p < platform_columns.size() && !col; ++p) {
+      if (h == platform_columns[p]) col = &platform_col[p];
+    }
+    if (!col) fail(path, 1, 0, fmt::format("unknown column '{}' (known: {})", h, known));
     if (*col >= 0) fail(path, 1, 0, fmt::format("the column '{}' is named twice", h));
     *col = static_cast<int>(i);
   }
@@ -127,7 +129,8 @@ std::vector<StudentIdentity> load_roster(const std::string& path,
     if (!ids.insert(s.id).second)
       fail(path, line, id_col + 1, fmt::format("the id '{}' is listed twice", s.id));
     out.push_back(std::move(s));
-    if (canvas_ids) canvas_ids->push_back(cell(canvas_col));
+    for (std::size_t p = 0; p < platform_columns.size() && columns; ++p)
+      (*columns)[std::string(platform_columns[p])].push_back(cell(platform_col[p]));
   }
   return out;
 }

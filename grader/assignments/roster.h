@@ -1,6 +1,8 @@
 // A class roster: the students an assignment's handouts are written for, read from CSV.
 #pragma once
 
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -15,11 +17,14 @@ namespace raygrade {
 // and line breaks). Throws Error naming `file` and the line of a quote left open.
 std::vector<std::vector<std::string>> csv_rows(const std::string& text, const std::string& file);
 
-// A roster may also have a "canvas_id" column: each student's Canvas user ID (the "ID" column of
-// Canvas's gradebook export), which ties the files of Canvas's "Download Submissions" zip to
-// roster students; given `canvas_ids`, it receives them, one per student ("" where none is given).
-std::vector<StudentIdentity> load_roster(const std::string& path,
-                                         std::vector<std::string>* canvas_ids = nullptr);
+// The roster's columns of platforms' user ids: the column's name → each student's cell, in roster
+// order ("" where the roster gives none).
+using RosterColumns = std::map<std::string, std::vector<std::string>, std::less<>>;
+
+// A roster may also have a column of a platform's user ids, one per platform that reads one
+// (PlatformEntry::roster_column, the list's): given `columns`, it receives each of them, one cell
+// per student, whether the roster has the column or not ("" where none is given).
+std::vector<StudentIdentity> load_roster(const std::string& path, RosterColumns* columns = nullptr);
 
 // The roster entry a submission's student is, and why there is none: every field the
 // submission gives (id, email, name) must name the same one entry. A name that two entries

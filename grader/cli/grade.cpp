@@ -1,4 +1,6 @@
-// raygrade grade: grade submissions against a bank, in the form an LMS or a person reads.
+// raygrade grade: grade submissions against a bank, in the form an LMS or a person reads. The
+// platforms' gradebook layouts, bulk downloads, worksheets and upload metadata, and their
+// options, come from the list of platforms (assignments/platforms/platforms.h).
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -15,7 +17,7 @@
 #include "assignments/bulk_submissions.h"
 #include "assignments/gradebook.h"
 #include "assignments/grading.h"
-#include "assignments/lms_export.h"
+#include "assignments/platforms/platforms.h"
 #include "assignments/roster.h"
 #include "assignments/variants.h"
 #include "cli/command.h"
@@ -37,14 +39,42 @@ struct GradeCliOptions {
   bool answered_only = false;
   std::string assignment;  // an assignment file: each submission graded as its student's variant
   std::string roster;
-  std::string pick;                 // with --roster: which of a student's submissions counts
-  std::string feedback;             // overrides the assignment's feedback policy
-  std::string now;                  // the time the due date is compared with (default: the clock)
-  std::string gradescope_metadata;  // submission_metadata.json: who uploaded the submission
-  std::string moodle_worksheet;     // Moodle's grading worksheet: filled in, or names the zip
-  std::optional<std::string> canvas_assignment_id;  // csv-canvas: the column's assignment id
-  std::optional<std::string> blackboard_column_id;  // csv-blackboard: the column's Column ID
-  unsigned jobs = 0;                                // threads that grade (0: one per core)
+  std::string pick;      // with --roster: which of a student's submissions counts
+  std::string feedback;  // overrides the assignment's feedback policy
+  std::string now;       // the time the due date is compared with (default: the clock)
+  // A platform's metadata of an upload (who uploaded it), by the platform's option
+  // (PlatformUploads::option).
+  std::map<std::string_view, std::string> uploads;
+  // A platform's worksheet, by the platform's option (PlatformWorksheet::option): filled in, or
+  // the zip of feedback pages laid out for it, or what ties its bulk download to students.
+  std::map<std::string_view, std::string> worksheets;
+  // The platform's id of the grade column, by the layout's option (GradebookLayout::
+  // column_option).
+  std::map<std::string_view, std::optional<std::string>> column_ids;
+  unsigned jobs = 0;  // threads that grade (0: one per core)
+
+  // The one upload metadata or worksheet given (its platform and file), if any.
+  std::pair<const PlatformEntry*, std::string> upload() const {
+    for (const PlatformEntry& p : platform_table()) {
+      if (p.uploads && !uploads.at(p.uploads->option).empty())
+        return {&p, uploads.at(p.uploads->option)};
+    }
+    return {nullptr, ""};
+  }
+  std::pair<const PlatformEntry*, std::string> worksheet() const {
+    for (const PlatformEntry& p : platform_table()) {
+      if (p.worksheet && !worksheets.at(p.worksheet->option).empty())
+        return {&p, worksheets.at(p.worksheet->option)};
+    }
+    return {nullptr, ""};
+  }
+  // The column id given, and its option (empty when none is given).
+  std::pair<std::string_view, std::optional<std::string>> column_id() const {
+    for (const auto& [option, id] : column_ids) {
+      if (id) return {option, id};
+    }
+    return {"", std::nullopt};
+  }
 };
 
 // A progress bar on standard error, only when it is a terminal.
@@ -94,15 +124,16 @@ struct GradeSetup {
   std::vector<std::string> ids;
   std::vector<Diagnostic> errors;
   std::vector<StudentIdentity> roster;
-  std::vector<std::string> canvas_ids;  // per roster student: its "canvas_id" cell
-  std::string title;         // the assignment's title (or id), for a platform's gradebook
-  bool per_student = false;  // graded as each student's variant: doubles are looked for
+  RosterColumns platform_ids;  // the roster's columns of platforms' user ids
+  std::string title;           // the assignment's title (or id), for a platform's gradebook
+  bool per_student = false;    // graded as each student's variant: doubles are looked for
   Bank bank;
   std::unique_ptr<Assignment> assignment;
   std::unique_ptr<AssignmentSpec> spec;
   std::unique_ptr<AssignmentBank> spec_bank;
   std::unique_ptr<AssignmentGrader> spec_grader;
-  std::vector<std::vector<std::string>> worksheet;  // Moodle's worksheet, read before grading
+  const PlatformEntry* worksheet_platform = nullptr;  // whose worksheet was given, if any
+  Worksheet worksheet;  // the platform's worksheet, read before grading
 };
 
 // A usage fault: printed, and the exit code for it.
@@ -111,23 +142,11 @@ int usage(std::string_view message) {
   return kExitBadInput;
 }
 
-// Moodle's grading worksheet as downloaded (UTF-8, a byte-order mark allowed).
-std::vector<std::vector<std::string>> read_worksheet(const std::string& path) {
-  std::optional<std::string> text = read_whole_file(path);
-  if (!text) {
-    throw Error(Diagnostic{path, "", 0, 0, Severity::kError, "cannot read the worksheet",
-                           "moodle-worksheet"});
-  }
-  constexpr std::string_view kBom = "\xEF\xBB\xBF";
-  if (text->starts_with(kBom)) text->erase(0, kBom.size());
-  std::vector<std::vector<std::string>> rows = csv_rows(*text, path);
-  MoodleWorksheet check(rows, path);  // refused before anything is graded
-  return rows;
-}
-
 std::optional<int> setup_from_bank(const GradeCliOptions& o, GradeSetup& s) {
-  if (!o.roster.empty() || !o.feedback.empty() || !o.now.empty() || !o.gradescope_metadata.empty())
-    return usage("--roster, --feedback, --now and --gradescope-metadata go with --assignment");
+  auto [uploader, metadata] = o.upload();
+  if (!o.roster.empty() || !o.feedback.empty() || !o.now.empty() || uploader)
+    return usage(fmt::format("--roster, --feedback, --now{} go with --assignment",
+                             uploader ? fmt::format(" and {}", uploader->uploads->option) : ""));
   s.bank = load_bank(o.problems);
   s.errors = s.bank.errors;
   s.assignment = std::make_unique<Assignment>(s.bank.problems, AssignmentOptions{o.answered_only});
@@ -143,12 +162,16 @@ std::optional<int> setup_from_assignment(const GradeCliOptions& o, GradeSetup& s
   AssignmentGradeOptions options;
   try {
     s.spec = std::make_unique<AssignmentSpec>(load_assignment(o.assignment));
-    if (!o.roster.empty()) s.roster = options.roster = load_roster(o.roster, &s.canvas_ids);
-    if (!o.moodle_worksheet.empty()) s.worksheet = read_worksheet(o.moodle_worksheet);
-    if (!o.gradescope_metadata.empty()) {
-      GradescopeMetadata m = read_gradescope_metadata(o.gradescope_metadata);
+    if (!o.roster.empty()) s.roster = options.roster = load_roster(o.roster, &s.platform_ids);
+    if (auto [platform, file] = o.worksheet(); platform) {
+      s.worksheet_platform = platform;
+      s.worksheet = {file, platform->worksheet->read(file)};
+    }
+    if (auto [platform, file] = o.upload(); platform) {
+      UploadMetadata m = platform->uploads->read(file);
       options.uploaders = std::move(m.users);
-      // Gradescope's due date, with the student's extension, is the one students were given.
+      options.uploads_platform = platform->name;
+      // The platform's due date, with the student's extension, is the one students were given.
       if (m.due) s.spec->due = m.due;
     }
   } catch (const Error& e) {
@@ -187,6 +210,17 @@ std::optional<int> setup_from_assignment(const GradeCliOptions& o, GradeSetup& s
   return std::nullopt;
 }
 
+// Each roster student's cell of the roster column of the platform whose gradebook layout
+// `format` is ("" each when it reads none).
+std::vector<std::string> platform_ids(const GradeSetup& setup, const GradeFormat& format) {
+  for (const PlatformEntry& p : platform_table()) {
+    if (!p.gradebook || p.gradebook->format != format.name) continue;
+    auto it = setup.platform_ids.find(p.roster_column);
+    if (it != setup.platform_ids.end()) return it->second;
+  }
+  return {};
+}
+
 // What a thread makes of one file; the main thread writes them out in the files' order.
 struct Graded {
   SubmissionGrade grade;
@@ -205,7 +239,7 @@ class GradeOutput {
     json_stream_ = format.layout == GradeLayout::kJsonArray && o.out.empty();
     if (gradebook_ && !setup.roster.empty()) {
       class_book_.emplace(setup.roster, setup.ids, pick);
-      class_book_->set_canvas_ids(setup.canvas_ids);
+      class_book_->set_platform_ids(platform_ids(setup, format));
     }
     if (gradebook_ && !class_book_) csv() << gradebook_csv_header(setup.ids);
   }
@@ -243,13 +277,15 @@ class GradeOutput {
 
   void finish() {
     if (class_book_) {
-      if (!setup_.worksheet.empty()) {
+      if (setup_.worksheet_platform) {
         std::vector<std::string> notes;
-        csv() << class_book_->moodle_worksheet(setup_.worksheet, o_.moodle_worksheet, notes);
+        csv() << setup_.worksheet_platform->worksheet->fill(class_book_->class_rows(),
+                                                            setup_.worksheet, notes);
         for (const auto& n : notes)
           fmt::print(stderr, "raygrade grade: warning: {}\n", printable(n));
       } else {
-        csv() << (platform_book_ ? class_book_->platform_csv(format_.name, setup_.title, column_id_)
+        csv() << (platform_book_ ? platform_gradebook(format_.name, class_book_->class_rows(),
+                                                      setup_.title, column_id_)
                                  : class_book_->csv());
       }
       for (const auto& c : class_book_->choices())
@@ -258,12 +294,13 @@ class GradeOutput {
     std::filesystem::path out(o_.out);
     if (!pages_.empty())
       write_file_atomically(out / "index.html", feedback_index_html(pages_), false);
-    if (format_.extension == ".html" && !setup_.worksheet.empty()) {
+    if (format_.extension == ".html" && setup_.worksheet_platform) {
+      const PlatformWorksheet& w = *setup_.worksheet_platform->worksheet;
       std::vector<std::string> notes;
-      std::vector<ZipEntry> files = moodle_feedback_files(setup_.worksheet, o_.moodle_worksheet,
-                                                          setup_.roster, moodle_pages_, notes);
+      std::vector<ZipEntry> files =
+          w.feedback(setup_.worksheet, setup_.roster, sheet_pages_, notes);
       for (const auto& n : notes) fmt::print(stderr, "raygrade grade: warning: {}\n", printable(n));
-      write_file_atomically(out / "moodle-feedback.zip", zip_archive(files), false);
+      write_file_atomically(out / std::string(w.feedback_zip), zip_archive(files), false);
     }
     if (gradebook_ && !o_.out.empty())
       write_file_atomically(out / ("gradebook" + std::string(format_.extension)), csv_file_.str(),
@@ -297,8 +334,8 @@ class GradeOutput {
     if (format_.extension == ".html") {
       pages_.push_back(
           {name + ".html", g.student, g.identity.id, g.gradable, g.score, g.max_score});
-      if (!setup_.worksheet.empty() && g.gradable && !g.identity.id.empty())
-        moodle_pages_.push_back({g.identity.id, name + ".html", text});
+      if (setup_.worksheet_platform && g.gradable && !g.identity.id.empty())
+        sheet_pages_.push_back({g.identity.id, name + ".html", text});
     }
     // Each file appears whole or not at all (rename); the batch reaches the disk in one flush
     // at the end instead of one per file.
@@ -307,15 +344,13 @@ class GradeOutput {
   }
 
   const GradeCliOptions& o_;
-  std::string column_id_ = o_.canvas_assignment_id   ? *o_.canvas_assignment_id
-                           : o_.blackboard_column_id ? *o_.blackboard_column_id
-                                                     : std::string();
+  std::string column_id_ = o_.column_id().second.value_or("");
   const GradeFormat& format_;
   const GradeSetup& setup_;
   bool single_, platform_book_, gradebook_, json_stream_;
   std::set<std::string> names_ = {"index", "gradebook"};  // the folder's own files
   std::vector<FeedbackPage> pages_;
-  std::vector<StudentPage> moodle_pages_;  // with --moodle-worksheet: for Moodle's feedback zip
+  std::vector<StudentPage> sheet_pages_;  // with a platform's worksheet: for its feedback zip
   std::ostringstream csv_file_;
   std::optional<RosterGradebook> class_book_;
   JsonArrayStream json_out_;
@@ -345,7 +380,9 @@ std::optional<int> prepare_out(const GradeCliOptions& o, std::optional<FolderLoc
 std::optional<int> read_bulk_zips(const GradeCliOptions& o, const GradeSetup& setup,
                                   std::vector<BulkSubmission>& bulk,
                                   std::vector<Diagnostic>& errors) {
-  BulkRoster roster{&setup.roster, setup.canvas_ids, &setup.worksheet, o.moodle_worksheet, {}, {}};
+  BulkInput roster{&setup.roster, &setup.platform_ids, {}};
+  if (setup.worksheet_platform)
+    roster.worksheets[setup.worksheet_platform->title] = &setup.worksheet;
   for (const auto& p : o.submissions) {
     if (!is_zip_path(p)) continue;
     if (!setup.per_student || setup.roster.empty())
@@ -354,7 +391,7 @@ std::optional<int> read_bulk_zips(const GradeCliOptions& o, const GradeSetup& se
           "(the roster ties the platform's students to their ids)",
           printable(p)));
     try {
-      std::vector<BulkSubmission> got = read_bulk_submissions(p, roster);
+      std::vector<BulkSubmission> got = read_bulk_submissions(p, bulk_formats(), roster);
       for (auto& b : got) bulk.push_back(std::move(b));
     } catch (const Error& e) {
       errors.push_back(e.diagnostic());
@@ -377,6 +414,28 @@ SubmissionGrade grade_bulk(const GradeSetup& setup, const BulkSubmission& b) {
   return g;
 }
 
+// The platforms' own options, each with what it goes with: the exit code of a fault.
+std::optional<int> check_platform_options(const GradeCliOptions& o) {
+  if (auto [platform, file] = o.worksheet(); platform) {
+    std::string_view layout = platform->gradebook ? platform->gradebook->format : "";
+    if (o.roster.empty() || !(o.format == layout || (o.format == "html" && !o.out.empty())))
+      return usage(fmt::format(
+          "{} goes with --roster, and --format {} (the worksheet filled in) or --format html "
+          "--out DIR (a zip of feedback files for {})",
+          platform->worksheet->option, layout, platform->title));
+  }
+  for (const GradebookLayout& g : gradebook_layouts()) {
+    if (!g.column_option.empty() && o.column_ids.at(g.column_option) && o.format != g.format)
+      return usage(fmt::format("{} goes with --format {}", g.column_option, g.format));
+  }
+  for (const auto& [option, id] : o.column_ids) {
+    if (id && id->empty())
+      return usage(
+          fmt::format("{} is empty: give the platform's id of the column (digits)", option));
+  }
+  return std::nullopt;
+}
+
 int run_grade(const GradeCliOptions& o) {
   const GradeFormat* format = find_grade_format(o.format);
   if (!format)
@@ -384,21 +443,7 @@ int run_grade(const GradeCliOptions& o) {
   if (format->layout == GradeLayout::kClassGradebook && o.roster.empty())
     return usage(fmt::format(
         "--format {} needs --assignment and --roster (a row per roster student)", o.format));
-  if (!o.moodle_worksheet.empty() &&
-      (o.roster.empty() || !(o.format == "csv-moodle" || (o.format == "html" && !o.out.empty()))))
-    return usage(
-        "--moodle-worksheet goes with --roster, and --format csv-moodle (the worksheet "
-        "filled in) or --format html --out DIR (a zip of feedback files for Moodle)");
-  if (o.canvas_assignment_id && o.format != "csv-canvas")
-    return usage("--canvas-assignment-id goes with --format csv-canvas");
-  if (o.blackboard_column_id && o.format != "csv-blackboard")
-    return usage("--blackboard-column-id goes with --format csv-blackboard");
-  for (const auto* id : {&o.canvas_assignment_id, &o.blackboard_column_id}) {
-    if (*id && (*id)->empty())
-      return usage(fmt::format(
-          "{} is empty: give the platform's id of the column (digits)",
-          id == &o.canvas_assignment_id ? "--canvas-assignment-id" : "--blackboard-column-id"));
-  }
+  if (auto failed = check_platform_options(o)) return *failed;
   if (!o.pick.empty() && o.roster.empty())
     return usage("--pick chooses among a roster student's submissions: it needs --roster");
   std::optional<PickPolicy> pick = parse_pick_policy(o.pick.empty() ? "latest" : o.pick);
@@ -409,11 +454,11 @@ int run_grade(const GradeCliOptions& o) {
     return *failed;
   for (const auto& e : setup.errors) fmt::print(stderr, "{}\n", format_diagnostic(e));
   // A grade column the platform would misread is refused before anything is graded.
-  std::string column_id = o.canvas_assignment_id   ? *o.canvas_assignment_id
-                          : o.blackboard_column_id ? *o.blackboard_column_id
-                                                   : std::string();
-  if (format->layout == GradeLayout::kClassGradebook && setup.worksheet.empty()) {
-    ColumnCheck column = check_platform_column(o.format, setup.title, column_id);
+  if (format->layout == GradeLayout::kClassGradebook && !setup.worksheet_platform) {
+    const GradebookLayout* layout = find_gradebook_layout(o.format);
+    if (!layout)
+      return usage(fmt::format("--format {} is no platform's gradebook layout", o.format));
+    ColumnCheck column = layout->check(setup.title, o.column_id().second.value_or(""));
     if (!column.error.empty()) return usage(column.error);
     if (!column.warning.empty())
       fmt::print(stderr, "raygrade grade: warning: {}\n", column.warning);
@@ -508,9 +553,13 @@ Runner setup_grade(CLI::App& sub) {
       sub.add_option("--problems", o->problems, "the bank: a file or folder (repeat for more)")
           ->allow_extra_args(false)
           ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  std::string bulk;
+  for (const BulkFormat& f : bulk_formats())
+    bulk += fmt::format("{}{}", bulk.empty() ? "" : " or ", f.title);
   sub.add_option("submissions", o->submissions,
-                 "submission files or folders, or the zip of a Canvas or Moodle assignment's "
-                 "\"download all submissions\" (with --assignment and --roster)")
+                 fmt::format("submission files or folders, or the zip of a {} assignment's "
+                             "\"download all submissions\" (with --assignment and --roster)",
+                             bulk))
       ->required();
   std::string formats;
   for (const auto& f : grade_formats()) formats += fmt::format("\n  {:<13} {}", f.name, f.summary);
@@ -528,21 +577,18 @@ Runner setup_grade(CLI::App& sub) {
                  "or first");
   sub.add_option("--feedback", o->feedback,
                  "with --assignment: score, mistakes or full, whatever the assignment says");
-  sub.add_option("--gradescope-metadata", o->gradescope_metadata,
-                 "with --assignment: Gradescope's submission_metadata.json; the student a "
-                 "submission names must be the account that uploaded it");
-  sub.add_option("--moodle-worksheet", o->moodle_worksheet,
-                 "with --roster: the grading worksheet downloaded from the Moodle assignment; "
-                 "with --format csv-moodle the gradebook is that worksheet with each student's "
-                 "grade filled in, with --format html --out DIR the pages also go into "
-                 "moodle-feedback.zip for Moodle's bulk feedback upload");
-  sub.add_option("--canvas-assignment-id", o->canvas_assignment_id,
-                 "with --format csv-canvas: the Canvas id of the assignment (its page's address "
-                 "ends in it); the column is then titled \"Title (id)\", which Canvas's import "
-                 "matches by the id");
-  sub.add_option("--blackboard-column-id", o->blackboard_column_id,
-                 "with --format csv-blackboard: the Column ID of the Grade Center column to "
-                 "fill in (without it, the upload adds a new text column)");
+  for (const PlatformEntry& p : platform_table()) {
+    if (p.uploads)
+      sub.add_option(std::string(p.uploads->option), o->uploads[p.uploads->option],
+                     fmt::format("with --assignment: {}", p.uploads->help));
+    if (p.worksheet)
+      sub.add_option(std::string(p.worksheet->option), o->worksheets[p.worksheet->option],
+                     fmt::format("with --roster: {}", p.worksheet->help));
+    if (p.gradebook && !p.gradebook->column_option.empty())
+      sub.add_option(
+          std::string(p.gradebook->column_option), o->column_ids[p.gradebook->column_option],
+          fmt::format("with --format {}: {}", p.gradebook->format, p.gradebook->column_help));
+  }
   sub.add_option("-j,--jobs", o->jobs,
                  "threads that grade at once (default: one per core); the output is the same");
   sub.add_option("--now", o->now,

@@ -8,6 +8,7 @@
 
 #include "assignments/feedback.h"
 #include "assignments/grading.h"
+#include "assignments/platforms/platforms.h"
 #include "assignments/roster.h"
 #include "assignments/variants.h"
 #include "cli/command.h"

@@ -40,7 +40,7 @@ const std::vector<Command>& command_table() {
        &setup_generate},
       {"handout", "each student's problems as a page with answer inputs, and a template",
        &setup_handout},
-      {"export", "an assignment for an LMS: Gradescope, PrairieLearn, Canvas, Moodle, SCORM",
+      {"export", "an assignment packaged for a learning platform (its help lists them)",
        &setup_export},
       {"schema", "the problem schema, from the list of primitives (docs/problem.schema.json)",
        &setup_schema},

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "assignments/platforms/platforms.h"
 #include "cli/command.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -37,7 +38,7 @@ int run_tables(const TablesOptions& o) {
     }
     std::string text;
     try {
-      text = with_reference_tables(*have, path.string());
+      text = with_reference_tables(*have, path.string(), grade_formats());
     } catch (const Error& e) {
       fmt::print(stderr, "{}\n", format_diagnostic(e.diagnostic()));
       return kExitBadInput;

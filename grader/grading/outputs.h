@@ -1,5 +1,5 @@
-// The forms graded submissions are written in: text for a terminal, raygrade's own JSON,
-// Gradescope's and PrairieLearn's results.json, a CSV gradebook and an HTML feedback page.
+// The forms graded submissions are written in: text for a terminal, raygrade's own JSON, a CSV
+// gradebook and an HTML feedback page, and the pieces of a platform's results document.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -38,17 +38,12 @@ class JsonArrayStream {
   bool first_ = true;
 };
 
-// Gradescope's autograder results.json: score, execution_time, output, output_format,
-// visibility and one test per problem (name, score, max_score, status, output, output_format,
-// visibility). Every output is plain text ("output_format": "text"), never read as HTML or
-// Markdown. Every test is "visible": Gradescope hides a student's total score while any test
-// waits for a later time (after_due_date, after_published), so the feedback a policy allows
-// later comes from grading again then (docs/assignments.md).
-nlohmann::json gradescope_json(const SubmissionGrade& g, double execution_seconds);
-
-// PrairieLearn's external grader results.json: gradable, score in [0, 1], message, output
-// and one test per problem (name, description, points, max_points, message, output).
-nlohmann::json prairielearn_json(const SubmissionGrade& g);
+// The pieces of a platform's results document (platforms/: its results format): a
+// submission's summary (its points and named mistakes, or why it could not be graded, and its
+// findings), a problem's name as a test ("id: title"), and lines joined, each ended by '\n'.
+std::string grade_summary(const SubmissionGrade& g);
+std::string result_test_name(const GradeResult& r);
+std::string joined_lines(const std::vector<std::string>& lines);
 
 // One row per submission, one column per problem (its points), then the total; every cell
 // escaped with csv_cell.
@@ -67,7 +62,7 @@ enum class GradeLayout {
   kDocument,   // one document per submission: standard output for one, one file each in --out
   kJsonArray,  // json: {"submissions": [...]} on standard output, one file each in --out
   kGradebook,  // csv: a header, then a row per submission; in --out, one gradebook.csv
-  // csv-canvas, csv-moodle, csv-blackboard: a platform's import layout, a row per roster
+  // a platform's gradebook layout (platforms/platform.h), a row per roster
   // student (needs --roster); in --out, one gradebook.csv
   kClassGradebook,
 };
@@ -96,10 +91,9 @@ struct FeedbackPage {
 };
 std::string feedback_index_html(const std::vector<FeedbackPage>& pages);
 
-// text, json, gradescope, prairielearn, csv, html.
-const std::vector<GradeFormat>& grade_formats();
-const GradeFormat* find_grade_format(std::string_view name);
-// The names, in the table's order, separated by ", ".
-std::string grade_format_names();
+// raygrade's own grade formats: text, json, csv, html. The table of every grade format, these
+// and the platforms' (their results documents and gradebook layouts), is grade_formats()
+// (assignments/platforms/platforms.h).
+const std::vector<GradeFormat>& own_grade_formats();
 
 }  // namespace raygrade

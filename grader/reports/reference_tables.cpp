@@ -98,9 +98,9 @@ std::string solution_formats_table() {
   return out;
 }
 
-std::string grade_formats_table() {
+std::string grade_formats_table(const std::vector<GradeFormat>& grade_formats) {
   std::string out = "| format | what it is | with several submissions |\n| --- | --- | --- |\n";
-  for (const GradeFormat& f : grade_formats()) {
+  for (const GradeFormat& f : grade_formats) {
     std::string several;
     switch (f.layout) {
       case GradeLayout::kDocument:
@@ -132,18 +132,19 @@ std::string grade_formats_table() {
 
 }  // namespace
 
-const std::vector<ReferenceTable>& reference_tables() {
-  static const std::vector<ReferenceTable> tables = {
+std::vector<ReferenceTable> reference_tables(const std::vector<GradeFormat>& grade_formats) {
+  return {
       {"primitives", primitives_table()},
       {"kinds", kinds_table()},
       {"parts", parts_table()},
       {"solution-formats", solution_formats_table()},
-      {"grade-formats", grade_formats_table()},
+      {"grade-formats", grade_formats_table(grade_formats)},
   };
-  return tables;
 }
 
-std::string with_reference_tables(std::string_view text, const std::string& file_name) {
+std::string with_reference_tables(std::string_view text, const std::string& file_name,
+                                  const std::vector<GradeFormat>& grade_formats) {
+  const std::vector<ReferenceTable> tables = reference_tables(grade_formats);
   auto fault = [&](std::size_t at, std::string message) {
     int line = 1;
     for (std::size_t i = 0; i < at && i < text.size(); ++i) line += text[i] == '\n';
@@ -167,7 +168,7 @@ std::string with_reference_tables(std::string_view text, const std::string& file
     if (name == "end") fault(begin, "an end marker with no table before it");
     const ReferenceTable* table = nullptr;
     std::vector<std::string> names;
-    for (const auto& t : reference_tables()) {
+    for (const auto& t : tables) {
       names.push_back(t.name);
       if (t.name == name) table = &t;
     }

@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "grading/outputs.h"
+
 namespace raygrade {
 
 struct ReferenceTable {
@@ -19,10 +21,13 @@ struct ReferenceTable {
   std::string markdown;  // the table, ending with a newline
 };
 
-const std::vector<ReferenceTable>& reference_tables();
+// The tables; the grade formats' is `grade_formats`' (the table of every grade format, raygrade's
+// own and the platforms', which lives above the reports: assignments/platforms/platforms.h).
+std::vector<ReferenceTable> reference_tables(const std::vector<GradeFormat>& grade_formats);
 
 // `text` (the doc `file_name`) with every marked table written afresh. Throws Error naming the
 // file and line for a marker of an unknown table, or one with no end marker.
-std::string with_reference_tables(std::string_view text, const std::string& file_name);
+std::string with_reference_tables(std::string_view text, const std::string& file_name,
+                                  const std::vector<GradeFormat>& grade_formats);
 
 }  // namespace raygrade

@@ -184,9 +184,9 @@ const char* ink_class(Ink ink) {
   return "object";
 }
 
-class Canvas {
+class Sheet {
  public:
-  Canvas(P2 lo, P2 hi, double scale) : lo_(lo), hi_(hi), scale_(scale) {}
+  Sheet(P2 lo, P2 hi, double scale) : lo_(lo), hi_(hi), scale_(scale) {}
   double width() const { return (hi_.x - lo_.x) * scale_; }
   double height() const { return (hi_.y - lo_.y) * scale_; }
   P2 lo() const { return lo_; }
@@ -314,7 +314,7 @@ Panel draw_panel(const Sketch& f, const View& view, const std::vector<Vec3d>& pt
   lo = {lo.x - kMargin * w, lo.y - kMargin * h};
   hi = {hi.x + kMargin * w, hi.y + kMargin * h};
   double scale = std::min(max_w / (hi.x - lo.x), max_h / (hi.y - lo.y));
-  Canvas canvas(lo, hi, scale);
+  Sheet sheet(lo, hi, scale);
 
   auto project = [&](const std::vector<Vec3d>& v) {
     std::vector<P2> out;
@@ -324,8 +324,8 @@ Panel draw_panel(const Sketch& f, const View& view, const std::vector<Vec3d>& pt
   };
   auto draw_line = [&](P2 p, P2 d, const char* cls) -> std::optional<P2> {
     P2 a, b;
-    if (!clip_line(p, d, canvas.lo(), canvas.hi(), a, b)) return std::nullopt;
-    canvas.polyline({a, b}, false, cls);
+    if (!clip_line(p, d, sheet.lo(), sheet.hi(), a, b)) return std::nullopt;
+    sheet.polyline({a, b}, false, cls);
     return a.y > b.y ? a : b;
   };
 
@@ -340,21 +340,21 @@ Panel draw_panel(const Sketch& f, const View& view, const std::vector<Vec3d>& pt
       switch (item.type) {
         case T::kPath: {
           auto p2 = project(item.points);
-          canvas.polyline(p2, item.closed, cls);
-          if (!p2.empty()) canvas.label(canvas.px(p2[0]), item.label, cls);
+          sheet.polyline(p2, item.closed, cls);
+          if (!p2.empty()) sheet.label(sheet.px(p2[0]), item.label, cls);
           break;
         }
         case T::kCircle: {
           P2 c = view.at(item.points[0]);
-          canvas.circle(c, item.radius, cls);
-          canvas.label(canvas.px({c.x, c.y + item.radius}), item.label, cls);
+          sheet.circle(c, item.radius, cls);
+          sheet.label(sheet.px({c.x, c.y + item.radius}), item.label, cls);
           break;
         }
         case T::kLine: {
           P2 d{dot(item.points[1], view.u), dot(item.points[1], view.v)};
           if (std::hypot(d.x, d.y) < kTinyDirection) break;
           if (auto top = draw_line(view.at(item.points[0]), d, cls)) {
-            canvas.label(canvas.px(*top), item.label, cls);
+            sheet.label(sheet.px(*top), item.label, cls);
           }
           break;
         }
@@ -365,7 +365,7 @@ Panel draw_panel(const Sketch& f, const View& view, const std::vector<Vec3d>& pt
           if (nn < kTinyDirection * length_squared(n)) break;  // parallel to the page
           double k = dot(n, item.points[0] - view.ref) / nn;
           if (auto top = draw_line({k * n2.x, k * n2.y}, {-n2.y, n2.x}, cls)) {
-            canvas.label(canvas.px(*top), item.label, cls);
+            sheet.label(sheet.px(*top), item.label, cls);
           }
           break;
         }
@@ -375,46 +375,46 @@ Panel draw_panel(const Sketch& f, const View& view, const std::vector<Vec3d>& pt
           Vec3d s = cross(a, view.m);
           P2 base = view.at(b);
           if (length(s) < kTinyDirection) {
-            canvas.circle(base, item.radius, cls);  // seen along its axis
-            canvas.label(canvas.px(base), item.label, cls);
+            sheet.circle(base, item.radius, cls);  // seen along its axis
+            sheet.label(sheet.px(base), item.label, cls);
             break;
           }
           s = normalized(s);
           if (item.height > 0) {
             Vec3d top = b + item.height * a;
-            canvas.polyline(project(rim(b, a, item.radius)), true, cls);
-            canvas.polyline(project(rim(top, a, item.radius)), true, cls);
+            sheet.polyline(project(rim(b, a, item.radius)), true, cls);
+            sheet.polyline(project(rim(top, a, item.radius)), true, cls);
             for (double side : {-1.0, 1.0}) {
-              canvas.polyline(project({b + side * item.radius * s, top + side * item.radius * s}),
-                              false, cls);
+              sheet.polyline(project({b + side * item.radius * s, top + side * item.radius * s}),
+                             false, cls);
             }
           } else {
             P2 d{dot(a, view.u), dot(a, view.v)};
             draw_line(view.at(b), d, "guide");
             for (double side : {-1.0, 1.0}) draw_line(view.at(b + side * item.radius * s), d, cls);
           }
-          canvas.label(canvas.px(base), item.label, cls);
+          sheet.label(sheet.px(base), item.label, cls);
           break;
         }
         case T::kArrow:
-          canvas.arrow(view.at(item.points[0]), view.at(item.points[1]), cls);
-          canvas.label(canvas.px(view.at(item.points[1])), item.label, cls);
+          sheet.arrow(view.at(item.points[0]), view.at(item.points[1]), cls);
+          sheet.label(sheet.px(view.at(item.points[1])), item.label, cls);
           break;
         case T::kPoint: {
           P2 c = view.at(item.points[0]);
-          canvas.marker(c, cls);
-          canvas.label(canvas.px(c), item.label, cls);
+          sheet.marker(c, cls);
+          sheet.label(sheet.px(c), item.label, cls);
           break;
         }
-        case T::kText: canvas.label(canvas.px(view.at(item.points[0])), item.label, cls); break;
+        case T::kText: sheet.label(sheet.px(view.at(item.points[0])), item.label, cls); break;
       }
     }
   }
 
   Panel panel;
-  panel.width = static_cast<int>(std::ceil(canvas.width()));
-  panel.height = static_cast<int>(std::ceil(std::max(canvas.height(), canvas.labels_bottom())));
-  panel.body = canvas.body();
+  panel.width = static_cast<int>(std::ceil(sheet.width()));
+  panel.height = static_cast<int>(std::ceil(std::max(sheet.height(), sheet.labels_bottom())));
+  panel.body = sheet.body();
   return panel;
 }
 

@@ -8,18 +8,24 @@
 // formulas (decimal_places, formula), vars/var (name, scale = decimals shown, min, max) and
 // var_sets/var_set (ident, var name=value ..., answer). The answer of each set is taken as
 // written, so Canvas's own arithmetic and rounding never decide a student's answer.
+#include "assignments/platforms/canvas.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <pugixml.hpp>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "assignments/quiz_export.h"
+#include "assignments/variants.h"
 #include "core/escape.h"
+#include "core/name_key.h"
+#include "grading/outputs.h"
 
 namespace raygrade {
 namespace {
@@ -232,50 +238,7 @@ std::vector<ZipEntry> canvas_qti_files(const Quiz& quiz) {
           {href, canvas_assessment_xml(quiz, ident), false}};
 }
 
-std::string quiz_sets_csv(const Quiz& quiz) {
-  std::string out = "problem,set,variant\n";
-  for (const QuizProblem& q : quiz.problems) {
-    for (std::size_t s = 0; s < q.set_keys.size(); ++s) {
-      out += fmt::format("{},set-{},{}\n", csv_cell(q.id), s + 1, csv_cell(q.set_keys[s]));
-    }
-  }
-  return out;
-}
-
-std::string quiz_summary(const Quiz& quiz, int max_sets) {
-  std::size_t questions = 0, sets = 0;
-  bool cut = false;
-  for (const QuizProblem& q : quiz.problems) {
-    questions += q.parts.size();
-    sets = std::max(sets, q.set_keys.size());
-    cut = cut || q.set_keys.size() > static_cast<std::size_t>(max_sets);
-  }
-  std::string out =
-      fmt::format("{} questions from {} problems, up to {} sets of numbers each", questions,
-                  quiz.problems.size(), std::min<std::size_t>(sets, max_sets));
-  if (cut) out += fmt::format(" (the platform takes at most {}; the first are kept)", max_sets);
-  for (const std::string& n : quiz.notes) out += "; " + n;
-  // What the questions cannot carry: each sentence once, with the problems it concerns.
-  std::vector<std::pair<std::string, std::vector<std::string>>> lost;
-  for (const QuizProblem& q : quiz.problems) {
-    for (const std::string& sentence : q.lost) {
-      auto it = std::find_if(lost.begin(), lost.end(),
-                             [&](const auto& l) { return l.first == sentence; });
-      if (it == lost.end()) it = lost.insert(lost.end(), {sentence, {}});
-      if (it->second.empty() || it->second.back() != q.id) it->second.push_back(q.id);
-    }
-  }
-  for (const auto& [sentence, ids] : lost) {
-    std::string which;
-    if (ids.size() == quiz.problems.size() && ids.size() > 1) {
-      which = "every problem asked";
-    } else {
-      for (const std::string& id : ids) which += (which.empty() ? "" : ", ") + id;
-    }
-    out += fmt::format("; not carried: {} ({})", sentence, which);
-  }
-  return out;
-}
+namespace {
 
 LmsPackage canvas_package(const LmsExportInput& in, const std::string& out) {
   Quiz quiz = build_quiz(*in.spec, *in.bank,
@@ -292,6 +255,163 @@ LmsPackage canvas_package(const LmsExportInput& in, const std::string& out) {
       "is: `raygrade solve ASSIGNMENT --student KEY` shows its worked solution.",
       out, zip, quiz_summary(quiz, kCanvasMaxSets));
   return p;
+}
+
+// Canvas's NON_ASSIGNMENT_COLUMN_HEADERS (app/models/gradebook_importer.rb): a column whose title
+// contains one of them is not read as an assignment.
+constexpr std::string_view kCanvasNonAssignmentWords[] = {
+    "Current Score", "Current Points", "Current Grade",  "Final Score",    "Final Points",
+    "Final Grade",   "Override Score", "Override Grade", "Override Status"};
+
+// Ruby's \s: space, tab, line feed, vertical tab, form feed, carriage return.
+bool ruby_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
+
+// The id Canvas's Assignment.title_and_id reads at the end of a title (/\A(.*)\s\((\d+)\)\z/),
+// or "".
+std::string canvas_title_id(std::string_view title) {
+  if (title.size() < 4 || title.back() != ')') return "";
+  std::size_t open = title.rfind('(');
+  if (open == std::string_view::npos || open == 0 || !ruby_space(title[open - 1])) return "";
+  std::string_view digits = title.substr(open + 1, title.size() - open - 2);
+  // (.*) matches no line break: the id must be on the title's only line.
+  if (!is_column_id(digits) || title.substr(0, open).find('\n') != std::string_view::npos)
+    return "";
+  return std::string(digits);
+}
+
+// Canvas's gradebook importer (instructure/canvas-lms): a column whose title contains one of
+// kCanvasNonAssignmentWords (case-sensitive) is dropped; a title ending in white space and
+// "(digits)" is read as "Title (assignment id)" (Assignment.title_and_id), so without
+// `column_id` it would grade another assignment. `column_id` must be digits.
+ColumnCheck canvas_column(const std::string& title, const std::string& column_id) {
+  ColumnCheck c;
+  if (!column_id.empty() && !is_column_id(column_id)) {
+    c.error = fmt::format("--canvas-assignment-id '{}' is not a Canvas assignment id (digits)",
+                          printable(column_id));
+    return c;
+  }
+  for (std::string_view words : kCanvasNonAssignmentWords) {
+    if (title.find(words) != std::string::npos) {
+      c.error = fmt::format(
+          "the assignment's title \"{}\" contains \"{}\": Canvas's gradebook import drops "
+          "such a column as one of its own totals; give the assignment another title",
+          printable(title), words);
+      return c;
+    }
+  }
+  std::string id = canvas_title_id(title);
+  if (column_id.empty() && !id.empty()) {
+    c.error = fmt::format(
+        "Canvas reads the title \"{}\" as the assignment of id {}: give the assignment's "
+        "Canvas id with --canvas-assignment-id (the column is then \"Title (id)\"), or "
+        "another title",
+        printable(title), id);
+  }
+  return c;
+}
+
+// Canvas matches a row by its ID (the roster's canvas_id, when it has one), SIS User ID (the
+// roster's id) or SIS Login ID (the email); the row under the header gives the points possible,
+// and a new column name makes a new assignment. With the assignment's id, Canvas's own
+// "Title (id)": matched by the id.
+std::string canvas_gradebook(const ClassRows& book, const std::string& title,
+                             const std::string& column_id) {
+  std::string column = column_id.empty() ? title : fmt::format("{} ({})", title, column_id);
+  std::string s = "Student,ID,SIS User ID,SIS Login ID,Section," + csv_cell(column) + "\n";
+  s += "    Points Possible,,,,," + (book.points ? format_points(*book.points) : "") + "\n";
+  for (const ClassRow& row : book.rows) {
+    const StudentIdentity& who = row.student;
+    std::string name = who.name.empty() ? who.id : who.name;
+    s += csv_cell(name) + "," + csv_cell(row.platform_id) + "," + csv_cell(who.id) + "," +
+         csv_cell(who.email) + ",," + format_points(row.score) + "\n";
+  }
+  return s;
+}
+
+// A name as Canvas writes it into a file's name, as a key: case-folded and normalised
+// (name_key), then without ASCII spaces and punctuation. Letters outside ASCII are kept.
+std::string canvas_name_key(std::string_view s) {
+  std::string out;
+  for (unsigned char c : name_key(s)) {
+    if (std::isalnum(c) || c >= 0x80) out += static_cast<char>(c);
+  }
+  return out;
+}
+
+// A roster student's name as Canvas writes it, as a key: Canvas writes the last name first, and a
+// roster name's last word is taken as the last name.
+std::string canvas_roster_key(const StudentIdentity& s) {
+  std::string name = trimmed(s.name);
+  std::size_t cut = name.rfind(' ');
+  return canvas_name_key(cut == std::string::npos ? name
+                                                  : name.substr(cut + 1) + name.substr(0, cut));
+}
+
+// Canvas's "Download Submissions": "<lastfirst>[_LATE]_<user id>_<submission id>_<file>", the
+// name the student's sortable name in lower case without spaces or punctuation.
+std::optional<BulkName> parse_canvas(std::string_view path) {
+  static const std::regex kCanvas(R"(^([^_/]+?)(_LATE)?_([0-9]+)_([0-9]+)_([^/]+)$)");
+  std::cmatch m;
+  if (!std::regex_match(path.data(), path.data() + path.size(), m, kCanvas)) return std::nullopt;
+  return BulkName{m[3].str(), m[1].str(), m[5].str()};
+}
+
+// By the roster's canvas_id column when it has one; else by the name, as Canvas writes it (last
+// name first): a roster name's last word is taken as the last name.
+const StudentIdentity* canvas_owner(const BulkName& n, const BulkRoster& r, std::string& problem) {
+  const auto& roster = *r.roster;
+  bool by_id = false;
+  for (const auto& id : r.platform_ids) by_id = by_id || !id.empty();
+  if (by_id) {
+    std::size_t i = 0;
+    return only_roster_entry(
+        roster, [&](const StudentIdentity&) { return r.platform_ids[i++] == n.platform_id; },
+        fmt::format("Canvas user {} ({})", n.platform_id, n.name), problem);
+  }
+  // A name with no letter or digit is nobody's (its key is empty).
+  std::string want = canvas_name_key(n.name);
+  std::size_t i = 0;
+  return only_roster_entry(
+      roster, [&](const StudentIdentity&) { return !want.empty() && r.name_keys[i++] == want; },
+      fmt::format("Canvas's '{}' (user {}; the roster has no canvas_id column to find it by)",
+                  n.name, n.platform_id),
+      problem);
+}
+
+}  // namespace
+
+LmsExport Canvas::lms_export() {
+  LmsExport e;
+  e.summary =
+      "a QTI 1.2 package of Classic Quizzes formula questions, one per number asked, with "
+      "raygrade's variants and reference answers as the variable sets";
+  e.takes_roster = true;
+  e.roster_help = "one set of numbers per roster student";
+  e.make = &canvas_package;
+  e.max_sets = kCanvasMaxSets;
+  return e;
+}
+
+GradebookLayout Canvas::gradebook() {
+  return {"csv-canvas",
+          "with --roster: Canvas's gradebook import (a Points Possible row)",
+          "--canvas-assignment-id",
+          "the Canvas id of the assignment (its page's address ends in it); the column is then "
+          "titled \"Title (id)\", which Canvas's import matches by the id",
+          &canvas_column,
+          &canvas_gradebook};
+}
+
+BulkFormat Canvas::bulk() {
+  BulkFormat f;
+  f.naming = "<lastfirst>_<user id>_<submission id>_<file>";
+  // Moodle never writes a name Canvas's naming fits (its participant number is followed by
+  // "_assignsubmission", never by a number): a zip with any file this naming fits is Canvas's.
+  f.claims_zip = true;
+  f.parse = &parse_canvas;
+  f.roster_key = &canvas_roster_key;
+  f.owner = &canvas_owner;
+  return f;
 }
 
 }  // namespace raygrade

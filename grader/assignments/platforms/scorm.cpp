@@ -1,12 +1,14 @@
 // The SCORM package of an assignment: its generic practice page as the package's one SCO, and
 // imsmanifest.xml, the content package's manifest (SCORM 1.2 or 2004 4th edition).
+#include "assignments/platforms/scorm.h"
+
 #include <fmt/format.h>
 
 #include <pugixml.hpp>
 #include <sstream>
 
 #include "assignments/handout.h"
-#include "assignments/lms_export.h"
+#include "assignments/platforms/scorm_assets.h"
 #include "assignments/variants.h"
 #include "core/escape.h"
 
@@ -131,9 +133,14 @@ LmsPackage scorm_package(const LmsExportInput& in, const std::string& out) {
                            "\"per_student\": false (one set of numbers for everyone) to export it",
                            "scorm-per-student"});
   }
-  const ScormFlavour& f = flavour(in.scorm_version);
+  const ScormFlavour& f = flavour(in.version);
   PracticeAssets assets = practice_assets(spec, read_file_bytes(in.grader_js));
-  assets.scorm = std::string(f.version);
+  // The page reports to the LMS around it: scorm_page.js runs first and reads the version.
+  assets.lms_data = {{"scorm", std::string(f.version)}};
+  assets.lms_script = kScormScript;
+  assets.kept =
+      "Your answers are kept in this browser and, when the page is opened from your course's "
+      "site, by the site too; each Check sends it your score on the whole assignment.";
   // The generic page: the LMS launches the same package for every student.
   Handout page =
       make_handout(spec, student_problems(spec, in.bank->problems, ""), nullptr, &assets);
@@ -164,6 +171,22 @@ LmsPackage scorm_package(const LmsExportInput& in, const std::string& out) {
       zipped, f.schema_version, spec.id, spec.problems.size(), spec.problems.size() == 1 ? "" : "s",
       in.grader_js.string());
   return p;
+}
+
+LmsExport Scorm::lms_export() {
+  LmsExport e;
+  e.summary =
+      "the practice page as a SCORM package for any LMS (Moodle, Canvas, Blackboard): graded in "
+      "the student's browser, the score sent to the LMS";
+  e.make = &scorm_package;
+  e.takes_grader_js = true;
+  e.grader_js_help =
+      "raygrade.js of the web build (scripts/build-web.sh), which grades the practice page in "
+      "the student's browser";
+  e.versions = scorm_versions();
+  e.version_option = "--scorm";
+  e.version_help = "the SCORM version (default 1.2; 2004 is 4th edition)";
+  return e;
 }
 
 }  // namespace raygrade

@@ -1,14 +1,16 @@
 // The PrairieLearn course fragment of an assignment: one question per problem, and raygrade
 // with the assignment in serverFilesCourse.
+#include "assignments/platforms/prairielearn.h"
+
 #include <fmt/format.h>
 
 #include <set>
 
 #include "assignments/answer_form.h"
-#include "assignments/lms_export.h"
-#include "assignments/prairielearn_assets.h"
+#include "assignments/platforms/prairielearn_assets.h"
 #include "assignments/variants.h"
 #include "core/escape.h"
+#include "grading/outputs.h"
 
 namespace raygrade {
 namespace {
@@ -294,6 +296,67 @@ std::vector<ZipEntry> prairielearn_course(const AssignmentSpec& spec,
     entries.push_back({folder + "raygrade.json", question.dump(2) + "\n", false});
   }
   return entries;
+}
+
+namespace {
+
+LmsPackage prairielearn_package(const LmsExportInput& in, const std::string& out) {
+  LmsPackage p;
+  p.files = prairielearn_course(*in.spec, in.bank->problems, in.bank->bank, in.binary);
+  p.next_step = fmt::format(
+      "Wrote {0}/questions/{1}/ ({2} questions) and {0}/serverFilesCourse/raygrade/ (raygrade "
+      "from {3}). Copy both folders into the PrairieLearn course's repository and list the "
+      "questions in an assessment.",
+      out, safe_file_name(in.spec->id), in.spec->problems.size(), in.binary.string());
+  return p;
+}
+
+}  // namespace
+
+LmsExport PrairieLearn::lms_export() {
+  LmsExport e;
+  e.summary = "one question per problem, with raygrade in serverFilesCourse";
+  e.ships_binary = true;
+  e.make = &prairielearn_package;
+  return e;
+}
+
+nlohmann::json prairielearn_json(const SubmissionGrade& g) {
+  nlohmann::json tests = nlohmann::json::array();
+  for (const auto& r : g.results) {
+    auto lines = feedback_lines(r);
+    tests.push_back({{"name", result_test_name(r)},
+                     {"description", r.problem_id},
+                     {"points", r.score},
+                     {"max_points", r.max_score},
+                     {"message", r.score >= r.max_score ? "Right."
+                                 : lines.empty()        ? ""
+                                                        : lines.front()},
+                     {"output", joined_lines(lines)}});
+  }
+  return {{"gradable", g.gradable},
+          {"score", g.gradable ? std::clamp(g.fraction(), 0.0, 1.0) : 0.0},
+          {"message", grade_summary(g)},
+          {"output", g.gradable ? "" : grade_summary(g)},
+          {"tests", tests}};
+}
+
+namespace {
+
+std::string prairielearn_format(const SubmissionGrade& g, double /*seconds*/) {
+  return json_text(prairielearn_json(g)) + "\n";
+}
+
+}  // namespace
+
+GradeFormat PrairieLearn::results_format() {
+  return {"prairielearn",
+          "PrairieLearn's external grader results.json",
+          ".json",
+          GradeLayout::kDocument,
+          true,
+          true,
+          &prairielearn_format};
 }
 
 }  // namespace raygrade
