@@ -19,7 +19,6 @@ graded full marks, or a planted slip that is (the class would not test what it s
 
 import argparse
 import json
-import os
 import pathlib
 import subprocess
 import sys
