@@ -409,7 +409,6 @@ TEST(ChangeOperators, TheComplementOfANumberBetweenZeroAndOne) {
   EXPECT_TRUE(complements(sym("b") * sym("c")).empty());
 }
 
-
 // Both polarizations' squares left out: n1 = 1, n2 = 2, θi = 60°, so cos θi = 0.5, sin θt =
 // sin 60°/2 = √3/4, cos θt = √(1 − 3/16) = √13/4 = 0.901388. The amplitudes r_s = (0.5 −
 // 2·0.901388)/(0.5 + 2·0.901388) = −0.565741 and r_p = (0.901388 − 1)/(0.901388 + 1) =

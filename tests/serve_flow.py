@@ -317,7 +317,8 @@ def start_server():
     server = subprocess.Popen([RAYGRADE, "serve", "--data", DATA, "--listen", "127.0.0.1:0",
                                "--assignments", os.path.join(SOURCE, "assignments")] + DATABASE,
                               stdout=subprocess.PIPE, text=True,
-                              env=dict(os.environ, RAYGRADE_OUTBOX_BASE_MS="50"))
+                              env=dict(os.environ, RAYGRADE_OUTBOX_BASE_MS="50",
+                                       RAYGRADE_OUTBOX_LEASE_MS="2000"))
     lines = [server.stdout.readline().strip() for _ in range(5)]
     tool = re.match(r"raygrade serve: listening on (http://127\.0\.0\.1:\d+)$", lines[0])[1]
     check(lines[1:] == [f"registration URL: {tool}/lti/register",
