@@ -3,10 +3,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <chrono>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <stdexcept>
 
+#include "core/escape.h"
 #include "serve/http_client.h"
 
 namespace raygrade::serve {
@@ -70,6 +73,14 @@ std::string resolved(const std::string& target, const std::string& base) {
   return origin + folder.substr(0, folder.rfind('/') + 1) + target;
 }
 
+// A user_id a launch's sub can be and a database keeps whole: not empty, no C0 control
+// character (NUL among them) and no DEL.
+bool usable_user_id(std::string_view id) {
+  return !id.empty() && std::none_of(id.begin(), id.end(), [](char c) {
+    return static_cast<unsigned char>(c) < 0x20 || c == '\x7f';
+  });
+}
+
 Member member_of(const nlohmann::json& m) {
   Member out;
   out.user_id = text_of(m, "user_id");
@@ -115,11 +126,22 @@ std::vector<Member> read_memberships(const std::string& url, const std::string& 
   std::set<std::string> seen_members, seen_pages;
   HttpHeaders headers = {{"Authorization", "Bearer " + token},
                          {"Accept", std::string(kMembershipType)}};
+  const std::string origin = origin_of(url);
+  HttpBounds bounds{kMaxRosterPageBytes,
+                    std::chrono::steady_clock::now() + std::chrono::seconds(kRosterSeconds)};
   std::string page = url;
   for (int n = 0; !page.empty(); ++n) {
     if (n == kMaxRosterPages || !seen_pages.insert(page).second)
       throw std::runtime_error(fmt::format("the roster's pages do not end (page {})", n + 1));
-    HttpAnswer a = http_get(page, headers);
+    // The bearer token is for the membership service alone.
+    if (origin_of(page) != origin)
+      throw std::runtime_error(
+          fmt::format("page {} of the roster is at another origin than the membership service "
+                      "({}), not asked for",
+                      n + 1, printable(page, 200)));
+    if (std::chrono::steady_clock::now() >= bounds.deadline)
+      throw std::runtime_error(fmt::format("the roster was not read in {} s", kRosterSeconds));
+    HttpAnswer a = http_get(page, headers, bounds);
     if (!http_ok(a)) throw std::runtime_error(http_failure("memberships", a));
     nlohmann::json j = nlohmann::json::parse(a.body, nullptr, false);
     if (!j.is_object() || !j.contains("members") || !j["members"].is_array())
@@ -127,7 +149,7 @@ std::vector<Member> read_memberships(const std::string& url, const std::string& 
     for (const auto& m : j["members"]) {
       if (!m.is_object()) continue;
       Member got = member_of(m);
-      if (!got.user_id.empty() && seen_members.insert(got.user_id).second)
+      if (usable_user_id(got.user_id) && seen_members.insert(got.user_id).second)
         members.push_back(std::move(got));
     }
     page = next_link(a.link, page);
