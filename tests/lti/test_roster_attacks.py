@@ -33,6 +33,8 @@ from test_roster import INSTRUCTOR, RosterCase, absent_items, member  # noqa: E4
 # whole read of a roster is bounded (kRosterSeconds of grader/serve/roster.h, 30 s), and
 # the page is built after it.
 REPORT_WAIT = 60
+# A container's start up to its one member's name.
+NAMED = b'{"members": [{"user_id": "a", "roles": ["Learner"], "name": "'
 
 
 class Foreign:
@@ -133,10 +135,12 @@ class AnswerTest(AttackCase):
                                           json.dumps(body).encode()).decode())
 
     def test_answers_that_are_not_membership_containers(self):
-        """Not JSON, JSON without members, members not a list: the report comes and says the
-        roster could not be read."""
+        """Not JSON, JSON without members, members not a list, a name of bytes that are not
+        UTF-8 or of a lone surrogate's escape (RFC 8259 asks for UTF-8): the report comes and
+        says the roster could not be read."""
         self.set_members([member("ada", "Ada Lovelace")])
         for body in (b"<html>Service unavailable</html>", b"", b"\xff\xfe\x00{",
+                     NAMED + b'\xff\xc0"}]}', NAMED + b'\\udc80"}]}',
                      {"id": "x"}, {"members": {"user_id": "a"}}, [member("a", "A")],
                      {"members": None}):
             self.raw(body)
@@ -223,7 +227,8 @@ class IdentityTest(AttackCase):
         report2, rows2 = self.instructor_views()
         self.assertEqual(sorted(r["student"] for r in rows1), ["Ada In One", "Alan Turing"])
         self.assertEqual(sorted(r["student"] for r in rows2), ["Ada In Two", "Grace Hopper"])
-        self.assertEqual(sorted(absent_items(report2)), ["ada (Ada In Two)", "grace (Grace Hopper)"])
+        self.assertEqual(sorted(absent_items(report2)),
+                         ["ada (Ada In Two)", "grace (Grace Hopper)"])
         for r in rows2:
             self.assertEqual(float(r["total"]), 0, r)
         for name in ("Alan Turing", "Ada In One"):
