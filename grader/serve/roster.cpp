@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <stdexcept>
@@ -21,11 +23,6 @@ std::string trimmed(std::string_view s) {
   if (from == std::string_view::npos) return "";
   std::size_t to = s.find_last_not_of(" \t");
   return std::string(s.substr(from, to - from + 1));
-}
-
-std::string text_of(const nlohmann::json& o, const char* name) {
-  auto it = o.find(name);
-  return it != o.end() && it->is_string() ? it->get<std::string>() : std::string();
 }
 
 // The rel parameter of one link's parameters ("; rel=\"next\"; title=x"), quotes removed.
@@ -81,23 +78,91 @@ bool usable_user_id(std::string_view id) {
   });
 }
 
-Member member_of(const nlohmann::json& m) {
-  Member out;
-  out.user_id = text_of(m, "user_id");
-  out.name = text_of(m, "name");
-  if (out.name.empty())
-    out.name = trimmed(text_of(m, "given_name") + " " + text_of(m, "family_name"));
-  out.email = text_of(m, "email");
-  nlohmann::json roles = nlohmann::json::array();
-  if (m.contains("roles") && m["roles"].is_array()) {
-    for (const auto& r : m["roles"])
-      if (r.is_string()) roles.push_back(r);
+// The members of one page read as the parser meets them (its SAX events), never as a tree of
+// the whole page: a page of many small members costs what the members kept cost. A member is
+// an object of the top object's "members" array; of it are read its string fields and the
+// strings of its "roles" array. `take` gets each member; it returns false to stop the parse.
+class PageReader : public nlohmann::json::json_sax_t {
+ public:
+  explicit PageReader(std::function<bool(Member)> take) : take_(std::move(take)) {}
+  // The page was a membership container (an object with a "members" array).
+  bool container() const { return top_object_ && saw_members_; }
+
+  bool start_object(std::size_t) override {
+    if (depth_ == 0) top_object_ = true;
+    if (depth_ == 2 && in_members_) {
+      in_member_ = true;
+      fields_.clear();
+      roles_ = nlohmann::json::array();
+    }
+    ++depth_;
+    return true;
   }
-  out.roles = roles.dump();
-  out.status = text_of(m, "status");
-  if (out.status != "Inactive" && out.status != "Deleted") out.status = "Active";
-  return out;
-}
+  bool end_object() override {
+    --depth_;
+    if (depth_ == 2 && in_member_) {
+      in_member_ = false;
+      return take_(member());
+    }
+    return true;
+  }
+  bool start_array(std::size_t) override {
+    if (depth_ == 1 && top_key_ == "members") in_members_ = saw_members_ = true;
+    if (depth_ == 3 && in_member_ && member_key_ == "roles") in_roles_ = true;
+    ++depth_;
+    return true;
+  }
+  bool end_array() override {
+    --depth_;
+    if (depth_ == 1) in_members_ = false;
+    if (depth_ == 3) in_roles_ = false;
+    return true;
+  }
+  bool key(string_t& k) override {
+    if (depth_ == 1) top_key_ = k;
+    if (depth_ == 3) member_key_ = k;
+    return true;
+  }
+  bool string(string_t& v) override {
+    if (depth_ == 3 && in_member_) fields_[member_key_] = v;
+    if (depth_ == 4 && in_roles_) roles_.push_back(v);
+    return true;
+  }
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+    return false;
+  }
+
+ private:
+  Member member() const {
+    auto field = [&](const char* name) {
+      auto it = fields_.find(name);
+      return it == fields_.end() ? std::string() : it->second;
+    };
+    Member out;
+    out.user_id = field("user_id");
+    out.name = field("name");
+    if (out.name.empty()) out.name = trimmed(field("given_name") + " " + field("family_name"));
+    out.email = field("email");
+    out.roles = roles_.dump();
+    out.status = field("status");
+    if (out.status != "Inactive" && out.status != "Deleted") out.status = "Active";
+    return out;
+  }
+
+  std::function<bool(Member)> take_;
+  int depth_ = 0;  // containers open
+  bool top_object_ = false, saw_members_ = false;
+  bool in_members_ = false, in_member_ = false, in_roles_ = false;
+  std::string top_key_, member_key_;
+  std::map<std::string, std::string> fields_;  // the member's string fields
+  nlohmann::json roles_;
+};
 
 }  // namespace
 
@@ -143,15 +208,19 @@ std::vector<Member> read_memberships(const std::string& url, const std::string& 
       throw std::runtime_error(fmt::format("the roster was not read in {} s", kRosterSeconds));
     HttpAnswer a = http_get(page, headers, bounds);
     if (!http_ok(a)) throw std::runtime_error(http_failure("memberships", a));
-    nlohmann::json j = nlohmann::json::parse(a.body, nullptr, false);
-    if (!j.is_object() || !j.contains("members") || !j["members"].is_array())
+    bool too_many = false;
+    PageReader reader([&](Member got) {
+      if (!usable_user_id(got.user_id) || !seen_members.insert(got.user_id).second) return true;
+      if (members.size() == kMaxRosterMembers) return !(too_many = true);
+      members.push_back(std::move(got));
+      return true;
+    });
+    bool parsed = nlohmann::json::sax_parse(a.body, &reader);
+    if (too_many)
+      throw std::runtime_error(
+          fmt::format("the roster has more than {} members", kMaxRosterMembers));
+    if (!parsed || !reader.container())
       throw std::runtime_error("memberships: the answer is not a membership container");
-    for (const auto& m : j["members"]) {
-      if (!m.is_object()) continue;
-      Member got = member_of(m);
-      if (usable_user_id(got.user_id) && seen_members.insert(got.user_id).second)
-        members.push_back(std::move(got));
-    }
     page = next_link(a.link, page);
   }
   return members;

@@ -21,6 +21,9 @@ inline constexpr int kMaxRosterPages = 1000;
 // The most bytes of one page: 32 MiB holds some 100,000 members of a few hundred bytes (a
 // platform that does not page sends them all at once); a longer answer is not read.
 inline constexpr std::size_t kMaxRosterPageBytes = std::size_t{32} << 20;
+// The most members a roster keeps (read one at a time, never as a tree of the page): the
+// largest courses; a roster longer than that is not read.
+inline constexpr std::size_t kMaxRosterMembers = 100000;
 // The most seconds a whole roster is read in (every page, each request cut at this time): an
 // instructor's report waits no longer for a platform that hangs or sends a byte at a time.
 inline constexpr int kRosterSeconds = 30;
@@ -33,7 +36,7 @@ inline constexpr int kRosterSeconds = 30;
 // Active. The token goes only to `url`'s origin: a next link elsewhere ends the read. Throws
 // std::runtime_error saying why the roster could not be read (a next link to another
 // origin, pages without end, a page longer than kMaxRosterPageBytes, more than
-// kRosterSeconds in all).
+// kMaxRosterMembers members, more than kRosterSeconds in all).
 std::vector<Member> read_memberships(const std::string& url, const std::string& token);
 
 // The target of the Link header's rel="next" link ("" when there is none), a relative target

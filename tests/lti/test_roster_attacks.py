@@ -175,6 +175,19 @@ class AnswerTest(AttackCase):
             peak = [int(x.split()[1]) for x in f if x.startswith("VmHWM:")][0]  # kB
         self.assertLess(peak, 120 << 10, f"the tool's peak memory {peak} kB")
 
+    def test_a_page_of_many_tiny_members(self):
+        """700,000 members of a few bytes each in one page of 26 MiB (below the page's bound):
+        more than kMaxRosterMembers (100,000), so the roster is not read, and the tool's memory
+        stays far below what a tree of 700,000 JSON objects takes (some 700 MB)."""
+        self.set_members([member("ada", "Ada Lovelace")])
+        self.raw(b'{"members": [' + b",".join(b'{"user_id":"u%06d","roles":["Learner"]}' % i
+                                              for i in range(700_000)) + b"]}")
+        report, _ = self.report()
+        self.assertTrue("could not be read" in report and "100000" in report, "no note")
+        with open(f"/proc/{self.tproc.pid}/status") as f:
+            peak = [int(x.split()[1]) for x in f if x.startswith("VmHWM:")][0]  # kB
+        self.assertLess(peak, 150 << 10, f"the tool's peak memory {peak} kB")
+
     def test_a_hanging_or_dripping_service(self):
         """A service that answers nothing for two minutes, and one that sends a byte a second
         of a 1 MB body: the report comes within REPORT_WAIT seconds and says why."""
