@@ -37,6 +37,7 @@ HttpAnswer http_get(const std::string& url, const HttpHeaders& headers, const Ht
 // The origin of an http(s) URL (RFC 6454): "scheme://host[:port]", scheme and host in lower
 // case, the scheme's default port left out. Throws Refusal (400) when it is not http(s).
 std::string origin_of(const std::string& url);
+
 HttpAnswer http_post(const std::string& url, const std::string& body,
                      const std::string& content_type, const HttpHeaders& headers = {});
 

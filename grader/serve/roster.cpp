@@ -211,7 +211,10 @@ std::vector<Member> read_memberships(const std::string& url, const std::string& 
     bool too_many = false;
     PageReader reader([&](Member got) {
       if (!usable_user_id(got.user_id) || !seen_members.insert(got.user_id).second) return true;
-      if (members.size() == kMaxRosterMembers) return !(too_many = true);
+      if (members.size() == kMaxRosterMembers) {
+        too_many = true;
+        return false;  // the parse stops here
+      }
       members.push_back(std::move(got));
       return true;
     });
