@@ -2,6 +2,7 @@
 // and who is a learner.
 #include <gtest/gtest.h>
 
+#include "serve/http_client.h"
 #include "serve/roster.h"
 
 namespace serve_roster_test {
@@ -9,6 +10,7 @@ namespace serve_roster_test {
 using raygrade::serve::is_learner;
 using raygrade::serve::Member;
 using raygrade::serve::next_link;
+using raygrade::serve::origin_of;
 
 TEST(ServeRoster, NextLinkIsTheTargetWhoseRelIsNext) {
   const std::string base = "https://lms.example/api/nrps/c1?limit=2";
@@ -30,6 +32,18 @@ TEST(ServeRoster, NextLinkIsTheTargetWhoseRelIsNext) {
   EXPECT_EQ(next_link(R"(<https://lms.example/d>; rel="differences")", base), "");
   EXPECT_EQ(next_link(R"(<https://lms.example/n>; rel="nextish")", base), "");
   EXPECT_EQ(next_link("", base), "");
+}
+
+// RFC 6454, 4: scheme, host and port; the scheme's default port is the same origin.
+TEST(ServeRoster, OriginIsSchemeHostAndPort) {
+  EXPECT_EQ(origin_of("https://LMS.example/api/nrps?x=1"), "https://lms.example");
+  EXPECT_EQ(origin_of("https://lms.example:443/a"), "https://lms.example");
+  EXPECT_EQ(origin_of("http://lms.example:80"), "http://lms.example");
+  EXPECT_EQ(origin_of("http://lms.example:8080/a"), "http://lms.example:8080");
+  EXPECT_NE(origin_of("http://lms.example/a"), origin_of("https://lms.example/a"));
+  EXPECT_NE(origin_of("https://lms.example/a"), origin_of("https://lms.example.evil/a"));
+  EXPECT_NE(origin_of("https://lms.example/a"), origin_of("https://lms.example@evil/a"));
+  EXPECT_THROW(origin_of("ftp://lms.example/a"), std::exception);
 }
 
 TEST(ServeRoster, LearnerByTheLisRoleOrItsShortName) {

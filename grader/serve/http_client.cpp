@@ -4,6 +4,10 @@
 #include <fmt/format.h>
 #include <httplib.h>
 
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
 #include "serve/jwt.h"
 
 namespace raygrade::serve {
@@ -53,6 +57,59 @@ std::pair<std::string, std::string> split_url(const std::string& url) {
 HttpAnswer http_get(const std::string& url, const HttpHeaders& headers) {
   auto [origin, path] = split_url(url);
   return answer_of(client_for(origin).Get(path.c_str(), headers_of(headers)));
+}
+
+HttpAnswer http_get(const std::string& url, const HttpHeaders& headers, const HttpBounds& bounds) {
+  auto [origin, path] = split_url(url);
+  httplib::Client c = client_for(origin);
+  // A watchdog shuts the connection at the deadline, and again until the request has ended
+  // (a stop before the connection is made finds no socket yet).
+  std::mutex mutex;
+  std::condition_variable cv;
+  bool done = false, late = false;
+  std::thread watchdog([&] {
+    std::unique_lock lock(mutex);
+    if (cv.wait_until(lock, bounds.deadline, [&] { return done; })) return;
+    late = true;
+    while (!done) {
+      c.stop();
+      cv.wait_for(lock, std::chrono::milliseconds(100));
+    }
+  });
+  std::string body;
+  bool too_big = false;
+  httplib::Result r =
+      c.Get(path.c_str(), headers_of(headers), [&](const char* data, std::size_t n) {
+        if (n > bounds.max_body_bytes - body.size()) {
+          too_big = true;
+          return false;
+        }
+        body.append(data, n);
+        return true;
+      });
+  {
+    std::lock_guard lock(mutex);
+    done = true;
+  }
+  cv.notify_all();
+  watchdog.join();
+  HttpAnswer a = answer_of(r);
+  if (too_big || late) {
+    a = HttpAnswer{};
+    a.error = too_big ? fmt::format("the answer is longer than {} bytes", bounds.max_body_bytes)
+                      : "the answer did not come in time";
+    return a;
+  }
+  a.body = std::move(body);
+  return a;
+}
+
+std::string origin_of(const std::string& url) {
+  std::string origin = split_url(url).first;
+  for (char& c : origin) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (origin.starts_with("http://") && origin.ends_with(":80")) origin.resize(origin.size() - 3);
+  if (origin.starts_with("https://") && origin.ends_with(":443")) origin.resize(origin.size() - 4);
+  return origin;
 }
 
 HttpAnswer http_post(const std::string& url, const std::string& body,

@@ -28,7 +28,12 @@ Test controls (JSON answers unless said otherwise):
                                            when the same score had come before)
   GET  /test/calls                         how many /token and /scores calls came, by outcome
   POST /test/fail {"endpoint": "token"|"scores"|"nrps", "times": N}   503 to the next N calls
-  POST /test/nrps {"page_size": N}         at most N members a membership page (null: all)
+  POST /test/nrps {"page_size": N}         at most N members a membership page (null: all);
+       hostile answers, each until set again: "next": URL (every page's Link rel="next"),
+       "endless": true (a next link on every page, past the last member), "raw": base64 (the
+       body of every page), "hang": S (seconds before the answer), "drip": S (a 1 MB body
+       promised, one byte sent every S seconds), "huge": N (a body of N bytes: a container
+       whose one member's name is that long)
   POST /test/slow {"seconds": S}           each score POST answered S seconds late (recorded first)
   GET|POST /test/launch?user=U&role=Learner|Instructor&context=C&link=L&message=resource|deeplink
        [&client_id=..][&name=..][&email=..]; a POST JSON body may add "claims" (merged into the
@@ -130,6 +135,7 @@ class Platform:
         self.faults = {"token": 0, "scores": 0, "nrps": 0}
         self.slow_scores = 0.0  # seconds a score's answer waits
         self.nrps_page_size = None  # the most members a membership page holds (None: all)
+        self.nrps_hostile = {}  # how membership pages misbehave (POST /test/nrps)
         self.calls = {"token": {"ok": 0, "refused": 0, "failed": 0},
                       "scores": {"ok": 0, "refused": 0, "failed": 0},
                       "nrps": {"ok": 0, "refused": 0, "failed": 0}}
@@ -757,6 +763,11 @@ class Handler(BaseHTTPRequestHandler):
             with p.lock:
                 p.calls["nrps"]["refused"] += 1
             raise
+        with p.lock:
+            p.calls["nrps"].setdefault("authorization", []).append(
+                self.headers.get("Authorization"))
+        if p.nrps_hostile:
+            return self.nrps_hostile(cid, offset)
         members = list(ctx["members"].values())
         size = min(x for x in (limit, p.nrps_page_size, len(members) + 1) if x)
         page = members[offset:offset + size]
@@ -772,6 +783,54 @@ class Handler(BaseHTTPRequestHandler):
         return self.send(200, {"id": p.url(self.path), "context": {"id": ctx["id"],
                                                                   "title": ctx["title"]},
                                "members": page}, NRPS_TYPE, headers)
+
+    def nrps_hostile(self, cid, offset):
+        """A membership page as POST /test/nrps asked it to misbehave."""
+        h = self.platform.nrps_hostile
+        with self.platform.lock:
+            self.platform.calls["nrps"]["ok"] += 1
+        time.sleep(float(h.get("hang", 0)))
+        headers = []
+        if h.get("next"):
+            headers.append(("Link", f'<{h["next"]}>; rel="next"'))
+        elif h.get("endless"):
+            headers.append(("Link", f'<{self.platform.url(f"/nrps/{cid}")}?offset={offset + 1}>; '
+                                    'rel="next"'))
+        if "drip" in h:
+            self.send_response(200)
+            self.send_header("Content-Type", NRPS_TYPE)
+            self.send_header("Content-Length", str(1 << 20))
+            self.end_headers()
+            try:
+                for _ in range(1 << 20):
+                    self.wfile.write(b" ")
+                    self.wfile.flush()
+                    time.sleep(float(h["drip"]))
+            except OSError:
+                pass  # the tool gave up
+            return None
+        if "huge" in h:
+            head = b'{"members": [{"user_id": "huge", "roles": ["Learner"], "name": "'
+            tail = b'"}]}'
+            n = max(int(h["huge"]) - len(head) - len(tail), 0)
+            self.send_response(200)
+            self.send_header("Content-Type", NRPS_TYPE)
+            self.send_header("Content-Length", str(len(head) + n + len(tail)))
+            self.end_headers()
+            try:
+                self.wfile.write(head)
+                chunk = b"H" * (1 << 20)
+                while n > 0:
+                    self.wfile.write(chunk[:n])
+                    n -= min(n, len(chunk))
+                self.wfile.write(tail)
+            except OSError:
+                pass  # the tool gave up
+            return None
+        if "raw" in h:
+            return self.send(200, base64.b64decode(h["raw"]), NRPS_TYPE, headers)
+        members = list(self.platform.data["contexts"][cid]["members"].values())
+        return self.send(200, {"members": members if offset == 0 else []}, NRPS_TYPE, headers)
 
     def ags(self, method, parts, q, raw):
         p = self.platform
@@ -847,6 +906,7 @@ class Handler(BaseHTTPRequestHandler):
                 return self.send(200, {"calls": p.calls, "faults": p.faults})
         if what == "nrps" and method == "POST":
             p.nrps_page_size = body.get("page_size")
+            p.nrps_hostile = {k: v for k, v in body.items() if k != "page_size"}
             return self.send(200, {"page_size": p.nrps_page_size})
         if what == "slow" and method == "POST":
             p.slow_scores = float(body["seconds"])
