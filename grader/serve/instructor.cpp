@@ -60,10 +60,19 @@ bool enrolled(const Member& m) {
   return !m.user_id.empty() && m.status != "Deleted" && is_learner(m);
 }
 
-const Member* find_member(const ClassList& list, const std::string& sub) {
+// The class list's members by user_id (the first of a user_id given twice); an empty user_id
+// names nobody.
+std::map<std::string, const Member*> members_by_id(const ClassList& list) {
+  std::map<std::string, const Member*> out;
   for (const auto& m : list.members)
-    if (!sub.empty() && m.user_id == sub) return &m;
-  return nullptr;
+    if (!m.user_id.empty()) out.emplace(m.user_id, &m);
+  return out;
+}
+
+const Member* find_member(const std::map<std::string, const Member*>& members,
+                          const std::string& sub) {
+  auto it = members.find(sub);
+  return it == members.end() ? nullptr : it->second;
 }
 
 std::string status_note(const Member& m) {
@@ -106,11 +115,12 @@ std::string class_report_page(const CatalogEntry& e, const std::vector<Submissio
   ClassReportBuilder report(e.title(), ids, titles, e.bank.problems);
   // The variants of a student live while they are added: the builder keeps their numbers.
   std::set<std::string> handed_in;
+  std::map<std::string, const Member*> members = members_by_id(list);
   for (const auto& r : last_per_student(all)) {
     std::vector<Problem> problems =
         student_problems(e.spec, e.bank.problems, student_key_of(r.issuer, r.sub));
     ClassStudent s = report_student(e, r, problems);
-    const Member* m = find_member(list, r.sub);
+    const Member* m = find_member(members, r.sub);
     if (m && !m->name.empty()) s.name = m->name;
     report.add(s);
     handed_in.insert(r.sub);
@@ -136,8 +146,11 @@ std::string gradebook_of(const CatalogEntry& e, const std::vector<SubmissionReco
                          const ClassList& list) {
   std::string csv = gradebook_csv_header(e.grader->problem_ids());
   std::vector<SubmissionRecord> last = last_per_student(all);
+  std::map<std::string, const Member*> members = members_by_id(list);
+  std::map<std::string, const SubmissionRecord*> last_of;
+  for (const auto& r : last) last_of.emplace(r.sub, &r);
   auto row = [&](const SubmissionRecord& r) {
-    const Member* m = find_member(list, r.sub);
+    const Member* m = find_member(members, r.sub);
     StudentIdentity who{m ? m->name : "", student_key_of(r.issuer, r.sub), m ? m->email : ""};
     SubmissionGrade g = grade_answers(e, who, answers_of(r), r.created);
     csv += gradebook_csv_row(g, e.grader->problem_ids());
@@ -146,10 +159,8 @@ std::string gradebook_of(const CatalogEntry& e, const std::vector<SubmissionReco
   std::set<std::string> written;
   for (const auto& m : list.members) {
     if (!enrolled(m) || !written.insert(m.user_id).second) continue;
-    auto it =
-        std::find_if(last.begin(), last.end(), [&](const auto& r) { return r.sub == m.user_id; });
-    if (it != last.end()) {
-      row(*it);
+    if (auto it = last_of.find(m.user_id); it != last_of.end()) {
+      row(*it->second);
     } else {
       csv += absent_row(e, list.issuer, m);
     }
