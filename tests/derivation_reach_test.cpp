@@ -46,7 +46,8 @@ bool not_an_input(const std::string& key) {
 void collect_inputs(const json& j, std::vector<double>& numbers, std::vector<Vec3d>& triples) {
   if (j.is_number()) numbers.push_back(j.get<double>());
   if (j.is_boolean()) numbers.push_back(j.get<bool>() ? 1 : 0);
-  if (is_triple(j)) triples.push_back({j[0].get<double>(), j[1].get<double>(), j[2].get<double>()});
+  if (is_triple(j))
+    triples.emplace_back(j[0].get<double>(), j[1].get<double>(), j[2].get<double>());
   if (j.is_array()) {
     for (const auto& x : j) collect_inputs(x, numbers, triples);
   }
@@ -69,7 +70,7 @@ void collect_answer(const json& j, const std::string& at,
     for (std::size_t i = 0; i < j.size(); ++i)
       collect_answer(j[i], fmt::format("{}/{}", at, i), out);
   } else if (j.is_object()) {
-    for (const auto& [k, v] : j.items()) collect_answer(v, at + "/" + k, out);
+    for (const auto& [k, v] : j.items()) collect_answer(v, fmt::format("{}/{}", at, k), out);
   }
 }
 

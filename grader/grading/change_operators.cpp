@@ -487,6 +487,7 @@ void renamings(const E& e, const ChangeScope& s, Sink sink) {
   };
   auto indices = [](const std::vector<std::string>& m) {
     std::vector<std::string_view> out;
+    out.reserve(m.size());
     for (const auto& x : m) out.push_back(index_of(x));
     return out;
   };

@@ -146,7 +146,7 @@ double leaf_value(const StepValues& values, const Leaf& l) {
   if (it == values.end()) return NAN;
   const Value& v = it->second;
   if (l.component >= 0) return v.is_vector() ? v.vector[l.component] : NAN;
-  if (l.value.is_boolean()) return v.is_bool() ? (v.truth ? 1 : 0) : NAN;
+  if (l.value.is_boolean()) return v.is_bool() ? (v.truth ? 1.0 : 0.0) : NAN;
   return v.is_scalar() ? v.scalar : NAN;
 }
 
