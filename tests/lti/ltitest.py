@@ -69,6 +69,37 @@ def assignment_points(name=ASSIGNMENT):
     return sum(p.get("points", 1) if isinstance(p, dict) else 1 for p in spec["problems"])
 
 
+class JsonServer:
+    """A loopback HTTP server that answers every GET with `body()` as JSON and records each
+    request's path and Authorization header in `seen` (a tool's JWKS, a foreign origin)."""
+
+    def __init__(self, body):
+        from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+        self.seen = []
+        outer = self
+
+        class Handler(BaseHTTPRequestHandler):
+            def do_GET(self):
+                outer.seen.append((self.path, self.headers.get("Authorization")))
+                data = json.dumps(body()).encode()
+                self.send_response(200)
+                self.send_header("Content-Type", "application/json")
+                self.send_header("Content-Length", str(len(data)))
+                self.end_headers()
+                self.wfile.write(data)
+
+            def log_message(self, *args):
+                pass
+
+        self.server = ThreadingHTTPServer(("127.0.0.1", 0), Handler)
+        self.url = f"http://127.0.0.1:{self.server.server_address[1]}"
+        threading.Thread(target=self.server.serve_forever, daemon=True).start()
+
+    def close(self):
+        self.server.shutdown()
+        self.server.server_close()
+
+
 def free_port():
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))

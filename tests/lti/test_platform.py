@@ -17,11 +17,9 @@ sys.path = [d for d in sys.path if os.path.abspath(d or ".") != HERE] + [HERE]
 import json
 import shutil
 import tempfile
-import threading
 import time
 import unittest
 import uuid
-from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 
 import requests  # noqa: E402
 from jwcrypto import jwk, jwt  # noqa: E402
@@ -42,21 +40,8 @@ class FakeTool:
         self.key = jwk.JWK.generate(kty="RSA", size=2048, kid="tool-1")
         public = {"keys": [json.loads(self.key.export_public())]}
 
-        class Keys(BaseHTTPRequestHandler):
-            def do_GET(self):
-                body = json.dumps(public).encode()
-                self.send_response(200)
-                self.send_header("Content-Type", "application/json")
-                self.send_header("Content-Length", str(len(body)))
-                self.end_headers()
-                self.wfile.write(body)
-
-            def log_message(self, *args):
-                pass
-
-        self.server = ThreadingHTTPServer(("127.0.0.1", 0), Keys)
-        self.url = f"http://127.0.0.1:{self.server.server_address[1]}"
-        threading.Thread(target=self.server.serve_forever, daemon=True).start()
+        self.keys = ltitest.JsonServer(lambda: public)
+        self.url = self.keys.url
 
     def sign(self, claims, key=None):
         token = jwt.JWT(header={"alg": "RS256", "kid": "tool-1", "typ": "JWT"}, claims=claims)
@@ -70,7 +55,7 @@ class PlatformTest(unittest.TestCase):
         self.proc, self.p = ltitest.start_platform(self.tmp)
         self.tool = FakeTool()
         self.addCleanup(lambda: self.proc.stop())
-        self.addCleanup(self.tool.server.shutdown)
+        self.addCleanup(self.tool.keys.close)
         self.addCleanup(shutil.rmtree, self.tmp, True)
 
     def registration(self, token):

@@ -17,11 +17,9 @@ sys.path = [d for d in sys.path if os.path.abspath(d or ".") != HERE] + [HERE]
 
 import base64  # noqa: E402
 import json  # noqa: E402
-import threading  # noqa: E402
 import time  # noqa: E402
 import unicodedata  # noqa: E402
 import unittest  # noqa: E402
-from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer  # noqa: E402
 
 import requests  # noqa: E402
 
@@ -37,34 +35,10 @@ REPORT_WAIT = 60
 NAMED = b'{"members": [{"user_id": "a", "roles": ["Learner"], "name": "'
 
 
-class Foreign:
+def foreign_origin():
     """An HTTP server of another origin that records what comes to it: where a token must not
     go."""
-
-    def __init__(self):
-        self.seen = []
-        outer = self
-
-        class Handler(BaseHTTPRequestHandler):
-            def do_GET(self):
-                outer.seen.append((self.path, self.headers.get("Authorization")))
-                body = json.dumps({"members": [member("stolen", "Stolen Roster")]}).encode()
-                self.send_response(200)
-                self.send_header("Content-Type", "application/json")
-                self.send_header("Content-Length", str(len(body)))
-                self.end_headers()
-                self.wfile.write(body)
-
-            def log_message(self, *args):
-                pass
-
-        self.server = ThreadingHTTPServer(("127.0.0.1", 0), Handler)
-        self.url = f"http://127.0.0.1:{self.server.server_address[1]}"
-        threading.Thread(target=self.server.serve_forever, daemon=True).start()
-
-    def close(self):
-        self.server.shutdown()
-        self.server.server_close()
+    return ltitest.JsonServer(lambda: {"members": [member("stolen", "Stolen Roster")]})
 
 
 class AttackCase(RosterCase):
@@ -90,7 +64,7 @@ class NextLinkTest(AttackCase):
         """A page whose next link is on another host (or port), or another scheme, or a
         scheme-relative //host: the tool asks no other origin for anything, with or without
         its token, and says the roster could not be read."""
-        foreign = Foreign()
+        foreign = foreign_origin()
         self.addCleanup(foreign.close)
         port = self.platform.rsplit(":", 1)[1]
         self.set_members([member("ada", "Ada Lovelace")])
