@@ -128,6 +128,22 @@ def fill(driver, answers):
 
 
 
+def with_unknown_field(page, work):
+    """A copy of `page` whose first problem's form starts with a field of type "slider"."""
+    with open(page, encoding="utf-8") as f:
+        html = f.read()
+    start = html.index('<script type="application/json" id="handout-data">')
+    start = html.index(">", start) + 1
+    end = html.index("</script>", start)
+    data = json.loads(html[start:end])
+    data["problems"][0]["form"]["fields"].insert(0, {"type": "slider", "key": "slide", "label": "Slide"})
+    text = json.dumps(data).replace("</", "<\\/")
+    out = os.path.join(work, "unknown-field.html")
+    with open(out, "w", encoding="utf-8") as f:
+        f.write(html[:start] + text + html[end:])
+    return out
+
+
 def grade(submission, *extra):
     r = run("grade", "--assignment", ASSIGNMENT, "--format", "json", "--feedback", "full", *extra, submission)
     return r.returncode, json.loads(r.stdout) if r.stdout.strip() else None, r.stderr
@@ -192,6 +208,19 @@ def main():
             downloaded = wait_for_file(downloads, "answers.json")
             check(downloaded is not None, "answers.json was not downloaded")
             driver.save_screenshot(os.path.join(OUT, "handout-downloaded.png"))
+            # A field of a type the page does not know (a page from a newer raygrade, or one
+            # edited): said so where it would be, never shown as another type's input, and the
+            # fields after it still shown.
+            driver.get("file://" + pages["s002"])
+            inputs = len(driver.find_elements(By.CSS_SELECTOR, "input, select"))
+            unknown = with_unknown_field(pages["s002"], work)
+            driver.get("file://" + unknown)
+            alerts = [a.text for a in driver.find_elements(By.CSS_SELECTOR, "[role=alert]")]
+            check(any("\u201cslider\u201d" in a for a in alerts),
+                  f"a field of an unknown type is not said to be one: {alerts}")
+            after = len(driver.find_elements(By.CSS_SELECTOR, "input, select"))
+            check(after == inputs, f"{after} inputs with the unknown field, {inputs} without: "
+                  "the unknown field was shown as an input, or the fields after it were lost")
         finally:
             driver.quit()
         if downloaded:

@@ -49,8 +49,10 @@ TEST(PrairieLearnExport, NoQuestionOfAnyKindAsksForJson) {
   AssignmentSpec spec = load_assignment((dir.path() / "all.json").string());
   AssignmentBank bank = load_assignment_bank(spec);
   ASSERT_TRUE(bank.errors.empty());
-  const std::set<std::string> read = {"number", "vector",  "yesno", "choice",
-                                      "set",    "formula", "names"};
+  // The inputs server.py reads: a value's word of the table of field types, or a ray tree's
+  // blockers.
+  const std::set<std::string> read = {"typed-number", "typed-three", "typed-formula", "flag",
+                                      "one-of",       "some-of",     "names"};
   std::set<std::string> kinds;
   int questions = 0;
   for (auto& e : prairielearn_course(spec, bank.problems, bank.bank, dir.path() / "raygrade")) {

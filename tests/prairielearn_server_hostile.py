@@ -124,7 +124,7 @@ class Question:
         self.name = f"{qdir.parent.name}/{qdir.name}"
         spec = json.loads((qdir / "raygrade.json").read_text(encoding="utf-8"))
         self.inputs = {i["name"]: i["type"] for i in spec["inputs"]}
-        self.text_inputs = [n for n, t in self.inputs.items() if t not in ("choice", "yesno")]
+        self.text_inputs = [n for n, t in self.inputs.items() if t not in ("one-of", "flag")]
         self.server = load_server(qdir, f"pl_hostile_{index}")
         self.params = {}
 

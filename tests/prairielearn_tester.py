@@ -356,7 +356,7 @@ def check_generated(label, spec, correct):
     """generate() types the reference into every text input, and keeps every choice's option
     aside (pl-multiple-choice's prepare() refuses a correct answer set before it)."""
     for inp in spec["inputs"]:
-        if inp["type"] in ("choice", "yesno"):
+        if inp["type"] in ("one-of", "flag"):
             check(inp["name"] not in correct and inp["name"] in correct.get(CHOICES, {}),
                   f"{label}: generate() did not keep the choice {inp['name']} aside")
         else:
@@ -369,7 +369,7 @@ def check_prepared(label, spec, data):
     correct = data["correct_answers"]
     check(CHOICES not in correct, f"{label}: prepare() left {CHOICES} in correct_answers")
     for inp in spec["inputs"]:
-        if inp["type"] in ("choice", "yesno"):
+        if inp["type"] in ("one-of", "flag"):
             option = correct.get(inp["name"])
             check(option is None or option in data["params"][inp["name"]],
                   f"{label}: the correct answer of {inp['name']} is no option: {short(option)}")

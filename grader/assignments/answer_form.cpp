@@ -5,6 +5,7 @@
 
 #include "core/internal_error.h"
 #include "grading/grade.h"
+#include "kinds/fields/field_type.h"
 
 namespace raygrade {
 namespace {
@@ -30,7 +31,8 @@ json only_asked(json form, const Grader& grader) {
   };
   json kept = json::array();
   for (auto& f : form["fields"]) {
-    if (f["type"] == "hits") {
+    FieldShape shape = field_type_of(f).shape;
+    if (shape == FieldShape::kOpenTable) {
       json columns = json::array();
       for (auto& c : f["columns"]) {
         if (!asked(c)) continue;
@@ -39,7 +41,7 @@ json only_asked(json form, const Grader& grader) {
       }
       if (columns.empty()) continue;
       f["columns"] = columns;
-    } else if (f["type"] == "tree") {
+    } else if (shape == FieldShape::kTreeBuilder) {
       // The tree's points are always built (they place the shadows and terms); the columns of
       // shadows and terms only when those parts are asked.
       json asks = json::array();
@@ -56,32 +58,6 @@ json only_asked(json form, const Grader& grader) {
   }
   form["fields"] = kept;
   return form;
-}
-
-json blank_vector() { return json::array({"", "", ""}); }
-
-json blank_of(const json& f) {
-  std::string type = f["type"];
-  if (type == "number" || type == "formula") return "";
-  if (type == "vector") return blank_vector();
-  if (type == "hits") {
-    json row = json::object();
-    for (const auto& c : f["columns"]) row[c["key"].get<std::string>()] = blank_of(c);
-    return json::array({row});
-  }
-  if (type == "rows") {
-    json rows = json::array();
-    for (const auto& r : f["rows"]) {
-      json row = r["fixed"];
-      for (const auto& c : f["columns"]) {
-        if (c["type"] == "number" || c["type"] == "vector")
-          row[c["key"].get<std::string>()] = blank_of(c);
-      }
-      rows.push_back(row);
-    }
-    return rows;
-  }
-  return nullptr;  // yes/no, choices, sets and JSON have no blank: they are left out
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "derivation/formula.h"
 #include "json/numbers.h"
 #include "json/source.h"
+#include "kinds/fields/field_type.h"
 #include "reports/scene_view.h"
 #include "reports/scene_view_assets.h"
 #include "reports/svg_figure.h"
@@ -162,7 +163,8 @@ Handout make_handout(const AssignmentSpec& spec, const std::vector<Problem>& pro
                {"formula",
                 {{"functions", formula_function_names()},
                  {"max_length", kMaxFormulaLength},
-                 {"max_depth", kMaxFormulaDepth}}}};
+                 {"max_depth", kMaxFormulaDepth}}},
+               {"field_types", field_types_json()}};
   data["student"] =
       student ? json{{"key", student_key(*student)}, {"identity", identity_json(*student)}}
               : json{{"key", ""}, {"identity", nullptr}};

@@ -33,14 +33,25 @@
   }
   // What a box saves in answers.json: the text as typed, nothing when it is blank.
   function typedValue(text) { return text.trim() === "" ? undefined : text; }
+  // The field types (kinds/fields/ of the grader, data.field_types): each one's shape and the
+  // value a student gives, by which the page builds its inputs. The page never tests a type's
+  // name: a type it does not know is shown as such, never taken for another.
+  const fieldTypes = data.field_types;
+  function fieldType(f) {
+    return Object.prototype.hasOwnProperty.call(fieldTypes, f.type) ? fieldTypes[f.type] : null;
+  }
+  // The name of the field type of one typed value: the typed reader reads a box by its type.
+  function typedBoxOf(value) {
+    return Object.keys(fieldTypes).find((n) => fieldTypes[n].shape === "one" && fieldTypes[n].value === value);
+  }
   // A box's check: blank (nothing shown, nothing saved), or the grader's verdict on its text.
   function boxReading(text, symbols) {
     if (typedValue(text) === undefined) return {blank: true};
-    const r = readTyped(symbols ? "formula" : "number", text, symbols);
+    const r = readTyped(typedBoxOf(symbols ? "typed-formula" : "typed-number"), text, symbols);
     return r.ok ? {ok: true, value: r.values[0]} : {ok: false, message: r.message, fault: r.fault};
   }
   function readFormula(text, symbols) {
-    const r = readTyped("formula", text, symbols || []);
+    const r = readTyped(typedBoxOf("typed-formula"), text, symbols || []);
     return r.ok ? {ok: true, value: r.values[0]} : {ok: false, message: r.message};
   }
 
@@ -106,15 +117,27 @@
     inputs.push(select);
     return {node: select, value: () => (select.value === "" ? undefined : select.value === "true")};
   }
-  function box(type, name, label, symbols) {
-    if (type === "vector") return vectorBox(name, label);
-    if (type === "yesno") return yesNo(name, label);
-    if (type === "formula") {
-      const input = textInput(name, label, symbols);
+  // A field of a type the page does not know: said so where its input would be, and nothing
+  // saved for it.
+  function unknownField(f) {
+    return {node: el("span", {class: "hint err", role: "alert",
+                              text: "This page cannot show an answer box of type \u201c" + String(f.type) +
+                                    "\u201d: tell your instructor."}),
+            value: () => undefined};
+  }
+  // One box of a field or of a table's column, by the value it takes.
+  function box(f, name, label) {
+    const t = fieldType(f);
+    const value = t && t.shape === "one" ? t.value : null;
+    if (value === "typed-three") return vectorBox(name, label);
+    if (value === "flag") return yesNo(name, label);
+    if (value === "typed-formula") {
+      const input = textInput(name, label, f.symbols);
       return {node: el("span", {class: "cell"}, [input, input.hint]),
               value: () => typedValue(input.value)};
     }
-    return numberBox(name, label);
+    if (value === "typed-number") return numberBox(name, label);
+    return unknownField(f);
   }
   function labelled(text, node) {
     return el("div", {class: "field"}, [el("span", {class: "label", text: text}), node]);
@@ -128,7 +151,7 @@
     const contained = f.contained ? el("input", {type: "checkbox", name: prefix + ".contained"}) : null;
     function addRow() {
       const n = rows.length;
-      const cells = f.columns.map((c) => ({key: c.key, box: box(c.type, prefix + "." + n + "." + c.key, c.label + " of hit " + (n + 1))}));
+      const cells = f.columns.map((c) => ({key: c.key, box: box(c, prefix + "." + n + "." + c.key, c.label + " of hit " + (n + 1))}));
       const row = el("div", {class: "row"}, cells.map((c) => labelled(c.key === "t" ? "t" : c.key, c.box.node)));
       rows.push(cells);
       table.appendChild(row);
@@ -167,7 +190,7 @@
     const list = [];
     const node = el("div", {class: "rows"});
     f.rows.forEach((r, i) => {
-      const cells = f.columns.map((c) => ({key: c.key, box: box(c.type, prefix + "." + i + "." + c.key, c.label + " for " + r.label)}));
+      const cells = f.columns.map((c) => ({key: c.key, box: box(c, prefix + "." + i + "." + c.key, c.label + " for " + r.label)}));
       list.push({fixed: r.fixed, cells: cells});
       node.appendChild(el("div", {class: "row"}, [el("span", {class: "label", text: r.label})].concat(
         cells.map((c) => labelled(c.key.replace(/_/g, " "), c.box.node)))));
@@ -408,14 +431,15 @@
     const fields = [];
     p.form.fields.forEach((f, i) => {
       const prefix = p.id + "." + i;
+      const t = fieldType(f) || {};
       let made;
-      if (f.type === "hits") made = hitsField(prefix, f);
-      else if (f.type === "rows") made = rowsField(prefix, f);
-      else if (f.type === "choice") made = choiceField(prefix, f);
-      else if (f.type === "set") made = setField(prefix, f);
-      else if (f.type === "tree") made = treeField(prefix, f);
-      else made = box(f.type, prefix, f.label, f.symbols);
-      form.appendChild(f.type === "hits" || f.type === "tree" ? el("div", {class: "field"}, [el("div", {class: "label", text: f.label}), made.node])
+      if (t.shape === "open-table") made = hitsField(prefix, f);
+      else if (t.shape === "fixed-rows") made = rowsField(prefix, f);
+      else if (t.shape === "tree-builder") made = treeField(prefix, f);
+      else if (t.value === "one-of") made = choiceField(prefix, f);
+      else if (t.value === "some-of") made = setField(prefix, f);
+      else made = box(f, prefix, f.label);
+      form.appendChild(t.shape === "open-table" || t.shape === "tree-builder" ? el("div", {class: "field"}, [el("div", {class: "label", text: f.label}), made.node])
                                          : labelled(f.label, made.node));
       fields.push({f: f, made: made});
     });

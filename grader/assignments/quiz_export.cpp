@@ -17,6 +17,7 @@
 #include "derivation/expr.h"
 #include "grading/grade.h"
 #include "grading/tolerance.h"
+#include "kinds/fields/field_type.h"
 
 namespace raygrade {
 namespace {
@@ -150,7 +151,7 @@ std::vector<Asked> asked_numbers(const json& form, const std::vector<json>& answ
   std::vector<Asked> out;
   auto add_number_or_vector = [&](const json& f, const std::string& part, const std::string& label,
                                   const std::string& pointer) {
-    if (f["type"] == "number") {
+    if (field_type_of(f).value == FieldValue::kNumber) {
       out.push_back({part, label, pointer, false});
     } else {
       for (int k = 0; k < 3; ++k) {
@@ -160,14 +161,15 @@ std::vector<Asked> asked_numbers(const json& form, const std::vector<json>& answ
     }
   };
   for (const json& f : form["fields"]) {
-    std::string type = f["type"], key = f["key"], label = f.value("label", key);
+    const FieldTypeEntry& type = field_type_of(f);
+    std::string key = f["key"], label = f.value("label", key);
     // Inside a sentence: "the z component of the refracted direction".
     if (!label.empty() && label[0] >= 'A' && label[0] <= 'Z')
       label[0] = static_cast<char>(label[0] - 'A' + 'a');
     std::string part = key.substr(0, key.find('/'));
-    if (type == "number" || type == "vector") {
+    if (type.shape == FieldShape::kOne && type.numeric()) {
       add_number_or_vector(f, part, label, "/" + key);
-    } else if (type == "hits") {
+    } else if (type.shape == FieldShape::kOpenTable) {
       std::size_t count = 0;
       for (const json& a : answers) {
         json::json_pointer at("/" + key);
@@ -184,7 +186,7 @@ std::vector<Asked> asked_numbers(const json& form, const std::vector<json>& answ
       if (count > 1 || f.value("label", "").find("any order") != std::string::npos) {
         lost.emplace_back("raygrade takes the hits in any order, the quiz asks them in order of t");
       }
-    } else if (type == "rows") {
+    } else if (type.shape == FieldShape::kFixedRows) {
       // Each row is the answer's item whose fixed keys are the row's.
       const json& first = answers.front();
       json::json_pointer at("/" + key);
@@ -201,7 +203,7 @@ std::vector<Asked> asked_numbers(const json& form, const std::vector<json>& answ
         }
         if (!index) continue;
         for (const json& c : f["columns"]) {
-          if (c["type"] != "number" && c["type"] != "vector") continue;
+          if (!field_type_of(c).numeric()) continue;
           std::string column = c["key"];
           add_number_or_vector(
               c, part, fmt::format("{}: {}", r.value("label", ""), c.value("label", column)),
@@ -209,7 +211,7 @@ std::vector<Asked> asked_numbers(const json& form, const std::vector<json>& answ
         }
       }
     } else {
-      lost.push_back(fmt::format("\"{}\" is not a number ({}): not asked", label, type));
+      lost.push_back(fmt::format("\"{}\" is not a number ({}): not asked", label, type.name));
     }
   }
   return out;

@@ -9,20 +9,19 @@
 #include "core/error.h"
 #include "derivation/formula.h"
 #include "grading/answer_reader.h"
+#include "kinds/fields/field_type.h"
 
 namespace raygrade {
 
 bool typed_box_from_name(std::string_view name, TypedBox& box) {
-  if (name == "number") {
-    box = TypedBox::kNumber;
-  } else if (name == "vector") {
-    box = TypedBox::kVector;
-  } else if (name == "formula") {
-    box = TypedBox::kFormula;
-  } else {
-    return false;
+  const FieldTypeEntry* type = find_field_type(name);
+  if (!type || type->shape != FieldShape::kOne) return false;
+  switch (type->value) {
+    case FieldValue::kNumber: box = TypedBox::kNumber; return true;
+    case FieldValue::kThreeNumbers: box = TypedBox::kVector; return true;
+    case FieldValue::kFormula: box = TypedBox::kFormula; return true;
+    default: return false;
   }
-  return true;
 }
 
 namespace {

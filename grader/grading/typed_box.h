@@ -13,7 +13,8 @@ namespace raygrade {
 
 enum class TypedBox { kNumber, kVector, kFormula };
 
-// "number", "vector" or "formula"; false for any other name.
+// The box of a field type whose one value is typed (kinds/fields/: a number, three numbers or
+// a formula); false for any other name.
 bool typed_box_from_name(std::string_view name, TypedBox& box);
 
 struct TypedReading {

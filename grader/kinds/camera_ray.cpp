@@ -123,9 +123,10 @@ std::vector<PartSpec> CameraRayKind::parts() {
 }
 
 nlohmann::json CameraRayKind::answer_form(const Problem& /*p*/) {
-  return form::fields({form::field("vector", "ray/origin", "The ray's origin"),
-                       form::field("vector", "ray/direction", "The ray's direction"),
-                       form::field("vector", "unit_direction", "The direction as a unit vector")});
+  return form::fields(
+      {form::field<field_types::Vector>("ray/origin", "The ray's origin"),
+       form::field<field_types::Vector>("ray/direction", "The ray's direction"),
+       form::field<field_types::Vector>("unit_direction", "The direction as a unit vector")});
 }
 
 std::string_view CameraRayKind::schema() {

@@ -126,7 +126,7 @@ nlohmann::json DeriveKind::answer_form(const Problem& p) {
     if (s.display != s.name) symbols.push_back(s.display);
   }
   for (const auto& q : task->quantities()) {
-    nlohmann::json f = form::field("formula", q.name, q.name + " =");
+    nlohmann::json f = form::field<field_types::Formula>(q.name, q.name + " =");
     f["symbols"] = symbols;
     fields.push_back(f);
   }

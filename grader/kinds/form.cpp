@@ -7,8 +7,8 @@ namespace raygrade::form {
 
 using json = nlohmann::json;
 
-json field(std::string type, std::string key, std::string label) {
-  return {{"type", std::move(type)}, {"key", std::move(key)}, {"label", std::move(label)}};
+json field(const FieldTypeEntry& type, std::string key, std::string label) {
+  return {{"type", type.name}, {"key", std::move(key)}, {"label", std::move(label)}};
 }
 
 std::vector<std::string> names_of(const json& list) {
@@ -23,7 +23,7 @@ std::vector<std::string> names_of(const json& list) {
 }
 
 json object_choice(const std::vector<std::string>& names) {
-  json f = field("choice", "object", "The first object hit");
+  json f = field<field_types::Choice>("object", "The first object hit");
   json options = json::array({{{"text", "none (the ray hits nothing)"}, {"value", nullptr}}});
   for (const auto& n : names) options.push_back({{"text", n}, {"value", n}});
   f["options"] = options;
@@ -31,20 +31,22 @@ json object_choice(const std::vector<std::string>& names) {
 }
 
 json hits_field(bool barycentric, bool several, bool point_and_normal) {
-  json f = field("hits", "hits", several ? "Hits, in any order" : "The first hit");
-  json columns = json::array({field("number", "t", "t")});
+  json f = field<field_types::Hits>("hits", several ? "Hits, in any order" : "The first hit");
+  json columns = json::array({field<field_types::Number>("t", "t")});
   if (point_and_normal) {
-    columns.push_back(field("vector", "point", "point"));
-    columns.push_back(field("vector", "normal", "normal"));
+    columns.push_back(field<field_types::Vector>("point", "point"));
+    columns.push_back(field<field_types::Vector>("normal", "normal"));
   }
-  if (barycentric) columns.push_back(field("vector", "barycentric", "barycentric (w_a, w_b, w_c)"));
+  if (barycentric)
+    columns.push_back(field<field_types::Vector>("barycentric", "barycentric (w_a, w_b, w_c)"));
   f["columns"] = columns;
   f["several"] = several;
   return f;
 }
 
 json tree_field(const Scene& scene) {
-  json f = field("tree", "", "The ray tree: one row per point where a ray meets an object");
+  json f =
+      field<field_types::Tree>("", "The ray tree: one row per point where a ray meets an object");
   json objects = json::array(), lights = json::array();
   for (const auto& o : scene.objects) objects.push_back(o.name);
   for (const auto& l : scene.lights) lights.push_back(l.name);

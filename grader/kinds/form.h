@@ -7,12 +7,17 @@
 #include <string>
 #include <vector>
 
+#include "kinds/fields/field_types.h"
 #include "scenes/scene.h"
 
 namespace raygrade::form {
 
-// One input: {"type", "key", "label"}; a key "ray/origin" answers ray.origin.
-nlohmann::json field(std::string type, std::string key, std::string label);
+// One input of a field type: {"type", "key", "label"}; a key "ray/origin" answers ray.origin.
+nlohmann::json field(const FieldTypeEntry& type, std::string key, std::string label);
+template <FieldTypeSpec T>
+nlohmann::json field(std::string key, std::string label) {
+  return field(field_type_entry<T>(), std::move(key), std::move(label));
+}
 
 // The names of a list of objects or lights, in order.
 std::vector<std::string> names_of(const nlohmann::json& list);

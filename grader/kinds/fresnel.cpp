@@ -144,9 +144,9 @@ std::vector<PartSpec> FresnelKind::parts() {
 
 nlohmann::json FresnelKind::answer_form(const Problem& /*p*/) {
   return form::fields(
-      {form::field("number", "reflectance", "The reflectance F"),
-       form::field("number", "transmittance", "The transmitted share 1 − F"),
-       form::field("yesno", "total_internal_reflection", "Total internal reflection?")});
+      {form::field<field_types::Number>("reflectance", "The reflectance F"),
+       form::field<field_types::Number>("transmittance", "The transmitted share 1 − F"),
+       form::field<field_types::YesNo>("total_internal_reflection", "Total internal reflection?")});
 }
 
 std::string_view FresnelKind::schema() {

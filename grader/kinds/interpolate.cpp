@@ -231,10 +231,11 @@ std::vector<PartSpec> InterpolateKind::parts() {
 }
 
 nlohmann::json InterpolateKind::answer_form(const Problem& /*p*/) {
-  return form::fields({form::field("vector", "normal", "The smooth unit normal at P"),
-                       form::field("vector", "barycentric", "The weights (w_a, w_b, w_c) of P"),
-                       form::field("number", "u", "The texture coordinate u at P"),
-                       form::field("number", "v", "The texture coordinate v at P")});
+  return form::fields(
+      {form::field<field_types::Vector>("normal", "The smooth unit normal at P"),
+       form::field<field_types::Vector>("barycentric", "The weights (w_a, w_b, w_c) of P"),
+       form::field<field_types::Number>("u", "The texture coordinate u at P"),
+       form::field<field_types::Number>("v", "The texture coordinate v at P")});
 }
 
 std::string_view InterpolateKind::schema() {

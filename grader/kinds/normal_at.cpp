@@ -181,11 +181,11 @@ std::vector<PartSpec> NormalKind::parts() {
 }
 
 nlohmann::json NormalKind::answer_form(const Problem& p) {
-  nlohmann::json fields =
-      nlohmann::json::array({form::field("vector", "normal", "The outward unit normal at P")});
+  nlohmann::json fields = nlohmann::json::array(
+      {form::field<field_types::Vector>("normal", "The outward unit normal at P")});
   if (p.task->answer().contains("object_normal")) {
-    fields.push_back(
-        form::field("vector", "object_normal", "The normal in object space, before (A⁻¹)ᵀ"));
+    fields.push_back(form::field<field_types::Vector>("object_normal",
+                                                      "The normal in object space, before (A⁻¹)ᵀ"));
   }
   return form::fields(fields);
 }

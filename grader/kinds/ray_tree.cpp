@@ -380,11 +380,11 @@ nlohmann::json RayTreeKind::answer_form(const Problem& p) {
   if (task->tree().ask == Ask::kMedia) {
     // Every boundary along the ray's line, in order: t, then the indices on either side.
     nlohmann::json hits =
-        form::field("hits", "hits", "Every surface the ray's line crosses, in order");
-    nlohmann::json columns =
-        nlohmann::json::array({form::field("number", "t", "t"),
-                               form::field("number", "n1", "n1 (the side it comes from)"),
-                               form::field("number", "n2", "n2 (the side it goes into)")});
+        form::field<field_types::Hits>("hits", "Every surface the ray's line crosses, in order");
+    nlohmann::json columns = nlohmann::json::array(
+        {form::field<field_types::Number>("t", "t"),
+         form::field<field_types::Number>("n1", "n1 (the side it comes from)"),
+         form::field<field_types::Number>("n2", "n2 (the side it goes into)")});
     for (auto& c : columns) c["parts"] = nlohmann::json::array({"media"});
     hits["columns"] = columns;
     hits["several"] = true;
@@ -394,10 +394,10 @@ nlohmann::json RayTreeKind::answer_form(const Problem& p) {
   if (!task->components().empty()) {
     // One number per component asked, keyed by the tree's labels.
     for (const auto& c : task->components()) {
-      nlohmann::json f =
-          form::field("number", "components/" + c.label + "/" + c.component,
-                      c.component == "total" ? fmt::format("{}'s intensity", c.label)
-                                             : fmt::format("{}'s {} term", c.label, c.component));
+      nlohmann::json f = form::field<field_types::Number>(
+          "components/" + c.label + "/" + c.component,
+          c.component == "total" ? fmt::format("{}'s intensity", c.label)
+                                 : fmt::format("{}'s {} term", c.label, c.component));
       f["parts"] = nlohmann::json::array({c.part()});
       list.push_back(f);
     }
@@ -405,10 +405,11 @@ nlohmann::json RayTreeKind::answer_form(const Problem& p) {
   }
   list.push_back(form::tree_field(task->scene()));
   if (task->ask() == Ask::kIntensity) {
-    nlohmann::json f =
-        task->colour()
-            ? form::field("vector", "intensity", "The colour seen along the primary ray (r, g, b)")
-            : form::field("number", "intensity", "The intensity seen along the primary ray");
+    nlohmann::json f = task->colour()
+                           ? form::field<field_types::Vector>(
+                                 "intensity", "The colour seen along the primary ray (r, g, b)")
+                           : form::field<field_types::Number>(
+                                 "intensity", "The intensity seen along the primary ray");
     list.push_back(f);
   }
   return form::fields(list);

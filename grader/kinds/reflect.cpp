@@ -70,9 +70,9 @@ std::vector<PartSpec> ReflectKind::parts() {
 }
 
 nlohmann::json ReflectKind::answer_form(const Problem& /*p*/) {
-  return form::fields(
-      {form::field("vector", "direction", "The reflected direction"),
-       form::field("vector", "unit_direction", "The reflected direction as a unit vector")});
+  return form::fields({form::field<field_types::Vector>("direction", "The reflected direction"),
+                       form::field<field_types::Vector>(
+                           "unit_direction", "The reflected direction as a unit vector")});
 }
 
 std::string_view ReflectKind::schema() {

@@ -234,18 +234,19 @@ std::vector<PartSpec> RefractKind::parts() {
 nlohmann::json RefractKind::answer_form(const Problem& /*p*/) {
   // "Yes" to total internal reflection also answers the direction: there is none.
   nlohmann::json tir =
-      form::field("yesno", "total_internal_reflection", "Total internal reflection?");
+      form::field<field_types::YesNo>("total_internal_reflection", "Total internal reflection?");
   tir["parts"] = nlohmann::json::array({"total_internal_reflection", "direction"});
   return form::fields(
       {tir,
-       form::field("vector", "direction",
-                   "The refracted direction (blank under total internal reflection)"),
-       form::field("vector", "reflected_direction",
-                   "The reflected direction (under total internal reflection)"),
-       form::field("number", "angle_of_incidence", "The angle of incidence, in degrees"),
-       form::field("number", "angle_of_refraction", "The angle of refraction, in degrees"),
-       form::field("number", "critical_angle",
-                   "The critical angle, in degrees (when there is one)")});
+       form::field<field_types::Vector>(
+           "direction", "The refracted direction (blank under total internal reflection)"),
+       form::field<field_types::Vector>(
+           "reflected_direction", "The reflected direction (under total internal reflection)"),
+       form::field<field_types::Number>("angle_of_incidence", "The angle of incidence, in degrees"),
+       form::field<field_types::Number>("angle_of_refraction",
+                                        "The angle of refraction, in degrees"),
+       form::field<field_types::Number>("critical_angle",
+                                        "The critical angle, in degrees (when there is one)")});
 }
 
 std::string_view RefractKind::schema() {

@@ -407,20 +407,22 @@ nlohmann::json ShadeKind::answer_form(const Problem& p) {
   // With colours every term is [r, g, b]: three numbers, as a vector's field takes them.
   const auto* task = dynamic_cast<const ShadeTask*>(p.task.get());
   bool rgb = task && task->colour();
-  std::string term = rgb ? "vector" : "number";
+  const FieldTypeEntry term =
+      rgb ? field_type_entry<field_types::Vector>() : field_type_entry<field_types::Number>();
   std::string unit = rgb ? " [r, g, b]" : "";
-  nlohmann::json lights = form::field("rows", "lights", "Each light");
+  nlohmann::json lights = form::field<field_types::Rows>("lights", "Each light");
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& n : form::names_of(p.source.value("lights", nlohmann::json()))) {
     rows.push_back({{"label", "light " + n}, {"fixed", {{"light", n}}}});
   }
   lights["rows"] = rows;
-  lights["columns"] = nlohmann::json::array({form::field("number", "n_dot_l", "N·L"),
-                                             form::field("number", "r_dot_v", "R·V"),
-                                             form::field("yesno", "reaches", "reaches the point?"),
-                                             form::field(term, "diffuse", "diffuse" + unit),
-                                             form::field(term, "specular", "specular" + unit)});
-  nlohmann::json terms = form::field("set", "terms", "The terms that apply");
+  lights["columns"] =
+      nlohmann::json::array({form::field<field_types::Number>("n_dot_l", "N·L"),
+                             form::field<field_types::Number>("r_dot_v", "R·V"),
+                             form::field<field_types::YesNo>("reaches", "reaches the point?"),
+                             form::field(term, "diffuse", "diffuse" + unit),
+                             form::field(term, "specular", "specular" + unit)});
+  nlohmann::json terms = form::field<field_types::Set>("terms", "The terms that apply");
   terms["options"] = nlohmann::json::array({"ambient", "diffuse", "specular"});
   return form::fields({form::field(term, "ambient", "The ambient term" + unit),
                        form::field(term, "diffuse", "The diffuse term" + unit),

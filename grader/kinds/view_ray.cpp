@@ -323,8 +323,8 @@ std::vector<PartSpec> ViewRayKind::parts() {
 }
 
 nlohmann::json ViewRayKind::answer_form(const Problem& /*p*/) {
-  return form::fields({form::field("vector", "origin", "Where the ray starts"),
-                       form::field("vector", "direction", "The ray's direction")});
+  return form::fields({form::field<field_types::Vector>("origin", "Where the ray starts"),
+                       form::field<field_types::Vector>("direction", "The ray's direction")});
 }
 
 std::string_view ViewRayKind::schema() {

@@ -8,6 +8,7 @@
 #include "grading/outputs.h"
 #include "json/cursor.h"
 #include "json/source.h"
+#include "kinds/fields/field_type.h"
 #include "problems/problem.h"
 #include "reports/render.h"
 #include "shapes/shape.h"
@@ -130,6 +131,18 @@ std::string grade_formats_table(const std::vector<GradeFormat>& grade_formats) {
   return out;
 }
 
+// The field types of the answer forms, from their list (kinds/fields/field_types.h).
+std::string field_types_table() {
+  std::string out =
+      "| type | what the student gives | shape | a value | in one text box |\n"
+      "| --- | --- | --- | --- | --- |\n";
+  for (const FieldTypeEntry& e : field_type_table()) {
+    out += fmt::format("| `{}` | {} | `{}` | `{}` | {} |\n", e.name, cell(e.asks),
+                       field_shape_word(e.shape), field_value_word(e.value), cell(e.placeholder));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<ReferenceTable> reference_tables(const std::vector<GradeFormat>& grade_formats) {
@@ -137,6 +150,7 @@ std::vector<ReferenceTable> reference_tables(const std::vector<GradeFormat>& gra
       {"primitives", primitives_table()},
       {"kinds", kinds_table()},
       {"parts", parts_table()},
+      {"field-types", field_types_table()},
       {"solution-formats", solution_formats_table()},
       {"grade-formats", grade_formats_table(grade_formats)},
   };

@@ -11,6 +11,7 @@
 #include "assignments/variants.h"
 #include "core/escape.h"
 #include "grading/outputs.h"
+#include "kinds/fields/field_type.h"
 
 namespace raygrade {
 namespace {
@@ -57,11 +58,8 @@ json yes_no() {
   return json::array({{{"text", "yes"}, {"value", true}}, {{"text", "no"}, {"value", false}}});
 }
 
-std::string placeholder_of(const std::string& type) {
-  if (type == "vector") return "x, y, z";
-  if (type == "formula") return "a formula";
-  if (type == "set") return "names separated by commas";
-  return "a number or an expression, e.g. 9 - sqrt(3)";
+std::string placeholder_of(const json& field) {
+  return std::string(field_type_of(field).placeholder);
 }
 
 // A ray tree as a fixed number of points I1, I2, ... (the form's "rows"), each a drop-down of
@@ -76,7 +74,10 @@ void tree_inputs(const json& f, std::vector<Input>& out, json& question) {
   json none = {{"text", "\u2014"}, {"value", nullptr}};
   auto add_choice = [&](const std::string& name, const json& path, const std::string& label,
                         json options) {
-    json spec = {{"name", name}, {"type", "choice"}, {"path", path}, {"options", options}};
+    json spec = {{"name", name},
+                 {"type", field_value_word(FieldValue::kOneOf)},
+                 {"path", path},
+                 {"options", options}};
     out.push_back({spec, choice_input(name, label, options, true)});
   };
   for (int k = 1; k <= rows; ++k) {
@@ -140,7 +141,8 @@ void tree_inputs(const json& f, std::vector<Input>& out, json& question) {
 // One input per value the student types: a field of the answer form, a column of its hits (all
 // the hits' values in one input, separated by semicolons), or a cell of its rows.
 void inputs_of_field(const json& f, std::vector<Input>& out, json& question) {
-  std::string type = f["type"], key = f["key"], label = f["label"];
+  const FieldTypeEntry& type = field_type_of(f);
+  std::string key = f["key"], label = f["label"];
   json path = json::array();
   std::string name;
   for (std::size_t start = 0;;) {
@@ -150,7 +152,7 @@ void inputs_of_field(const json& f, std::vector<Input>& out, json& question) {
     start = slash + 1;
   }
   for (const auto& p : path) name += (name.empty() ? "" : "_") + p.get<std::string>();
-  if (type == "hits") {
+  if (type.shape == FieldShape::kOpenTable) {
     question["hits_key"] = key;
     bool several = f.value("several", false);
     json words = {{"none", "none"}};
@@ -160,49 +162,56 @@ void inputs_of_field(const json& f, std::vector<Input>& out, json& question) {
       hint += ", contained when it lies in the surface";
     }
     for (const auto& c : f["columns"]) {
-      std::string column = c["key"], ctype = c["type"];
-      json spec = {{"name", column}, {"type", ctype}, {"list", true}, {"column", column}};
+      std::string column = c["key"];
+      json spec = {{"name", column},
+                   {"type", field_value_word(field_type_of(c).value)},
+                   {"list", true},
+                   {"column", column}};
       if (column == "t") spec["words"] = words;
       std::string what = several ? column + " of every hit, in the same order, separated by ;"
                                  : column + " of the first hit";
       if (column == "t") what += " (" + hint + ")";
-      out.push_back({spec, string_input(column, what, placeholder_of(ctype))});
+      out.push_back({spec, string_input(column, what, placeholder_of(c))});
     }
     return;
   }
-  if (type == "tree") return tree_inputs(f, out, question);
-  if (type == "rows") {
+  if (type.shape == FieldShape::kTreeBuilder) return tree_inputs(f, out, question);
+  if (type.shape == FieldShape::kFixedRows) {
     for (std::size_t r = 0; r < f["rows"].size(); ++r) {
       const json& row = f["rows"][r];
       for (const auto& c : f["columns"]) {
-        std::string column = c["key"], ctype = c["type"];
+        std::string column = c["key"];
         std::string cell = fmt::format("{}_{}_{}", name, r, column);
-        json spec = {{"name", cell}, {"type", ctype}, {"path", {key, r, column}}};
+        json spec = {{"name", cell},
+                     {"type", field_value_word(field_type_of(c).value)},
+                     {"path", {key, r, column}}};
         std::string what =
             fmt::format("{}, {}", row["label"].get<std::string>(), c["label"].get<std::string>());
-        if (ctype == "yesno") {
+        if (field_type_of(c).value == FieldValue::kFlag) {
           spec["options"] = yes_no();
           out.push_back({spec, choice_input(cell, what, spec["options"])});
         } else {
-          out.push_back({spec, string_input(cell, what, placeholder_of(ctype))});
+          out.push_back({spec, string_input(cell, what, placeholder_of(c))});
         }
       }
     }
     return;
   }
-  json spec = {{"name", name.empty() ? "answer" : name}, {"type", type}, {"path", path}};
-  if (type == "choice" || type == "yesno") {
-    spec["options"] = type == "yesno" ? yes_no() : f["options"];
+  json spec = {{"name", name.empty() ? "answer" : name},
+               {"type", field_value_word(type.value)},
+               {"path", path}};
+  if (type.value == FieldValue::kOneOf || type.value == FieldValue::kFlag) {
+    spec["options"] = type.value == FieldValue::kFlag ? yes_no() : f["options"];
     out.push_back({spec, choice_input(spec["name"], label, spec["options"])});
     return;
   }
   std::string hint = label;
-  if (type == "set") {
+  if (type.value == FieldValue::kSomeOf) {
     for (std::size_t k = 0; k < f["options"].size(); ++k)
       hint += (k ? ", " : " (") + f["options"][k].get<std::string>();
     hint += ")";
   }
-  out.push_back({spec, string_input(spec["name"], hint, placeholder_of(type))});
+  out.push_back({spec, string_input(spec["name"], hint, placeholder_of(f))});
 }
 
 // A PrairieLearn uuid that is the same at every export of a problem of an assignment: its two

@@ -40,8 +40,12 @@ MAX_MESSAGE = 400
 # until prepare() puts it under the choice's own name: pl-multiple-choice's prepare() runs in
 # between and refuses a correct answer already there. No answers-name holds a colon.
 CHOICES = "raygrade:choices"
-# The input types answered with a pl-multiple-choice.
-CHOICE_TYPES = ("choice", "yesno")
+# An input's "type" is the value it takes, in the words of raygrade's table of field types
+# (kinds/fields/field_type.h, field_value_word), or "names" for a ray tree's blockers. The
+# inputs answered with a pl-multiple-choice:
+CHOICE_TYPES = ("one-of", "flag")
+THREE_NUMBERS = "typed-three"
+SOME_OF = "some-of"
 
 
 def _dict(data, key):
@@ -448,7 +452,7 @@ def _read_input(data, inp, answer, hits, blanks):
     """Puts input `inp`'s value into the answer, or for a column of hits into `hits` (and its
     blank into `blanks`); ValueError when it cannot be read."""
     name, kind = inp["name"], inp["type"]
-    if kind in ("choice", "yesno"):
+    if kind in CHOICE_TYPES:
         chosen = _choice(data, inp)
         if chosen is not None:
             _put(answer, inp["path"], chosen["value"])
@@ -462,11 +466,11 @@ def _read_input(data, inp, answer, hits, blanks):
             return
         if any(not item.strip(SPACES) for item in items):
             raise ValueError("an empty value between two semicolons")
-        hits[inp["column"]] = [_vector(i) if kind == "vector" else i for i in items]
-        blanks[inp["column"]] = ["", "", ""] if kind == "vector" else ""
-    elif kind == "vector":
+        hits[inp["column"]] = [_vector(i) if kind == THREE_NUMBERS else i for i in items]
+        blanks[inp["column"]] = ["", "", ""] if kind == THREE_NUMBERS else ""
+    elif kind == THREE_NUMBERS:
         _put(answer, inp["path"], _vector(text))
-    elif kind == "set":
+    elif kind == SOME_OF:
         if text:
             _put(answer, inp["path"], [w.strip().lower() for w in _split(text, ",")])
     elif kind == "names":  # object names, as they are written
@@ -686,11 +690,11 @@ def _invalid(q, correct):
     no input."""
     def first(wanted):
         return next((i for i in q["inputs"] if wanted(i)), None)
-    inp = (first(lambda i: i["type"] == "vector") or first(lambda i: i.get("list"))
+    inp = (first(lambda i: i["type"] == THREE_NUMBERS) or first(lambda i: i.get("list"))
            or first(lambda i: i["type"] not in CHOICE_TYPES) or first(lambda i: True))
     if inp is None:
         return None
-    if inp["type"] == "vector":
+    if inp["type"] == THREE_NUMBERS:
         text = UNREADABLE_VECTOR
     elif inp.get("list"):
         text = UNREADABLE_LIST
@@ -736,11 +740,11 @@ def _wrong_values(data, inp, text):
         words = inp.get("words", {})
         if len(items) == 1 and items[0].lower() in words:
             return [w for w in words if w != items[0].lower()][:1]
-        wrong = _wrong_vector(items[0]) if kind == "vector" else _wrong_number(items[0])
+        wrong = _wrong_vector(items[0]) if kind == THREE_NUMBERS else _wrong_number(items[0])
         return ["; ".join([wrong] + items[1:])]
-    if kind == "vector":
+    if kind == THREE_NUMBERS:
         return [_wrong_vector(text)]
-    if kind in ("set", "names"):
+    if kind in (SOME_OF, "names"):
         terms = _split(text, ",")
         return [", ".join(terms[1:])] if len(terms) > 1 else []
     return [_wrong_number(text)]
