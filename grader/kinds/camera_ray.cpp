@@ -3,6 +3,7 @@
 
 #include "derivation/number_format.h"
 #include "kinds/form.h"
+#include "kinds/part_names.h"
 #include "kinds/view_ray.h"
 
 namespace raygrade {
@@ -117,9 +118,10 @@ std::unique_ptr<Task> CameraRayKind::read(const Cursor& problem) {
 
 std::vector<PartSpec> CameraRayKind::parts() {
   using C = Comparison;
-  return {{"ray", "the ray through the pixel: the eye and the direction (any positive multiple)", 1,
+  return {{part_names::kRay,
+           "the ray through the pixel: the eye and the direction (any positive multiple)", 1,
            C::kDirection},
-          {"steps", "the derivation's named steps", 0, C::kSteps}};
+          {part_names::kSteps, "the derivation's named steps", 0, C::kSteps}};
 }
 
 nlohmann::json CameraRayKind::answer_form(const Problem& /*p*/) {

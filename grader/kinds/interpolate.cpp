@@ -9,6 +9,7 @@
 
 #include "derivation/number_format.h"
 #include "kinds/form.h"
+#include "kinds/part_names.h"
 #include "scenes/optics.h"
 #include "shapes/surface_point.h"
 
@@ -223,11 +224,12 @@ std::unique_ptr<Task> InterpolateKind::read(const Cursor& problem) {
 
 std::vector<PartSpec> InterpolateKind::parts() {
   using C = Comparison;
-  return {
-      {"normal", "the smooth normal at the point, as a unit vector", 2, C::kUnitDirection},
-      {"barycentric", "the point's weights (w_a, w_b, w_c)", 1, C::kPoint},
-      {"u", "the texture coordinate u at the point (when the vertices have them)", 0, C::kScalar},
-      {"v", "the texture coordinate v at the point", 0, C::kScalar}};
+  return {{part_names::kNormal, "the smooth normal at the point, as a unit vector", 2,
+           C::kUnitDirection},
+          {part_names::kBarycentric, "the point's weights (w_a, w_b, w_c)", 1, C::kPoint},
+          {part_names::kU, "the texture coordinate u at the point (when the vertices have them)", 0,
+           C::kScalar},
+          {part_names::kV, "the texture coordinate v at the point", 0, C::kScalar}};
 }
 
 nlohmann::json InterpolateKind::answer_form(const Problem& /*p*/) {

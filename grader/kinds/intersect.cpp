@@ -6,6 +6,7 @@
 #include "accuracy/settle.h"
 #include "derivation/number_format.h"
 #include "kinds/form.h"
+#include "kinds/part_names.h"
 #include "kinds/sketch.h"
 #include "shapes/primitives.h"
 
@@ -211,12 +212,13 @@ std::unique_ptr<Task> IntersectKind::read(const Cursor& problem) {
 
 std::vector<PartSpec> IntersectKind::parts() {
   using C = Comparison;
-  return {{"t", "every hit's t, in any order ([] when the ray misses)", 2, C::kHits},
-          {"point", "every hit's point P = O + tD", 1, C::kPoint},
-          {"normal", "the unit normal at every hit (any positive multiple)", 0, C::kDirection},
-          {"barycentric", "a triangle hit's weights (w_a, w_b, w_c), or its u = w_b and v = w_c", 0,
-           C::kWeights},
-          {"steps", "the derivation's named steps", 0, C::kSteps}};
+  return {{part_names::kT, "every hit's t, in any order ([] when the ray misses)", 2, C::kHits},
+          {part_names::kPoint, "every hit's point P = O + tD", 1, C::kPoint},
+          {part_names::kNormal, "the unit normal at every hit (any positive multiple)", 0,
+           C::kDirection},
+          {part_names::kBarycentric,
+           "a triangle hit's weights (w_a, w_b, w_c), or its u = w_b and v = w_c", 0, C::kWeights},
+          {part_names::kSteps, "the derivation's named steps", 0, C::kSteps}};
 }
 
 nlohmann::json IntersectKind::answer_form(const Problem& p) {
@@ -256,10 +258,11 @@ std::unique_ptr<Task> FirstHitKind::read(const Cursor& problem) {
 
 std::vector<PartSpec> FirstHitKind::parts() {
   using C = Comparison;
-  return {{"object", "the name of the object hit first (null when none is)", 2, C::kName},
-          {"t", "the first hit's t", 1, C::kHits},
-          {"point", "the first hit's point", 1, C::kPoint},
-          {"normal", "the unit normal there", 0, C::kDirection}};
+  return {
+      {part_names::kObject, "the name of the object hit first (null when none is)", 2, C::kName},
+      {part_names::kT, "the first hit's t", 1, C::kHits},
+      {part_names::kPoint, "the first hit's point", 1, C::kPoint},
+      {part_names::kNormal, "the unit normal there", 0, C::kDirection}};
 }
 
 nlohmann::json FirstHitKind::answer_form(const Problem& p) {

@@ -9,6 +9,7 @@
 #include "derivation/number_format.h"
 #include "kinds/form.h"
 #include "kinds/intersect.h"
+#include "kinds/part_names.h"
 #include "kinds/sketch.h"
 #include "shapes/primitives.h"
 #include "shapes/transformed.h"
@@ -174,10 +175,10 @@ std::unique_ptr<Task> NormalKind::read(const Cursor& problem) { return NormalTas
 
 std::vector<PartSpec> NormalKind::parts() {
   using C = Comparison;
-  return {
-      {"normal", "the outward unit normal at the point (any positive multiple)", 1, C::kDirection},
-      {"object_normal", "a transformed object's normal in object space, before (A⁻¹)ᵀ", 0,
-       C::kDirection}};
+  return {{part_names::kNormal, "the outward unit normal at the point (any positive multiple)", 1,
+           C::kDirection},
+          {"object_normal", "a transformed object's normal in object space, before (A⁻¹)ᵀ", 0,
+           C::kDirection}};
 }
 
 nlohmann::json NormalKind::answer_form(const Problem& p) {

@@ -9,6 +9,7 @@
 #include "derivation/number_format.h"
 #include "kinds/camera_ray.h"
 #include "kinds/form.h"
+#include "kinds/part_names.h"
 #include "kinds/swatch.h"
 #include "kinds/view_ray.h"
 #include "scenes/tree_draw.h"
@@ -354,12 +355,15 @@ std::unique_ptr<Task> RayTreeKind::read(const Cursor& problem) {
 
 std::vector<PartSpec> RayTreeKind::parts() {
   using C = Comparison;
-  return {{"hit", "ask \"hit\": the object the ray hits first and its t", 1, C::kHits},
-          {"tree", "the hit points of the tree and their objects", 1, C::kTree},
-          {"shadows", "which hit points are in shadow, and by what when named", 1, C::kFlag},
-          {"terms", "which Phong terms apply at each hit point", 1, C::kNames},
-          {"intensity", "ask \"intensity\": the intensity along the primary ray", 1, C::kScalar},
-          {"media", "ask \"media\": n1 and n2 at every hit along the ray, in order", 1, C::kHits}};
+  return {
+      {part_names::kHit, "ask \"hit\": the object the ray hits first and its t", 1, C::kHits},
+      {part_names::kTree, "the hit points of the tree and their objects", 1, C::kTree},
+      {part_names::kShadows, "which hit points are in shadow, and by what when named", 1, C::kFlag},
+      {part_names::kTerms, "which Phong terms apply at each hit point", 1, C::kNames},
+      {part_names::kIntensity, "ask \"intensity\": the intensity along the primary ray", 1,
+       C::kScalar},
+      {part_names::kMedia, "ask \"media\": n1 and n2 at every hit along the ray, in order", 1,
+       C::kHits}};
 }
 
 nlohmann::json RayTreeKind::answer_form(const Problem& p) {

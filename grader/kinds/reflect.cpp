@@ -3,6 +3,7 @@
 
 #include "derivation/number_format.h"
 #include "kinds/form.h"
+#include "kinds/part_names.h"
 #include "kinds/sketch.h"
 #include "scenes/optics.h"
 
@@ -63,10 +64,10 @@ std::unique_ptr<Task> ReflectKind::read(const Cursor& problem) {
 
 std::vector<PartSpec> ReflectKind::parts() {
   using C = Comparison;
-  PartSpec direction{"direction", "the reflected direction r (any positive multiple)", 1,
+  PartSpec direction{part_names::kDirection, "the reflected direction r (any positive multiple)", 1,
                      C::kDirection, "r = d − 2(d·n̂)n̂ keeps the length of d"};
-  direction.aliases = {"unit_direction"};  // a unit direction is a direction
-  return {direction, {"unit_direction", "r as a unit vector", 0, C::kUnitDirection}};
+  direction.aliases = {part_names::kUnitDirection};  // a unit direction is a direction
+  return {direction, {part_names::kUnitDirection, "r as a unit vector", 0, C::kUnitDirection}};
 }
 
 nlohmann::json ReflectKind::answer_form(const Problem& /*p*/) {

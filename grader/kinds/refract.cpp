@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "derivation/number_format.h"
 #include "kinds/form.h"
+#include "kinds/part_names.h"
 #include "kinds/sketch.h"
 #include "scenes/optics.h"
 
@@ -206,8 +207,8 @@ std::string why_total(const nlohmann::json& ref, bool total, const Number& numbe
 
 std::vector<PartSpec> RefractKind::parts() {
   using C = Comparison;
-  PartSpec direction{"direction", "the refracted direction (null past the critical angle)", 1,
-                     C::kDirection};
+  PartSpec direction{part_names::kDirection,
+                     "the refracted direction (null past the critical angle)", 1, C::kDirection};
   direction.absent_by_flag = "total_internal_reflection";  // true: there is no refracted ray
   direction.why_absent = past_critical("refracted direction");
   PartSpec total{"total_internal_reflection", "whether the light is totally reflected", 0,

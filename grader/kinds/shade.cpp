@@ -5,6 +5,7 @@
 
 #include "derivation/number_format.h"
 #include "kinds/form.h"
+#include "kinds/part_names.h"
 #include "kinds/sketch.h"
 #include "kinds/swatch.h"
 #include "scenes/optics.h"
@@ -383,7 +384,7 @@ std::unique_ptr<Task> ShadeKind::read(const Cursor& problem) { return ShadeTask:
 
 std::vector<PartSpec> ShadeKind::parts() {
   using C = Comparison;
-  PartSpec specular{"specular", "the sum of the specular terms", 0, C::kScalar};
+  PartSpec specular{part_names::kSpecular, "the sum of the specular terms", 0, C::kScalar};
   specular.zero_when_absent = true;  // k_s = 0: 0 is the term, as much as none
   specular.why_absent = [](const nlohmann::json&,
                            const std::function<std::string(double)>&) -> std::string {
@@ -393,13 +394,13 @@ std::vector<PartSpec> ShadeKind::parts() {
                   "the material's colour at the point (a pattern's colour there), [r, g, b]", 0,
                   C::kScalar};
   colour.optional_when_absent = true;  // a material without a colour has none to give
-  return {{"intensity", "the Phong intensity", 1, C::kScalar},
+  return {{part_names::kIntensity, "the Phong intensity", 1, C::kScalar},
           {"ambient", "the ambient term k_a·I_a", 0, C::kScalar},
-          {"diffuse", "the sum of the diffuse terms", 0, C::kScalar},
+          {part_names::kDiffuse, "the sum of the diffuse terms", 0, C::kScalar},
           specular,
-          {"terms", "which terms apply (ambient, diffuse, specular)", 0, C::kNames},
-          {"lights", "per light: whether it reaches the point, N·L, R·V and its two terms", 0,
-           C::kScalar},
+          {part_names::kTerms, "which terms apply (ambient, diffuse, specular)", 0, C::kNames},
+          {part_names::kLights,
+           "per light: whether it reaches the point, N·L, R·V and its two terms", 0, C::kScalar},
           colour};
 }
 

@@ -6,6 +6,7 @@
 
 #include "derivation/number_format.h"
 #include "kinds/form.h"
+#include "kinds/part_names.h"
 
 namespace raygrade {
 namespace {
@@ -303,19 +304,20 @@ std::unique_ptr<Task> ViewRayKind::read(const Cursor& problem) {
 
 std::vector<PartSpec> ViewRayKind::parts() {
   using C = Comparison;
-  PartSpec direction{"direction", "the ray's direction (any positive multiple)", 1, C::kDirection};
-  direction.aliases = {"unit_direction"};  // a unit direction is a direction
-  return {{"origin", "where the ray starts (the eye; the pixel itself when orthographic)", 1,
-           C::kPoint},
+  PartSpec direction{part_names::kDirection, "the ray's direction (any positive multiple)", 1,
+                     C::kDirection};
+  direction.aliases = {part_names::kUnitDirection};  // a unit direction is a direction
+  return {{part_names::kOrigin,
+           "where the ray starts (the eye; the pixel itself when orthographic)", 1, C::kPoint},
           direction,
-          {"unit_direction", "the direction as a unit vector", 0, C::kUnitDirection},
+          {part_names::kUnitDirection, "the direction as a unit vector", 0, C::kUnitDirection},
           {"u", "the camera's u (the image's right)", 0, C::kDirection},
           {"v", "the camera's v (the image's up)", 0, C::kDirection},
           {"w", "the camera's w (pointing back)", 0, C::kDirection},
           {"l", "the image plane's left edge", 0, C::kScalar},
           {"r", "right edge", 0, C::kScalar},
           {"b", "bottom edge", 0, C::kScalar},
-          {"t", "top edge", 0, C::kScalar},
+          {part_names::kT, "top edge", 0, C::kScalar},
           {"pixel_width", "a pixel's width (r − l)/n_x", 0, C::kScalar},
           {"pixel_height", "a pixel's height (t − b)/n_y", 0, C::kScalar},
           {"u_s", "the pixel's position along u", 0, C::kScalar},
