@@ -152,7 +152,7 @@
     function addRow() {
       const n = rows.length;
       const cells = f.columns.map((c) => ({key: c.key, box: box(c, prefix + "." + n + "." + c.key, c.label + " of hit " + (n + 1))}));
-      const row = el("div", {class: "row"}, cells.map((c) => labelled(c.key === "t" ? "t" : c.key, c.box.node)));
+      const row = el("div", {class: "row"}, cells.map((c) => labelled(c.key, c.box.node)));
       rows.push(cells);
       table.appendChild(row);
       return row;
@@ -227,9 +227,9 @@
   const SHADOW_TEXT = {lit: "reaches the light (lit)", shadow: "is blocked (in shadow)", away: "the surface faces away"};
   const NOTHING = "\u0000nothing";
   function treeField(prefix, f) {
-    const asks = f.asks || ["tree", "shadows", "terms"];
-    const askShadows = asks.indexOf("shadows") >= 0 && f.lights.length > 0;
-    const askTerms = asks.indexOf("terms") >= 0;
+    const asks = f.asks || [];
+    const askShadows = asks.indexOf(f.shadows_part) >= 0 && f.lights.length > 0;
+    const askTerms = asks.indexOf(f.terms_part) >= 0;
     const points = [];
     let nextId = 1;
     const list = el("ol", {class: "tree-points"});

@@ -347,6 +347,7 @@ std::size_t index_at(std::string_view name, bool letters = true) {
 // w_b → w_@ with `letters`); the two polarizations' amplitudes and reflectances are indexed by
 // s and p (r_s, r_p → r_#).
 std::string family(std::string_view name, bool letters = true) {
+  // not a part: the derivation's quantities, whatever the parts are
   if (name == "r_s" || name == "r_p" || name == "R_s" || name == "R_p")
     return std::string(name.substr(0, 2)) + "#";
   std::size_t at = index_at(name, letters);

@@ -17,6 +17,7 @@
 #include "grading/parts.h"
 #include "json/cursor.h"
 #include "kinds/normal_at.h"
+#include "kinds/part_names.h"
 
 namespace raygrade {
 namespace {
@@ -91,7 +92,7 @@ class FieldsGrader final : public KindGrader {
   Verdict grade_part(const PartSpec& spec, const AnswerReader& s) const {
     const nlohmann::json* ref =
         reference_.contains(spec.name) ? &reference_.at(spec.name) : nullptr;
-    if (spec.name == "lights") return grade_lights(s);
+    if (spec.compare == Comparison::kRows) return grade_rows(spec, s);
     if (!ref || ref->is_null()) {
       if (s.json().is_null() || s.json() == false) return {1, {}};
       if (spec.zero_when_absent && is_zero(s.json())) return {1, {}};
@@ -227,7 +228,7 @@ class FieldsGrader final : public KindGrader {
   // transformed object's normal taken back by A instead of (A⁻¹)ᵀ.
   std::optional<Verdict> normal_mistake(const std::string& name, const AnswerReader::Vector& v,
                                         const Vec3d& ref, bool opposite) const {
-    if (!normal_task_ || name != "normal") return std::nullopt;
+    if (!normal_task_ || name != part_names::kNormal) return std::nullopt;
     std::string mine = format_vector(v.value(), numbers_);
     std::string right = format_vector(ref, numbers_);
     if (opposite && normal_task_->solid()) {
@@ -336,14 +337,15 @@ class FieldsGrader final : public KindGrader {
   }
 
   // Each light of the answer, by name or in order: every field given must be right.
-  Verdict grade_lights(const AnswerReader& s) const {
-    const nlohmann::json& ref = reference_.at("lights");
+  Verdict grade_rows(const PartSpec& spec, const AnswerReader& s) const {
+    const nlohmann::json& ref = reference_.at(spec.name);
     std::vector<AnswerReader> given = s.items();
     Verdict out;
     double right = 0;
     for (std::size_t i = 0; i < given.size(); ++i) {
       const AnswerReader& g = given[i];
-      g.allow_only({"light", "n_dot_l", "r_dot_v", "reaches", "diffuse", "specular"});
+      g.allow_only(
+          {"light", "n_dot_l", "r_dot_v", "reaches", part_names::kDiffuse, part_names::kSpecular});
       const nlohmann::json* r = i < ref.size() ? &ref[i] : nullptr;
       if (g.has("light")) {
         r = nullptr;

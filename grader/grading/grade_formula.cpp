@@ -63,6 +63,7 @@ class FormulaGrader final : public KindGrader {
       std::vector<double> values;
       Env env;
       for (const auto& s : task_.symbols()) {
+        // not a part: the formula's symbol r, a radius
         double v = s.name == "r" ? uniform(kRadiusLow, kSymbolRange)
                                  : uniform(-kSymbolRange, kSymbolRange);
         values.push_back(v);

@@ -12,6 +12,7 @@
 #include "grading/mistakes.h"
 #include "grading/parts.h"
 #include "grading/tolerance.h"
+#include "kinds/part_names.h"
 #include "kinds/ray_tree.h"
 #include "scenes/tree_json.h"
 
@@ -41,6 +42,7 @@ std::string terms_words(const std::set<std::string>& t) {
     if (t.count(k)) order.emplace_back(k);
   }
   for (const auto& k : t) {
+    // not a part: the Phong terms' names, the values of a point's terms
     if (k != "ambient" && k != "diffuse" && k != "specular") order.push_back(k);
   }
   // In the words of the answer form's choices: "ambient only", "ambient, diffuse and specular".
@@ -58,18 +60,20 @@ class RayTreeGrader final : public KindGrader {
     context_.tolerance = read_tolerance_policy(p);
     Ask ask = task_.ask();
     if (ask == Ask::kHit) {
-      context_.points = read_points_policy(p, default_points(p.kind, {"hit"}));
+      context_.points = read_points_policy(p, default_points(p.kind, {part_names::kHit}));
     } else if (ask == Ask::kMedia) {
-      context_.points = read_points_policy(p, default_points(p.kind, {"media"}));
+      context_.points = read_points_policy(p, default_points(p.kind, {part_names::kMedia}));
     } else if (!task_.components().empty()) {
       std::vector<std::pair<std::string, double>> parts;
       for (const auto& c : task_.components()) parts.emplace_back(c.part(), 1);
       context_.points = read_points_policy(p, parts);
     } else if (ask == Ask::kTree) {
-      context_.points = read_points_policy(p, default_points(p.kind, {"tree", "shadows", "terms"}));
+      context_.points = read_points_policy(
+          p, default_points(p.kind, {part_names::kTree, part_names::kShadows, part_names::kTerms}));
     } else {
-      context_.points =
-          read_points_policy(p, default_points(p.kind, {"tree", "shadows", "terms", "intensity"}));
+      context_.points = read_points_policy(
+          p, default_points(p.kind, {part_names::kTree, part_names::kShadows, part_names::kTerms,
+                                     part_names::kIntensity}));
     }
   }
 
@@ -77,7 +81,7 @@ class RayTreeGrader final : public KindGrader {
     if (task_.tree().ask == Ask::kHit) return grade_hit(a, out);
     if (task_.tree().ask == Ask::kMedia) return grade_media(a, out);
     if (!task_.components().empty()) return grade_components(a, out);
-    a.allow_only({"nodes", "all_terms", "ambient_only", "rays", "effects", "intensity"});
+    a.allow_only({"nodes", "all_terms", "ambient_only", "rays", "effects", part_names::kIntensity});
     std::vector<StudentNode> nodes = read_nodes(a);
     // Reference hit node index -> the student's node standing for it.
     std::map<int, const StudentNode*> match;
@@ -94,7 +98,7 @@ class RayTreeGrader final : public KindGrader {
     if (a.has("nodes")) {
       out.parts.push_back(grade_tree(match, extra));
     } else {
-      out.parts.push_back(missing_part(context_, "tree", "No tree (nodes) given."));
+      out.parts.push_back(missing_part(context_, part_names::kTree, "No tree (nodes) given."));
     }
     grade_lighting(match, lists, nodes.empty(), out);
     if (task_.ask() == Ask::kIntensity) grade_intensity(a, out);
@@ -106,14 +110,15 @@ class RayTreeGrader final : public KindGrader {
   std::string object_name(int i) const { return scene().objects[i].name; }
 
   void grade_hit(const AnswerReader& a, GradeResult& out) const {
-    a.allow_only({"object", "hits", "rays", "effects"});
+    a.allow_only({part_names::kObject, "hits", "rays", "effects"});
     const TreeNode& root = tree().nodes.front();
     std::vector<std::string> fb;
     double credit = 0;
     std::string want = root.hit ? object_name(root.object) : "";
-    if (!a.has("object")) fb.emplace_back("No object named.");
-    if (a.has("object")) {
-      std::string got = a.at("object").json().is_null() ? "" : a.at("object").string();
+    if (!a.has(part_names::kObject)) fb.emplace_back("No object named.");
+    if (a.has(part_names::kObject)) {
+      std::string got =
+          a.at(part_names::kObject).json().is_null() ? "" : a.at(part_names::kObject).string();
       if (got == want) {
         credit += 0.5;
       } else {
@@ -124,9 +129,9 @@ class RayTreeGrader final : public KindGrader {
     }
     if (root.hit && a.has("hits") && !a.at("hits").items().empty()) {
       AnswerReader h = a.at("hits").items().front();
-      if (h.has("t")) {
-        auto n = h.at("t").number();
-        const Tolerance& tol = context_.tolerance.for_field("t");
+      if (h.has(part_names::kT)) {
+        auto n = h.at(part_names::kT).number();
+        const Tolerance& tol = context_.tolerance.for_field(part_names::kT);
         if (n.value &&
             compare_number(*n.value, root.t, std::abs(root.t), tol).match == Match::kRight) {
           credit += 0.5;
@@ -148,14 +153,14 @@ class RayTreeGrader final : public KindGrader {
                                  : "No hits given.");
     }
     if (credit >= 1) fb.emplace_back("Right.");
-    out.parts.push_back(make_part(context_, "hit", credit, fb));
+    out.parts.push_back(make_part(context_, part_names::kHit, credit, fb));
   }
 
   // n1 and n2 at each hit along the ray, in order: half a hit's credit for each.
   void grade_media(const AnswerReader& a, GradeResult& out) const {
     a.allow_only({"hits"});
     if (!a.has("hits")) {
-      out.parts.push_back(missing_part(context_, "media", "No hits given."));
+      out.parts.push_back(missing_part(context_, part_names::kMedia, "No hits given."));
       return;
     }
     const std::vector<Crossing>& want = tree().crossings;
@@ -172,10 +177,11 @@ class RayTreeGrader final : public KindGrader {
         continue;
       }
       const AnswerReader& h = given[k];
-      h.allow_only({"object", "t", "n1", "n2", "media"});
-      if (h.has("object") && h.at("object").string() != object_name(c.object)) {
+      h.allow_only({part_names::kObject, part_names::kT, "n1", "n2", part_names::kMedia});
+      if (h.has(part_names::kObject) &&
+          h.at(part_names::kObject).string() != object_name(c.object)) {
         fb.push_back(fmt::format("{}: the hit is on {}, not {}.", where, object_name(c.object),
-                                 h.at("object").string()));
+                                 h.at(part_names::kObject).string()));
       }
       std::optional<StudentNumber> got[2];
       double ref[2] = {c.n1, c.n2};
@@ -204,10 +210,10 @@ class RayTreeGrader final : public KindGrader {
         return g && compare_number(*g, v, std::abs(v), tol).match == Match::kRight;
       };
       if (c.n1 != c.n2 && same(got[0], c.n2) && same(got[1], c.n1)) {
-        out.mistakes.push_back(make_mistake("n1-n2-swapped", "media", specific));
+        out.mistakes.push_back(make_mistake("n1-n2-swapped", part_names::kMedia, specific));
       } else if ((!right[1] && c.after.size() > 0 && same(got[1], scene().refractive_index)) ||
                  (!right[0] && c.before.size() > 0 && same(got[0], scene().refractive_index))) {
-        out.mistakes.push_back(make_mistake("media-not-nested", "media", specific));
+        out.mistakes.push_back(make_mistake("media-not-nested", part_names::kMedia, specific));
       }
     }
     double extra = given.size() > want.size() ? double(given.size() - want.size()) : 0;
@@ -219,7 +225,7 @@ class RayTreeGrader final : public KindGrader {
     double credit = total > 0 ? std::max(0.0, earned - kExtraNodePenalty * extra) / total
                               : (extra != 0 ? 0 : 1);
     if (fb.empty()) fb.push_back(fmt::format("Right: n1 and n2 at all {} hits.", want.size()));
-    out.parts.push_back(make_part(context_, "media", credit, fb));
+    out.parts.push_back(make_part(context_, part_names::kMedia, credit, fb));
   }
 
   std::vector<StudentNode> read_nodes(const AnswerReader& a) const {
@@ -244,12 +250,12 @@ class RayTreeGrader final : public KindGrader {
       s.label = n.has("label") ? n.at("label").string() : "";
       if (n.has("path")) s.path = n.at("path").string();
       if (n.has("parent") && !n.at("parent").json().is_null()) s.parent = n.at("parent").string();
-      if (n.has("ray")) s.ray = n.at("ray").string();
-      if (n.has("object")) {
-        if (n.at("object").json().is_null()) {
+      if (n.has(RayTreeKind::kNodeRay)) s.ray = n.at(RayTreeKind::kNodeRay).string();
+      if (n.has(part_names::kObject)) {
+        if (n.at(part_names::kObject).json().is_null()) {
           s.leaves = true;
         } else {
-          s.object = n.at("object").string();
+          s.object = n.at(part_names::kObject).string();
         }
       }
       if (n.has("in_shadow")) {
@@ -267,9 +273,9 @@ class RayTreeGrader final : public KindGrader {
         }
         s.shadowed_by = by;
       }
-      if (n.has("terms")) {
+      if (n.has(part_names::kTerms)) {
         std::set<std::string> t;
-        for (const auto& x : n.at("terms").items()) t.insert(x.string());
+        for (const auto& x : n.at(part_names::kTerms).items()) t.insert(x.string());
         s.terms = t;
       }
       out.push_back(std::move(s));
@@ -370,7 +376,7 @@ class RayTreeGrader final : public KindGrader {
             ? std::max(0.0, earned - kExtraNodePenalty * static_cast<double>(extra.size())) / total
             : 1;
     if (fb.empty()) fb.push_back(fmt::format("Right: all {} points of the tree.", total));
-    return make_part(context_, "tree", credit, fb);
+    return make_part(context_, part_names::kTree, credit, fb);
   }
 
   struct Lists {
@@ -506,9 +512,10 @@ class RayTreeGrader final : public KindGrader {
                                          terms_words(*terms), reason);
       terms_fb.push_back(specific);
       if (extra_light) {
-        out.mistakes.push_back(make_mistake("diffuse-in-shadow", "terms", specific));
+        out.mistakes.push_back(make_mistake("diffuse-in-shadow", part_names::kTerms, specific));
       } else if (missing_light) {
-        out.mistakes.push_back(make_mistake("lit-point-ambient-only", "terms", specific));
+        out.mistakes.push_back(
+            make_mistake("lit-point-ambient-only", part_names::kTerms, specific));
       }
     }
     auto part = [&](const char* name, bool given, int right, std::vector<std::string> fb) {
@@ -516,8 +523,8 @@ class RayTreeGrader final : public KindGrader {
       if (right == total) fb = {fmt::format("Right at all {} points.", total)};
       return make_part(context_, name, total ? double(right) / total : 1, fb);
     };
-    out.parts.push_back(part("shadows", any_shadow, shadows_right, shadow_fb));
-    out.parts.push_back(part("terms", any_terms, terms_right, terms_fb));
+    out.parts.push_back(part(part_names::kShadows, any_shadow, shadows_right, shadow_fb));
+    out.parts.push_back(part(part_names::kTerms, any_terms, terms_right, terms_fb));
   }
 
   // One intensity the student gives, against the reference: the one comparison of
@@ -537,39 +544,42 @@ class RayTreeGrader final : public KindGrader {
     }
     c.given = n.value->value;
     c.text = n.value->text;
-    const Tolerance& tol = context_.tolerance.for_field("intensity");
+    const Tolerance& tol = context_.tolerance.for_field(part_names::kIntensity);
     c.right = compare_number(*n.value, want, std::abs(want), tol).match == Match::kRight;
     return c;
   }
   // An intensity in feedback, at the precision it is graded to.
   std::string shown_intensity(double want) const {
-    return format_number(want, shown_at(context_.tolerance.for_field("intensity"), want, {}));
+    return format_number(want,
+                         shown_at(context_.tolerance.for_field(part_names::kIntensity), want, {}));
   }
   bool same_intensity(double got, double other) const {
-    const Tolerance& tol = context_.tolerance.for_field("intensity");
+    const Tolerance& tol = context_.tolerance.for_field(part_names::kIntensity);
     return std::abs(got - other) <= allowed_error(other, std::abs(other), tol);
   }
 
   void grade_intensity(const AnswerReader& a, GradeResult& out) const {
-    if (!a.has("intensity")) {
-      out.parts.push_back(missing_part(context_, "intensity"));
+    if (!a.has(part_names::kIntensity)) {
+      out.parts.push_back(missing_part(context_, part_names::kIntensity));
       return;
     }
     if (task_.colour()) {
-      ColourVerdict v = grade_colour("intensity", a.at("intensity"), task_.colour_intensity(),
-                                     context_.tolerance.for_field("intensity"), {});
+      ColourVerdict v = grade_colour(part_names::kIntensity, a.at(part_names::kIntensity),
+                                     task_.colour_intensity(),
+                                     context_.tolerance.for_field(part_names::kIntensity), {});
       for (auto& m : v.mistakes) out.mistakes.push_back(std::move(m));
       if (v.feedback.empty()) v.feedback.emplace_back("Right.");
-      out.parts.push_back(make_part(context_, "intensity", v.credit, std::move(v.feedback)));
+      out.parts.push_back(
+          make_part(context_, part_names::kIntensity, v.credit, std::move(v.feedback)));
       return;
     }
     double want = tree().nodes.front().intensity;
-    IntensityCheck c = check_intensity(a.at("intensity"), want);
+    IntensityCheck c = check_intensity(a.at(part_names::kIntensity), want);
     if (c.right) {
-      out.parts.push_back(make_part(context_, "intensity", 1, {"Right."}));
+      out.parts.push_back(make_part(context_, part_names::kIntensity, 1, {"Right."}));
     } else {
       out.parts.push_back(
-          make_part(context_, "intensity", 0,
+          make_part(context_, part_names::kIntensity, 0,
                     {c.given ? fmt::format("The intensity along the primary ray is {}, not {}.",
                                            shown_intensity(want), c.text)
                              : "intensity: " + c.fault}));
@@ -600,6 +610,7 @@ class RayTreeGrader final : public KindGrader {
       return make_mistake("component-is-total", ask.part(), specific);
     }
     auto [diffuse, specular] = unshadowed_terms(n);
+    // not a part: a component's name (ComponentAsk, kinds/ray_tree.h)
     double unshadowed = ask.component == "diffuse"    ? diffuse
                         : ask.component == "specular" ? specular
                         : ask.component == "local"    ? n.ambient_term + diffuse + specular
@@ -629,6 +640,7 @@ class RayTreeGrader final : public KindGrader {
       const TreeNode& n = tree().nodes[ask.node];
       double want = component_value(n, ask.component);
       std::string what =
+          // not a part: the word for a total, in the feedback's sentence
           fmt::format("{}'s {}", ask.label, ask.component == "total" ? "intensity" : ask.component);
       if (!given || !given->has(ask.label) || !given->at(ask.label).has(ask.component)) {
         out.parts.push_back(missing_part(context_, ask.part(), fmt::format("No {} given.", what)));

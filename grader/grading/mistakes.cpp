@@ -162,6 +162,7 @@ std::optional<E> discriminant_sign(std::string_view step, const E& f) {
 std::optional<E> b_sign(std::string_view step, const E& f) {
   // A step b that only negates another quantity (a camera's bottom edge b = −t) is not a
   // quadratic's b.
+  // not a part: a derivation's quantity (a quadratic's b)
   if (step != "b" || (f.node().op == Op::kNeg && f.node().args[0].node().op == Op::kSymbol)) {
     return std::nullopt;
   }
@@ -257,6 +258,7 @@ std::optional<E> halfway_vector(std::string_view step, const E& f) {
 // An image-plane coordinate's pixel count (the column i or the row j) in the steps u_s and
 // v_s, as `change` turns it: without the half pixel (i + 0.5 → i), or with it (i → i + 0.5).
 std::optional<E> pixel_count(std::string_view step, const E& f, bool centre_to_corner) {
+  // not a part: the derivation's quantities u_s and v_s
   if (step != "u_s" && step != "v_s") return std::nullopt;
   bool changed = false;
   E g = rewrite_tree(f, [&](const E& x) -> std::optional<E> {

@@ -1,6 +1,8 @@
 // Every kind's parts, looked up in the table of kinds.
 #include "grading/parts.h"
 
+#include "kinds/part_names.h"
+
 namespace raygrade {
 
 const std::vector<PartSpec>& kind_parts(std::string_view kind) {
@@ -30,7 +32,8 @@ ValueRule value_rule(std::string_view kind, const std::vector<std::string>& keys
   ValueRule r;
   r.compare = vector ? Comparison::kPoint : Comparison::kScalar;
   if (keys.empty()) return r;
-  std::string field = keys.back() == "unit_direction" ? "direction" : keys.back();
+  std::string field =
+      keys.back() == part_names::kUnitDirection ? part_names::kDirection : keys.back();
   auto numbers = [&](Comparison c) {
     if (!vector) return Comparison::kScalar;  // a number of any part, and each t of a set of hits
     if (c == Comparison::kDirection || c == Comparison::kUnitDirection) return c;
@@ -43,14 +46,15 @@ ValueRule value_rule(std::string_view kind, const std::vector<std::string>& keys
   }
   r.tolerance_field = keys.front();
   const PartSpec* whole = find_part(kind, keys.front());
-  if (keys.front() == "unit_direction" && !whole) {
+  if (keys.front() == part_names::kUnitDirection && !whole) {
     // A camera's unit direction stands for its ray's direction.
     for (const auto& p : kind_parts(kind)) {
       if (p.compare == Comparison::kDirection) whole = &p;
     }
     if (whole) r.tolerance_field = whole->name;
   }
-  if (whole && field != "origin" && field != "point") r.compare = numbers(whole->compare);
+  if (whole && field != part_names::kOrigin && field != part_names::kPoint)
+    r.compare = numbers(whole->compare);
   return r;
 }
 

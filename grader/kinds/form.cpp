@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "kinds/part_names.h"
+
 namespace raygrade::form {
 
 using json = nlohmann::json;
@@ -57,7 +59,10 @@ json tree_field(const Scene& scene) {
   // never from the answer.
   int full = scene.max_depth >= 4 ? kTreeFormRows : (1 << scene.max_depth) - 1;
   f["rows"] = std::min(full, kTreeFormRows);
-  f["parts"] = json::array({"tree", "shadows", "terms"});
+  f["parts"] = json::array({part_names::kTree, part_names::kShadows, part_names::kTerms});
+  // Which of its parts the page's columns of shadow rays and of terms answer.
+  f["shadows_part"] = part_names::kShadows;
+  f["terms_part"] = part_names::kTerms;
   return f;
 }
 

@@ -14,6 +14,8 @@ namespace raygrade {
 // The kind `ray-tree` (kinds/kind.h).
 struct RayTreeKind {
   static constexpr std::string_view kName = "ray-tree";
+  // A node's key of where its ray comes from ("R" reflected, "T" transmitted; docs/ray-tree.md).
+  static constexpr char kNodeRay[] = "ray";
   static constexpr std::string_view kSummary =
       "the tree of rays one ray spawns in a scene: shadows, reflection, refraction, Phong";
   static constexpr GraderFamily kGrader = GraderFamily::kRayTree;

@@ -400,7 +400,7 @@ std::vector<PartSpec> ShadeKind::parts() {
           specular,
           {part_names::kTerms, "which terms apply (ambient, diffuse, specular)", 0, C::kNames},
           {part_names::kLights,
-           "per light: whether it reaches the point, N·L, R·V and its two terms", 0, C::kScalar},
+           "per light: whether it reaches the point, N·L, R·V and its two terms", 0, C::kRows},
           colour};
 }
 

@@ -17,6 +17,7 @@ const char* to_string(Comparison c) {
     case Comparison::kFormula: return "formula";
     case Comparison::kTree: return "tree";
     case Comparison::kSteps: return "steps";
+    case Comparison::kRows: return "rows";
   }
   return "scalar";
 }

@@ -30,6 +30,7 @@ enum class Comparison {
   kFormula,        // a formula, compared at random points
   kTree,           // the nodes of a ray tree
   kSteps,          // named steps of the derivation, with error carried forward
+  kRows,           // one row per item (a light), each value given in a row right
 };
 
 const char* to_string(Comparison c);

@@ -109,6 +109,7 @@ function addAnswers(scene, answers, frame, size) {
 // The initial eye: oblique to the ray (or the camera's look, or the first given arrow) so that
 // neither is seen end-on.
 function initialEye(data, centre, distance) {
+  // not a part: an arrow's role in the view (the given ray)
   const first = (data.arrows || []).find((a) => a.role === 'ray');
   const along = data.ray ? vec(data.ray.direction) : data.camera ? vec(data.camera.look)
     : first ? vec(first.to).sub(vec(first.from)) : null;

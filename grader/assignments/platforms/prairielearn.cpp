@@ -12,6 +12,7 @@
 #include "core/escape.h"
 #include "grading/outputs.h"
 #include "kinds/fields/field_type.h"
+#include "kinds/part_names.h"
 
 namespace raygrade {
 namespace {
@@ -104,7 +105,7 @@ void tree_inputs(const json& f, std::vector<Input>& out, json& question) {
         {{"text", "nothing: the ray leaves the scene"}, {"value", "raygrade:nothing"}});
     add_choice(fmt::format("tree_{}_object", k), at("object"),
                fmt::format("Point {}: the object it is on", point), objects);
-    if (asks.count("shadows")) {
+    if (asks.count(part_names::kShadows)) {
       for (std::size_t i = 0; i < f["lights"].size(); ++i) {
         std::string light = f["lights"][i];
         json status = json::array({none,
@@ -123,7 +124,7 @@ void tree_inputs(const json& f, std::vector<Input>& out, json& question) {
                                 "names of objects, or blank")});
       }
     }
-    if (asks.count("terms")) {
+    if (asks.count(part_names::kTerms)) {
       json terms = json::array({none});
       for (const auto& [text, set] : std::vector<std::pair<std::string, std::vector<std::string>>>{
                {"ambient only", {"ambient"}},
@@ -167,10 +168,10 @@ void inputs_of_field(const json& f, std::vector<Input>& out, json& question) {
                    {"type", field_value_word(field_type_of(c).value)},
                    {"list", true},
                    {"column", column}};
-      if (column == "t") spec["words"] = words;
+      if (column == part_names::kT) spec["words"] = words;
       std::string what = several ? column + " of every hit, in the same order, separated by ;"
                                  : column + " of the first hit";
-      if (column == "t") what += " (" + hint + ")";
+      if (column == part_names::kT) what += " (" + hint + ")";
       out.push_back({spec, string_input(column, what, placeholder_of(c))});
     }
     return;

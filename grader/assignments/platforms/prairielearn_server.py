@@ -247,6 +247,7 @@ def _tree_rows(answer):
     """The reference tree as the points of the form: row k is the k-th point of the tree that
     meets an object, its ray from the eye or from another row, each light's shadow ray and its
     blockers, and its terms."""
+    # not a part: a node's own key, whether its ray meets an object
     nodes = [n for n in answer.get("nodes", []) if isinstance(n, dict) and n.get("hit", True)]
     row_of = {n.get("label"): str(k + 1) for k, n in enumerate(nodes)}
     rows = {}
@@ -533,6 +534,7 @@ def _grade_with_raygrade(data, q, answer):
     submission = {"student": {"id": _student(data)}, "answers": {q["problem"]: answer}}
     with tempfile.TemporaryDirectory() as folder:
         # Run in the folder, so that a message about the file names "answers.json" alone.
+        # not a part: the file's mode
         with open(os.path.join(folder, "answers.json"), "w", encoding="utf-8") as f:
             json.dump(submission, f)
         out = _raygrade(data, q, ["grade", "--assignment", "ASSIGNMENT", "--format", "json",

@@ -1,0 +1,131 @@
+#!/usr/bin/env python3
+"""No code outside grader/kinds/ names a part of an answer by string.
+
+A part (`t`, `point`, `direction`, `total_internal_reflection`, ...) is declared by its kind
+(`parts()`, a `PartSpec` each: grader/kinds/) and listed in docs/grading.md's table of parts,
+which `raygrade tables docs` writes from the code (the test reference_tables_up_to_date keeps it
+so). Code above the kinds takes a part from its kind: its `PartSpec` (problems/kind.h, through
+grading/parts.h), or a name the kind's header gives it, never a string of its own, so that a
+part renamed or added in its kind cannot leave a branch behind that still tests the old name.
+
+Flagged: a string literal that is a part's name, on a line that handles an answer or a part (it
+speaks of a part, an answer, a reference, expected or stated answer, points, a mistake, a column
+or what a field asks, or reads a key: `.at(`, `.has(`, `allow_only`, `for_field`), in any C++
+source, script or Python file of the folders that handle answers (grader/grading, assignments,
+reports, check, serve, cli, generate, and web/), with comments taken out; and such a literal
+compared with something (==, !=, `in (...)`) or chosen (`a ? "x" : "y"`) anywhere there. The same words as a
+figure's ink or a page's CSS class are not parts. The folders below the kinds (shapes/, scenes/, problems/,
+...) cannot know a kind's parts (folders include only downward), and the same words there are
+keys of the problem format (a plane's "normal", a ray's "origin"), not parts.
+The files that still name parts are listed in ALLOWED with the count of their lines that do: a
+file not listed, or more lines of a listed one, fails; so does a listed one with fewer lines,
+until its count is brought down, so that the list only shrinks.
+
+A line whose comment says "not a part: <why>" is left out, and so is the statement after a
+comment line that says it: the same word meaning something else there (a derivation's quantity,
+a formula's symbol, a file's mode).
+
+Usage: part_names.py SOURCE_ROOT
+"""
+import pathlib
+import re
+import sys
+
+# path: the number of its lines that name a part. Each is a file not yet moved behind its
+# kinds' declarations.
+ALLOWED = {
+    "grader/check/compare.cpp": 7,
+    "grader/check/expected.cpp": 2,
+    "grader/generate/kinds.cpp": 3,
+    "grader/grading/discover.cpp": 3,
+    "grader/grading/grade_camera.cpp": 14,
+    "grader/grading/grade_hits.cpp": 39,
+    "grader/grading/steps.cpp": 3,
+    "grader/reports/scene_view.cpp": 10,
+}
+
+FOLDERS = ["grader/grading", "grader/assignments", "grader/reports", "grader/check",
+           "grader/serve", "grader/cli", "grader/generate", "web"]
+SUFFIXES = {".cpp", ".h", ".in", ".js", ".py"}
+EXEMPT_FILES = {"grader/assignments/typed_reader.js"}  # generated (Emscripten's output)
+
+root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".")
+text = (root / "docs" / "grading.md").read_text(encoding="utf-8")
+begin = text.find("<!-- raygrade tables: parts -->")
+end = text.find("<!-- raygrade tables: end -->", begin)
+if begin < 0 or end < 0:
+    sys.exit("part_names: docs/grading.md has no table of parts (raygrade tables docs)")
+names = set()
+for row in text[begin:end].splitlines():
+    cells = row.split("|")
+    if len(cells) > 3:
+        name = cells[2].strip().strip("`")
+        if re.fullmatch(r"[a-z][a-z0-9_]*", name) and name != "part":
+            names.add(name)
+if len(names) < 20:
+    sys.exit(f"part_names: found only {sorted(names)} in docs/grading.md's table of parts")
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from field_names import strip_comments  # noqa: E402  (one way of taking comments out)
+
+handles_answers = re.compile(r"part|answer|\.at\(|\.has\(|allow_only|for_field|points|mistake|"
+                             r"reference|expected|asks|column|stated|given", re.I)
+typeof = re.compile(r'typeof\s+[\w.]+\s*[!=]==?\s*$')  # JavaScript's own types
+# A comment saying so exempts its line: a word that is a part's name but means something else
+# there (a derivation's quantity, a symbol, a file's mode), with the reason beside it.
+NOT_A_PART = "not a part:"
+compared_before = re.compile(r'(?:[!=]==?|\bin\s*[\(\[{][^\)\]}]*|\?)\s*$')
+compared_after = re.compile(r'^\s*(?:[!=]==?|:)')
+
+
+def compared(line, match):
+    """The literal is compared with something, or is the value of a choice (`a ? "x" : "y"`)."""
+    return bool(compared_before.search(line[:match.start()])
+                or compared_after.search(line[match.end():]))
+
+
+literal = re.compile(r'"((?:[^"\\\n]|\\.)*)"|\'((?:[^\'\\\n]|\\.)*)\'')
+found, lines_of = {}, {}
+for folder in FOLDERS:
+    for path in sorted((root / folder).rglob("*")):
+        rel = path.relative_to(root).as_posix()
+        if (not path.is_file() or path.suffix not in SUFFIXES or rel in EXEMPT_FILES
+                or "node_modules" in path.parts):
+            continue
+        raw = path.read_text(encoding="utf-8").splitlines()
+        code = strip_comments("\n".join(raw), path.suffix == ".py")
+        exempt = False  # within the statement after a comment line that says "not a part:"
+        for number, line in enumerate(code.splitlines(), 1):
+            here = raw[number - 1]
+            if NOT_A_PART in here:
+                exempt = here.strip().startswith(("//", "#"))
+                continue
+            if exempt:
+                exempt = not line.rstrip().endswith((";", "{", "}", ":"))
+                continue
+            words = [m.group(1) if m.group(1) is not None else m.group(2)
+                     for m in literal.finditer(line)]
+            if any(w in names and not typeof.search(line[:m.start()])
+                   and (handles_answers.search(line) or compared(line, m))
+                   for w, m in zip(words, literal.finditer(line))):
+                found[rel] = found.get(rel, 0) + 1
+                lines_of.setdefault(rel, []).append(f"{rel}:{number}: {line.strip()}")
+
+faults = []
+for rel, count in sorted(found.items()):
+    allowed = ALLOWED.get(rel, 0)
+    if count > allowed:
+        faults.extend(lines_of[rel][:40])
+        faults.append(f"  {rel}: {count} line(s) name a part by string"
+                      + (f" (allowed {allowed})" if allowed else ""))
+for rel, allowed in sorted(ALLOWED.items()):
+    if found.get(rel, 0) < allowed:
+        faults.append(f"  {rel}: {found.get(rel, 0)} line(s) now, {allowed} allowed: lower its "
+                      "count in ALLOWED (tests/part_names.py), so that it cannot come back")
+for f in faults:
+    print(f)
+if faults:
+    sys.exit("part_names: code outside grader/kinds/ names a part by string; take it from its "
+             "kind (its PartSpec, or the name its kind's header gives it)")
+print(f"part_names: {len(names)} parts; {sum(ALLOWED.values())} line(s) in {len(ALLOWED)} "
+      "file(s) still name one (ALLOWED, which only shrinks)")
