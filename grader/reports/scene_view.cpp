@@ -88,6 +88,8 @@ json camera_json(const GivenCamera& cam, Bounds& bounds) {
   return j;
 }
 
+// A light as the viewer draws it: a point light at its position, a directional one by the
+// direction its light travels.
 json light_json(const GivenLight& l) {
   if (l.directional) return {{"label", l.name}, {"direction", point_json(l.direction)}};
   return {{"label", l.name}, {"position", point_json(l.position)}};
@@ -300,9 +302,8 @@ std::optional<SceneView> scene_view(const Problem& problem, bool answers) {
   }
   if (data.contains("points")) text += "; the point P";
   if (answers) {
-    data["answers"] =
-        answers_json(problem.task->answer(), data, data["frame"]["radius"].get<double>());
     const json answer = problem.task->answer();
+    data["answers"] = answers_json(answer, data, data["frame"]["radius"].get<double>());
     if (local && answer.contains("direction") && is_vec3(answer["direction"]) &&
         data.contains("points")) {
       // The direction asked for (reflected, refracted), leaving P.
