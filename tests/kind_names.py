@@ -10,6 +10,12 @@ Nor does code outside grader/kinds/ and grader/grading/ (whose graders are each 
 downcast a problem's Task to a kind's own class: what the checks, reports and exports need of
 a kind, the kind answers through Task (`ray_cast()`, problems/ray_cast.h).
 
+Nor does any file of the folders in KIND_BLIND include a kind's own header (one of grader/kinds/
+that declares a kind's `kName` or a class derived from Task): a report asks the problem's Task
+(`scene_givens()`, problems/scene_givens.h) for what a kind knows, and never reads a kind's own
+types or functions. The headers of grader/kinds/ that declare no kind (the words all kinds share)
+are not a kind's.
+
 Flagged: a string literal that is a kind's name, on a line that speaks of a kind (`kind`), and
 anywhere at all for the names nothing else is called (`first-hit`, `camera-ray`, ...). Comments
 are not code. Usage: kind_names.py SOURCE_ROOT
@@ -63,10 +69,35 @@ for path in sorted((root / "grader").rglob("*")):
         if downcast.search(line) and not line.lstrip().startswith("//"):
             faults.append(f"{path.relative_to(root)}:{number}: downcasts a Task to a kind's "
                           f"class: {line.strip()}")
+# Folders whose code reaches every kind through Task alone.
+KIND_BLIND = ("reports",)
+include_kind = re.compile(r'^\s*#\s*include\s+"kinds/([^"]+)"')
+declares_kind = re.compile(r'\bkName\s*=|:\s*public\s+Task\b|,\s*public\s+Task\b')
+
+
+def kind_header(name):
+    """Whether grader/kinds/NAME declares a kind or a kind's Task (a header that cannot be read
+    counts as one)."""
+    header = kinds_dir / name
+    try:
+        return bool(declares_kind.search(header.read_text(encoding="utf-8")))
+    except OSError:
+        return True
+
+
+for folder in KIND_BLIND:
+    for path in sorted((root / "grader" / folder).rglob("*")):
+        if path.suffix not in {".cpp", ".h", ".in"}:
+            continue
+        for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+            m = include_kind.match(line)
+            if m and kind_header(m.group(1)):
+                faults.append(f"{path.relative_to(root)}:{number}: includes a kind's header "
+                              f"({folder}/ asks the problem's Task instead): {line.strip()}")
 for f in faults:
     print(f)
 if faults:
-    sys.exit(f"kind_names: {len(faults)} place(s) outside grader/kinds/ name a kind by string "
-             "or downcast its Task; take it from the table of kinds (problems/kind.h), from its "
-             "type, or from what Task answers")
+    sys.exit(f"kind_names: {len(faults)} place(s) outside grader/kinds/ name a kind by string, "
+             "downcast its Task or include its header; take it from the table of kinds "
+             "(problems/kind.h), from its type, or from what Task answers")
 print(f"kind_names: no code outside grader/kinds/ names any of the {len(names)} kinds by string")

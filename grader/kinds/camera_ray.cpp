@@ -15,6 +15,20 @@ Vec3d camera_ray_direction(const Camera& cam, double x, double y, PixelConventio
   return cam.focal_length * cam.direction + x_diff * cross(cam.direction, cam.up) + y_diff * cam.up;
 }
 
+GivenCamera given_camera(const Camera& cam, double x, double y) {
+  Vec3d right = cross(cam.direction, cam.up);
+  GivenCamera g;
+  g.eye = cam.eye;
+  g.look = cam.direction;
+  g.plane_center = cam.eye + cam.focal_length * cam.direction;
+  g.plane_half_x = (0.5 * cam.res_x) * right;
+  g.plane_half_y = (0.5 * cam.res_y) * cam.up;
+  g.pixel_center = cam.eye + camera_ray_direction(cam, x, y, PixelConvention::kCenter);
+  g.pixel_half_x = 0.5 * right;
+  g.pixel_half_y = 0.5 * cam.up;
+  return g;
+}
+
 Camera read_camera(const Cursor& c) {
   c.allow_only({"eye", "direction", "up", "focal_length", "resolution"});
   Camera cam;
@@ -110,6 +124,12 @@ Sketch CameraRayTask::sketch() const {
   f.point(cam_.eye + dr, Ink::kHit,
           fmt::format("pixel ({}, {})", format_number(x_), format_number(y_)));
   return f;
+}
+
+std::optional<SceneGivens> CameraRayTask::scene_givens() const {
+  SceneGivens g;
+  g.camera = given_camera(cam_, x_, y_);
+  return g;
 }
 
 std::unique_ptr<Task> CameraRayKind::read(const Cursor& problem) {

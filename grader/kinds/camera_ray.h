@@ -40,6 +40,10 @@ PixelConvention read_pixel_convention(const Cursor& problem);
 // d_r = f·d + x_diff·(d × u) + y_diff·u.
 Vec3d camera_ray_direction(const Camera& cam, double x, double y, PixelConvention convention);
 
+// The camera and its pixel (x, y) as the 3D view draws them (problems/scene_givens.h): the image
+// plane is resX by resY pixels of size 1, at distance f along d.
+GivenCamera given_camera(const Camera& cam, double x, double y);
+
 class CameraRayTask final : public Task {
  public:
   CameraRayTask(Camera cam, double x, double y, PixelConvention convention)
@@ -52,6 +56,7 @@ class CameraRayTask final : public Task {
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
   Sketch sketch() const override;
+  std::optional<SceneGivens> scene_givens() const override;
 
   const Camera& camera() const { return cam_; }
   PixelConvention convention() const { return convention_; }

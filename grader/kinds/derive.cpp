@@ -109,6 +109,13 @@ Sketch DeriveTask::sketch() const {
   return f;
 }
 
+std::optional<SceneGivens> DeriveTask::scene_givens() const {
+  SceneGivens g;
+  g.objects.push_back({"", object_.get(), nullptr});
+  g.ray = ray_;
+  return g;
+}
+
 std::unique_ptr<Task> DeriveKind::read(const Cursor& problem) { return DeriveTask::read(problem); }
 
 std::vector<PartSpec> DeriveKind::parts() {

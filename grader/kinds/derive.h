@@ -53,6 +53,7 @@ class DeriveTask final : public Task {
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
   Sketch sketch() const override;
+  std::optional<SceneGivens> scene_givens() const override;
 
   const std::vector<DerivedQuantity>& quantities() const { return quantities_; }
   const std::vector<FormulaSymbol>& symbols() const { return symbols_; }

@@ -125,6 +125,21 @@ Sketch FresnelTask::sketch() const {
   return f;
 }
 
+// Incidence by an angle θ: the surface y = 0 and a ray at θ from its normal in the xy plane.
+std::optional<SceneGivens> FresnelTask::scene_givens() const {
+  SceneGivens g;
+  GivenSurface& s = g.surface.emplace();
+  if (angle_) {
+    double theta = *angle_ * std::numbers::pi / 180;
+    s.normal = Vec3d{0, 1, 0};
+    s.incoming = Vec3d{std::sin(theta), -std::cos(theta), 0};
+  } else {
+    s.normal = n_;
+    s.incoming = d_;
+  }
+  return g;
+}
+
 std::unique_ptr<Task> FresnelKind::read(const Cursor& problem) {
   return FresnelTask::read(problem);
 }

@@ -218,6 +218,15 @@ Sketch InterpolateTask::sketch() const {
   return f;
 }
 
+std::optional<SceneGivens> InterpolateTask::scene_givens() const {
+  SceneGivens g;
+  g.point = p_;
+  g.surface.emplace();
+  g.surface->vertices = v_;
+  g.surface->vertex_normals = n_;
+  return g;
+}
+
 std::unique_ptr<Task> InterpolateKind::read(const Cursor& problem) {
   return InterpolateTask::read(problem);
 }

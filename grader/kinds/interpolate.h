@@ -41,6 +41,7 @@ class InterpolateTask final : public Task {
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
   Sketch sketch() const override;
+  std::optional<SceneGivens> scene_givens() const override;
 
   // The point's weights (w_a, w_b, w_c): P = w_a·A + w_b·B + w_c·C, summing to 1.
   const std::array<double, 3>& weights() const { return w_; }

@@ -44,6 +44,13 @@ Sketch IntersectTask::sketch() const {
   return f;
 }
 
+std::optional<SceneGivens> IntersectTask::scene_givens() const {
+  SceneGivens g;
+  g.objects.push_back({"", object_.get(), nullptr});
+  g.ray = ray_;
+  return g;
+}
+
 std::unique_ptr<Shape> read_lone_object(const Cursor& object) {
   std::unique_ptr<Shape> shape = read_shape(object);
   if (auto name = object.find("name")) {
@@ -204,6 +211,13 @@ Sketch FirstHitTask::sketch() const {
   }
   if (first.index >= 0) sketch_hit(f, first.hit, Ink::kHit, "first hit, ");
   return f;
+}
+
+std::optional<SceneGivens> FirstHitTask::scene_givens() const {
+  SceneGivens g;
+  for (const auto& o : objects_) g.objects.push_back({o.name, o.shape.get(), nullptr});
+  g.ray = ray_;
+  return g;
 }
 
 std::unique_ptr<Task> IntersectKind::read(const Cursor& problem) {

@@ -45,6 +45,7 @@ class IntersectTask final : public Task, public RayCast {
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
   Sketch sketch() const override;
+  std::optional<SceneGivens> scene_givens() const override;
 
   const Ray& ray() const { return ray_; }
   const Shape& object() const { return *object_; }
@@ -84,6 +85,7 @@ class FirstHitTask final : public Task, public RayCast {
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
   Sketch sketch() const override;
+  std::optional<SceneGivens> scene_givens() const override;
 
   const Ray& ray() const { return ray_; }
   const std::vector<NamedShape>& objects() const { return objects_; }

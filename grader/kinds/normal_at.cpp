@@ -171,6 +171,13 @@ Sketch NormalTask::sketch() const {
   return f;
 }
 
+std::optional<SceneGivens> NormalTask::scene_givens() const {
+  SceneGivens g;
+  g.objects.push_back({"", object_.get(), nullptr});
+  g.point = point_;
+  return g;
+}
+
 std::unique_ptr<Task> NormalKind::read(const Cursor& problem) { return NormalTask::read(problem); }
 
 std::vector<PartSpec> NormalKind::parts() {

@@ -44,6 +44,7 @@ class NormalTask final : public Task {
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
   Sketch sketch() const override;
+  std::optional<SceneGivens> scene_givens() const override;
 
   // A transformed object's normal taken to the world by its matrix A instead of (A⁻¹)ᵀ, when
   // the two differ (an uneven scale): the normal-not-inverse-transpose mistake.

@@ -18,22 +18,22 @@
 
 namespace raygrade {
 
-Ray read_primary_ray(const Cursor& problem) {
+PrimaryRay read_primary_ray(const Cursor& problem) {
   if (problem.has("ray")) {
     if (problem.has("camera"))
       problem.at("camera").fail("give either a ray or a camera", "invalid");
-    return read_ray(problem.at("ray"));
+    return {read_ray(problem.at("ray")), std::nullopt};
   }
   if (!problem.has("camera")) problem.fail("a ray or a camera and pixel is needed", "missing");
   if (is_view_camera(problem.at("camera"))) {
     ViewCamera view = read_view_camera(problem.at("camera"));
     auto [i, j] = read_pixel(problem, view.nx, view.ny);
-    return view_ray(view, i, j, read_pixel_convention(problem));
+    return {view_ray(view, i, j, read_pixel_convention(problem)), given_camera(view, i, j)};
   }
   Camera cam = read_camera(problem.at("camera"));
   auto [x, y] = read_pixel(problem, cam.res_x, cam.res_y);
   Vec3d d = camera_ray_direction(cam, x, y, read_pixel_convention(problem));
-  return Ray{cam.eye, d, 0, kInfinity};
+  return {Ray{cam.eye, d, 0, kInfinity}, given_camera(cam, x, y)};
 }
 
 Ask read_ask(const Cursor& problem, Ask fallback) {
@@ -130,7 +130,7 @@ Vec3d RayTreeTask::colour_intensity() const {
 
 std::unique_ptr<Task> RayTreeTask::read(const Cursor& problem) {
   Scene scene = read_scene(problem.at("scene"));
-  Ray primary = read_primary_ray(problem);
+  PrimaryRay primary = read_primary_ray(problem);
   Ask ask = read_ask(problem, Ask::kTree);
   // A colour scene's intensities are traced channel by channel; the scene's own tree keeps the
   // rays and the terms.
@@ -148,7 +148,8 @@ std::unique_ptr<Task> RayTreeTask::read(const Cursor& problem) {
     if (!l->is_object()) l->fail("labels is an object from a node's path to its label", "type");
     for (const auto& [path, value] : l->json().items()) labels[path] = l->at(path).string();
   }
-  auto task = std::make_unique<RayTreeTask>(std::move(scene), primary, ask, labels);
+  auto task = std::make_unique<RayTreeTask>(std::move(scene), primary.ray, ask, labels);
+  task->camera_ = primary.camera;
   if (colour) task->trace_channels(std::move(channel_scenes), labels);
   // Every labelled path must be a hit of the tree, and the labels must stay unique.
   std::set<std::string> seen;
@@ -347,6 +348,21 @@ std::vector<std::string> RayTreeTask::conclusion() const {
   }
   for (auto& s : component_sentences()) out.push_back(std::move(s));
   return out;
+}
+
+std::optional<SceneGivens> RayTreeTask::scene_givens() const {
+  SceneGivens g;
+  for (const auto& o : scene_.objects) g.objects.push_back({o.name, o.shape.get(), &o.transform});
+  for (const auto& l : scene_.lights) {
+    g.lights.push_back({l.name, l.type == LightType::kDirectional, l.position, l.direction});
+  }
+  // The ray as given, or the camera and pixel it comes from.
+  if (camera_) {
+    g.camera = camera_;
+  } else {
+    g.ray = primary_;
+  }
+  return g;
 }
 
 std::unique_ptr<Task> RayTreeKind::read(const Cursor& problem) {

@@ -28,8 +28,15 @@ struct RayTreeKind {
   static std::string_view schema();
 };
 
+// The primary ray of a problem: its `ray`, or the ray through its camera's pixel, with that
+// camera and pixel as the 3D view draws them.
+struct PrimaryRay {
+  Ray ray;
+  std::optional<GivenCamera> camera;  // when the ray comes from a camera
+};
+
 // Reads a problem's `ray`, or its `camera` and `pixel` (and `convention`), as the primary ray.
-Ray read_primary_ray(const Cursor& problem);
+PrimaryRay read_primary_ray(const Cursor& problem);
 
 // Reads `ask`: "hit", "tree" (the default), "intensity" or "media".
 Ask read_ask(const Cursor& problem, Ask fallback);
@@ -61,6 +68,8 @@ class RayTreeTask final : public Task {
   std::vector<std::string> conclusion() const override;
   // The convention on a point that faces away from a light whose shadow ray is blocked.
   void follow(const Conventions& conventions) override;
+  // The scene's objects and lights, and the ray or the camera the problem gives.
+  std::optional<SceneGivens> scene_givens() const override;
 
   const Scene& scene() const { return scene_; }
   // The tree's rays, hits, shadows and terms. When the scene has colours, its intensities are
@@ -87,6 +96,7 @@ class RayTreeTask final : public Task {
   std::vector<ComponentAsk> components_;
   Scene scene_;
   Ray primary_;
+  std::optional<GivenCamera> camera_;  // the camera the primary ray comes from, if any
   RayTree tree_;
   std::vector<Scene> channel_scenes_;
   std::vector<RayTree> channels_;

@@ -29,6 +29,7 @@ class ReflectTask final : public Task {
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
   Sketch sketch() const override;
+  std::optional<SceneGivens> scene_givens() const override;
 
  private:
   Vec3d d_, n_;

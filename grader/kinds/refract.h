@@ -36,6 +36,7 @@ class RefractTask final : public Task {
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
   Sketch sketch() const override;
+  std::optional<SceneGivens> scene_givens() const override;
 
  private:
   Vec3d facing_normal() const;  // unit, against d

@@ -380,6 +380,19 @@ Sketch ShadeTask::sketch() const {
   return f;
 }
 
+std::optional<SceneGivens> ShadeTask::scene_givens() const {
+  SceneGivens g;
+  g.point = point_;
+  g.surface.emplace();
+  g.surface->normal = given_normal_;
+  g.surface->eye = eye_;
+  for (const auto& l : lights_) {
+    bool directional = l.light.type == LightType::kDirectional;
+    g.lights.push_back({l.light.name, directional, l.light.position, l.light.direction});
+  }
+  return g;
+}
+
 std::unique_ptr<Task> ShadeKind::read(const Cursor& problem) { return ShadeTask::read(problem); }
 
 std::vector<PartSpec> ShadeKind::parts() {

@@ -49,6 +49,7 @@ class ShadeTask final : public Task {
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
   Sketch sketch() const override;
+  std::optional<SceneGivens> scene_givens() const override;
   // Whether any intensity or coefficient is a colour: then every term is a colour [r, g, b].
   bool colour() const;
   // The material's `colour` (one colour or a pattern), on an object moved by `object`: its

@@ -158,6 +158,28 @@ Ray view_ray(const ViewCamera& c, double i, double j, PixelConvention conv) {
   return Ray{c.eye, -c.focal_length * c.w + us * c.u + vs * c.v, 0, kInfinity};
 }
 
+GivenCamera given_camera(const ViewCamera& cam, double i, double j) {
+  GivenCamera g;
+  g.eye = cam.eye;
+  g.look = -cam.w;
+  g.orthographic = cam.projection == Projection::kOrthographic;
+  // The image plane: through the eye for an orthographic camera, at d along −w otherwise.
+  Vec3d plane = g.orthographic ? cam.eye : cam.eye - cam.focal_length * cam.w;
+  g.plane_center = plane + (0.5 * (cam.l + cam.r)) * cam.u + (0.5 * (cam.b + cam.t)) * cam.v;
+  g.plane_half_x = (0.5 * (cam.r - cam.l)) * cam.u;
+  g.plane_half_y = (0.5 * (cam.t - cam.b)) * cam.v;
+  // Where the ray through the pixel's centre crosses the image plane.
+  Ray through = view_ray(cam, i, j, PixelConvention::kCenter);
+  g.pixel_center = through.origin;
+  if (!g.orthographic) {
+    g.pixel_center =
+        through.origin + (cam.focal_length / dot(through.direction, -cam.w)) * through.direction;
+  }
+  g.pixel_half_x = (0.5 * (cam.r - cam.l) / cam.nx) * cam.u;
+  g.pixel_half_y = (0.5 * (cam.t - cam.b) / cam.ny) * cam.v;
+  return g;
+}
+
 std::unique_ptr<Task> ViewRayTask::read(const Cursor& problem) {
   ViewCamera cam = read_view_camera(problem.at("camera"));
   auto [i, j] = read_pixel(problem, cam.nx, cam.ny);
@@ -296,6 +318,12 @@ Sketch ViewRayTask::sketch() const {
   f.point(c.projection == Projection::kOrthographic ? ray.origin : ray.origin + ray.direction,
           Ink::kHit, fmt::format("pixel ({}, {})", format_number(i_), format_number(j_)));
   return f;
+}
+
+std::optional<SceneGivens> ViewRayTask::scene_givens() const {
+  SceneGivens g;
+  g.camera = given_camera(cam_, i_, j_);
+  return g;
 }
 
 std::unique_ptr<Task> ViewRayKind::read(const Cursor& problem) {

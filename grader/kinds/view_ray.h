@@ -50,6 +50,8 @@ ViewCamera read_view_camera(const Cursor& camera);
 std::pair<double, double> read_pixel(const Cursor& problem, int nx, int ny);
 // The ray through pixel (i, j).
 Ray view_ray(const ViewCamera& cam, double i, double j, PixelConvention convention);
+// The camera and its pixel (i, j) as the 3D view draws them (problems/scene_givens.h).
+GivenCamera given_camera(const ViewCamera& cam, double i, double j);
 
 class ViewRayTask final : public Task {
  public:
@@ -63,6 +65,7 @@ class ViewRayTask final : public Task {
   std::vector<SolutionPart> derive(std::string_view method,
                                    const Overrides* overrides) const override;
   Sketch sketch() const override;
+  std::optional<SceneGivens> scene_givens() const override;
 
  private:
   ViewCamera cam_;

@@ -11,6 +11,7 @@
 #include "json/cursor.h"
 #include "problems/kind.h"
 #include "problems/parameters.h"
+#include "problems/scene_givens.h"
 #include "shapes/ray.h"
 #include "shapes/sketch.h"
 
@@ -82,6 +83,9 @@ class Task {
   virtual void follow(const Conventions& /*conventions*/) {}
   // The ray and objects of a problem that casts one ray at objects; null for other kinds.
   virtual const RayCast* ray_cast() const { return nullptr; }
+  // What the 3D view draws of the givens (problems/scene_givens.h); nullopt for a problem with
+  // nothing to draw in 3D. Every kind answers, so that a new one decides what its view shows.
+  virtual std::optional<SceneGivens> scene_givens() const = 0;
 };
 
 // Reads a "conventions" object on top of `base`. Throws Error naming the path of a fault.

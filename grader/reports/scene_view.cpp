@@ -1,19 +1,18 @@
-// The 3D view's data: the givens read from the problem as written, the answers from its task.
+// The 3D view's data: the givens as the problem's task answers for them (Task::scene_givens), the
+// answers from its reference answer.
 #include "reports/scene_view.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
 
 #include "core/escape.h"
 #include "json/numbers.h"
-#include "kinds/camera_ray.h"
-#include "kinds/intersect.h"
-#include "kinds/view_ray.h"
-#include "scenes/scene.h"
+#include "problems/scene_givens.h"
 #include "shapes/disk.h"
 #include "shapes/transformed.h"
 #include "shapes/triangle.h"
@@ -77,46 +76,23 @@ json rectangle(const Vec3d& centre, const Vec3d& a, const Vec3d& b) {
 
 // The camera and its pixel: the eye, the image plane's corners, the pixel's corners (not the
 // ray through it, which the camera kinds ask for).
-json camera_json(const Cursor& problem, Bounds& bounds) {
-  Cursor camera = problem.at("camera");
-  json j;
-  if (is_view_camera(camera)) {
-    ViewCamera cam = read_view_camera(camera);
-    auto [i, k] = read_pixel(problem, cam.nx, cam.ny);
-    bool orthographic = cam.projection == Projection::kOrthographic;
-    Vec3d plane = orthographic ? cam.eye : cam.eye - cam.focal_length * cam.w;
-    Vec3d mid = plane + (0.5 * (cam.l + cam.r)) * cam.u + (0.5 * (cam.b + cam.t)) * cam.v;
-    Vec3d half_u = (0.5 * (cam.r - cam.l)) * cam.u, half_v = (0.5 * (cam.t - cam.b)) * cam.v;
-    Ray through = view_ray(cam, i, k, PixelConvention::kCenter);
-    Vec3d centre = through.origin;
-    if (!orthographic) {
-      centre =
-          through.origin + (cam.focal_length / dot(through.direction, -cam.w)) * through.direction;
-    }
-    j = {{"eye", point_json(cam.eye)},
-         {"look", point_json(-cam.w)},
-         {"orthographic", orthographic},
-         {"corners", rectangle(mid, half_u, half_v)},
-         {"pixel", rectangle(centre, (0.5 * (cam.r - cam.l) / cam.nx) * cam.u,
-                             (0.5 * (cam.t - cam.b) / cam.ny) * cam.v)}};
-    bounds.add(cam.eye);
-    for (const Vec3d& c : {mid - half_u - half_v, mid + half_u + half_v}) bounds.add(c);
-    return j;
-  }
-  Camera cam = read_camera(camera);
-  auto [x, y] = read_pixel(problem, cam.res_x, cam.res_y);
-  Vec3d right = cross(cam.direction, cam.up);
-  Vec3d mid = cam.eye + cam.focal_length * cam.direction;
-  Vec3d half_x = (0.5 * cam.res_x) * right, half_y = (0.5 * cam.res_y) * cam.up;
-  Vec3d centre = cam.eye + camera_ray_direction(cam, x, y, PixelConvention::kCenter);
-  j = {{"eye", point_json(cam.eye)},
-       {"look", point_json(cam.direction)},
-       {"orthographic", false},
-       {"corners", rectangle(mid, half_x, half_y)},
-       {"pixel", rectangle(centre, 0.5 * right, 0.5 * cam.up)}};
+json camera_json(const GivenCamera& cam, Bounds& bounds) {
+  json j = {{"eye", point_json(cam.eye)},
+            {"look", point_json(cam.look)},
+            {"orthographic", cam.orthographic},
+            {"corners", rectangle(cam.plane_center, cam.plane_half_x, cam.plane_half_y)},
+            {"pixel", rectangle(cam.pixel_center, cam.pixel_half_x, cam.pixel_half_y)}};
   bounds.add(cam.eye);
-  for (const Vec3d& c : {mid - half_x - half_y, mid + half_x + half_y}) bounds.add(c);
+  bounds.add(cam.plane_center - cam.plane_half_x - cam.plane_half_y);
+  bounds.add(cam.plane_center + cam.plane_half_x + cam.plane_half_y);
   return j;
+}
+
+// A light as the viewer draws it: a point light at its position, a directional one by the
+// direction its light travels.
+json light_json(const GivenLight& l) {
+  if (l.directional) return {{"label", l.name}, {"direction", point_json(l.direction)}};
+  return {{"label", l.name}, {"position", point_json(l.position)}};
 }
 
 Vec3d vec3_of(const json& a) {
@@ -182,60 +158,32 @@ json answers_json(const json& answer, const json& data, double size) {
   return {{"hits", hits}, {"segments", segments}};
 }
 
-// A problem at one point of a surface (reflect, refract, shade, fresnel, interpolate): the
-// surface as a small disk through the point across its normal (or the triangle the point lies
-// on), the normal as an arrow, the incoming direction arriving at the point, the eye and the
-// lights. `words` gets what is drawn, for the text alternative. False when the problem has no
-// such point.
-bool local_surface(const Cursor& c, json& data, Bounds& bounds, std::vector<std::string>& words) {
-  Vec3d point{};
-  if (auto p = c.find("point")) point = p->vec3();
-  std::optional<Vec3d> normal, incoming;
-  if (auto n = c.find("normal")) normal = n->vec3();
-  if (auto d = c.find("direction")) incoming = d->vec3();
-  if (auto a = c.find("angle"); a && !normal) {
-    // Fresnel by angle: the surface y = 0 and a ray at θ from its normal in the xy plane.
-    double theta = a->number() * 3.14159265358979323846 / 180;
-    normal = Vec3d{0, 1, 0};
-    incoming = Vec3d{std::sin(theta), -std::cos(theta), 0};
-  }
-  bool triangle = c.has("vertices") && c.has("normals");
-  if (!normal && !triangle) return false;
+// A problem at one point of a surface and no objects: the surface as a small disk through the
+// point across its normal (or the triangle the point lies on), the normal as an arrow, the
+// incoming direction arriving at the point, the eye and the lights. `words` gets what is drawn,
+// for the text alternative. False when the surface has neither a normal nor a triangle.
+bool local_surface(const SceneGivens& g, const GivenSurface& surface, json& data, Bounds& bounds,
+                   std::vector<std::string>& words) {
+  if (!surface.normal && !surface.vertices) return false;
+  Vec3d point = g.point.value_or(Vec3d{});
   // The size of what is drawn: the distance to the farthest eye or light, at least 1.
   double size = 1;
   std::vector<Vec3d> around;
-  if (auto e = c.find("eye")) around.push_back(e->vec3());
-  json lights = json::array();
-  if (auto ls = c.find("lights"); ls && ls->is_array()) {
-    for (const auto& l : ls->json()) {
-      if (!l.is_object()) continue;
-      json light = {{"label", l.value("name", std::string("light"))}};
-      if (l.contains("position") && is_vec3(l["position"])) {
-        light["position"] = l["position"];
-        around.push_back(vec3_of(l["position"]));
-      } else if (l.contains("direction") && is_vec3(l["direction"])) {
-        light["direction"] = l["direction"];
-      } else {
-        continue;
-      }
-      lights.push_back(light);
-    }
+  if (surface.eye) around.push_back(*surface.eye);
+  for (const auto& l : g.lights) {
+    if (!l.directional) around.push_back(l.position);
   }
   for (const Vec3d& a : around) size = std::max(size, length(a - point));
   data["arrows"] = json::array();
-  if (triangle) {
-    json vertices = c.at("vertices").json(), normals = c.at("normals").json();
-    if (vertices.size() == 3 && is_vec3(vertices[0]) && is_vec3(vertices[1]) &&
-        is_vec3(vertices[2])) {
-      Triangle t(vec3_of(vertices[0]), vec3_of(vertices[1]), vec3_of(vertices[2]));
-      data["objects"].push_back({{"label", std::string(Triangle::kType)}, {"shape", t.to_json()}});
-    }
+  if (surface.vertices) {
+    const std::array<Vec3d, 3>& vertices = *surface.vertices;
+    Triangle t(vertices[0], vertices[1], vertices[2]);
+    data["objects"].push_back({{"label", std::string(Triangle::kType)}, {"shape", t.to_json()}});
     words.emplace_back("the triangle with its vertex normals (blue)");
-    for (std::size_t i = 0; i < vertices.size() && i < normals.size(); ++i) {
-      if (!is_vec3(vertices[i]) || !is_vec3(normals[i])) continue;
-      Vec3d v = vec3_of(vertices[i]);
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+      const Vec3d& v = vertices[i];
       bounds.add(v);
-      Vec3d n = vec3_of(normals[i]);
+      const Vec3d& n = surface.vertex_normals[i];
       if (length(n) > 0) {
         bounds.add(v + normalized(n));
         data["arrows"].push_back(
@@ -244,7 +192,7 @@ bool local_surface(const Cursor& c, json& data, Bounds& bounds, std::vector<std:
     }
     bounds.add(point);
   } else {
-    Vec3d n = normalized(*normal);
+    Vec3d n = normalized(*surface.normal);
     double radius = 0.6 * size;
     data["objects"].push_back({{"label", "surface"}, {"shape", Disk(point, n, radius).to_json()}});
     data["arrows"].push_back({{"from", point_json(point)},
@@ -253,29 +201,29 @@ bool local_surface(const Cursor& c, json& data, Bounds& bounds, std::vector<std:
     bounds.add(point, radius);
     words.emplace_back("the surface at P with its normal (blue)");
   }
-  if (incoming && length(*incoming) > 0) {
-    Vec3d d = normalized(*incoming);
+  if (surface.incoming && length(*surface.incoming) > 0) {
+    Vec3d d = normalized(*surface.incoming);
     Vec3d from = point - 0.8 * size * d;
     data["arrows"].push_back(
         {{"from", point_json(from)}, {"to", point_json(point)}, {"role", "ray"}});
     bounds.add(from);
     words.emplace_back("the incoming ray (black) arriving at P");
   }
-  if (c.has("point") || !triangle)
+  // A triangle's point is where it is given; a surface's is the origin when it is not.
+  if (g.point || !surface.vertices)
     data["points"].push_back({{"at", point_json(point)}, {"label", "P"}});
-  if (auto e = c.find("eye")) {
-    Vec3d eye = e->vec3();
-    data["points"].push_back({{"at", point_json(eye)}, {"label", "eye"}});
-    bounds.add(eye);
+  if (surface.eye) {
+    data["points"].push_back({{"at", point_json(*surface.eye)}, {"label", "eye"}});
+    bounds.add(*surface.eye);
     words.emplace_back("the eye (grey)");
   }
-  if (!lights.empty()) {
+  if (!g.lights.empty()) {
     std::vector<std::string> names;
-    for (const auto& l : lights) {
-      names.push_back(l["label"].get<std::string>());
-      if (l.contains("position")) bounds.add(vec3_of(l["position"]));
+    for (const auto& l : g.lights) {
+      data["lights"].push_back(light_json(l));
+      names.push_back(l.name);
+      if (!l.directional) bounds.add(l.position);
     }
-    data["lights"] = lights;
     words.push_back(
         fmt::format("the light{} {}", names.size() > 1 ? "s" : "", fmt::join(names, ", ")));
   }
@@ -285,67 +233,55 @@ bool local_surface(const Cursor& c, json& data, Bounds& bounds, std::vector<std:
 }  // namespace
 
 std::optional<SceneView> scene_view(const Problem& problem, bool answers) {
-  if (!problem.source.is_object()) return std::nullopt;
-  // The givens, read again from the problem as written: only what the student is given.
-  Cursor c(problem.source_file, &problem.source, problem.path);
+  // The givens, as the problem's kind reads them: only what the student is given.
+  std::optional<SceneGivens> givens = problem.task ? problem.task->scene_givens() : std::nullopt;
+  if (!givens) return std::nullopt;
+  const SceneGivens& g = *givens;
   json data = {{"objects", json::array()}};
   Bounds bounds;
   std::vector<std::string> words;
-  auto add_object = [&](const std::string& label, const Shape& shape, const Transform* t) {
-    json o = object_json(label, shape, t);
-    Vec3d centre = shape.center();
-    double extent = shape.extent();
-    if (t && !t->identity()) {
+  for (const GivenObject& o : g.objects) {
+    json object = object_json(o.name, *o.shape, o.transform);
+    Vec3d centre = o.shape->center();
+    double extent = o.shape->extent();
+    if (const Transform* t = o.transform; t && !t->identity()) {
       const auto& a = t->to_world.rows;
       centre = t->to_world.point(centre);
       extent *= std::sqrt(dot(a[0], a[0]) + dot(a[1], a[1]) + dot(a[2], a[2]));
     }
     bounds.add(centre, extent);
-    words.push_back(o["label"].get<std::string>());
-    data["objects"].push_back(o);
-  };
-  if (auto object = c.find("object")) {
-    std::unique_ptr<Shape> shape = read_shape(*object);
-    add_object("", *shape, nullptr);
+    words.push_back(object["label"].get<std::string>());
+    data["objects"].push_back(object);
   }
-  if (auto objects = c.find("objects")) {
-    for (const auto& o : read_named_objects(*objects)) add_object(o.name, *o.shape, nullptr);
-  }
-  std::vector<std::string> lights;
-  if (auto s = c.find("scene")) {
-    Scene scene = read_scene(*s);
-    for (const auto& o : scene.objects) add_object(o.name, *o.shape, &o.transform);
-    for (const auto& l : scene.lights) {
-      if (l.type == LightType::kPoint) {
-        data["lights"].push_back({{"label", l.name}, {"position", point_json(l.position)}});
-        bounds.add(l.position);
-      } else {
-        data["lights"].push_back({{"label", l.name}, {"direction", point_json(l.direction)}});
-      }
-      lights.push_back(l.name);
-    }
-  }
-  bool camera = c.has("camera") && c.has("pixel");
+  bool camera = g.camera.has_value();
   if (camera) {
-    data["camera"] = camera_json(c, bounds);
+    data["camera"] = camera_json(*g.camera, bounds);
     // Where the pixel lies is what a camera kind asks for: a page of givens leaves it out.
     if (!answers) data["camera"].erase("pixel");
   }
   std::vector<std::string> local_words;
   bool local = false;
   if (data["objects"].empty() && !camera) {
-    local = local_surface(c, data, bounds, local_words);
+    local = g.surface && local_surface(g, *g.surface, data, bounds, local_words);
     if (!local) return std::nullopt;
   }
-  if (auto r = c.find("ray")) {
-    Ray ray = read_ray(*r);
-    data["ray"] = {{"origin", point_json(ray.origin)}, {"direction", point_json(ray.direction)}};
-    bounds.add(ray.origin);
+  // The lights of a scene; a surface's are drawn with it.
+  std::vector<std::string> lights;
+  if (!local) {
+    for (const GivenLight& l : g.lights) {
+      data["lights"].push_back(light_json(l));
+      if (!l.directional) bounds.add(l.position);
+      lights.push_back(l.name);
+    }
   }
-  if (auto p = c.find("point"); p && !local && !data["objects"].empty()) {
-    Vec3d at = p->vec3();
-    data["points"].push_back({{"at", point_json(at)}, {"label", "P"}});
-    bounds.add(at);
+  if (g.ray) {
+    data["ray"] = {{"origin", point_json(g.ray->origin)},
+                   {"direction", point_json(g.ray->direction)}};
+    bounds.add(g.ray->origin);
+  }
+  if (g.point && !local && !data["objects"].empty()) {
+    data["points"].push_back({{"at", point_json(*g.point)}, {"label", "P"}});
+    bounds.add(*g.point);
   }
   data["frame"] = bounds.frame();
 
@@ -366,9 +302,8 @@ std::optional<SceneView> scene_view(const Problem& problem, bool answers) {
   }
   if (data.contains("points")) text += "; the point P";
   if (answers) {
-    data["answers"] =
-        answers_json(problem.task->answer(), data, data["frame"]["radius"].get<double>());
     const json answer = problem.task->answer();
+    data["answers"] = answers_json(answer, data, data["frame"]["radius"].get<double>());
     if (local && answer.contains("direction") && is_vec3(answer["direction"]) &&
         data.contains("points")) {
       // The direction asked for (reflected, refracted), leaving P.

@@ -18,10 +18,10 @@ struct SceneView {
   std::string description;  // the same in words, for a reader who cannot see the canvas
 };
 
-// The view of `problem`, or nothing for a kind with no scene (no object and no camera: reflect,
-// refract, shade, fresnel, interpolate). Without `answers` it holds the givens alone, read from
-// the problem as written (a handout or practice page: no hit, no normal, no ray the student is
-// asked for); with `answers`, also the hits, their normals and the rays the answer holds.
+// The view of `problem`, or nothing when its task has nothing to draw (Task::scene_givens).
+// Without `answers` it holds the givens alone, as the task answers for them (a handout or
+// practice page: no hit, no normal, no ray the student is asked for); with `answers`, also the
+// hits, their normals and the rays the answer holds.
 std::optional<SceneView> scene_view(const Problem& problem, bool answers);
 
 // The view as HTML: a <figure> with the canvas's container, its caption (the description and the
