@@ -12,6 +12,7 @@
 
 #include "core/escape.h"
 #include "json/numbers.h"
+#include "kinds/part_names.h"
 #include "problems/scene_givens.h"
 #include "shapes/disk.h"
 #include "shapes/transformed.h"
@@ -145,15 +146,17 @@ json answers_json(const json& answer, const json& data, double size) {
       }
     }
   }
-  if (answer.contains("ray") && answer["ray"].is_object()) {
-    ray_segment(vec3_of(answer["ray"].at("origin")), vec3_of(answer["ray"].at("direction")),
-                "answer");
-  } else if (answer.contains("origin") && answer.contains("direction") &&
-             is_vec3(answer["origin"]) && is_vec3(answer["direction"])) {
-    ray_segment(vec3_of(answer["origin"]), vec3_of(answer["direction"]), "answer");
+  namespace part = part_names;
+  if (answer.contains(part::kRay) && answer[part::kRay].is_object()) {
+    const json& ray = answer[part::kRay];
+    ray_segment(vec3_of(ray.at(part::kOrigin)), vec3_of(ray.at(part::kDirection)), "answer");
+  } else if (answer.contains(part::kOrigin) && answer.contains(part::kDirection) &&
+             is_vec3(answer[part::kOrigin]) && is_vec3(answer[part::kDirection])) {
+    ray_segment(vec3_of(answer[part::kOrigin]), vec3_of(answer[part::kDirection]), "answer");
   }
-  if (answer.contains("normal") && is_vec3(answer["normal"]) && data.contains("points")) {
-    hits.push_back({{"point", data["points"][0]["at"]}, {"normal", answer["normal"]}});
+  if (answer.contains(part::kNormal) && is_vec3(answer[part::kNormal]) && data.contains("points")) {
+    // not a part: the view's keys of a hit, the given point P and the answer's normal there
+    hits.push_back({{"point", data["points"][0]["at"]}, {"normal", answer[part::kNormal]}});
   }
   return {{"hits", hits}, {"segments", segments}};
 }
@@ -304,11 +307,11 @@ std::optional<SceneView> scene_view(const Problem& problem, bool answers) {
   if (answers) {
     const json answer = problem.task->answer();
     data["answers"] = answers_json(answer, data, data["frame"]["radius"].get<double>());
-    if (local && answer.contains("direction") && is_vec3(answer["direction"]) &&
-        data.contains("points")) {
+    if (local && answer.contains(part_names::kDirection) &&
+        is_vec3(answer[part_names::kDirection]) && data.contains("points")) {
       // The direction asked for (reflected, refracted), leaving P.
       Vec3d at = vec3_of(data["points"][0]["at"]);
-      Vec3d d = vec3_of(answer["direction"]);
+      Vec3d d = vec3_of(answer[part_names::kDirection]);
       if (length(d) > 0) {
         double size = data["frame"]["radius"].get<double>();
         data["answers"]["segments"].push_back(
