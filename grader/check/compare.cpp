@@ -6,6 +6,7 @@
 
 #include "derivation/number_format.h"
 #include "json/cursor.h"
+#include "kinds/part_names.h"
 
 namespace raygrade {
 namespace {
@@ -78,6 +79,7 @@ struct Comparer {
     if (s.is_array() && r.is_array()) {
       if (s.size() != r.size()) {
         bool hits = path.size() >= 5 && path.compare(path.size() - 5, 5, "/hits") == 0;
+        // not a part: the words of the message
         std::string what = hits ? (s.size() == 1 ? "hit" : "hits") : "entries";
         add(path, r.empty()
                       ? fmt::format("lists {} {}, the reference answer has none", s.size(), what)
@@ -106,7 +108,7 @@ struct Comparer {
     std::vector<std::string> parts;
     for (const auto& item : list) {
       if (item.is_object() && item.contains("t")) {
-        parts.push_back("t = " + show(item["t"]));
+        parts.push_back("t = " + show(item[part_names::kT]));
       } else {
         parts.push_back(show(item));
       }
@@ -186,9 +188,11 @@ double answer_magnitude(const json& answer) {
 std::string describe_answer(const json& answer) {
   if (!answer.is_object()) return show(answer);
   std::string prefix;
-  if (answer.contains("object")) {
-    if (answer["object"].is_null()) return "no object hit";
-    prefix = answer["object"].is_string() ? answer["object"].get<std::string>() + ", " : "";
+  if (answer.contains(part_names::kObject)) {
+    if (answer[part_names::kObject].is_null()) return "no object hit";
+    prefix = answer[part_names::kObject].is_string()
+                 ? answer[part_names::kObject].get<std::string>() + ", "
+                 : "";
   }
   if (answer.contains("hits") && answer["hits"].is_array()) {
     const json& hits = answer["hits"];
@@ -197,8 +201,9 @@ std::string describe_answer(const json& answer) {
     return prefix + (hits.size() == 1 ? fmt::format("1 hit ({})", ts)
                                       : fmt::format("{} hits ({})", hits.size(), ts));
   }
-  if (answer.contains("ray") && answer["ray"].is_object() && answer["ray"].contains("direction")) {
-    return "direction " + show(answer["ray"]["direction"]);
+  if (answer.contains(part_names::kRay) && answer[part_names::kRay].is_object() &&
+      answer[part_names::kRay].contains(part_names::kDirection)) {
+    return "direction " + show(answer[part_names::kRay][part_names::kDirection]);
   }
   std::string text = answer.dump();
   return text.size() <= 60 ? text : "(see raygrade solve)";

@@ -8,6 +8,7 @@
 #include "derivation/number_format.h"
 #include "grading/grade.h"
 #include "grading/tolerance.h"
+#include "kinds/part_names.h"
 #include "problems/ray_cast.h"
 
 namespace raygrade {
@@ -24,7 +25,8 @@ const Ray* ray_of(const Problem& p) {
 
 // Where in the stated answer a graded part lives.
 std::string part_path(const nlohmann::json& stated, const std::string& part) {
-  if ((part == "t" || part == "point" || part == "normal") && stated.contains("hits")) {
+  if ((part == part_names::kT || part == part_names::kPoint || part == part_names::kNormal) &&
+      stated.contains("hits")) {
     return "/expected/hits";
   }
   if (stated.contains(part)) return "/expected/" + pointer_token(part);
@@ -59,7 +61,7 @@ void check_range(const Problem& p, const nlohmann::json& stated, std::vector<Dia
 
 double t_tolerance(const Problem& p, double t) {
   TolerancePolicy policy = read_tolerance_policy(p);
-  return allowed_error(t, std::abs(t), policy.for_field("t"));
+  return allowed_error(t, std::abs(t), policy.for_field(part_names::kT));
 }
 
 Diagnostic problem_diagnostic(const Problem& p, std::string_view relative_path, Severity severity,

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kinds/part_names.h"
 #include "sampling/draft.h"
 #include "shapes/sphere.h"
 
@@ -52,10 +53,10 @@ Draft make_first_hit(Prng& rng, std::optional<Outcome> asked) {
   draft.fields["objects"] = objects;
   if (first >= 0) {
     double t = entries[first];
-    draft.fields["expected"]["object"] = objects[first]["name"];
+    draft.fields["expected"][part_names::kObject] = objects[first]["name"];
     draft.fields["expected"]["hits"] = {known_hit_json({t, origin + t * d})};
   } else {
-    draft.fields["expected"]["object"] = nullptr;
+    draft.fields["expected"][part_names::kObject] = nullptr;
     draft.fields["expected"]["hits"] = nlohmann::ordered_json::array();
   }
   return draft;
@@ -87,7 +88,8 @@ Draft make_camera_ray(Prng& rng, std::optional<Outcome> /*outcome*/) {
                             {"focal_length", f},
                             {"resolution", {rx, ry}}};
   draft.fields["pixel"] = {x, y};
-  draft.fields["expected"]["ray"] = {{"origin", vector_json(eye)}, {"direction", vector_json(ray)}};
+  draft.fields["expected"][part_names::kRay] = {{part_names::kOrigin, vector_json(eye)},
+                                                {part_names::kDirection, vector_json(ray)}};
   return draft;
 }
 

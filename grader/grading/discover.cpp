@@ -18,6 +18,7 @@
 #include "grading/change_operators.h"
 #include "grading/parts.h"
 #include "kinds/derive.h"
+#include "kinds/part_names.h"
 
 namespace raygrade {
 
@@ -225,7 +226,7 @@ void map_leaves(std::vector<Leaf>& leaves, const nlohmann::json& answer,
 // The value of an answer at `at`, or null; a unit direction stands for the direction, as the
 // grader reads it.
 const nlohmann::json* answer_at(const nlohmann::json& answer, nlohmann::json::json_pointer at) {
-  if (!answer.contains(at) && object_keys(at).back() == "direction") {
+  if (!answer.contains(at) && object_keys(at).back() == part_names::kDirection) {
     std::string text = at.to_string();
     text.replace(text.rfind("direction"), 9, "unit_direction");
     at = nlohmann::json::json_pointer(text);
@@ -720,7 +721,7 @@ void ChangeSearch::Impl::find_follow(const std::vector<SolutionPart>& right,
   if (name_leaf < 0) {
     // The leaf "object" whose value is the heading of a part: the object hit first.
     for (std::size_t i = 0; i < leaves.size(); ++i) {
-      if (leaves[i].field != "object" || !leaves[i].value.is_string()) continue;
+      if (leaves[i].field != part_names::kObject || !leaves[i].value.is_string()) continue;
       for (std::size_t p = 0; p < right.size(); ++p) {
         if (right[p].heading != leaves[i].value.get<std::string>()) continue;
         name_leaf = static_cast<std::ptrdiff_t>(i);
@@ -789,7 +790,7 @@ void ChangeSearch::Impl::make_groups(std::string_view kind) {
   for (const auto& [h, gs] : by_hit) hits.push_back(gs);
   auto t_at = [&](const std::vector<std::size_t>& gs) {
     for (std::size_t q = 0; q < gs.size(); ++q)
-      if (leaves[groups[gs[q]].leaves.front()].field == "t") return q;
+      if (leaves[groups[gs[q]].leaves.front()].field == part_names::kT) return q;
     return gs.size();
   };
   if (!hits.empty()) hit_t = t_at(hits.front());

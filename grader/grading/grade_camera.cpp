@@ -8,6 +8,7 @@
 #include "grading/parts.h"
 #include "grading/steps.h"
 #include "kinds/camera_ray.h"
+#include "kinds/part_names.h"
 
 namespace raygrade {
 namespace {
@@ -22,7 +23,8 @@ class CameraGrader final : public KindGrader {
   explicit CameraGrader(const Problem& p) : task_(dynamic_cast<const CameraRayTask&>(*p.task)) {
     context_.problem = &p;
     context_.tolerance = read_tolerance_policy(p);
-    context_.points = read_points_policy(p, default_points(p.kind, {"ray", "steps"}));
+    context_.points =
+        read_points_policy(p, default_points(p.kind, {part_names::kRay, part_names::kSteps}));
     if (p.precision >= 0) numbers_.decimals = p.precision;
     direction_ =
         camera_ray_direction(task_.camera(), task_.pixel_x(), task_.pixel_y(), task_.convention());
@@ -36,31 +38,33 @@ class CameraGrader final : public KindGrader {
                   return corner ? f + 0.5 : f - 0.5;
                 });
     add_variant("cross-order", [](std::string_view step, const E& f) -> std::optional<E> {
+      // not a part: the derivation's step v, the camera's up vector
       if (step != "v") return std::nullopt;
       return -f;
     });
   }
 
   void grade(const AnswerReader& a, GradeResult& out) const override {
-    a.allow_only({"ray", "unit_direction", "steps"});
-    if (a.has("steps")) {
-      StepsGrade s = grade_steps(context_, task_, methods_, mistaken_, a.at("steps"));
+    a.allow_only({part_names::kRay, part_names::kUnitDirection, part_names::kSteps});
+    if (a.has(part_names::kSteps)) {
+      StepsGrade s = grade_steps(context_, task_, methods_, mistaken_, a.at(part_names::kSteps));
       out.parts.push_back(s.part);
       for (auto& m : s.mistakes) out.mistakes.push_back(m);
     }
     std::optional<AnswerReader::Vector> origin, direction;
-    if (a.has("ray")) {
-      AnswerReader r = a.at("ray");
-      r.allow_only({"origin", "direction"});
-      if (r.has("origin")) origin = r.at("origin").vector();
-      if (r.has("direction")) direction = r.at("direction").vector();
+    if (a.has(part_names::kRay)) {
+      AnswerReader r = a.at(part_names::kRay);
+      r.allow_only({part_names::kOrigin, part_names::kDirection});
+      if (r.has(part_names::kOrigin)) origin = r.at(part_names::kOrigin).vector();
+      if (r.has(part_names::kDirection)) direction = r.at(part_names::kDirection).vector();
     }
-    if (!direction && a.has("unit_direction")) direction = a.at("unit_direction").vector();
+    if (!direction && a.has(part_names::kUnitDirection))
+      direction = a.at(part_names::kUnitDirection).vector();
     if (!direction) {
-      out.parts.push_back(missing_part(context_, "ray", "No ray direction given."));
+      out.parts.push_back(missing_part(context_, part_names::kRay, "No ray direction given."));
       return;
     }
-    const Tolerance& tol = context_.tolerance.for_field("ray");
+    const Tolerance& tol = context_.tolerance.for_field(part_names::kRay);
     std::vector<std::string> fb;
     double credit = 0;
     if (!direction->ok) {
@@ -103,7 +107,7 @@ class CameraGrader final : public KindGrader {
       }
     }
     if (credit >= 1 && fb.empty()) fb.emplace_back("Right.");
-    out.parts.push_back(make_part(context_, "ray", credit, std::move(fb)));
+    out.parts.push_back(make_part(context_, part_names::kRay, credit, std::move(fb)));
   }
 
  private:

@@ -8,6 +8,7 @@
 
 #include "derivation/number_format.h"
 #include "json/cursor.h"
+#include "kinds/part_names.h"
 
 namespace raygrade {
 
@@ -146,13 +147,14 @@ StepsGrade grade_steps(const GradingContext& c, const Task& task,
                        const std::vector<MistakenSolution>& mistaken, const AnswerReader& steps) {
   StepsGrade out;
   if (!steps.json().is_object()) steps.fail("steps is an object: step name → value", "type");
-  const Tolerance& tol = c.tolerance.for_field("steps");
+  const Tolerance& tol = c.tolerance.for_field(part_names::kSteps);
   NumberFormat fmt_numbers;
   if (c.problem->precision >= 0) fmt_numbers.decimals = c.problem->precision;
   const MethodDerivation* best = closest_method(reference, steps.json());
   std::vector<std::string> feedback;
   if (!best) {
-    out.part = make_part(c, "steps", 0, {"This problem has no worked steps to compare with."});
+    out.part =
+        make_part(c, part_names::kSteps, 0, {"This problem has no worked steps to compare with."});
     return out;
   }
   out.method = best->method;
@@ -242,7 +244,8 @@ StepsGrade grade_steps(const GradingContext& c, const Task& task,
   if (graded > 0 && out.wrong.empty() && feedback.empty()) {
     feedback.push_back(fmt::format("All {} steps are right.", graded));
   }
-  out.part = make_part(c, "steps", graded > 0 ? credit / graded : 0, std::move(feedback));
+  out.part =
+      make_part(c, part_names::kSteps, graded > 0 ? credit / graded : 0, std::move(feedback));
   return out;
 }
 
