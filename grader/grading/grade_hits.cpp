@@ -11,6 +11,7 @@
 #include "grading/mistakes.h"
 #include "grading/parts.h"
 #include "grading/steps.h"
+#include "kinds/part_names.h"
 #include "problems/ray_cast.h"
 #include "shapes/transformed.h"
 
@@ -49,6 +50,16 @@ constexpr double kDoubleRootDiscriminant = 1e-12;
 constexpr double kWideningReach = 0.5;
 // Roots this close (relative to 1 + |t|) are one root computed by two methods.
 constexpr double kSameRoot = 1e-9;
+// A ray's direction this close to length 1 is a unit direction: t along it is the distance, and
+// a t typed as a distance is no mistake.
+constexpr double kUnitDirection = 1e-9;
+// A length (a normal's) or a sum (barycentric weights') this far from 1 is told to the student:
+// a unit vector or weights typed to three decimals stay within it.
+constexpr double kNotedOffOne = 1e-3;
+// The credit of a ray lying in the surface answered by the other convention than the
+// problem's ("contained" where it counts no intersection, or "hits": [] where it counts the
+// line): right by the other half of ray tracers, so half.
+constexpr double kOtherConventionCredit = 0.5;
 // Feedback shows numbers with the significant figures of worked solutions (NumberFormat's
 // default), as a fixed number of decimals shared by every number of the problem.
 constexpr int kDisplayFigures = 4;
@@ -238,7 +249,7 @@ void HitsGrader::collect_candidates(const std::vector<const Shape*>& shapes,
       for (double t : derivation_roots(d)) {
         candidates_.push_back(t);
         if (t < ray_.t_min) behind_.push_back(t);
-        if (first_hit_ && !x.hits.empty() && t > x.hits.front().t + 1e-9 * (1 + std::abs(t))) {
+        if (first_hit_ && !x.hits.empty() && t > x.hits.front().t + kSameRoot * (1 + std::abs(t))) {
           far_.push_back(t);
         }
       }
@@ -308,7 +319,7 @@ void HitsGrader::choose_display_decimals() {
 // The reference hit whose barycentric weights a hit gives ((w_a, w_b, w_c), or u = w_b and
 // v = w_c), within the point's tolerance.
 std::optional<std::size_t> HitsGrader::hit_of_weights(const StudentHit& h) const {
-  const Tolerance& tol = context_.tolerance.for_field("point");
+  const Tolerance& tol = context_.tolerance.for_field(part_names::kPoint);
   for (std::size_t j = 0; j < ref_.size(); ++j) {
     if (!ref_[j].barycentric) continue;
     const auto& w = *ref_[j].barycentric;
@@ -373,16 +384,16 @@ std::optional<double> HitsGrader::other_root_at(const StudentNumber (&p)[3],
 
 void HitsGrader::grade(const AnswerReader& a, GradeResult& out) const {
   if (first_hit_) {
-    a.allow_only({"object", "hits", "tie", "steps"});
+    a.allow_only({part_names::kObject, "hits", "tie", part_names::kSteps});
   } else {
-    a.allow_only({"hits", "contained", "steps"});
+    a.allow_only({"hits", "contained", part_names::kSteps});
   }
   std::optional<StepsGrade> steps;
-  if (a.has("steps")) {
+  if (a.has(part_names::kSteps)) {
     if (first_hit_) {
       out.notes.emplace_back("Steps are not graded for first-hit problems; the final answer is.");
     } else {
-      steps = grade_steps(context_, *task_, methods_, mistaken_, a.at("steps"));
+      steps = grade_steps(context_, *task_, methods_, mistaken_, a.at(part_names::kSteps));
       out.parts.push_back(steps->part);
       for (auto& m : steps->mistakes) out.mistakes.push_back(m);
     }
@@ -393,25 +404,27 @@ void HitsGrader::grade(const AnswerReader& a, GradeResult& out) const {
     return grade_contained(true, true, out);
   }
   if (!a.has("hits")) {
-    for (const char* part : {"t", "point", "normal", "barycentric"}) {
+    for (const char* part :
+         {part_names::kT, part_names::kPoint, part_names::kNormal, part_names::kBarycentric}) {
       out.parts.push_back(missing_part(context_, part));
     }
     return;
   }
   std::vector<StudentHit> hits;
   for (const auto& h : a.at("hits").items()) {
-    h.allow_only({"t", "point", "normal", "barycentric", "u", "v", "part"});
+    h.allow_only({part_names::kT, part_names::kPoint, part_names::kNormal, part_names::kBarycentric,
+                  part_names::kU, part_names::kV, "part"});
     StudentHit s;
-    if (h.has("t")) {
-      auto n = h.at("t").number();
+    if (h.has(part_names::kT)) {
+      auto n = h.at(part_names::kT).number();
       s.t = n.value;
       s.t_fault = n.fault;
     }
-    if (h.has("point")) s.point = h.at("point").vector();
-    if (h.has("normal")) s.normal = h.at("normal").vector();
-    if (h.has("barycentric")) s.barycentric = h.at("barycentric").vector();
-    if (h.has("u")) s.u = h.at("u").number();
-    if (h.has("v")) s.v = h.at("v").number();
+    if (h.has(part_names::kPoint)) s.point = h.at(part_names::kPoint).vector();
+    if (h.has(part_names::kNormal)) s.normal = h.at(part_names::kNormal).vector();
+    if (h.has(part_names::kBarycentric)) s.barycentric = h.at(part_names::kBarycentric).vector();
+    if (h.has(part_names::kU)) s.u = h.at(part_names::kU).number();
+    if (h.has(part_names::kV)) s.v = h.at(part_names::kV).number();
     hits.push_back(std::move(s));
   }
   read_hits_from_weights(hits, out);
@@ -433,18 +446,18 @@ void HitsGrader::grade_contained(bool says_line, bool no_hits, GradeResult& out)
     credit = 0;
     message = line + ": there is no single t to give.";
   } else if (says_line) {
-    credit = conventions_.contained == C::kMiss ? 0.5 : 1;
+    credit = conventions_.contained == C::kMiss ? kOtherConventionCredit : 1;
     message = credit < 1 ? line + "; this problem counts that as no intersection: \"hits\": []."
                          : "Right: " + line + ".";
   } else {
-    credit = conventions_.contained == C::kLine ? 0.5 : 1;
+    credit = conventions_.contained == C::kLine ? kOtherConventionCredit : 1;
     message = credit < 1 ? line + "; say so with \"contained\": true."
                          : "Right, as most ray tracers count it. " + line +
                                ", which \"contained\": true says exactly.";
   }
-  out.parts.push_back(make_part(context_, "t", credit, {message}));
+  out.parts.push_back(make_part(context_, part_names::kT, credit, {message}));
   // No single point to give: the point and normal follow the verdict on the line.
-  for (const char* part : {"point", "normal"}) {
+  for (const char* part : {part_names::kPoint, part_names::kNormal}) {
     if (context_.points.of(part) == 0) continue;
     out.parts.push_back(
         make_part(context_, part, credit,
@@ -479,8 +492,8 @@ void HitsGrader::grade_claimed_miss(const StepsGrade* steps, GradeResult& out) c
                                      fmt::join(roots, " and ")));
     }
   }
-  out.parts.push_back(make_part(context_, "t", credit, fb));
-  for (const char* part : {"point", "normal", "barycentric"}) {
+  out.parts.push_back(make_part(context_, part_names::kT, credit, fb));
+  for (const char* part : {part_names::kPoint, part_names::kNormal, part_names::kBarycentric}) {
     if (context_.points.of(part) == 0) continue;
     out.parts.push_back(make_part(context_, part, credit,
                                   {fmt::format("No {} where a miss is claimed: see t.", part)}));
@@ -488,14 +501,14 @@ void HitsGrader::grade_claimed_miss(const StepsGrade* steps, GradeResult& out) c
 }
 
 void HitsGrader::grade_object(const AnswerReader& a, GradeResult& out) const {
-  if (!a.has("object")) {
-    out.parts.push_back(missing_part(context_, "object", "No object named."));
+  if (!a.has(part_names::kObject)) {
+    out.parts.push_back(missing_part(context_, part_names::kObject, "No object named."));
     return;
   }
-  const auto& v = a.at("object").json();
+  const auto& v = a.at(part_names::kObject).json();
   std::string right = ref_object_ >= 0 ? names_[static_cast<std::size_t>(ref_object_)] : "";
   if (v.is_string() && norm_name(v.get<std::string>()).empty()) {
-    out.parts.push_back(missing_part(context_, "object",
+    out.parts.push_back(missing_part(context_, part_names::kObject,
                                      ref_object_ < 0
                                          ? "The object is blank: write null when no object is hit."
                                          : "The object is blank: name the object hit first."));
@@ -507,7 +520,7 @@ void HitsGrader::grade_object(const AnswerReader& a, GradeResult& out) const {
         {ref_object_ < 0 ? "Right: no object is hit." : fmt::format("{} is hit.", right)}));
     return;
   }
-  std::string name = a.at("object").string();
+  std::string name = a.at(part_names::kObject).string();
   bool ok = ref_object_ >= 0 && norm_name(name) == norm_name(right);
   out.parts.push_back(make_part(
       context_, "object", ok ? 1 : 0,
@@ -520,7 +533,7 @@ void HitsGrader::grade_object(const AnswerReader& a, GradeResult& out) const {
 // gives it, another object's hit, the same hit listed twice.
 std::vector<Reading> HitsGrader::readings_of(const StudentNumber& t, std::size_t i,
                                              const std::vector<int>& match) const {
-  const Tolerance& tt = context_.tolerance.for_field("t");
+  const Tolerance& tt = context_.tolerance.for_field(part_names::kT);
   auto near = [&](double r) { return compare_number(t, r, r, tt).match == Match::kRight; };
   const std::string& typed = t.text;
   double dlen = length(ray_.direction);
@@ -540,7 +553,7 @@ std::vector<Reading> HitsGrader::readings_of(const StudentNumber& t, std::size_t
                                  typed, ref_.empty() ? "?" : fmt_t(ref_.front().t))});
     break;
   }
-  if (std::abs(dlen - 1) > 1e-9) {
+  if (std::abs(dlen - 1) > kUnitDirection) {
     for (const auto& h : ref_) {
       if (!near(h.t * dlen)) continue;
       readings.push_back(
@@ -603,14 +616,14 @@ void HitsGrader::grade_hits(const std::vector<StudentHit>& hits, const StepsGrad
     if (h.point) grade_point(h, m.match[i], m.match, points, out);
     if (h.normal) grade_normal(h, m.match[i], normals, out);
   }
-  add_part("point", std::move(points), n_stu, out);
-  add_part("normal", std::move(normals), n_stu, out);
+  add_part(part_names::kPoint, std::move(points), n_stu, out);
+  add_part(part_names::kNormal, std::move(normals), n_stu, out);
   grade_barycentric(hits, m.match, out);
 }
 
 // Match t values to reference hits regardless of order.
 HitsGrader::TMatch HitsGrader::match_t(const std::vector<StudentHit>& hits) const {
-  const Tolerance& tt = context_.tolerance.for_field("t");
+  const Tolerance& tt = context_.tolerance.for_field(part_names::kT);
   std::size_t n_ref = ref_.size(), n_stu = hits.size();
   TMatch m;
   m.match.assign(n_stu, -1);
@@ -667,7 +680,7 @@ HitsGrader::TMatch HitsGrader::match_t(const std::vector<StudentHit>& hits) cons
 // mistake, another reading), and the hits not found. Returns whether any t was given.
 bool HitsGrader::grade_t(const std::vector<StudentHit>& hits, const StepsGrade* steps, TMatch& m,
                          GradeResult& out) const {
-  const Tolerance& tt = context_.tolerance.for_field("t");
+  const Tolerance& tt = context_.tolerance.for_field(part_names::kT);
   std::size_t n_ref = ref_.size(), n_stu = hits.size();
   bool any_t = false;
   // A mistake found in t is named, and said in the part's feedback too.
@@ -709,7 +722,7 @@ bool HitsGrader::grade_t(const std::vector<StudentHit>& hits, const StepsGrade* 
     if (readings.empty()) {
       m.feedback.push_back(fmt::format("t = {} is not a hit of this ray.", typed));
     } else if (readings.size() == 1 && !readings.front().id.empty()) {
-      t_mistake(make_mistake(readings.front().id, "t", readings.front().message));
+      t_mistake(make_mistake(readings.front().id, part_names::kT, readings.front().message));
     } else if (readings.size() == 1) {
       m.feedback.push_back(readings.front().message);
     } else {
@@ -737,23 +750,24 @@ bool HitsGrader::grade_t(const std::vector<StudentHit>& hits, const StepsGrade* 
     }
   }
   if (n_ref == 0 && n_stu == 0) {
-    out.parts.push_back(make_part(context_, "t", 1, {"Right: the ray does not hit."}));
+    out.parts.push_back(make_part(context_, part_names::kT, 1, {"Right: the ray does not hit."}));
   } else if (!any_t) {
-    out.parts.push_back(missing_part(context_, "t", m.feedback.empty() ? "" : m.feedback.front()));
+    out.parts.push_back(
+        missing_part(context_, part_names::kT, m.feedback.empty() ? "" : m.feedback.front()));
   } else {
     if (t_credit >= static_cast<double>(denom) && m.n_twice == 0 && m.feedback.empty()) {
       m.feedback.emplace_back(n_ref == 1 ? "Right." : "Right: every hit, in any order.");
     }
     if (n_ref == 0) m.feedback.emplace_back("The ray does not hit this object.");
     out.parts.push_back(
-        make_part(context_, "t", t_credit / static_cast<double>(denom), m.feedback));
+        make_part(context_, part_names::kT, t_credit / static_cast<double>(denom), m.feedback));
   }
   return any_t;
 }
 
 // Without any t, each student hit is matched to the nearest free reference hit by its point.
 void HitsGrader::match_by_point(const std::vector<StudentHit>& hits, TMatch& m) const {
-  const Tolerance& tp = context_.tolerance.for_field("point");
+  const Tolerance& tp = context_.tolerance.for_field(part_names::kPoint);
   std::size_t n_ref = ref_.size(), n_stu = hits.size();
   for (std::size_t i = 0; i < n_stu; ++i) {
     if (!hits[i].point || !hits[i].point->ok) continue;
@@ -779,7 +793,7 @@ void HitsGrader::match_by_point(const std::vector<StudentHit>& hits, TMatch& m) 
 // wrong with it go into `tally`.
 void HitsGrader::grade_point(const StudentHit& h, int jj, const std::vector<int>& match,
                              Tally& tally, GradeResult& out) const {
-  const Tolerance& tp = context_.tolerance.for_field("point");
+  const Tolerance& tp = context_.tolerance.for_field(part_names::kPoint);
   ++tally.given;
   if (!h.point->ok) {
     tally.feedback.push_back("point: " + h.point->fault);
@@ -836,7 +850,7 @@ void HitsGrader::grade_point(const StudentHit& h, int jj, const std::vector<int>
 
 // One hit's normal, matched to reference hit `jj` (or to none, −1), graded as a direction.
 void HitsGrader::grade_normal(const StudentHit& h, int jj, Tally& tally, GradeResult& out) const {
-  const Tolerance& tn = context_.tolerance.for_field("normal");
+  const Tolerance& tn = context_.tolerance.for_field(part_names::kNormal);
   ++tally.given;
   if (!h.normal->ok) {
     tally.feedback.push_back("normal: " + h.normal->fault);
@@ -860,7 +874,7 @@ void HitsGrader::grade_normal(const StudentHit& h, int jj, Tally& tally, GradeRe
   }
   if (dv.verdict.match == Match::kRight) {
     tally.credit += 1;
-    if (std::abs(len - 1) > 1e-3) {
+    if (std::abs(len - 1) > kNotedOffOne) {
       tally.feedback.push_back(fmt::format("Your normal has length {}; as a direction it is right.",
                                            format_number(len, numbers_)));
     }
@@ -932,7 +946,7 @@ void HitsGrader::add_part(const char* name, Tally tally, std::size_t n_stu,
 // u = w_b and v = w_c alone: an exercise may ask for either.
 void HitsGrader::grade_barycentric(const std::vector<StudentHit>& hits,
                                    const std::vector<int>& match, GradeResult& out) const {
-  const Tolerance& tol = context_.tolerance.for_field("point");
+  const Tolerance& tol = context_.tolerance.for_field(part_names::kPoint);
   std::size_t given = 0;
   double credit = 0;
   std::vector<std::string> fb;
@@ -966,7 +980,7 @@ void HitsGrader::grade_barycentric(const std::vector<StudentHit>& hits,
       }
       Vec3d got = h.barycentric->value();
       double sum = got.x + got.y + got.z;
-      std::string why = std::abs(sum - 1) > 1e-3
+      std::string why = std::abs(sum - 1) > kNotedOffOne
                             ? fmt::format(
                                   " Your weights add up to {}; barycentric weights add up "
                                   "to 1.",
@@ -979,11 +993,12 @@ void HitsGrader::grade_barycentric(const std::vector<StudentHit>& hits,
     // u = w_b and v = w_c (P = a + u(b − a) + v(c − a), as Möller and Trumbore write it).
     bool right = true;
     for (const auto& [given_uv, ref, name] :
-         {std::tuple{&h.u, want.y, "u"}, std::tuple{&h.v, want.z, "v"}}) {
+         {std::tuple{&h.u, want.y, part_names::kU}, std::tuple{&h.v, want.z, part_names::kV}}) {
       if (!*given_uv) {
         right = false;
-        fb.push_back(fmt::format("No {} given (the weight of {}).", name,
-                                 std::string_view(name) == "u" ? "b" : "c"));
+        // not a part: the vertex whose weight u or v is, b or c
+        std::string_view vertex = std::string_view(name) == part_names::kU ? "b" : "c";
+        fb.push_back(fmt::format("No {} given (the weight of {}).", name, vertex));
         continue;
       }
       const AnswerReader::Number& n = **given_uv;
@@ -1001,12 +1016,13 @@ void HitsGrader::grade_barycentric(const std::vector<StudentHit>& hits,
     if (right) credit += 1;
   }
   if (given == 0) {
-    out.parts.push_back(missing_part(context_, "barycentric"));
+    out.parts.push_back(missing_part(context_, part_names::kBarycentric));
     return;
   }
   std::size_t d = std::max(ref_.size(), given);
   if (credit >= static_cast<double>(d) && fb.empty()) fb.emplace_back("Right.");
-  out.parts.push_back(make_part(context_, "barycentric", credit / static_cast<double>(d), fb));
+  out.parts.push_back(
+      make_part(context_, part_names::kBarycentric, credit / static_cast<double>(d), fb));
 }
 
 }  // namespace
