@@ -8,7 +8,7 @@ so). Code above the kinds takes a part from its kind: its `PartSpec` (problems/k
 grading/parts.h), or a name the kind's header gives it, never a string of its own, so that a
 part renamed or added in its kind cannot leave a branch behind that still tests the old name.
 
-Flagged: a string literal that is a part's name, on a line that handles an answer or a part (it
+Flagged: a string literal that is a part's name, in a statement that handles an answer or a part (it
 speaks of a part, an answer, a reference, expected or stated answer, points, a mistake, a column
 or what a field asks, or reads a key: `.at(`, `.has(`, `allow_only`, `for_field`), in any C++
 source, script or Python file of the folders that handle answers (grader/grading, assignments,
@@ -21,8 +21,8 @@ The files that still name parts are listed in ALLOWED with the count of their li
 file not listed, or more lines of a listed one, fails; so does a listed one with fewer lines,
 until its count is brought down, so that the list only shrinks.
 
-A line whose comment says "not a part: <why>" is left out, and so is the statement after a
-comment line that says it: the same word meaning something else there (a derivation's quantity,
+A line whose comment says "not a part: <why>" is left out, and so is the statement (or the
+braced row of a table) after a comment line that says it: the same word meaning something else there (a derivation's quantity,
 a formula's symbol, a file's mode).
 
 Usage: part_names.py SOURCE_ROOT
@@ -84,21 +84,33 @@ for folder in FOLDERS:
                 or "node_modules" in path.parts):
             continue
         raw = path.read_text(encoding="utf-8").splitlines()
-        code = strip_comments("\n".join(raw), path.suffix == ".py")
+        code = strip_comments("\n".join(raw), path.suffix == ".py").splitlines()
+        # The statement each line belongs to (up to a line ending in ; { } or :), so that a
+        # call written over several lines is one: make_part(context_,\n "t", ...).
+        statement_of, start = [], 0
+        for i, line in enumerate(code):
+            statement_of.append(start)
+            if path.suffix == ".py" or not line.strip() or line.rstrip().endswith(
+                    (";", "{", "}", ":")):
+                start = i + 1
+        statements = {}
+        for i, s in enumerate(statement_of):
+            statements[s] = statements.get(s, "") + " " + code[i]
         exempt = False  # within the statement after a comment line that says "not a part:"
-        for number, line in enumerate(code.splitlines(), 1):
+        for number, line in enumerate(code, 1):
             here = raw[number - 1]
             if NOT_A_PART in here:
                 exempt = here.strip().startswith(("//", "#"))
                 continue
             if exempt:
-                exempt = not line.rstrip().endswith((";", "{", "}", ":"))
+                exempt = not line.rstrip().endswith((";", "{", "}", ":", "},"))
                 continue
-            words = [m.group(1) if m.group(1) is not None else m.group(2)
+            statement = statements[statement_of[number - 1]]
+            words = [(m.group(1) if m.group(1) is not None else m.group(2), m)
                      for m in literal.finditer(line)]
             if any(w in names and not typeof.search(line[:m.start()])
-                   and (handles_answers.search(line) or compared(line, m))
-                   for w, m in zip(words, literal.finditer(line))):
+                   and (handles_answers.search(statement) or compared(line, m))
+                   for w, m in words):
                 found[rel] = found.get(rel, 0) + 1
                 lines_of.setdefault(rel, []).append(f"{rel}:{number}: {line.strip()}")
 

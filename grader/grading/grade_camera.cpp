@@ -81,7 +81,7 @@ class CameraGrader final : public KindGrader {
       for (const auto& v : variants_) {
         if (!same_direction(direction->value(), v.direction, tol)) continue;
         out.mistakes.push_back(make_mistake(
-            v.id, "ray",
+            v.id, part_names::kRay,
             fmt::format("your direction {} is what that gives; the ray through pixel ({}, {}) "
                         "has direction {}.",
                         format_vector(direction->value(), numbers_), format_number(task_.pixel_x()),

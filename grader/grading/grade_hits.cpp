@@ -516,14 +516,14 @@ void HitsGrader::grade_object(const AnswerReader& a, GradeResult& out) const {
   }
   if (v.is_null() || (v.is_string() && norm_name(v.get<std::string>()) == "none")) {
     out.parts.push_back(make_part(
-        context_, "object", ref_object_ < 0 ? 1 : 0,
+        context_, part_names::kObject, ref_object_ < 0 ? 1 : 0,
         {ref_object_ < 0 ? "Right: no object is hit." : fmt::format("{} is hit.", right)}));
     return;
   }
   std::string name = a.at(part_names::kObject).string();
   bool ok = ref_object_ >= 0 && norm_name(name) == norm_name(right);
   out.parts.push_back(make_part(
-      context_, "object", ok ? 1 : 0,
+      context_, part_names::kObject, ok ? 1 : 0,
       {ok                ? fmt::format("Right: {} is hit first.", right)
        : ref_object_ < 0 ? "No object is hit."
                          : fmt::format("The first object hit is {}, not {}.", right, name)}));
@@ -886,7 +886,7 @@ void HitsGrader::grade_normal(const StudentHit& h, int jj, Tally& tally, GradeRe
     if (!rule.mistake.empty()) {
       const std::string& id = rule.mistake;
       out.mistakes.push_back(make_mistake(
-          id, "normal",
+          id, part_names::kNormal,
           fmt::format("your normal {} points the opposite way to {}.{}",
                       format_vector(mine, numbers_), format_vector(r, numbers_), rule.sentence)));
       tally.credit += mistake_info(id).credit;
@@ -903,7 +903,7 @@ void HitsGrader::grade_normal(const StudentHit& h, int jj, Tally& tally, GradeRe
              compare_direction(h.normal->c, *by_matrix, tn).verdict.match == Match::kRight) {
     const char* id = "normal-not-inverse-transpose";
     out.mistakes.push_back(make_mistake(
-        id, "normal",
+        id, part_names::kNormal,
         fmt::format("your normal {} is the object's normal taken to the world by the matrix "
                     "A; by the inverse transpose (A⁻¹)ᵀ it is {}.",
                     format_vector(mine, numbers_), format_vector(r, numbers_))));

@@ -232,6 +232,7 @@ class RayTreeGrader final : public KindGrader {
     std::vector<StudentNode> out;
     if (!a.has("nodes")) return out;
     for (const auto& n : a.at("nodes").items()) {
+      // not a part: a node's keys (docs/scenes.md), some spelled as parts are
       n.allow_only({"label",       "path",
                     "parent",      "ray",
                     "object",      "in_shadow",
@@ -632,8 +633,8 @@ class RayTreeGrader final : public KindGrader {
 
   // `components`: {"I1": {"diffuse": 0.4, "specular": 0.3}}, one part per component asked.
   void grade_components(const AnswerReader& a, GradeResult& out) const {
-    a.allow_only(
-        {"components", "nodes", "all_terms", "ambient_only", "rays", "effects", "intensity"});
+    a.allow_only({"components", "nodes", "all_terms", "ambient_only", "rays", "effects",
+                  part_names::kIntensity});
     std::optional<AnswerReader> given;
     if (a.has("components")) given = a.at("components");
     for (const auto& ask : task_.components()) {

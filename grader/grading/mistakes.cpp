@@ -109,6 +109,7 @@ const std::vector<MistakeInfo>& mistake_catalogue() {
          "N·H with the halfway vector H = (L + V)/‖L + V‖ is Blinn-Phong's highlight, another "
          "model with other numbers.",
          0},
+        // not a part: the mistake's family, colour
         {"scalar-for-colour", "colour", "One number where a colour is asked",
          "When a light or a material is a colour, every intensity is a colour [r, g, b], worked "
          "channel by channel; one number does not say which channel it is.",

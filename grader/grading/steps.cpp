@@ -162,7 +162,7 @@ StepsGrade grade_steps(const GradingContext& c, const Task& task,
   for (const auto& s : best->derivation.steps) known.push_back(s.name);
   if (steps.json().empty()) {
     out.part = missing_part(
-        c, "steps",
+        c, part_names::kSteps,
         fmt::format("No steps given: the steps object is empty (its steps are named as in the "
                     "worked solution: {}).",
                     fmt::join(known, ", ")));

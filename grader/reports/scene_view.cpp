@@ -295,6 +295,7 @@ std::optional<SceneView> scene_view(const Problem& problem, bool answers) {
   } else if (!words.empty()) {
     text += fmt::format(": {}", fmt::join(words, ", "));
   }
+  // not a part: the view's given ray
   if (data.contains("ray"))
     text += "; the given ray, an arrow from its origin (its length is not t)";
   if (!lights.empty())
