@@ -129,14 +129,17 @@ def fill(driver, answers):
 
 
 def with_unknown_field(page, work):
-    """A copy of `page` whose first problem's form starts with a field of type "slider"."""
+    """A copy of `page` whose first problem's form starts with fields of types the page does not
+    know: "slider", and names of a JavaScript object's own properties."""
     with open(page, encoding="utf-8") as f:
         html = f.read()
     start = html.index('<script type="application/json" id="handout-data">')
     start = html.index(">", start) + 1
     end = html.index("</script>", start)
     data = json.loads(html[start:end])
-    data["problems"][0]["form"]["fields"].insert(0, {"type": "slider", "key": "slide", "label": "Slide"})
+    # A name of no type, and names every JavaScript object answers to.
+    for name in ["slider", "constructor", "__proto__", "toString"]:
+        data["problems"][0]["form"]["fields"].insert(0, {"type": name, "key": name, "label": name})
     text = json.dumps(data).replace("</", "<\\/")
     out = os.path.join(work, "unknown-field.html")
     with open(out, "w", encoding="utf-8") as f:
@@ -216,8 +219,9 @@ def main():
             unknown = with_unknown_field(pages["s002"], work)
             driver.get("file://" + unknown)
             alerts = [a.text for a in driver.find_elements(By.CSS_SELECTOR, "[role=alert]")]
-            check(any("\u201cslider\u201d" in a for a in alerts),
-                  f"a field of an unknown type is not said to be one: {alerts}")
+            for name in ["slider", "constructor", "__proto__", "toString"]:
+                check(any(f"\u201c{name}\u201d" in a for a in alerts),
+                      f"a field of the unknown type {name} is not said to be one: {alerts}")
             after = len(driver.find_elements(By.CSS_SELECTOR, "input, select"))
             check(after == inputs, f"{after} inputs with the unknown field, {inputs} without: "
                   "the unknown field was shown as an input, or the fields after it were lost")
