@@ -27,39 +27,14 @@ import pathlib
 import re
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from source_scan import against_allowed, strip_comments  # noqa: E402
+
 # path: the number of its flagged lines. Each is a file not yet moved behind the table.
 ALLOWED = {}
 
 SUFFIXES = {".cpp", ".h", ".in", ".js", ".py"}
 EXEMPT_FILES = {"grader/assignments/typed_reader.js"}  # generated (Emscripten's output)
-
-def strip_comments(text, python):
-    """The text with comments blanked (lines kept), string literals left as they are."""
-    out, i, n = [], 0, len(text)
-    while i < n:
-        c = text[i]
-        if (python and c == "#") or (not python and text.startswith("//", i)):
-            j = text.find("\n", i)
-            i = n if j < 0 else j
-            continue
-        if not python and text.startswith("/*", i):
-            j = text.find("*/", i + 2)
-            j = n if j < 0 else j + 2
-            out.append("\n" * text.count("\n", i, j))
-            i = j
-            continue
-        if c in "\"'" and not (c == "'" and not python and i > 0 and text[i - 1].isalnum()):
-            j = i + 1
-            while j < n and text[j] != c and text[j] != "\n":
-                j += 2 if text[j] == "\\" else 1
-            out.append(text[i:j + 1])
-            i = j + 1
-            continue
-        out.append(c)
-        i += 1
-    return "".join(out)
-
-
 
 def main():
     root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".")
@@ -79,7 +54,6 @@ def main():
     speaks_of_type = re.compile(r"type", re.I)
 
 
-    found = {}
     lines_of = {}
     for path in sorted(list((root / "grader").rglob("*")) + list((root / "web").rglob("*"))):
         rel = path.relative_to(root).as_posix()
@@ -97,21 +71,10 @@ def main():
                     continue
                 if (word in only_types or compared.search(before) or compared_after.search(after)
                         or speaks_of_type.search(line)):
-                    found[rel] = found.get(rel, 0) + 1
                     lines_of.setdefault(rel, []).append(f"{rel}:{number}: {line.strip()}")
                     break
 
-    faults = []
-    for rel, count in sorted(found.items()):
-        allowed = ALLOWED.get(rel, 0)
-        if count > allowed:
-            faults.extend(lines_of[rel])
-            faults.append(f"  {rel}: {count} line(s) name a field type by string"
-                          + (f" (allowed {allowed})" if allowed else ""))
-    for rel, allowed in sorted(ALLOWED.items()):
-        if found.get(rel, 0) < allowed:
-            faults.append(f"  {rel}: {found.get(rel, 0)} line(s) now, {allowed} allowed: lower its "
-                          "count in ALLOWED (tests/field_names.py), so that it cannot come back")
+    faults = against_allowed(lines_of, ALLOWED, "a field type by string", "field_names")
     for f in faults:
         print(f)
     if faults:

@@ -57,7 +57,7 @@ if len(names) < 20:
     sys.exit(f"part_names: found only {sorted(names)} in docs/grading.md's table of parts")
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from field_names import strip_comments  # noqa: E402  (one way of taking comments out)
+from source_scan import against_allowed, strip_comments  # noqa: E402
 
 handles_answers = re.compile(r"part|answer|\.at\(|\.has\(|allow_only|for_field|points|mistake|"
                              r"reference|expected|asks|column|stated|given", re.I)
@@ -76,7 +76,7 @@ def compared(line, match):
 
 
 literal = re.compile(r'"((?:[^"\\\n]|\\.)*)"|\'((?:[^\'\\\n]|\\.)*)\'')
-found, lines_of = {}, {}
+lines_of = {}
 for folder in FOLDERS:
     for path in sorted((root / folder).rglob("*")):
         rel = path.relative_to(root).as_posix()
@@ -111,20 +111,9 @@ for folder in FOLDERS:
             if any(w in names and not typeof.search(line[:m.start()])
                    and (handles_answers.search(statement) or compared(line, m))
                    for w, m in words):
-                found[rel] = found.get(rel, 0) + 1
                 lines_of.setdefault(rel, []).append(f"{rel}:{number}: {line.strip()}")
 
-faults = []
-for rel, count in sorted(found.items()):
-    allowed = ALLOWED.get(rel, 0)
-    if count > allowed:
-        faults.extend(lines_of[rel][:40])
-        faults.append(f"  {rel}: {count} line(s) name a part by string"
-                      + (f" (allowed {allowed})" if allowed else ""))
-for rel, allowed in sorted(ALLOWED.items()):
-    if found.get(rel, 0) < allowed:
-        faults.append(f"  {rel}: {found.get(rel, 0)} line(s) now, {allowed} allowed: lower its "
-                      "count in ALLOWED (tests/part_names.py), so that it cannot come back")
+faults = against_allowed(lines_of, ALLOWED, "a part by string", "part_names")
 for f in faults:
     print(f)
 if faults:

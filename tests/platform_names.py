@@ -27,6 +27,9 @@ import pathlib
 import re
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from source_scan import against_allowed, strip_comments  # noqa: E402
+
 NAMES = ["gradescope", "prairielearn", "prairie_learn", "canvas", "moodle", "blackboard",
          "scorm", "d2l", "brightspace", "sakai"]
 
@@ -40,52 +43,6 @@ SUFFIXES = {".cpp", ".h", ".in", ".js", ".py"}
 
 NAME = re.compile("|".join(NAMES), re.I)
 HTML_CANVAS = re.compile(r"<canvas\b|\bcanvas(?=\s*[{:,])", re.I)
-
-
-def strip_comments(text, python):
-    """The text with comments blanked (line count kept), string literals left as they are."""
-    out = []
-    i, n = 0, len(text)
-    while i < n:
-        c = text[i]
-        if python and c == "#":
-            j = text.find("\n", i)
-            i = n if j < 0 else j
-            continue
-        if not python and text.startswith("//", i):
-            j = text.find("\n", i)
-            i = n if j < 0 else j
-            continue
-        if not python and text.startswith("/*", i):
-            j = text.find("*/", i + 2)
-            j = n if j < 0 else j + 2
-            out.append("\n" * text.count("\n", i, j))
-            i = j
-            continue
-        m = re.match(r'R"([^(\s]*)\(', text[i:]) if not python else None
-        if m and (i == 0 or not (text[i - 1].isalnum() or text[i - 1] == "_")):
-            end = text.find(")" + m.group(1) + '"', i + m.end())
-            j = n if end < 0 else end + len(m.group(1)) + 2
-            out.append(text[i:j])
-            i = j
-            continue
-        if python and (text.startswith('"""', i) or text.startswith("'''", i)):
-            end = text.find(text[i:i + 3], i + 3)
-            j = n if end < 0 else end + 3
-            out.append(text[i:j])
-            i = j
-            continue
-        if c in "\"'`":
-            j = i + 1
-            while j < n and text[j] != c and (c == "`" or text[j] != "\n"):
-                j += 2 if text[j] == "\\" else 1
-            j = min(j + 1, n)
-            out.append(text[i:j])
-            i = j
-            continue
-        out.append(c)
-        i += 1
-    return "".join(out)
 
 
 def naming_lines(path):
@@ -105,22 +62,17 @@ def main():
     root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".")
     if not (root / "grader" / "assignments" / "platforms").is_dir():
         sys.exit("platform_names: grader/assignments/platforms/ is missing")
-    faults, counts = [], {}
+    found = {}
     for path in sorted((root / "grader").rglob("*")):
         rel = path.relative_to(root).as_posix()
         if not path.is_file() or path.suffix not in SUFFIXES or rel in EXEMPT_FILES:
             continue
         if any(rel.startswith(d + "/") for d in EXEMPT_DIRS):
             continue
-        found = naming_lines(path)
-        if found:
-            counts[rel] = len(found)
-        if len(found) > ALLOWED.get(rel, 0):
-            faults += [f"{rel}:{number}: names a platform: {line}" for number, line in found]
-    for rel, allowed in sorted(ALLOWED.items()):
-        if counts.get(rel, 0) < allowed:
-            faults.append(f"{rel}: ALLOWED says {allowed} lines name a platform, now "
-                          f"{counts.get(rel, 0)}: bring its count down (or take it off the list)")
+        lines = [f"{rel}:{number}: names a platform: {line}" for number, line in naming_lines(path)]
+        if lines:
+            found[rel] = lines
+    faults = against_allowed(found, ALLOWED, "a platform", "platform_names")
     for f in faults:
         print(f)
     if faults:
