@@ -58,13 +58,8 @@ Sketch ReflectTask::sketch() const {
   return f;
 }
 
-// The surface at a point the problem does not place: the view puts it at the origin.
 std::optional<SceneGivens> ReflectTask::scene_givens() const {
-  SceneGivens g;
-  g.surface.emplace();
-  g.surface->normal = n_;
-  g.surface->incoming = d_;
-  return g;
+  return SceneGivens::surface_at_origin(n_, d_);
 }
 
 std::unique_ptr<Task> ReflectKind::read(const Cursor& problem) {

@@ -59,6 +59,16 @@ struct SceneGivens {
   std::optional<Vec3d> point;  // P, when the problem gives one
   // Only for a problem without objects; P is at the origin when `point` is empty.
   std::optional<GivenSurface> surface;
+
+  // The surface at a point the problem does not place (the view puts it at the origin), with
+  // its normal and the direction that arrives there: a reflection's, a refraction's.
+  static SceneGivens surface_at_origin(const Vec3d& normal, const Vec3d& incoming) {
+    SceneGivens g;
+    g.surface.emplace();
+    g.surface->normal = normal;
+    g.surface->incoming = incoming;
+    return g;
+  }
 };
 
 }  // namespace raygrade
