@@ -107,7 +107,7 @@ struct Comparer {
     if (list.empty()) return "none";
     std::vector<std::string> parts;
     for (const auto& item : list) {
-      if (item.is_object() && item.contains("t")) {
+      if (item.is_object() && item.contains(part_names::kT)) {
         parts.push_back("t = " + show(item[part_names::kT]));
       } else {
         parts.push_back(show(item));

@@ -38,9 +38,9 @@ void check_range(const Problem& p, const nlohmann::json& stated, std::vector<Dia
   if (!ray || !stated.contains("hits") || !stated["hits"].is_array()) return;
   for (std::size_t i = 0; i < stated["hits"].size(); ++i) {
     const auto& h = stated["hits"][i];
-    if (!h.is_object() || !h.contains("t") || !h["t"].is_number()) continue;
-    double t = h["t"].get<double>();
-    std::string where = fmt::format("/expected/hits/{}/t", i);
+    if (!h.is_object() || !h.contains(part_names::kT) || !h[part_names::kT].is_number()) continue;
+    double t = h[part_names::kT].get<double>();
+    std::string where = fmt::format("/expected/hits/{}/{}", i, part_names::kT);
     if (t < ray->t_min) {
       out.push_back(problem_diagnostic(
           p, where, Severity::kError,

@@ -11,6 +11,7 @@
 #include <numbers>
 #include <numeric>
 #include <set>
+#include <string_view>
 #include <tuple>
 
 #include "core/error.h"
@@ -228,7 +229,8 @@ void map_leaves(std::vector<Leaf>& leaves, const nlohmann::json& answer,
 const nlohmann::json* answer_at(const nlohmann::json& answer, nlohmann::json::json_pointer at) {
   if (!answer.contains(at) && object_keys(at).back() == part_names::kDirection) {
     std::string text = at.to_string();
-    text.replace(text.rfind("direction"), 9, "unit_direction");
+    text.replace(text.rfind(part_names::kDirection),
+                 std::string_view(part_names::kDirection).size(), part_names::kUnitDirection);
     at = nlohmann::json::json_pointer(text);
   }
   return answer.contains(at) ? &answer.at(at) : nullptr;
