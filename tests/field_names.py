@@ -28,7 +28,7 @@ import re
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from source_scan import against_allowed, strip_comments  # noqa: E402
+from source_scan import against_allowed, finish, strip_comments  # noqa: E402
 
 # path: the number of its flagged lines. Each is a file not yet moved behind the table.
 ALLOWED = {}
@@ -74,15 +74,12 @@ def main():
                     lines_of.setdefault(rel, []).append(f"{rel}:{number}: {line.strip()}")
                     break
 
-    faults = against_allowed(lines_of, ALLOWED, "a field type by string", "field_names")
-    for f in faults:
-        print(f)
-    if faults:
-        sys.exit("field_names: code outside grader/kinds/ names a field type by string; take what a "
-                 "field does from its shape and value (kinds/fields/field_type.h, field_type_of) or, "
-                 "in a page, from data.field_types")
-    print(f"field_names: no code outside grader/kinds/ names any of the {len(names)} field types "
-          f"by string ({sum(ALLOWED.values())} allowed line(s) in {len(ALLOWED)} file(s))")
+    finish(against_allowed(lines_of, ALLOWED, "a field type by string", "field_names"),
+           "field_names: code outside grader/kinds/ names a field type by string; take what a "
+           "field does from its shape and value (kinds/fields/field_type.h, field_type_of) or, in "
+           "a page, from data.field_types",
+           f"field_names: no code outside grader/kinds/ names any of the {len(names)} field "
+           f"types by string ({sum(ALLOWED.values())} allowed line(s) in {len(ALLOWED)} file(s))")
 
 
 if __name__ == "__main__":

@@ -57,7 +57,7 @@ if len(names) < 20:
     sys.exit(f"part_names: found only {sorted(names)} in docs/grading.md's table of parts")
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from source_scan import against_allowed, strip_comments  # noqa: E402
+from source_scan import against_allowed, finish, strip_comments  # noqa: E402
 
 handles_answers = re.compile(r"part|answer|\.at\(|\.has\(|allow_only|for_field|points|mistake|"
                              r"reference|expected|asks|column|stated|given", re.I)
@@ -113,11 +113,8 @@ for folder in FOLDERS:
                    for w, m in words):
                 lines_of.setdefault(rel, []).append(f"{rel}:{number}: {line.strip()}")
 
-faults = against_allowed(lines_of, ALLOWED, "a part by string", "part_names")
-for f in faults:
-    print(f)
-if faults:
-    sys.exit("part_names: code outside grader/kinds/ names a part by string; take it from its "
-             "kind (its PartSpec, or the name its kind's header gives it)")
-print(f"part_names: {len(names)} parts; {sum(ALLOWED.values())} line(s) in {len(ALLOWED)} "
-      "file(s) still name one (ALLOWED, which only shrinks)")
+finish(against_allowed(lines_of, ALLOWED, "a part by string", "part_names"),
+       "part_names: code outside grader/kinds/ names a part by string; take it from its kind "
+       "(its PartSpec, or the name its kind's header gives it)",
+       f"part_names: {len(names)} parts; {sum(ALLOWED.values())} line(s) in {len(ALLOWED)} "
+       "file(s) still name one (ALLOWED, which only shrinks)")

@@ -28,7 +28,7 @@ import re
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from source_scan import against_allowed, strip_comments  # noqa: E402
+from source_scan import against_allowed, finish, strip_comments  # noqa: E402
 
 NAMES = ["gradescope", "prairielearn", "prairie_learn", "canvas", "moodle", "blackboard",
          "scorm", "d2l", "brightspace", "sakai"]
@@ -72,14 +72,11 @@ def main():
         lines = [f"{rel}:{number}: names a platform: {line}" for number, line in naming_lines(path)]
         if lines:
             found[rel] = lines
-    faults = against_allowed(found, ALLOWED, "a platform", "platform_names")
-    for f in faults:
-        print(f)
-    if faults:
-        sys.exit("platform_names: code outside grader/assignments/platforms/ names a platform; "
-                 "reach it through the list of platforms (assignments/platforms/platforms.h)")
-    print(f"platform_names: no code outside grader/assignments/platforms/ names a platform "
-          f"({len(ALLOWED)} files still listed in ALLOWED)")
+    finish(against_allowed(found, ALLOWED, "a platform", "platform_names"),
+           "platform_names: code outside grader/assignments/platforms/ names a platform; reach "
+           "it through the list of platforms (assignments/platforms/platforms.h)",
+           "platform_names: no code outside grader/assignments/platforms/ names a platform "
+           f"({len(ALLOWED)} files still listed in ALLOWED)")
 
 
 main()

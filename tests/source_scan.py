@@ -2,6 +2,7 @@
 part_names): a source file's code with its comments taken out, and the check of the files that
 still name something against the test's list of them, which may only shrink."""
 import re
+import sys
 
 
 def strip_comments(text, python):
@@ -67,3 +68,12 @@ def against_allowed(found, allowed, what, test):
             faults.append(f"  {rel}: {now} line(s) now, {limit} allowed: lower its count in "
                           f"ALLOWED (tests/{test}.py), so that it cannot come back")
     return faults
+
+
+def finish(faults, failure, success):
+    """Prints the faults and exits 1 with `failure`, or prints `success`."""
+    for f in faults:
+        print(f)
+    if faults:
+        sys.exit(failure)
+    print(success)

@@ -105,8 +105,7 @@ json field_types_json() {
   json out = json::object();
   for (const auto& e : field_type_table()) {
     out[std::string(e.name)] = {{"shape", field_shape_word(e.shape)},
-                                {"value", field_value_word(e.value)},
-                                {"placeholder", e.placeholder}};
+                                {"value", field_value_word(e.value)}};
   }
   return out;
 }
