@@ -23,6 +23,7 @@ The last line is `N passed, M failed`; the exit status is 1 when M > 0.
 """
 import copy
 import json
+import shutil
 import sys
 import tempfile
 
@@ -266,6 +267,36 @@ def hostile_options(q, tmp):
         check_messages(label, data)
 
 
+# The input types of raygrade.json as raygrade wrote them before they were the words of its table
+# of field types: an older export's question, read by today's server.py.
+OLDER_TYPES = {"typed-number": "number", "typed-three": "vector", "typed-formula": "formula",
+               "flag": "yesno", "one-of": "choice", "some-of": "set"}
+
+
+def older_export(q, tmp):
+    """The question with an older raygrade.json: server.py says the question must be exported
+    again, to the student as one general error and in grade()'s feedback, with no points;
+    it never reads an input by a word it does not know."""
+    old = tmp / "older" / q.qdir.name
+    shutil.copytree(q.qdir, old, dirs_exist_ok=True)
+    spec = json.loads((q.qdir / "raygrade.json").read_text(encoding="utf-8"))
+    for inp in spec["inputs"]:
+        inp["type"] = OLDER_TYPES.get(inp["type"], inp["type"])
+    (old / "raygrade.json").write_text(json.dumps(spec), encoding="utf-8")
+    options = {**q.options(), "question_path": str(old)}
+    label = f"{q.name} older raygrade.json"
+    parsed, graded = q.data(q.blank(), options=options), q.data(q.blank(), options=options)
+    call(label, q.server.parse, parsed)
+    call(label, q.server.grade, graded)
+    said = " ".join(strings([parsed.get("format_errors")]))
+    check("export" in said and "again" in said,
+          f"{label}: parse() does not say to export the question again: {short(said)}")
+    lines = " ".join(strings([graded.get("feedback")]))
+    check(graded.get("score") == 0 and "export" in lines,
+          f"{label}: grade() gives {graded.get('score')} and says {short(lines)}")
+    check_messages(label, parsed)
+
+
 def questions_of(course):
     return sorted(p for p in (course / "questions").glob("*/*") if (p / "server.py").is_file())
 
@@ -283,6 +314,7 @@ def on_courses(raygrade, courses, tmp):
         hostile_seeds(q)
         hostile_data(q)
         hostile_options(q, tmp)
+        older_export(q, tmp)
 
 
 def main(raygrade, assignment):

@@ -63,10 +63,19 @@ def _option(data, key):
     return value
 
 
+# Every input type this server reads; anything else is a raygrade.json of another raygrade.
+INPUT_TYPES = CHOICE_TYPES + (THREE_NUMBERS, SOME_OF, "typed-number", "typed-formula", "names")
+
+
 def _question(data):
     path = os.path.join(_option(data, "question_path"), "raygrade.json")
     with open(path, encoding="utf-8") as f:
-        return json.load(f)
+        q = json.load(f)
+    for inp in q.get("inputs", []):
+        if not isinstance(inp, dict) or inp.get("type") not in INPUT_TYPES:
+            raise ValueError("this question was exported by another version of raygrade than "
+                             "its server.py reads; export the assignment again")
+    return q
 
 
 def _raygrade(data, q, args, cwd=None):
