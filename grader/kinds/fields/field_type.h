@@ -84,8 +84,8 @@ const FieldTypeEntry& field_type_of(const nlohmann::json& field);
 // out of a blank answer.
 nlohmann::json blank_of(const nlohmann::json& field);
 
-// {"name": {"shape": ..., "value": ...}, ...}: the table as the pages' scripts take it, with the shapes and values as the words of field_shape_word and
-// field_value_word.
+// {"name": {"shape": ..., "value": ...}, ...}: the table as the pages' scripts take it, with the
+// shapes and values as the words of field_shape_word and field_value_word.
 nlohmann::json field_types_json();
 std::string_view field_shape_word(FieldShape shape);
 std::string_view field_value_word(FieldValue value);
